@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package amrstream needs to build, test and run. Idempotent: when
+# everything is already present it only checks and returns. Works as root or through sudo.
+# Lavapipe with ray query / ray tracing pipelines needs Mesa from bookworm-backports, so this
+# adds that suite when it is missing (see docs/setup.md).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
+  python3 python3-vtk9 python3-numpy
+)
+backports_packages=(mesa-vulkan-drivers)
+
+if [ "$(id -u)" -eq 0 ]; then
+  as_root() { "$@"; }
+elif command -v sudo >/dev/null 2>&1; then
+  as_root() { sudo "$@"; }
+else
+  echo "install_deps: need root or sudo to install packages" >&2
+  exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+backports_missing=()
+for p in "${backports_packages[@]}"; do
+  version=$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || true)
+  case "$version" in
+    *bpo*) ;;
+    *) backports_missing+=("$p") ;;
+  esac
+done
+
+if [ ${#missing[@]} -eq 0 ] && [ ${#backports_missing[@]} -eq 0 ]; then
+  echo "install_deps: all packages present"
+  exit 0
+fi
+
+backports_file=/etc/apt/sources.list.d/amrstream-bookworm-backports.sources
+if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  echo "install_deps: adding the bookworm-backports suite ($backports_file)"
+  as_root tee "$backports_file" >/dev/null <<'SRC'
+Types: deb
+URIs: http://deb.debian.org/debian
+Suites: bookworm-backports
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SRC
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+echo "install_deps: installing ${missing[*]} ${backports_missing[*]}"
+as_root apt-get update -q
+if [ ${#missing[@]} -gt 0 ]; then
+  as_root apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+if [ ${#backports_missing[@]} -gt 0 ]; then
+  as_root apt-get install -y -q --no-install-recommends -t bookworm-backports "${backports_missing[@]}"
+fi
+echo "install_deps: done"

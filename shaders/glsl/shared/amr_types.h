@@ -1,0 +1,53 @@
+// Buffer structs shared by the C++ host code and the GLSL kernels (scalar block layout).
+// Coordinates are in finest-cell units; level 0 is the finest level, a level-L cell is 2^L wide.
+#ifndef AMRSTREAM_SHARED_AMR_TYPES_H
+#define AMRSTREAM_SHARED_AMR_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace amrstream::shared {
+using vec3 = glm::vec3;
+using ivec3 = glm::ivec3;
+using uint = std::uint32_t;
+#endif
+
+// A box of same-level cells with no holes. The value of cell (ix, iy, iz) of the brick is at
+// slot valueOffset + ix + size.x * (iy + size.y * iz) of the brick-ordered value arrays.
+struct Brick {
+  ivec3 lower;       // lower corner of the brick
+  int level;         // level of all its cells
+  ivec3 size;        // cells per axis
+  uint valueOffset;  // first slot of the brick in the value arrays
+};
+
+// An active brick region: a box in which every point lies in the domains of the same bricks.
+// The box is half-open, [lower, upper).
+struct Region {
+  vec3 lower;
+  uint brickOffset;  // the region's bricks are regionBricks[brickOffset .. brickOffset + brickCount)
+  vec3 upper;
+  uint brickCount;
+  float finestCellWidth;  // width of the finest cell among the region's bricks
+};
+
+// Node of the kd-tree whose leaves are the regions (and the empty space between them).
+// Interior node: a point p goes to child if p[axis] < split, else to child + 1.
+// Leaf: axis == AMRSTREAM_TREE_LEAF and child is a region id or AMRSTREAM_NO_REGION.
+struct RegionTreeNode {
+  float split;
+  uint axis;
+  uint child;
+};
+
+#define AMRSTREAM_TREE_LEAF 3u
+#define AMRSTREAM_NO_REGION 0xffffffffu
+
+#ifdef __cplusplus
+static_assert(sizeof(Brick) == 32 && offsetof(Brick, size) == 16 && offsetof(Brick, valueOffset) == 28);
+static_assert(sizeof(Region) == 36 && offsetof(Region, upper) == 16 && offsetof(Region, finestCellWidth) == 32);
+static_assert(sizeof(RegionTreeNode) == 12);
+}  // namespace amrstream::shared
+#endif
+
+#endif

@@ -1,0 +1,17 @@
+// Termination reasons and step modes, shared by the CPU reference and the GLSL kernels.
+// Reasons use VTK's vtkStreamTracer::ReasonForTermination values so ParaView users know them.
+#ifndef AMRSTREAM_SHARED_TRACE_CODES_H
+#define AMRSTREAM_SHARED_TRACE_CODES_H
+
+#define AMRSTREAM_REASON_RUNNING 0           // trace not finished yet
+#define AMRSTREAM_REASON_OUT_OF_DOMAIN 1     // the next sample point left the data
+#define AMRSTREAM_REASON_UNEXPECTED_VALUE 3  // invalid sample (no weight) or non-finite value
+#define AMRSTREAM_REASON_MAX_LENGTH 4        // the next step would pass the length limit
+#define AMRSTREAM_REASON_MAX_STEPS 5         // the step limit was reached
+#define AMRSTREAM_REASON_STAGNATION 6        // speed below the terminal speed
+
+#define AMRSTREAM_STEP_CELL 0  // RK4 on dx/ds = w(x) v(x): step h in finest cell widths of the region
+#define AMRSTREAM_STEP_TIME 1  // RK4 on dx/dt = v(x) with a fixed physical dt = h
+#define AMRSTREAM_STEP_ARC 2   // RK4 on dx/ds = w(x) v/|v|: unit speed, step h in cell widths
+
+#endif

@@ -1,0 +1,205 @@
+#include "amr_field.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::bricks {
+
+namespace {
+
+// Lowest index in [0, n) for which `bad(i)` holds, or n. Runs in parallel.
+template <typename Predicate>
+std::size_t firstFailing(std::size_t n, Predicate bad) {
+  std::atomic<std::size_t> first{n};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end() && i < first.load(); ++i) {
+      if (bad(i)) {
+        std::size_t seen = first.load();
+        while (i < seen && !first.compare_exchange_weak(seen, i)) {
+        }
+        return;
+      }
+    }
+  });
+  return first.load();
+}
+
+// Open-addressing set of non-zero 64-bit keys, filled concurrently with compare-and-swap.
+class ConcurrentKeySet {
+ public:
+  explicit ConcurrentKeySet(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    slots_ = std::vector<std::atomic<std::uint64_t>>(capacity);
+    mask_ = capacity - 1;
+  }
+
+  // False when the key was already present.
+  bool insert(std::uint64_t key) {
+    for (std::size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+      std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
+      if (current == key) return false;
+      if (current == 0) {
+        if (slots_[i].compare_exchange_strong(current, key)) return true;
+        if (current == key) return false;
+      }
+    }
+  }
+
+  bool contains(std::uint64_t key) const {
+    for (std::size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+      const std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
+      if (current == key) return true;
+      if (current == 0) return false;
+    }
+  }
+
+ private:
+  static std::size_t hash(std::uint64_t x) {  // splitmix64 finaliser
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    return static_cast<std::size_t>(x ^ (x >> 31));
+  }
+
+  std::vector<std::atomic<std::uint64_t>> slots_;
+  std::size_t mask_ = 0;
+};
+
+std::string describeCell(std::size_t i, glm::ivec3 lower, int level) {
+  return fmt::format("cell {} (level {}, lower corner {},{},{})", i, level, lower.x, lower.y,
+                     lower.z);
+}
+
+}  // namespace
+
+AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                   std::vector<Channel> channels, WorldTransform transform, std::string source)
+    : lowers_(std::move(lowers)),
+      levels_(std::move(levels)),
+      channels_(std::move(channels)),
+      transform_(transform),
+      source_(std::move(source)) {
+  validate();
+}
+
+std::optional<std::size_t> AmrField::findChannel(std::string_view name) const {
+  for (std::size_t i = 0; i < channels_.size(); ++i)
+    if (channels_[i].name == name) return i;
+  return std::nullopt;
+}
+
+const Channel& AmrField::channel(std::string_view name) const {
+  if (auto i = findChannel(name)) return channels_[*i];
+  std::string names;
+  for (const Channel& c : channels_) names += (names.empty() ? "" : ", ") + c.name;
+  throw InputError(source_, fmt::format("no channel named '{}' (channels: {})", name,
+                                        names.empty() ? "none" : names));
+}
+
+int AmrField::coarsestLevel() const { return *std::max_element(levels_.begin(), levels_.end()); }
+int AmrField::finestLevel() const { return *std::min_element(levels_.begin(), levels_.end()); }
+
+std::vector<std::size_t> AmrField::cellsPerLevel() const {
+  std::vector<std::size_t> counts(coarsestLevel() + 1, 0);
+  for (std::uint8_t level : levels_) ++counts[level];
+  return counts;
+}
+
+void AmrField::validate() {
+  const std::size_t n = lowers_.size();
+  if (n == 0) throw InputError(source_, "the dataset has no cells");
+  if (levels_.size() != n)
+    throw InputError(source_, fmt::format("{} cell corners but {} cell levels", n, levels_.size()));
+
+  std::set<std::string, std::less<>> names;
+  for (const Channel& c : channels_) {
+    if (c.name.empty()) throw InputError(source_, "a channel has an empty name");
+    if (!names.insert(c.name).second)
+      throw InputError(source_, fmt::format("channel '{}' appears twice", c.name));
+    if (c.values.size() != n)
+      throw InputError(source_, fmt::format("channel '{}' has {} values for {} cells", c.name,
+                                            c.values.size(), n));
+  }
+
+  if (std::size_t i = firstFailing(n, [&](std::size_t i) { return levels_[i] > kMaxLevel; }); i < n)
+    throw InputError(source_, fmt::format("{} has a level above the supported maximum {}",
+                                          describeCell(i, lowers_[i], levels_[i]), kMaxLevel));
+  const auto misaligned = [&](std::size_t i) {
+    const int mask = cellWidth(levels_[i]) - 1;
+    return (lowers_[i].x & mask) | (lowers_[i].y & mask) | (lowers_[i].z & mask);
+  };
+  if (std::size_t i = firstFailing(n, misaligned); i < n)
+    throw InputError(source_, fmt::format("{} is not aligned to its level's grid (corner "
+                                          "coordinates must be multiples of {})",
+                                          describeCell(i, lowers_[i], levels_[i]),
+                                          cellWidth(levels_[i])));
+
+  for (const Channel& c : channels_) {
+    const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
+    if (std::size_t i = firstFailing(n, notFinite); i < n)
+      throw InputError(source_, fmt::format("channel '{}' has a non-finite value ({}) at {}",
+                                            c.name, c.values[i],
+                                            describeCell(i, lowers_[i], levels_[i])));
+  }
+
+  CellBox box{glm::ivec3(std::numeric_limits<int>::max()),
+              glm::ivec3(std::numeric_limits<int>::min())};
+  for (std::size_t i = 0; i < n; ++i) {
+    box.lower = glm::min(box.lower, lowers_[i]);
+    box.upper = glm::max(box.upper, lowers_[i] + cellWidth(levels_[i]));
+  }
+  const glm::ivec3 extent = box.upper - box.lower;
+  if (glm::any(glm::greaterThanEqual(extent, glm::ivec3(1 << kMaxExtentBits))))
+    throw InputError(source_, fmt::format("the cells span {}x{}x{} finest cells; at most {} per "
+                                          "axis are supported",
+                                          extent.x, extent.y, extent.z, (1 << kMaxExtentBits) - 1));
+  bounds_ = box;
+
+  // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
+  // inside a coarser one finds that cell's aligned corner in the coarser level's set.
+  const std::vector<std::size_t> perLevel = cellsPerLevel();
+  std::vector<std::unique_ptr<ConcurrentKeySet>> sets(perLevel.size());
+  for (std::size_t level = 0; level < perLevel.size(); ++level)
+    if (perLevel[level] > 0) sets[level] = std::make_unique<ConcurrentKeySet>(perLevel[level]);
+  const auto key = [&](glm::ivec3 lower) {
+    const glm::u64vec3 r = glm::u64vec3(lower - box.lower);
+    return 1 + (r.x | (r.y << kMaxExtentBits) | (r.z << (2 * kMaxExtentBits)));
+  };
+  const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(key(lowers_[i])); };
+  if (std::size_t i = firstFailing(n, duplicated); i < n)
+    throw InputError(source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i])));
+
+  const auto insideCoarser = [&](std::size_t i) -> int {
+    for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
+      if (!sets[level]) continue;
+      const int mask = ~(cellWidth(int(level)) - 1);
+      // Corners of coarser cells are aligned in absolute coordinates, so align before shifting.
+      const glm::ivec3 aligned = glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask,
+                                            lowers_[i].z & mask);
+      if (glm::all(glm::greaterThanEqual(aligned, box.lower)) && sets[level]->contains(key(aligned)))
+        return int(level);
+    }
+    return -1;
+  };
+  if (std::size_t i = firstFailing(n, [&](std::size_t i) { return insideCoarser(i) >= 0; }); i < n) {
+    const int level = insideCoarser(i);
+    const int mask = ~(cellWidth(level) - 1);
+    throw InputError(source_, fmt::format("{} overlaps the level-{} cell at {},{},{}",
+                                          describeCell(i, lowers_[i], levels_[i]), level,
+                                          lowers_[i].x & mask, lowers_[i].y & mask,
+                                          lowers_[i].z & mask));
+  }
+}
+
+}  // namespace amrstream::bricks

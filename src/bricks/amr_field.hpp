@@ -1,0 +1,81 @@
+#pragma once
+// The AMR model: a set of leaf cells, each with an integer lower corner in finest-cell units, a
+// level (0 = finest, a level-L cell is 2^L finest cells wide) and one float per named channel,
+// plus a world transform to the input's physical coordinates.
+//
+// Invariants kept by construction (violations throw InputError naming the source):
+// at least one cell; every cell aligned to its level's grid; no two cells overlap (no duplicates,
+// no cell inside a coarser one); every channel has one finite value per cell; channel names are
+// unique and non-empty.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace amrstream::bricks {
+
+inline constexpr int kMaxLevel = 20;         // coarsest supported level (cell width 2^20)
+inline constexpr int kMaxExtentBits = 21;    // the cells' bounding box spans < 2^21 finest cells
+
+// Maps cell units (finest-cell units) to the input's physical coordinates.
+struct WorldTransform {
+  glm::dvec3 origin{0.0};   // physical position of the cell-unit origin
+  glm::dvec3 spacing{1.0};  // physical size of one finest cell, per axis
+
+  glm::dvec3 toPhysical(glm::dvec3 cellUnits) const { return origin + spacing * cellUnits; }
+  glm::dvec3 toCellUnits(glm::dvec3 physical) const { return (physical - origin) / spacing; }
+};
+
+struct Channel {
+  std::string name;
+  std::vector<float> values;  // one per cell, in cell order
+};
+
+// Integer box [lower, upper) in finest-cell units.
+struct CellBox {
+  glm::ivec3 lower{0};
+  glm::ivec3 upper{0};
+};
+
+class AmrField {
+ public:
+  // `source` names where the data came from (a path or builtin:NAME); it prefixes every error.
+  AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+           std::vector<Channel> channels, WorldTransform transform, std::string source);
+
+  std::size_t cellCount() const { return lowers_.size(); }
+  std::span<const glm::ivec3> lowers() const { return lowers_; }
+  std::span<const std::uint8_t> levels() const { return levels_; }
+  static int cellWidth(int level) { return 1 << level; }
+
+  const std::vector<Channel>& channels() const { return channels_; }
+  std::optional<std::size_t> findChannel(std::string_view name) const;
+  // Throws InputError listing the available channels when `name` is absent.
+  const Channel& channel(std::string_view name) const;
+
+  const WorldTransform& transform() const { return transform_; }
+  const std::string& source() const { return source_; }
+
+  CellBox bounds() const { return bounds_; }  // bounding box of all cells
+  int coarsestLevel() const;
+  int finestLevel() const;
+  std::vector<std::size_t> cellsPerLevel() const;  // indexed by level, up to coarsestLevel()
+
+ private:
+  void validate();  // also sets bounds_
+
+  std::vector<glm::ivec3> lowers_;
+  std::vector<std::uint8_t> levels_;
+  std::vector<Channel> channels_;
+  WorldTransform transform_;
+  std::string source_;
+  CellBox bounds_;
+};
+
+}  // namespace amrstream::bricks

@@ -1,0 +1,30 @@
+#pragma once
+// Synthetic AMR datasets with known fields, for tests, the built-in dataset and benchmarks.
+// Every generator refines 8^3-cell blocks (an octree of blocks over a root grid of blocks) where
+// its refinement criterion is largest, until the cell budget or the level limit is reached.
+// Deterministic for given options.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../bricks/amr_field.hpp"
+
+namespace amrstream::synth {
+
+struct GeneratorOptions {
+  int levels = 5;                       // number of AMR levels (1 = uniform grid), at most 8
+  int rootBlocks = 4;                   // root blocks per axis (each 8^3 coarsest cells)
+  std::size_t targetCells = 1'000'000;  // refinement stops before the cell count passes this
+  std::uint64_t seed = 1;               // random choices (filament placement, ...)
+};
+
+// Kinds: "rotation" (solid-body rotation about the z axis through the domain centre, channels
+// velx vely velz), "abc" (Arnold-Beltrami-Childress flow, velx vely velz), "cloud" (magnetised
+// filament cloud: dens, magx magy magz). Throws InputError naming the kind and listing the kinds.
+bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options);
+std::vector<std::string> generatorKinds();
+
+}  // namespace amrstream::synth
