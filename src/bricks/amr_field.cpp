@@ -1,14 +1,14 @@
 #include "amr_field.hpp"
 
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <set>
-
-#include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include "util/input_error.hpp"
 
@@ -140,17 +140,17 @@ void AmrField::validate() {
     return (lowers_[i].x & mask) | (lowers_[i].y & mask) | (lowers_[i].z & mask);
   };
   if (std::size_t i = firstFailing(n, misaligned); i < n)
-    throw InputError(source_, fmt::format("{} is not aligned to its level's grid (corner "
-                                          "coordinates must be multiples of {})",
-                                          describeCell(i, lowers_[i], levels_[i]),
-                                          cellWidth(levels_[i])));
+    throw InputError(source_,
+                     fmt::format("{} is not aligned to its level's grid (corner "
+                                 "coordinates must be multiples of {})",
+                                 describeCell(i, lowers_[i], levels_[i]), cellWidth(levels_[i])));
 
   for (const Channel& c : channels_) {
     const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
     if (std::size_t i = firstFailing(n, notFinite); i < n)
-      throw InputError(source_, fmt::format("channel '{}' has a non-finite value ({}) at {}",
-                                            c.name, c.values[i],
-                                            describeCell(i, lowers_[i], levels_[i])));
+      throw InputError(source_,
+                       fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name,
+                                   c.values[i], describeCell(i, lowers_[i], levels_[i])));
   }
 
   CellBox box{glm::ivec3(std::numeric_limits<int>::max()),
@@ -178,27 +178,30 @@ void AmrField::validate() {
   };
   const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(key(lowers_[i])); };
   if (std::size_t i = firstFailing(n, duplicated); i < n)
-    throw InputError(source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i])));
+    throw InputError(source_,
+                     fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i])));
 
   const auto insideCoarser = [&](std::size_t i) -> int {
     for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
       if (!sets[level]) continue;
       const int mask = ~(cellWidth(int(level)) - 1);
       // Corners of coarser cells are aligned in absolute coordinates, so align before shifting.
-      const glm::ivec3 aligned = glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask,
-                                            lowers_[i].z & mask);
-      if (glm::all(glm::greaterThanEqual(aligned, box.lower)) && sets[level]->contains(key(aligned)))
+      const glm::ivec3 aligned =
+          glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
+      if (glm::all(glm::greaterThanEqual(aligned, box.lower)) &&
+          sets[level]->contains(key(aligned)))
         return int(level);
     }
     return -1;
   };
-  if (std::size_t i = firstFailing(n, [&](std::size_t i) { return insideCoarser(i) >= 0; }); i < n) {
+  if (std::size_t i = firstFailing(n, [&](std::size_t i) { return insideCoarser(i) >= 0; });
+      i < n) {
     const int level = insideCoarser(i);
     const int mask = ~(cellWidth(level) - 1);
-    throw InputError(source_, fmt::format("{} overlaps the level-{} cell at {},{},{}",
-                                          describeCell(i, lowers_[i], levels_[i]), level,
-                                          lowers_[i].x & mask, lowers_[i].y & mask,
-                                          lowers_[i].z & mask));
+    throw InputError(
+        source_, fmt::format("{} overlaps the level-{} cell at {},{},{}",
+                             describeCell(i, lowers_[i], levels_[i]), level, lowers_[i].x & mask,
+                             lowers_[i].y & mask, lowers_[i].z & mask));
   }
 }
 

@@ -10,18 +10,17 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 namespace amrstream::bricks {
 
-inline constexpr int kMaxLevel = 20;         // coarsest supported level (cell width 2^20)
-inline constexpr int kMaxExtentBits = 21;    // the cells' bounding box spans < 2^21 finest cells
+inline constexpr int kMaxLevel = 20;       // coarsest supported level (cell width 2^20)
+inline constexpr int kMaxExtentBits = 21;  // the cells' bounding box spans < 2^21 finest cells
 
 // Maps cell units (finest-cell units) to the input's physical coordinates.
 struct WorldTransform {

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "amr_field.hpp"
 #include "../../shaders/glsl/shared/amr_types.h"
+#include "amr_field.hpp"
 
 namespace amrstream::bricks {
 

@@ -4,9 +4,8 @@
 // width, plus the kd-tree that produced them, used for point location.
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "../../shaders/glsl/shared/amr_types.h"
 
@@ -14,7 +13,7 @@ namespace amrstream::bricks {
 
 struct RegionSet {
   std::vector<shared::Region> regions;
-  std::vector<std::uint32_t> regionBricks;  // brick ids; see Region::brickOffset
+  std::vector<std::uint32_t> regionBricks;   // brick ids; see Region::brickOffset
   std::vector<shared::RegionTreeNode> tree;  // tree[0] is the root; its box is [lower, upper)
   glm::vec3 lower{0.0f};                     // bounds of the union of all brick domains
   glm::vec3 upper{0.0f};
