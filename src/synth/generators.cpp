@@ -1,0 +1,61 @@
+#include "generators.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "abc_field.hpp"
+#include "block_emitter.hpp"
+#include "block_refiner.hpp"
+#include "cloud_field.hpp"
+#include "rotation_field.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream::synth {
+
+namespace {
+
+// A sampler writing velx, vely, velz from a velocity function of the physical position.
+template <typename Velocity>
+BlockSampler velocitySampler(Velocity velocity) {
+  return [velocity](const BlockBox&, std::span<const glm::dvec3> centres,
+                    std::span<float* const> values) {
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+      const glm::dvec3 v = velocity(centres[i]);
+      for (int c = 0; c < 3; ++c) values[c][i] = float(v[c]);
+    }
+  };
+}
+
+bricks::AmrField build(const GeneratorOptions& options, const std::string& source,
+                       const RefinementPriority& priority, const std::vector<std::string>& channels,
+                       const BlockSampler& sampler) {
+  const std::vector<Block> leaves = refineBlocks(options, source, priority);
+  return emitCells(leaves, generatorTransform(options), channels, sampler, source);
+}
+
+}  // namespace
+
+std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud"}; }
+
+bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options) {
+  const std::string source = fmt::format("builtin:{}", kind);
+  const std::vector<std::string> velocity{"velx", "vely", "velz"};
+  if (kind == "rotation")
+    return build(options, source, RotationField::refinementPriority, velocity,
+                 velocitySampler(RotationField::velocity));
+  if (kind == "abc")
+    return build(options, source, AbcField::refinementPriority, velocity,
+                 velocitySampler(AbcField::velocity));
+  if (kind == "cloud") {
+    const CloudField cloud(options.seed);
+    return build(
+        options, source, [&](const BlockBox& box) { return cloud.refinementPriority(box); },
+        {"dens", "magx", "magy", "magz"},
+        [&](const BlockBox& box, std::span<const glm::dvec3> centres,
+            std::span<float* const> values) { cloud.sampleBlock(box, centres, values); });
+  }
+  throw InputError(source, fmt::format("unknown generator kind '{}' (kinds: {})", kind,
+                                       fmt::join(generatorKinds(), ", ")));
+}
+
+}  // namespace amrstream::synth
