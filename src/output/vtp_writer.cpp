@@ -1,0 +1,174 @@
+#include "output/vtp_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "output/atomic_file.hpp"
+#include "output/buffered_writer.hpp"
+#include "output/vtk_xml_appended.hpp"
+
+namespace amrstream::output {
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "the file declares byte_order=\"LittleEndian\" and its values are written as in "
+              "memory");
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are written as packed Float32");
+
+void checkConsistent(const std::filesystem::path& path, const flow::TraceSet& traces) {
+  const std::size_t points = std::size_t(traces.seedCount) * traces.capacity;
+  const auto fail = [&](const std::string& what) {
+    throw std::invalid_argument(
+        fmt::format("cannot write '{}': inconsistent traces: {}", path.string(), what));
+  };
+  if (traces.positions.size() != points || traces.times.size() != points ||
+      traces.vectors.size() != points) {
+    fail(fmt::format("{} seeds x {} points need {} values, have {} positions, {} times, {} vectors",
+                     traces.seedCount, traces.capacity, points, traces.positions.size(),
+                     traces.times.size(), traces.vectors.size()));
+  }
+  if (traces.pointCounts.size() != traces.seedCount || traces.reasons.size() != traces.seedCount) {
+    fail(fmt::format("{} seeds but {} point counts and {} reasons", traces.seedCount,
+                     traces.pointCounts.size(), traces.reasons.size()));
+  }
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    if (traces.pointCounts[seed] > traces.capacity) {
+      fail(fmt::format("trace {} has {} points, capacity is {}", seed, traces.pointCounts[seed],
+                       traces.capacity));
+    }
+  }
+}
+
+// Point arrays need distinct names; a traced field called like one of ours gets a suffix.
+std::string vectorArrayName(const flow::TraceSet& traces) {
+  if (traces.vectorName.empty()) return "Vectors";
+  if (traces.vectorName == "IntegrationTime" || traces.vectorName == "Speed") {
+    return traces.vectorName + "_vector";
+  }
+  return traces.vectorName;
+}
+
+// The valid prefix of every trace's stride, trace after trace.
+template <class T>
+void writeValidPoints(BufferedWriter& out, const flow::TraceSet& traces,
+                      const std::vector<T>& values) {
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    const std::span<const T> valid(values.data() + traces.at(seed, 0), traces.pointCounts[seed]);
+    out.write(std::as_bytes(valid));
+  }
+}
+
+float speed(const glm::vec3& v) {
+  const double x = v.x, y = v.y, z = v.z;
+  return static_cast<float>(std::sqrt(x * x + y * y + z * z));
+}
+
+void writeSpeeds(BufferedWriter& out, const flow::TraceSet& traces) {
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    for (std::uint32_t point = 0; point < traces.pointCounts[seed]; ++point) {
+      out.put(speed(traces.vectors[traces.at(seed, point)]));
+    }
+  }
+}
+
+void writeSeedIds(BufferedWriter& out, const flow::TraceSet& traces) {
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    out.put(static_cast<std::int32_t>(seed));
+  }
+}
+
+// Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
+// each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
+void writeConnectivity(BufferedWriter& out, std::uint64_t pointCount) {
+  for (std::uint64_t id = 0; id < pointCount; ++id) out.put(static_cast<std::int64_t>(id));
+}
+
+void writeLineEnds(BufferedWriter& out, const flow::TraceSet& traces) {
+  std::int64_t end = 0;
+  for (const std::uint32_t count : traces.pointCounts) out.put(end += count);
+}
+
+}  // namespace
+
+// An empty TraceSet (no seeds) is written as a valid file with 0 points and 0 lines whose
+// arrays are all present and empty. A trace with 0 points becomes an empty line, so cells and
+// seeds stay one to one.
+void writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces) {
+  checkConsistent(path, traces);
+  std::uint64_t pointCount = 0;
+  for (const std::uint32_t count : traces.pointCounts) pointCount += count;
+  const std::uint64_t lineCount = traces.seedCount;
+
+  using Out = BufferedWriter&;
+  const AppendedArray times{"IntegrationTime", "Float32", 1, pointCount * sizeof(float),
+                            [&](Out out) { writeValidPoints(out, traces, traces.times); }};
+  const AppendedArray speeds{"Speed", "Float32", 1, pointCount * sizeof(float),
+                             [&](Out out) { writeSpeeds(out, traces); }};
+  const AppendedArray vectors{vectorArrayName(traces), "Float32", 3, pointCount * sizeof(glm::vec3),
+                              [&](Out out) { writeValidPoints(out, traces, traces.vectors); }};
+  const AppendedArray seedIds{"SeedIds", "Int32", 1, lineCount * sizeof(std::int32_t),
+                              [&](Out out) { writeSeedIds(out, traces); }};
+  const AppendedArray reasons{
+      "ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
+      [&](Out out) { out.write(std::as_bytes(std::span(traces.reasons))); }};
+  const AppendedArray points{"Points", "Float32", 3, pointCount * sizeof(glm::vec3),
+                             [&](Out out) { writeValidPoints(out, traces, traces.positions); }};
+  const AppendedArray connectivity{"connectivity", "Int64", 1, pointCount * sizeof(std::int64_t),
+                                   [&](Out out) { writeConnectivity(out, pointCount); }};
+  const AppendedArray offsets{"offsets", "Int64", 1, lineCount * sizeof(std::int64_t),
+                              [&](Out out) { writeLineEnds(out, traces); }};
+
+  struct Section {
+    std::string open;
+    std::string_view close;
+    std::vector<const AppendedArray*> arrays;
+  };
+  const std::vector<Section> sections{
+      {fmt::format("<PointData Scalars=\"Speed\" Vectors=\"{}\">", xmlAttribute(vectors.name)),
+       "</PointData>",
+       {&times, &speeds, &vectors}},
+      {"<CellData>", "</CellData>", {&seedIds, &reasons}},
+      {"<Points>", "</Points>", {&points}},
+      {"<Lines>", "</Lines>", {&connectivity, &offsets}},
+  };
+  std::vector<const AppendedArray*> order;
+  for (const Section& section : sections) {
+    order.insert(order.end(), section.arrays.begin(), section.arrays.end());
+  }
+  const std::vector<std::uint64_t> offsetOf = appendedOffsets(order);
+
+  std::string header = fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
+      "  <PolyData>\n"
+      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
+      "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+      pointCount, lineCount);
+  std::size_t index = 0;
+  for (const Section& section : sections) {
+    header += fmt::format("      {}\n", section.open);
+    for (const AppendedArray* array : section.arrays) {
+      header += dataArrayTag(*array, offsetOf[index++], 8);
+    }
+    header += fmt::format("      {}\n", section.close);
+  }
+  header += "    </Piece>\n  </PolyData>\n";
+
+  AtomicFile file(path);
+  BufferedWriter out(file);
+  out.write(header);
+  writeAppendedData(out, order);
+  out.write("</VTKFile>\n");
+  out.flush();
+  file.commit();
+}
+
+}  // namespace amrstream::output

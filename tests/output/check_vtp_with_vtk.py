@@ -1,0 +1,165 @@
+#!/usr/bin/python3
+"""Checks that VTK itself reads a .vtp written by amrstream.
+
+Run with Debian's /usr/bin/python3 (python3-vtk9):
+
+  check_vtp_with_vtk.py FILE --points N --lines M \
+      [--point-array NAME:COMPONENTS]... [--cell-array NAME:COMPONENTS]... \
+      [--line-lengths 3,1,5,2] [--scalars NAME] [--vectors NAME] [--speed-of NAME] [--seed-ids]
+
+Fails (exit 1, one line per problem) when vtkXMLPolyDataReader reports an error or warning,
+when the counts differ, when an array is missing or has other components, and, with
+--speed-of, when the point array "Speed" is not the magnitude of that vector array, and with
+--seed-ids, when the cell array SeedIds is not 0 .. lines-1.
+"""
+
+import argparse
+import math
+import sys
+
+try:
+    import vtk
+except ImportError as error:
+    sys.exit(f"check_vtp_with_vtk: cannot import vtk ({error}); "
+             "run scripts/install_deps.sh (python3-vtk9) and use /usr/bin/python3")
+
+
+def array_spec(text):
+    name, _, components = text.rpartition(":")
+    if not name or not components.isdigit():
+        raise argparse.ArgumentTypeError(f"expected NAME:COMPONENTS, got {text!r}")
+    return name, int(components)
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("file")
+    parser.add_argument("--points", type=int, required=True)
+    parser.add_argument("--lines", type=int, required=True)
+    parser.add_argument("--point-array", type=array_spec, action="append", default=[])
+    parser.add_argument("--cell-array", type=array_spec, action="append", default=[])
+    parser.add_argument("--line-lengths", help="comma-separated point count of each line")
+    parser.add_argument("--scalars", help="expected active point scalars")
+    parser.add_argument("--vectors", help="expected active point vectors")
+    parser.add_argument("--speed-of", help="vector array whose magnitude Speed must be")
+    parser.add_argument("--seed-ids", action="store_true",
+                        help="cell array SeedIds must be 0, 1, ... lines-1")
+    return parser.parse_args()
+
+
+class Messages:
+    """Collects errors and warnings VTK reports, from observers and from its output window."""
+
+    def __init__(self):
+        self.reported = []
+        self.window = vtk.vtkStringOutputWindow()
+        vtk.vtkOutputWindow.SetInstance(self.window)
+
+    def observe(self, vtk_object):
+        for event in ("ErrorEvent", "WarningEvent"):
+            vtk_object.AddObserver(event, self._on_event)
+
+    def _on_event(self, caller, event):
+        self.reported.append(f"{event} from {caller.GetClassName()}")
+
+    def all(self):
+        text = self.window.GetOutput().strip()
+        return self.reported + ([text] if text else [])
+
+
+def check(args):
+    problems = []
+    messages = Messages()
+    reader = vtk.vtkXMLPolyDataReader()
+    messages.observe(reader)
+    if not reader.CanReadFile(args.file):
+        return [f"vtkXMLPolyDataReader cannot read {args.file}"] + messages.all()
+    reader.SetFileName(args.file)
+    reader.Update()
+    problems += [f"VTK reported: {m}" for m in messages.all()]
+    if reader.GetErrorCode() != 0:
+        problems.append(f"reader error code {reader.GetErrorCode()}")
+    output = reader.GetOutput()
+    if output is None:
+        return problems + ["reader produced no output"]
+
+    if output.GetNumberOfPoints() != args.points:
+        problems.append(f"{output.GetNumberOfPoints()} points, expected {args.points}")
+    if output.GetNumberOfLines() != args.lines:
+        problems.append(f"{output.GetNumberOfLines()} lines, expected {args.lines}")
+    if output.GetNumberOfCells() != args.lines:
+        problems.append(f"{output.GetNumberOfCells()} cells, expected {args.lines} lines only")
+
+    for label, data, specs in (("point", output.GetPointData(), args.point_array),
+                               ("cell", output.GetCellData(), args.cell_array)):
+        expected_tuples = args.points if label == "point" else args.lines
+        for name, components in specs:
+            array = data.GetArray(name)
+            if array is None:
+                problems.append(f"no {label} array {name!r}")
+                continue
+            if array.GetNumberOfComponents() != components:
+                problems.append(f"{label} array {name!r} has {array.GetNumberOfComponents()} "
+                                f"components, expected {components}")
+            if array.GetNumberOfTuples() != expected_tuples:
+                problems.append(f"{label} array {name!r} has {array.GetNumberOfTuples()} "
+                                f"tuples, expected {expected_tuples}")
+
+    point_data = output.GetPointData()
+    if args.scalars is not None:
+        active = point_data.GetScalars()
+        if active is None or active.GetName() != args.scalars:
+            problems.append(f"active scalars {active and active.GetName()!r}, "
+                            f"expected {args.scalars!r}")
+    if args.vectors is not None:
+        active = point_data.GetVectors()
+        if active is None or active.GetName() != args.vectors:
+            problems.append(f"active vectors {active and active.GetName()!r}, "
+                            f"expected {args.vectors!r}")
+
+    if args.line_lengths is not None:
+        expected = [int(n) for n in args.line_lengths.split(",") if n]
+        lines = output.GetLines()
+        ids = vtk.vtkIdList()
+        lengths = []
+        lines.InitTraversal()
+        while lines.GetNextCell(ids):
+            lengths.append(ids.GetNumberOfIds())
+        if lengths != expected:
+            problems.append(f"line lengths {lengths}, expected {expected}")
+
+    if args.speed_of is not None:
+        speed, vectors = point_data.GetArray("Speed"), point_data.GetArray(args.speed_of)
+        if speed is None or vectors is None:
+            problems.append(f"cannot compare Speed with {args.speed_of!r}: array missing")
+        else:
+            for i in range(min(speed.GetNumberOfTuples(), vectors.GetNumberOfTuples())):
+                magnitude = math.sqrt(sum(c * c for c in vectors.GetTuple3(i)))
+                if not math.isclose(speed.GetValue(i), magnitude, rel_tol=1e-6, abs_tol=1e-30):
+                    problems.append(f"Speed[{i}] = {speed.GetValue(i)}, |{args.speed_of}| = "
+                                    f"{magnitude}")
+                    break
+    if args.seed_ids:
+        seed_ids = output.GetCellData().GetArray("SeedIds")
+        values = [] if seed_ids is None else [int(seed_ids.GetValue(i))
+                                              for i in range(seed_ids.GetNumberOfTuples())]
+        if values != list(range(args.lines)):
+            problems.append(f"SeedIds {values[:20]}, expected 0 .. {args.lines - 1}")
+    return problems
+
+
+def main():
+    args = parse_arguments()
+    problems = check(args)
+    if problems:
+        for problem in problems:
+            print(f"check_vtp_with_vtk: {args.file}: {problem}", file=sys.stderr)
+        return 1
+    print(f"check_vtp_with_vtk: {args.file}: OK, VTK {vtk.vtkVersion.GetVTKVersion()} reads "
+          f"{args.points} points, {args.lines} lines and the expected arrays")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

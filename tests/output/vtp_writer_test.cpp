@@ -1,0 +1,318 @@
+#include "output/vtp_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <ostream>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "sample_traces.hpp"
+#include "vtp_test_reader.hpp"
+
+// Readable failure messages for positions and vectors.
+namespace glm {
+void PrintTo(const vec3& v, std::ostream* os) {
+  *os << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+}
+}  // namespace glm
+
+namespace amrstream::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class VtpWriter : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("amrstream-vtp-" + std::to_string(::getpid()) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Names in the output directory, so tests can see that no temporary file was left.
+  std::set<std::string> entries() const {
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      names.insert(entry.path().filename().string());
+    }
+    return names;
+  }
+
+  VtpFile writeAndRead(const flow::TraceSet& traces) {
+    const fs::path path = dir_ / "traces.vtp";
+    output::writeVtp(path, traces);
+    EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
+    return readVtp(path);
+  }
+
+  fs::path dir_;
+};
+
+std::string readText(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+
+  EXPECT_EQ(vtp.vtkFile, (XmlAttributes{{"type", "PolyData"},
+                                        {"version", "1.0"},
+                                        {"byte_order", "LittleEndian"},
+                                        {"header_type", "UInt64"}}));
+  EXPECT_EQ(vtp.piece, (XmlAttributes{{"NumberOfPoints", "11"},
+                                      {"NumberOfVerts", "0"},
+                                      {"NumberOfLines", "4"},
+                                      {"NumberOfStrips", "0"},
+                                      {"NumberOfPolys", "0"}}));
+  EXPECT_EQ(vtp.pointData, (XmlAttributes{{"Scalars", "Speed"}, {"Vectors", "velocity"}}));
+
+  struct Expected {
+    const char* section;
+    const char* name;
+    const char* type;
+    int components;
+    std::size_t bytes;
+  };
+  const Expected expected[] = {
+      {"PointData", "IntegrationTime", "Float32", 1, 11 * 4},
+      {"PointData", "Speed", "Float32", 1, 11 * 4},
+      {"PointData", "velocity", "Float32", 3, 11 * 12},
+      {"CellData", "SeedIds", "Int32", 1, 4 * 4},
+      {"CellData", "ReasonForTermination", "Int32", 1, 4 * 4},
+      {"Points", "Points", "Float32", 3, 11 * 12},
+      {"Lines", "connectivity", "Int64", 1, 11 * 8},
+      {"Lines", "offsets", "Int64", 1, 4 * 8},
+  };
+  ASSERT_EQ(vtp.arrays.size(), std::size(expected));
+  for (std::size_t i = 0; i < std::size(expected); ++i) {
+    SCOPED_TRACE(expected[i].name);
+    const VtpArray& array = vtp.arrays[i];
+    EXPECT_EQ(array.section, expected[i].section);
+    EXPECT_EQ(array.name(), expected[i].name);
+    EXPECT_EQ(array.type(), expected[i].type);
+    EXPECT_EQ(array.components(), expected[i].components);
+    EXPECT_EQ(array.bytes.size(), expected[i].bytes);
+  }
+}
+
+TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const auto points = vtp.array("Points", "Points").values<glm::vec3>();
+  const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
+  const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
+  ASSERT_EQ(points.size(), 11u);
+  ASSERT_EQ(times.size(), 11u);
+  ASSERT_EQ(vectors.size(), 11u);
+
+  std::size_t i = 0;
+  for (std::uint32_t seed = 0; seed < kSamplePointCounts.size(); ++seed) {
+    for (std::uint32_t point = 0; point < kSamplePointCounts[seed]; ++point, ++i) {
+      SCOPED_TRACE(::testing::Message() << "seed " << seed << " point " << point);
+      EXPECT_EQ(points[i], samplePosition(seed, point));
+      EXPECT_EQ(times[i], sampleTime(seed, point));
+      EXPECT_EQ(vectors[i], sampleVector(seed, point));
+    }
+  }
+}
+
+TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  EXPECT_EQ(vtp.array("Lines", "connectivity").values<std::int64_t>(),
+            (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+  // VTK XML offsets are the end of each cell's ids.
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{3, 4, 9, 11}));
+}
+
+TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const auto speeds = vtp.array("PointData", "Speed").values<float>();
+  const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
+  ASSERT_EQ(speeds.size(), vectors.size());
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const glm::dvec3 v(vectors[i]);
+    EXPECT_FLOAT_EQ(speeds[i], static_cast<float>(std::sqrt(glm::dot(v, v)))) << "point " << i;
+  }
+  EXPECT_EQ(speeds[0], 5.0f);  // (3, 4, 0)
+  EXPECT_EQ(speeds[3], 0.0f);  // trace 1, a single point with a zero vector
+}
+
+TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
+            (std::vector<std::int32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
+            (std::vector<std::int32_t>{sampleReason(0), sampleReason(1), sampleReason(2),
+                                       sampleReason(3)}));
+}
+
+TEST_F(VtpWriter, NamesTheVectorVectorsWhenTheTraceSetHasNoName) {
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, ""));
+  EXPECT_EQ(vtp.pointData.at("Vectors"), "Vectors");
+  EXPECT_EQ(vtp.array("PointData", "Vectors").components(), 3);
+}
+
+TEST_F(VtpWriter, EscapesTheVectorNameInXml) {
+  const char* name = "u<v> & \"w\"";
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, name));
+  EXPECT_EQ(vtp.pointData.at("Vectors"), name);
+  EXPECT_EQ(vtp.array("PointData", name).components(), 3);
+  EXPECT_NE(readText(dir_ / "traces.vtp").find("u&lt;v&gt; &amp; &quot;w&quot;"),
+            std::string::npos);
+}
+
+TEST_F(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
+  for (const std::string name : {"Speed", "IntegrationTime"}) {
+    const VtpFile vtp =
+        writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, name.c_str()));
+    EXPECT_EQ(vtp.pointData.at("Vectors"), name + "_vector");
+    EXPECT_EQ(vtp.array("PointData", name + "_vector").components(), 3);
+    EXPECT_EQ(vtp.array("PointData", name).components(), 1);
+  }
+}
+
+TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
+  const VtpFile vtp = writeAndRead(sampleTraces({}, kSampleCapacity));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
+  EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
+  ASSERT_EQ(vtp.arrays.size(), 8u);
+  for (const VtpArray& array : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << array.name();
+}
+
+TEST_F(VtpWriter, ATraceWithoutPointsIsAnEmptyLineSoCellsStayOnePerSeed) {
+  const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 1}, 3));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "3");
+  EXPECT_EQ(vtp.piece.at("NumberOfLines"), "3");
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{2, 2, 3}));
+  EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
+            (std::vector<std::int32_t>{0, 1, 2}));
+  EXPECT_EQ(vtp.array("Points", "Points").values<glm::vec3>()[2], samplePosition(2, 0));
+}
+
+TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
+  // 3000 traces of 1 to 100 points: ~150k points, several MiB per array group.
+  std::vector<std::uint32_t> counts;
+  for (std::uint32_t seed = 0; seed < 3000; ++seed) counts.push_back(1 + (seed * 37) % 100);
+  const VtpFile vtp = writeAndRead(sampleTraces(counts, 100));
+  const auto points = vtp.array("Points", "Points").values<glm::vec3>();
+  const auto speeds = vtp.array("PointData", "Speed").values<float>();
+  const auto connectivity = vtp.array("Lines", "connectivity").values<std::int64_t>();
+  const auto offsets = vtp.array("Lines", "offsets").values<std::int64_t>();
+  ASSERT_EQ(offsets.size(), counts.size());
+  std::size_t i = 0;
+  for (std::uint32_t seed = 0; seed < counts.size(); ++seed) {
+    for (std::uint32_t point = 0; point < counts[seed]; ++point, ++i) {
+      ASSERT_LT(i, points.size());
+      ASSERT_EQ(points[i], samplePosition(seed, point)) << "seed " << seed << " point " << point;
+      const glm::dvec3 v(sampleVector(seed, point));
+      ASSERT_FLOAT_EQ(speeds[i], static_cast<float>(std::sqrt(glm::dot(v, v))));
+      ASSERT_EQ(connectivity[i], static_cast<std::int64_t>(i));
+    }
+    ASSERT_EQ(offsets[seed], static_cast<std::int64_t>(i));
+  }
+  EXPECT_EQ(points.size(), i);
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), std::to_string(i));
+}
+
+TEST_F(VtpWriter, ReplacesAnExistingFile) {
+  const fs::path path = dir_ / "traces.vtp";
+  std::ofstream(path) << "previous run";
+  output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+  EXPECT_EQ(readVtp(path).piece.at("NumberOfLines"), "4");
+  EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
+}
+
+TEST_F(VtpWriter, CreatesTheFileWithTheUsualPermissions) {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  const fs::path path = dir_ / "traces.vtp";
+  output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+  struct stat status {};
+  ASSERT_EQ(::stat(path.c_str(), &status), 0);
+  EXPECT_EQ(status.st_mode & 0777, 0666 & ~mask);
+}
+
+void expectErrorNames(const std::runtime_error& error, const fs::path& path, int osError) {
+  const std::string what = error.what();
+  EXPECT_NE(what.find(path.string()), std::string::npos) << what;
+  EXPECT_NE(what.find(std::strerror(osError)), std::string::npos) << what;
+}
+
+TEST_F(VtpWriter, AMissingDirectoryThrowsNamingThePathAndReason) {
+  const fs::path path = dir_ / "no-such-directory" / "traces.vtp";
+  try {
+    output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& error) {
+    expectErrorNames(error, path, ENOENT);
+  }
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(VtpWriter, ATargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
+  const fs::path path = dir_ / "traces.vtp";
+  fs::create_directory(path);
+  try {
+    output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& error) {
+    expectErrorNames(error, path, EISDIR);
+  }
+  EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
+  EXPECT_TRUE(fs::is_directory(path));
+}
+
+TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
+  const fs::path path = dir_ / "traces.vtp";
+  std::ofstream(path) << "previous run";
+  // A file size limit makes write() fail part way (EFBIG), as a full disk would (ENOSPC).
+  const flow::TraceSet traces = sampleTraces(std::vector<std::uint32_t>(2000, 100), 100);
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  rlimit limited = saved;
+  limited.rlim_cur = 64 * 1024;
+  const auto savedHandler = ::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+  try {
+    output::writeVtp(path, traces);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& error) {
+    expectErrorNames(error, path, EFBIG);
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  ::signal(SIGXFSZ, savedHandler);
+  EXPECT_EQ(readText(path), "previous run");
+  EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
+}
+
+TEST_F(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
+  const fs::path path = dir_ / "traces.vtp";
+  flow::TraceSet tooLong = sampleTraces(kSamplePointCounts, kSampleCapacity);
+  tooLong.pointCounts[2] = kSampleCapacity + 1;
+  EXPECT_THROW(output::writeVtp(path, tooLong), std::invalid_argument);
+
+  flow::TraceSet missingTimes = sampleTraces(kSamplePointCounts, kSampleCapacity);
+  missingTimes.times.pop_back();
+  EXPECT_THROW(output::writeVtp(path, missingTimes), std::invalid_argument);
+
+  flow::TraceSet missingReason = sampleTraces(kSamplePointCounts, kSampleCapacity);
+  missingReason.reasons.pop_back();
+  EXPECT_THROW(output::writeVtp(path, missingReason), std::invalid_argument);
+  EXPECT_TRUE(entries().empty());
+}
+
+}  // namespace
+}  // namespace amrstream::testing
