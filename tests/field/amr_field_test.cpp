@@ -1,0 +1,150 @@
+// AmrField construction: valid layouts are accepted with the right bounds and counts; every kind
+// of inconsistency is rejected with an error naming the source and the problem.
+
+#include "bricks/amr_field.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "random_amr.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream::bricks {
+namespace {
+
+using ::testing::HasSubstr;
+
+AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                   std::vector<float> values = {}) {
+  if (values.empty()) values.assign(lowers.size(), 1.0f);
+  return AmrField(std::move(lowers), std::move(levels), {{"rho", values}}, {}, "test.exa");
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(AmrField, AcceptsTwoLevelLayoutAndReportsBoundsAndCounts) {
+  // A level-1 cell at the origin next to eight level-0 cells filling the neighbouring cell.
+  std::vector<glm::ivec3> lowers{{0, 0, 0}};
+  std::vector<std::uint8_t> levels{1};
+  for (int i = 0; i < 8; ++i) {
+    lowers.push_back(glm::ivec3(2 + (i & 1), (i >> 1) & 1, (i >> 2) & 1));
+    levels.push_back(0);
+  }
+  const AmrField field = makeField(lowers, levels);
+  EXPECT_EQ(field.cellCount(), 9u);
+  EXPECT_EQ(field.bounds().lower, glm::ivec3(0));
+  EXPECT_EQ(field.bounds().upper, glm::ivec3(4, 2, 2));
+  EXPECT_EQ(field.cellsPerLevel(), (std::vector<std::size_t>{8, 1}));
+  EXPECT_EQ(field.finestLevel(), 0);
+  EXPECT_EQ(field.coarsestLevel(), 1);
+}
+
+TEST(AmrField, AcceptsRandomLayoutsWhoseVolumesTileTheRootGrid) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    testing::RandomAmrOptions options;
+    options.origin = glm::ivec3(-16, 8, 0);
+    const AmrField field = testing::randomAmr(seed, options);
+    std::int64_t volume = 0;
+    for (std::uint8_t level : field.levels()) volume += std::int64_t(1) << (3 * level);
+    EXPECT_EQ(volume, 27 * 512) << "seed " << seed;  // 3^3 root cells of width 8
+  }
+}
+
+TEST(AmrField, RejectsDuplicateCells) {
+  EXPECT_THAT(errorOf([] {
+                makeField({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, {0, 0, 0});
+              }),
+              HasSubstr("appears twice"));
+}
+
+TEST(AmrField, RejectsFineCellInsideCoarseCell) {
+  const std::string error = errorOf([] { makeField({{4, 4, 4}, {5, 6, 7}}, {2, 0}); });
+  EXPECT_THAT(error, HasSubstr("test.exa"));
+  EXPECT_THAT(error, HasSubstr("overlaps the level-2 cell at 4,4,4"));
+}
+
+TEST(AmrField, RejectsOverlapAcrossNegativeCoordinates) {
+  EXPECT_THAT(errorOf([] {
+                makeField({{-4, -4, -4}, {-1, -3, -2}}, {2, 0});
+              }),
+              HasSubstr("overlaps the level-2 cell at -4,-4,-4"));
+}
+
+TEST(AmrField, RejectsMisalignedCell) {
+  EXPECT_THAT(
+      errorOf([] {
+        makeField({{2, 0, 0}}, {2});
+      }),
+      HasSubstr("not aligned to its level's grid (corner coordinates must be multiples of 4)"));
+}
+
+TEST(AmrField, RejectsNonFiniteValues) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_THAT(errorOf([&] {
+                makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {1.0f, nan});
+              }),
+              HasSubstr("channel 'rho' has a non-finite value (nan) at cell 1"));
+  EXPECT_THAT(errorOf([&] {
+                makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {inf, 1.0f});
+              }),
+              HasSubstr("non-finite value (inf) at cell 0"));
+}
+
+TEST(AmrField, RejectsChannelSizeMismatchAndBadNames) {
+  EXPECT_THAT(errorOf([] {
+                makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {1.0f});
+              }),
+              HasSubstr("channel 'rho' has 1 values for 2 cells"));
+  EXPECT_THAT(errorOf([] {
+                AmrField({{0, 0, 0}}, {0}, {{"a", {1.0f}}, {"a", {2.0f}}}, {}, "x");
+              }),
+              HasSubstr("channel 'a' appears twice"));
+  EXPECT_THAT(errorOf([] {
+                AmrField({{0, 0, 0}}, {0}, {{"", {1.0f}}}, {}, "x");
+              }),
+              HasSubstr("empty name"));
+}
+
+TEST(AmrField, RejectsEmptyAndMismatchedCellArrays) {
+  EXPECT_THAT(errorOf([] { makeField({}, {}); }), HasSubstr("no cells"));
+  EXPECT_THAT(errorOf([] {
+                AmrField({{0, 0, 0}}, {0, 0}, {}, {}, "x");
+              }),
+              HasSubstr("1 cell corners but 2 cell levels"));
+}
+
+TEST(AmrField, RejectsExtentBeyondSupportedRange) {
+  EXPECT_THAT(errorOf([] {
+                makeField({{0, 0, 0}, {1 << kMaxExtentBits, 0, 0}}, {0, 0});
+              }),
+              HasSubstr("per axis are supported"));
+}
+
+TEST(AmrField, ChannelLookupListsAvailableChannels) {
+  const AmrField field = makeField({{0, 0, 0}}, {0});
+  EXPECT_EQ(&field.channel("rho"), &field.channels()[0]);
+  EXPECT_FALSE(field.findChannel("velx").has_value());
+  EXPECT_THAT(errorOf([&] { field.channel("velx"); }),
+              HasSubstr("no channel named 'velx' (channels: rho)"));
+}
+
+TEST(WorldTransform, RoundTripsBetweenCellUnitsAndPhysical) {
+  WorldTransform t{{1.0, -2.0, 0.5}, {0.25, 0.5, 2.0}};
+  const glm::dvec3 cell(3.0, 4.0, 5.0);
+  EXPECT_EQ(t.toPhysical(cell), glm::dvec3(1.75, 0.0, 10.5));
+  EXPECT_EQ(t.toCellUnits(t.toPhysical(cell)), cell);
+}
+
+}  // namespace
+}  // namespace amrstream::bricks
