@@ -3,20 +3,19 @@
 // point per step), stored seed-major with a fixed stride, plus per-trace counts and reasons.
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace amrstream::flow {
 
 struct TraceSet {
   std::uint32_t seedCount = 0;
-  std::uint32_t capacity = 0;        // points per trace: max steps + 1
-  std::string vectorName;            // name of the traced vector, e.g. "velocity" or "velx,vely,velz"
-  std::vector<glm::vec3> positions;  // physical coordinates, [seed * capacity + point]
-  std::vector<float> times;          // IntegrationTime at each point
-  std::vector<glm::vec3> vectors;    // sampled vector at each point
+  std::uint32_t capacity = 0;  // points per trace: max steps + 1
+  std::string vectorName;      // name of the traced vector, e.g. "velocity" or "velx,vely,velz"
+  std::vector<glm::vec3> positions;        // physical coordinates, [seed * capacity + point]
+  std::vector<float> times;                // IntegrationTime at each point
+  std::vector<glm::vec3> vectors;          // sampled vector at each point
   std::vector<std::uint32_t> pointCounts;  // valid points of each trace, >= 1
   std::vector<std::int32_t> reasons;       // ReasonForTermination of each trace (trace_codes.h)
 

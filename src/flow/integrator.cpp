@@ -1,0 +1,122 @@
+#include "integrator.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+
+#include "sampler.hpp"
+
+namespace amrstream::flow {
+
+namespace {
+
+// Positions are integrated in finest-cell units; velocities and cell widths are physical. For a
+// sample s, direction() is the RK4 stage vector in cell units and parameterStep() the advance of
+// IntegrationTime (physical time, or physical arc length in arc mode).
+struct StepRule {
+  StepMode mode;
+  float h;
+  glm::vec3 cellsPerPhysical;  // 1 / spacing
+  float physicalCellWidth;     // physical width of a finest cell: the smallest spacing
+
+  float parameterStep(const VectorSample& s) const {
+    return mode == StepMode::Time ? h : h * s.cellWidth * physicalCellWidth;
+  }
+  glm::vec3 direction(const VectorSample& s) const {
+    glm::vec3 v = s.value;
+    if (mode == StepMode::Arc) {
+      const float speed = glm::length(v);
+      v = speed > 0.0f ? v / speed : glm::vec3(0.0f);
+    }
+    return parameterStep(s) * v * cellsPerPhysical;
+  }
+};
+
+// The reason a stage sample ends the trace, or AMRSTREAM_REASON_RUNNING.
+int sampleFailure(const VectorSample& s) {
+  if (!s.located) return AMRSTREAM_REASON_OUT_OF_DOMAIN;
+  if (!s.valid) return AMRSTREAM_REASON_UNEXPECTED_VALUE;
+  return AMRSTREAM_REASON_RUNNING;
+}
+
+void traceOne(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
+              const TraceOptions& options, TraceSet& out, std::uint32_t seedIndex) {
+  const glm::dvec3 origin = volume.transform.origin, spacing = volume.transform.spacing;
+  glm::vec3 x = seed;
+  VectorSample s = sampleVector(volume, x);
+  float time = 0.0f, length = 0.0f;
+  std::uint32_t points = 0;
+  const auto append = [&](glm::vec3 position, const VectorSample& sample) {
+    const std::size_t at = out.at(seedIndex, points++);
+    out.positions[at] = glm::vec3(origin + spacing * glm::dvec3(position));
+    out.times[at] = time;
+    out.vectors[at] = sample.value;
+  };
+  append(x, s);
+
+  int reason = sampleFailure(s);
+  for (std::uint32_t step = 0; reason == AMRSTREAM_REASON_RUNNING; ++step) {
+    if (glm::length(s.value) < options.terminalSpeed) {
+      reason = AMRSTREAM_REASON_STAGNATION;
+      break;
+    }
+    if (step == options.maxSteps) {
+      reason = AMRSTREAM_REASON_MAX_STEPS;
+      break;
+    }
+    const glm::vec3 k1 = rule.direction(s);
+    const VectorSample s2 = sampleVector(volume, x + 0.5f * k1);
+    if ((reason = sampleFailure(s2))) break;
+    const glm::vec3 k2 = rule.direction(s2);
+    const VectorSample s3 = sampleVector(volume, x + 0.5f * k2);
+    if ((reason = sampleFailure(s3))) break;
+    const glm::vec3 k3 = rule.direction(s3);
+    const VectorSample s4 = sampleVector(volume, x + k3);
+    if ((reason = sampleFailure(s4))) break;
+    const glm::vec3 k4 = rule.direction(s4);
+    const glm::vec3 next = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
+    const VectorSample sNext = sampleVector(volume, next);
+    if ((reason = sampleFailure(sNext))) break;
+
+    if (options.maxLength > 0.0f) {
+      const float stepLength = float(glm::length(spacing * glm::dvec3(next - x)));
+      if (length + stepLength > options.maxLength) {
+        reason = AMRSTREAM_REASON_MAX_LENGTH;
+        break;
+      }
+      length += stepLength;
+    }
+    time += rule.parameterStep(s);
+    x = next;
+    s = sNext;
+    append(x, s);
+  }
+  out.pointCounts[seedIndex] = points;
+  out.reasons[seedIndex] = reason;
+}
+
+}  // namespace
+
+TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                          const TraceOptions& options,
+                          const std::function<void(std::size_t)>& progress) {
+  const glm::dvec3 spacing = volume.transform.spacing;
+  const StepRule rule{options.stepMode, options.stepSize, glm::vec3(1.0 / spacing),
+                      float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)))};
+  TraceSet out;
+  out.resize(static_cast<std::uint32_t>(seeds.size()), options.maxSteps + 1);
+  out.vectorName = volume.vectorName;
+
+  std::atomic<std::size_t> finished{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 16), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const glm::vec3 seed(volume.transform.toCellUnits(seeds[i]));
+      traceOne(volume, seed, rule, options, out, static_cast<std::uint32_t>(i));
+    }
+    const std::size_t done = finished += range.size();
+    if (progress) progress(done);
+  });
+  return out;
+}
+
+}  // namespace amrstream::flow

@@ -1,0 +1,54 @@
+#include "sampler.hpp"
+
+#include <cmath>
+
+namespace amrstream::flow {
+
+std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p) {
+  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  if (glm::any(glm::lessThan(p, lower)) || glm::any(glm::greaterThanEqual(p, upper))) return -1;
+  return volume.regions.locate(p);
+}
+
+VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p) {
+  VectorSample sample;
+  const std::int32_t regionId = locateRegion(volume, p);
+  if (regionId < 0) return sample;
+  const shared::Region& region = volume.regions.regions[regionId];
+  sample.located = true;
+  sample.cellWidth = region.finestCellWidth;
+
+  // Only the 2x2x2 cells of each brick around p have a non-zero tent weight
+  // H_i(p) = prod_d max(0, 1 - |c_i,d - p_d| / w_i); the weights are computed once per brick
+  // and applied to all three components.
+  float weightSum = 0.0f;
+  glm::vec3 weighted(0.0f);
+  for (std::uint32_t k = 0; k < region.brickCount; ++k) {
+    const shared::Brick& brick = volume.bricks[volume.regions.regionBricks[region.brickOffset + k]];
+    const float width = float(1 << brick.level);
+    const glm::vec3 local = (p - glm::vec3(brick.lower)) / width - 0.5f;
+    const glm::vec3 base = glm::floor(local);
+    const glm::vec3 frac = local - base;
+    const glm::ivec3 lo(base);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::ivec3 offset(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      const glm::ivec3 cell = lo + offset;
+      if (glm::any(glm::lessThan(cell, glm::ivec3(0))) ||
+          glm::any(glm::greaterThanEqual(cell, brick.size)))
+        continue;
+      const glm::vec3 axisWeight = glm::mix(1.0f - frac, frac, glm::vec3(offset));
+      const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+      const std::uint32_t slot =
+          brick.valueOffset +
+          std::uint32_t(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
+      weightSum += weight;
+      weighted += weight * volume.values[slot];
+    }
+  }
+  if (!(weightSum > kMinWeightSum)) return sample;
+  sample.value = weighted / weightSum;
+  sample.valid = !glm::any(glm::isnan(sample.value)) && !glm::any(glm::isinf(sample.value));
+  return sample;
+}
+
+}  // namespace amrstream::flow

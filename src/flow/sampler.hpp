@@ -1,0 +1,27 @@
+#pragma once
+// Point location and basis-function reconstruction (DESIGN.md section 5): the CPU reference of
+// the GLSL functions of the same names.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "vector_volume.hpp"
+
+namespace amrstream::flow {
+
+// A sample whose weights sum to no more than this is invalid.
+inline constexpr float kMinWeightSum = 1e-20f;
+
+struct VectorSample {
+  bool located = false;  // p is inside the domain and in a region
+  bool valid = false;    // located and the weights sum above kMinWeightSum
+  glm::vec3 value{0.0f};
+  float cellWidth = 0.0f;  // finest cell width of p's region, in finest-cell units
+};
+
+// Region containing p (finest-cell units), or -1 outside the domain or in empty space.
+std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p);
+
+VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p);
+
+}  // namespace amrstream::flow

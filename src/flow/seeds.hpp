@@ -1,0 +1,35 @@
+#pragma once
+// Seed points in the input's physical coordinates, where they came from, and their checks.
+
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "vector_volume.hpp"
+
+namespace amrstream::flow {
+
+struct SeedList {
+  std::vector<glm::dvec3> points;
+  std::vector<std::string> origins;  // per point, for errors: "seeds.txt:12", "--seed-box #3"
+};
+
+// One "x y z" per line, separated by spaces, tabs or commas; '#' starts a comment; blank lines
+// are skipped. Throws InputError naming the file and line of anything else.
+SeedList readSeedFile(const std::filesystem::path& path);
+
+// `count` points uniformly distributed in [lower, upper), reproducible for a given `seed`.
+SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,
+                          std::uint64_t seed);
+
+// Physical bounds of the volume's domain.
+glm::dvec3 domainLower(const VectorVolume& volume);
+glm::dvec3 domainUpper(const VectorVolume& volume);
+
+// Throws InputError naming the first seed outside the domain (outside the cells' bounding box or
+// in empty space between them), with its origin and the domain bounds.
+void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds);
+
+}  // namespace amrstream::flow

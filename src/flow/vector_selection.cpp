@@ -1,0 +1,90 @@
+#include "vector_selection.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::flow {
+
+namespace {
+
+// Velocity first, then magnetic field; names as the simulation codes write them.
+const std::array<std::array<const char*, 3>, 10> kKnownTriplets{{
+    {"velx", "vely", "velz"},
+    {"x-velocity", "y-velocity", "z-velocity"},
+    {"x_velocity", "y_velocity", "z_velocity"},
+    {"vx", "vy", "vz"},
+    {"U", "V", "W"},
+    {"u", "v", "w"},
+    {"magx", "magy", "magz"},
+    {"Bx", "By", "Bz"},
+    {"bx", "by", "bz"},
+    {"x-magnetic", "y-magnetic", "z-magnetic"},
+}};
+
+std::string trimSeparators(std::string s) {
+  while (!s.empty() && (s.front() == '_' || s.front() == '-')) s.erase(s.begin());
+  while (!s.empty() && (s.back() == '_' || s.back() == '-')) s.pop_back();
+  return s;
+}
+
+// "velx,vely,velz" -> "vel"; "x-velocity,y-velocity,z-velocity" -> "velocity"; otherwise the
+// names joined with '_'.
+std::string vectorName(const std::array<std::string, 3>& c) {
+  const std::size_t shortest = std::min({c[0].size(), c[1].size(), c[2].size()});
+  std::size_t prefix = 0, suffix = 0;
+  while (prefix < shortest && c[0][prefix] == c[1][prefix] && c[0][prefix] == c[2][prefix])
+    ++prefix;
+  const auto back = [&](int i, std::size_t k) { return c[i][c[i].size() - 1 - k]; };
+  while (suffix < shortest && back(0, suffix) == back(1, suffix) &&
+         back(0, suffix) == back(2, suffix))
+    ++suffix;
+  if (std::string name = trimSeparators(c[0].substr(0, prefix)); !name.empty()) return name;
+  if (std::string name = trimSeparators(c[0].substr(c[0].size() - suffix)); !name.empty())
+    return name;
+  return c[0] + "_" + c[1] + "_" + c[2];
+}
+
+std::string channelList(const bricks::AmrField& field) {
+  std::string names;
+  for (const bricks::Channel& c : field.channels()) names += (names.empty() ? "" : ", ") + c.name;
+  return names.empty() ? "none" : names;
+}
+
+}  // namespace
+
+VectorChannels chooseVectorChannels(const bricks::AmrField& field, const std::string& request) {
+  VectorChannels result;
+  if (request.empty()) {
+    for (const auto& triplet : kKnownTriplets) {
+      if (field.findChannel(triplet[0]) && field.findChannel(triplet[1]) &&
+          field.findChannel(triplet[2])) {
+        result.channels = {triplet[0], triplet[1], triplet[2]};
+        result.name = vectorName(result.channels);
+        return result;
+      }
+    }
+    throw InputError(field.source(),
+                     fmt::format("no velocity or magnetic field channels found; choose three with "
+                                 "--vector a,b,c (channels: {})",
+                                 channelList(field)));
+  }
+
+  std::vector<std::string> names;
+  std::istringstream parts(request);
+  for (std::string part; std::getline(parts, part, ',');) names.push_back(part);
+  if (names.size() != 3 || request.back() == ',')
+    throw InputError(field.source(), fmt::format("--vector '{}' must name exactly three channels "
+                                                 "separated by commas",
+                                                 request));
+  std::copy(names.begin(), names.end(), result.channels.begin());
+  for (const std::string& name : result.channels) field.channel(name);  // throws if missing
+  result.name = vectorName(result.channels);
+  return result;
+}
+
+}  // namespace amrstream::flow

@@ -1,0 +1,118 @@
+// Seed files, random seed boxes, the domain check and the choice of vector channels.
+
+#include "flow/seeds.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "flow/vector_selection.hpp"
+#include "flow_test_support.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream::flow {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+fs::path writeSeeds(const std::string& name, const std::string& text) {
+  const fs::path path = fs::temp_directory_path() / ("amrstream-seeds-" + name + ".txt");
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SeedFile, ReadsSpacesCommasTabsCommentsAndBlankLines) {
+  const fs::path path = writeSeeds("good", "# seeds\n1 2 3\n\n4.5,5,6e-1 # trailing\n\t7\t8 9\r\n");
+  const SeedList seeds = readSeedFile(path);
+  ASSERT_EQ(seeds.points.size(), 3u);
+  EXPECT_EQ(seeds.points[0], glm::dvec3(1, 2, 3));
+  EXPECT_EQ(seeds.points[1], glm::dvec3(4.5, 5, 0.6));
+  EXPECT_EQ(seeds.points[2], glm::dvec3(7, 8, 9));
+  EXPECT_EQ(seeds.origins[1], path.string() + ":4");
+}
+
+TEST(SeedFile, RejectsMalformedLinesNamingTheLine) {
+  const fs::path path = writeSeeds("bad", "1 2 3\n1 2\n");
+  EXPECT_THAT(errorOf([&] { readSeedFile(path); }),
+              HasSubstr(path.string() + ":2: expected three numbers"));
+  const fs::path extra = writeSeeds("extra", "1 2 3 4\n");
+  EXPECT_THAT(errorOf([&] { readSeedFile(extra); }), HasSubstr(":1: unexpected text"));
+  const fs::path nan = writeSeeds("nan", "1 nan 3\n");
+  EXPECT_THAT(errorOf([&] { readSeedFile(nan); }), HasSubstr(":1: the seed has a non-finite"));
+  const fs::path empty = writeSeeds("empty", "# nothing\n");
+  EXPECT_THAT(errorOf([&] { readSeedFile(empty); }), HasSubstr("holds no seeds"));
+  EXPECT_THAT(errorOf([&] { readSeedFile("/nonexistent/seeds.txt"); }),
+              HasSubstr("/nonexistent/seeds.txt: cannot open"));
+}
+
+TEST(SeedBox, IsReproducibleAndInsideTheBox) {
+  const SeedList a = randomSeedsInBox({1, 2, 3}, {2, 4, 6}, 1000, 7);
+  const SeedList b = randomSeedsInBox({1, 2, 3}, {2, 4, 6}, 1000, 7);
+  const SeedList c = randomSeedsInBox({1, 2, 3}, {2, 4, 6}, 1000, 8);
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_NE(a.points, c.points);
+  for (const glm::dvec3& p : a.points) {
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, glm::dvec3(1, 2, 3))));
+    EXPECT_TRUE(glm::all(glm::lessThan(p, glm::dvec3(2, 4, 6))));
+  }
+}
+
+TEST(SeedCheck, NamesTheFirstSeedOutsideTheDomain) {
+  const VectorVolume volume =
+      testing::volumeOf(testing::uniformGrid(8, [](auto) { return glm::vec3(1.0f); }));
+  const fs::path path = writeSeeds("outside", "1 1 1\n7.9 0 0\n8 1 1\n-0.1 1 1\n");
+  const SeedList seeds = readSeedFile(path);
+  EXPECT_THAT(errorOf([&] { checkSeedsInDomain(volume, seeds); }),
+              HasSubstr(path.string() + ":3: seed (8, 1, 1) is outside the domain [0, 8) x"));
+  SeedList inside;
+  inside.points = {{0, 0, 0}, {7.99, 7.99, 7.99}};
+  inside.origins = {"a", "b"};
+  EXPECT_NO_THROW(checkSeedsInDomain(volume, inside));
+}
+
+TEST(VectorSelection, PrefersVelocityThenMagneticFieldAndNamesTheVector) {
+  const auto field = [](std::vector<std::string> names) {
+    std::vector<bricks::Channel> channels;
+    for (auto& n : names) channels.push_back({n, {0.0f}});
+    return bricks::AmrField({{0, 0, 0}}, {0}, channels, {}, "f");
+  };
+  const VectorChannels both =
+      chooseVectorChannels(field({"dens", "magx", "magy", "magz", "velx", "vely", "velz"}), "");
+  EXPECT_EQ(both.channels, (std::array<std::string, 3>{"velx", "vely", "velz"}));
+  EXPECT_EQ(both.name, "vel");
+  EXPECT_EQ(chooseVectorChannels(field({"dens", "magx", "magy", "magz"}), "").name, "mag");
+  EXPECT_EQ(chooseVectorChannels(field({"x-velocity", "y-velocity", "z-velocity"}), "").name,
+            "velocity");
+  EXPECT_EQ(chooseVectorChannels(field({"U", "V", "W"}), "").name, "U_V_W");
+  EXPECT_EQ(chooseVectorChannels(field({"a", "b", "c"}), "c,b,a").channels,
+            (std::array<std::string, 3>{"c", "b", "a"}));
+  EXPECT_THAT(errorOf([&] {
+                chooseVectorChannels(field({"a", "b"}), "");
+              }),
+              HasSubstr("choose three with --vector a,b,c (channels: a, b)"));
+  EXPECT_THAT(errorOf([&] {
+                chooseVectorChannels(field({"a", "b", "c"}), "a,b,d");
+              }),
+              HasSubstr("no channel named 'd'"));
+  for (const char* bad : {"a,b", "a,b,c,a", "a,b,c,"})
+    EXPECT_THAT(errorOf([&] {
+                  chooseVectorChannels(field({"a", "b", "c"}), bad);
+                }),
+                HasSubstr("exactly three channels"))
+        << bad;
+}
+
+}  // namespace
+}  // namespace amrstream::flow
