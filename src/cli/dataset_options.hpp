@@ -1,0 +1,25 @@
+#pragma once
+// Options shared by the commands that open a dataset: the input and the sizes of builtin data.
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "synth/generators.hpp"
+
+namespace amrstream::cli {
+
+struct DatasetOptions {
+  std::string input;
+  synth::GeneratorOptions generator;
+};
+
+// Adds the positional INPUT and the --levels, --root-blocks, --target-cells and `seedFlag`
+// options of builtin datasets.
+void addDatasetOptions(CLI::App& command, DatasetOptions& options, const std::string& seedFlag);
+void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
+                         const std::string& seedFlag);
+
+// "1234567" -> "1,234,567".
+std::string withCommas(std::size_t n);
+
+}  // namespace amrstream::cli

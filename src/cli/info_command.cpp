@@ -1,0 +1,77 @@
+#include "info_command.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "bricks/brick_builder.hpp"
+#include "bricks/region_builder.hpp"
+#include "dataset_options.hpp"
+#include "formats/load_input.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+void runInfo(const DatasetOptions& options) {
+  Stopwatch clock;
+  const bricks::AmrField field = formats::loadInput(options.input, options.generator);
+  fmt::print("input      {} [{:.2f} s]\n", field.source(), clock.seconds());
+  fmt::print("cells      {}\n", withCommas(field.cellCount()));
+
+  const std::vector<std::size_t> perLevel = field.cellsPerLevel();
+  fmt::print("levels     {} used (level 0 = finest, a level-L cell is 2^L finest cells wide)\n",
+             std::count_if(perLevel.begin(), perLevel.end(), [](std::size_t n) { return n > 0; }));
+  for (std::size_t level = 0; level < perLevel.size(); ++level)
+    if (perLevel[level] > 0)
+      fmt::print("  level {:<2}  {:>14} cells  width {}\n", level, withCommas(perLevel[level]),
+                 1 << level);
+
+  const bricks::CellBox box = field.bounds();
+  const bricks::WorldTransform& t = field.transform();
+  const glm::dvec3 lo = t.toPhysical(glm::dvec3(box.lower)),
+                   hi = t.toPhysical(glm::dvec3(box.upper));
+  fmt::print("bounds     cells [{},{},{}] .. [{},{},{}] (finest-cell units)\n", box.lower.x,
+             box.lower.y, box.lower.z, box.upper.x, box.upper.y, box.upper.z);
+  fmt::print("           physical [{:g}, {:g}] x [{:g}, {:g}] x [{:g}, {:g}]\n", lo.x, hi.x, lo.y,
+             hi.y, lo.z, hi.z);
+  fmt::print("channels   {}\n", field.channels().size());
+  for (const bricks::Channel& c : field.channels()) {
+    const auto [min, max] = std::minmax_element(c.values.begin(), c.values.end());
+    fmt::print("  {:<16} [{:g}, {:g}]\n", c.name, *min, *max);
+  }
+
+  clock.restart();
+  const bricks::BrickSet bricks = bricks::buildBricks(field);
+  const double brickSeconds = clock.seconds();
+  std::size_t maxCells = 0;
+  for (const shared::Brick& b : bricks.bricks)
+    maxCells = std::max<std::size_t>(maxCells, std::size_t(b.size.x) * b.size.y * b.size.z);
+  fmt::print("bricks     {} (avg {:.1f} cells, max {}) built in {:.3f} s\n",
+             withCommas(bricks.bricks.size()),
+             double(field.cellCount()) / double(bricks.bricks.size()), maxCells, brickSeconds);
+
+  clock.restart();
+  const bricks::RegionSet regions = bricks::buildRegions(bricks.bricks);
+  const double regionSeconds = clock.seconds();
+  std::uint32_t maxBricks = 0;
+  for (const shared::Region& r : regions.regions) maxBricks = std::max(maxBricks, r.brickCount);
+  fmt::print("regions    {} (avg {:.2f} bricks, max {}; {} tree nodes) built in {:.3f} s\n",
+             withCommas(regions.regions.size()),
+             double(regions.regionBricks.size()) /
+                 double(std::max<std::size_t>(1, regions.regions.size())),
+             maxBricks, withCommas(regions.tree.size()), regionSeconds);
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app) {
+  auto options = std::make_shared<DatasetOptions>();
+  CLI::App* command = app.add_subcommand("info", "describe a dataset and its bricks and regions");
+  addDatasetOptions(*command, *options, "--gen-seed");
+  command->callback([options] { runInfo(*options); });
+}
+
+}  // namespace amrstream::cli

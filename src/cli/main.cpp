@@ -1,0 +1,31 @@
+// amrstream: streamlines through AMR vector fields.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "gen_command.hpp"
+#include "info_command.hpp"
+#include "trace_command.hpp"
+#include "util/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app("amrstream: streamlines through adaptive-mesh-refinement vector fields");
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "amrstream 0.1.0");
+  amrstream::cli::addTraceCommand(app);
+  amrstream::cli::addInfoCommand(app);
+  amrstream::cli::addGenCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const amrstream::InputError& e) {
+    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

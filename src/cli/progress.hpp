@@ -1,0 +1,30 @@
+#pragma once
+// Progress of long work on stderr: "tracing  45% (460 of 1024)". Silent for work that ends within
+// a second; rewrites one line on a terminal, prints every 10% otherwise. Thread-safe.
+
+#include <cstddef>
+#include <mutex>
+#include <string>
+
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+class Progress {
+ public:
+  Progress(std::string label, std::size_t total);
+  ~Progress();
+  void update(std::size_t done);
+
+ private:
+  std::string label_;
+  std::size_t total_;
+  Stopwatch clock_;
+  std::mutex mutex_;
+  double lastPrint_ = 0.0;
+  int lastDecile_ = 0;
+  bool printed_ = false;
+  bool terminal_;
+};
+
+}  // namespace amrstream::cli

@@ -1,0 +1,216 @@
+#include "trace_command.hpp"
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+#include <unistd.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "../../shaders/glsl/shared/trace_codes.h"
+#include "dataset_options.hpp"
+#include "flow/integrator.hpp"
+#include "flow/seeds.hpp"
+#include "formats/load_input.hpp"
+#include "output/vtp_writer.hpp"
+#include "progress.hpp"
+#include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+struct TraceCommandOptions {
+  DatasetOptions dataset;
+  std::string vector;
+  std::string seedsFile;
+  std::vector<double> seedBox;
+  std::size_t count = 256;
+  std::uint64_t seed = 1;
+  std::uint32_t steps = 1000;
+  std::optional<float> stepSize;
+  std::string stepMode = "cell";
+  float terminalSpeed = 1e-12f;
+  float maxLength = 0.0f;
+  std::string backend = "cpu";
+  std::string out = "traces.vtp";
+};
+
+const char* reasonName(int reason) {
+  switch (reason) {
+    case AMRSTREAM_REASON_OUT_OF_DOMAIN:
+      return "out of domain";
+    case AMRSTREAM_REASON_UNEXPECTED_VALUE:
+      return "invalid sample";
+    case AMRSTREAM_REASON_MAX_LENGTH:
+      return "max length";
+    case AMRSTREAM_REASON_MAX_STEPS:
+      return "max steps";
+    case AMRSTREAM_REASON_STAGNATION:
+      return "stagnation";
+    default:
+      return "unknown";
+  }
+}
+
+flow::SeedList chooseSeeds(const TraceCommandOptions& o, const flow::VectorVolume& volume) {
+  if (!o.seedsFile.empty()) return flow::readSeedFile(o.seedsFile);
+  const glm::dvec3 domainLo = flow::domainLower(volume), domainHi = flow::domainUpper(volume);
+  glm::dvec3 lo = domainLo, hi = domainHi;
+  if (!o.seedBox.empty()) {
+    lo = glm::dvec3(o.seedBox[0], o.seedBox[1], o.seedBox[2]);
+    hi = glm::dvec3(o.seedBox[3], o.seedBox[4], o.seedBox[5]);
+    if (glm::any(glm::greaterThan(lo, hi)))
+      throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
+    if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
+      throw InputError(
+          "--seed-box",
+          fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
+                      "{:g}) x [{:g}, {:g})",
+                      domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
+  }
+  // Keep random seeds off the domain's open upper faces, where rounding to float could put them.
+  hi = glm::min(hi, domainHi - 1e-4 * volume.transform.spacing);
+  return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
+}
+
+// The traces keep every point (position, time, vector: 28 bytes); refuse runs that cannot fit.
+void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t steps) {
+  const double bytes =
+      double(seeds) * (double(steps) + 1.0) * (2 * sizeof(glm::vec3) + sizeof(float));
+  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (bytes > 0.75 * memory)
+    throw InputError("--count/--steps",
+                     fmt::format("{} seeds x {} points need {:.1f} GiB for the traces, more than "
+                                 "3/4 of this machine's {:.1f} GiB; lower --count or --steps",
+                                 seeds, std::size_t(steps) + 1, bytes / 0x1p30, memory / 0x1p30));
+}
+
+float defaultTimeStep(const flow::VectorVolume& volume) {
+  float maxSpeed = 0.0f;
+  for (const glm::vec3& v : volume.values) maxSpeed = std::max(maxSpeed, glm::length(v));
+  const glm::dvec3 s = volume.transform.spacing;
+  const double finest = std::min(s.x, std::min(s.y, s.z));
+  return maxSpeed > 0.0f ? float(0.25 * finest / maxSpeed) : 1.0f;
+}
+
+void runTrace(const TraceCommandOptions& o) {
+  Stopwatch clock;
+  const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
+  const double loadSeconds = clock.seconds();
+  const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
+  fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}) [{:.2f} s]\n",
+             field.source(), withCommas(field.cellCount()), field.finestLevel(),
+             field.coarsestLevel(), vector.name, vector.channels[0], vector.channels[1],
+             vector.channels[2], loadSeconds);
+
+  flow::VolumeBuildTimes times;
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, {}, &times);
+  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s]\n",
+             withCommas(volume.bricks.size()), times.bricks,
+             withCommas(volume.regions.regions.size()), times.regions);
+
+  const flow::SeedList seeds = chooseSeeds(o, volume);
+  flow::checkSeedsInDomain(volume, seeds);
+  checkHistoryFitsInMemory(seeds.points.size(), o.steps);
+
+  flow::TraceOptions options;
+  options.stepMode = o.stepMode == "time"  ? flow::StepMode::Time
+                     : o.stepMode == "arc" ? flow::StepMode::Arc
+                                           : flow::StepMode::Cell;
+  options.stepSize = o.stepSize.value_or(
+      options.stepMode == flow::StepMode::Time ? defaultTimeStep(volume) : options.stepSize);
+  if (!(options.stepSize > 0.0f)) throw InputError("--step-size", "the step size must be positive");
+  options.maxSteps = o.steps;
+  options.terminalSpeed = o.terminalSpeed;
+  options.maxLength = o.maxLength;
+  fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()),
+             o.seedsFile.empty() ? fmt::format("random (seed {}) in a box", o.seed) : o.seedsFile);
+  fmt::print("tracing    backend cpu ({} threads), step mode {}, h = {:g}, at most {} steps\n",
+             tbb::info::default_concurrency(), o.stepMode, options.stepSize, o.steps);
+
+  clock.restart();
+  flow::TraceSet traces;
+  {
+    Progress progress("tracing", seeds.points.size());
+    traces = flow::traceStreamlines(volume, seeds.points, options,
+                                    [&](std::size_t done) { progress.update(done); });
+  }
+  const double traceSeconds = clock.seconds();
+
+  std::size_t steps = 0;
+  std::map<int, std::size_t> reasons;
+  for (std::uint32_t i = 0; i < traces.seedCount; ++i) {
+    steps += traces.pointCounts[i] - 1;
+    ++reasons[traces.reasons[i]];
+  }
+  std::string histogram;
+  for (const auto& [reason, count] : reasons)
+    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
+                             reason, withCommas(count));
+  fmt::print("steps      {} taken, {:.1f} per trace\n", withCommas(steps),
+             double(steps) / double(std::max<std::uint32_t>(1, traces.seedCount)));
+  fmt::print("reasons    {}\n", histogram);
+  fmt::print("time       {:.3f} s, {:.3g} particle-steps/s\n", traceSeconds,
+             double(steps) / std::max(traceSeconds, 1e-9));
+
+  clock.restart();
+  output::writeVtp(o.out, traces);
+  fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
+             withCommas(traces.seedCount), withCommas(steps + traces.seedCount), clock.seconds());
+}
+
+}  // namespace
+
+void addTraceCommand(CLI::App& app) {
+  auto options = std::make_shared<TraceCommandOptions>();
+  CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
+  addDatasetOptions(*command, options->dataset, "--gen-seed");
+  command->add_option("--vector", options->vector,
+                      "three channels forming the vector, e.g. velx,vely,velz "
+                      "(default: the velocity, else the magnetic field)");
+  auto* seedsFile =
+      command
+          ->add_option("--seeds", options->seedsFile, "file of seed points, one 'x y z' per line")
+          ->check(CLI::ExistingFile);
+  command
+      ->add_option("--seed-box", options->seedBox,
+                   "random seeds in this box: x0,y0,z0,x1,y1,z1 (default: the domain)")
+      ->delimiter(',')
+      ->expected(6)
+      ->excludes(seedsFile);
+  command->add_option("--count", options->count, "number of random seeds")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->excludes(seedsFile);
+  command->add_option("--seed", options->seed, "random seed for the seed points")
+      ->capture_default_str()
+      ->excludes(seedsFile);
+  command->add_option("--steps", options->steps, "maximum integration steps per trace")
+      ->capture_default_str();
+  command->add_option("--step-size", options->stepSize,
+                      "h: in cell widths (cell, arc) or physical time (time; default 1/4 of the "
+                      "finest cell crossed at the maximum speed) [default 0.25]");
+  command
+      ->add_option("--step-mode", options->stepMode,
+                   "cell: RK4 on w(x)v(x) (paper); time: fixed dt; arc: unit speed")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cell", "time", "arc"}));
+  command
+      ->add_option("--terminal-speed", options->terminalSpeed,
+                   "stop where the speed falls below this")
+      ->capture_default_str();
+  command
+      ->add_option("--max-length", options->maxLength,
+                   "stop before the trace's physical length passes this (0: no limit)")
+      ->capture_default_str();
+  command->add_option("--backend", options->backend, "tracing backend")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cpu"}));
+  command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
+  command->callback([options] { runTrace(*options); });
+}
+
+}  // namespace amrstream::cli

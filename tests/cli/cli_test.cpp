@@ -1,0 +1,136 @@
+// The amrstream executable end to end: commands that work, and bad input that must fail with a
+// clear message and a non-zero exit status.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string output;  // stdout and stderr
+};
+
+Outcome run(const std::string& arguments) {
+  const std::string command = std::string(AMRSTREAM_BINARY) + " " + arguments + " 2>&1";
+  Outcome result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("amrstream-cli-" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+const std::string kSmall = " --levels 3 --root-blocks 2 --target-cells 20000";
+
+TEST_F(Cli, TraceBuiltinWritesVtpAndPrintsSummary) {
+  const Outcome r =
+      run("trace builtin:rotation" + kSmall + " --steps 50 --count 16 --out " + path("t.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("seeds      16"));
+  EXPECT_THAT(r.output, HasSubstr("reasons"));
+  EXPECT_THAT(r.output, HasSubstr("particle-steps/s"));
+  EXPECT_GT(fs::file_size(path("t.vtp")), 1000u);
+}
+
+TEST_F(Cli, GenWritesExaFilesThatInfoAndTraceRead) {
+  Outcome r = run("gen abc" + kSmall + " --seed 3 --out " + path("abc"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  ASSERT_TRUE(fs::exists(path("abc.exa")));
+  r = run("info " + path("abc.exa"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("level 2"));
+  EXPECT_THAT(r.output, HasSubstr("bricks"));
+  EXPECT_THAT(r.output, HasSubstr("regions"));
+  EXPECT_THAT(r.output, HasSubstr("velx"));
+  std::ofstream(path("seeds.txt")) << "0.5 0.5 0.5\n0.25, 0.75, 0.5\n";
+  r = run("trace " + path("abc.exa") + " --seeds " + path("seeds.txt") + " --steps 20 --out " +
+          path("abc.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("seeds      2 from"));
+}
+
+TEST_F(Cli, MissingInputFailsNamingTheFile) {
+  const Outcome r = run("trace " + path("nothing.exa") + " --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr(path("nothing.exa") + ": no such file"));
+  EXPECT_FALSE(fs::exists(path("t.vtp")));
+}
+
+TEST_F(Cli, UnknownBuiltinListsTheKinds) {
+  const Outcome r = run("info builtin:nebula");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("nebula"));
+  EXPECT_THAT(r.output, HasSubstr("cloud"));
+}
+
+TEST_F(Cli, TruncatedCellsFileFailsNamingIt) {
+  ASSERT_EQ(run("gen rotation" + kSmall + " --out " + path("rot")).status, 0);
+  fs::resize_file(path("rot.cells"), fs::file_size(path("rot.cells")) - 5);
+  const Outcome r = run("info " + path("rot.exa"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr(path("rot.cells") + ": size"));
+}
+
+TEST_F(Cli, SeedOutsideTheDomainFailsNamingTheLine) {
+  std::ofstream(path("seeds.txt")) << "0.5 0.5 0.5\n2 0.5 0.5\n";
+  const Outcome r = run("trace builtin:rotation" + kSmall + " --seeds " + path("seeds.txt") +
+                        " --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr(path("seeds.txt") + ":2: seed (2, 0.5, 0.5) is outside"));
+}
+
+TEST_F(Cli, BadOptionsFail) {
+  Outcome r =
+      run("trace builtin:rotation" + kSmall + " --seed-box 0,0,0,2,1,1 --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--seed-box: the box reaches outside the domain"));
+  r = run("trace builtin:rotation" + kSmall + " --vector velx,vely --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("exactly three channels"));
+  r = run("trace builtin:rotation" + kSmall + " --step-mode fast");
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("--step-mode"));
+  r = run("trace builtin:rotation" + kSmall + " --step-size -1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("step size must be positive"));
+  r = run("gen rotation --levels 12 --out " + path("x"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("levels"));
+}
+
+TEST_F(Cli, UnwritableOutputFails) {
+  const Outcome r = run("trace builtin:rotation" + kSmall + " --steps 5 --count 4 --out " +
+                        path("no/such/dir/t.vtp"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr(path("no/such/dir/t.vtp")));
+}
+
+}  // namespace
