@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <functional>
-
 #include <glm/glm.hpp>
 
 #include "bricks/amr_field.hpp"
@@ -13,10 +12,10 @@
 namespace amrstream::testing {
 
 struct RandomAmrOptions {
-  int levels = 4;                    // levels 0 .. levels-1
-  glm::ivec3 rootCells{3, 3, 3};     // coarsest cells per axis
-  double refineProbability = 0.45;   // chance that a cell above level 0 is split
-  glm::ivec3 origin{0};              // lower corner, in finest cells (multiple of the coarsest width)
+  int levels = 4;                   // levels 0 .. levels-1
+  glm::ivec3 rootCells{3, 3, 3};    // coarsest cells per axis
+  double refineProbability = 0.45;  // chance that a cell above level 0 is split
+  glm::ivec3 origin{0};  // lower corner, in finest cells (multiple of the coarsest width)
 };
 
 // Channel values of a cell as a function of its centre in finest-cell units.

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Configures and builds amrstream. Usage: scripts/build.sh [release|sanitize]
+#   release   optimised build in build/ (default)
+#   sanitize  debug build with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mode=${1:-release}
+case "$mode" in
+  release)  dir="$root/build";      flags=(-DCMAKE_BUILD_TYPE=Release) ;;
+  sanitize) dir="$root/build-asan"; flags=(-DCMAKE_BUILD_TYPE=Debug -DAMRSTREAM_SANITIZE=ON) ;;
+  *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
+esac
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S "$root" -B "$dir" "${flags[@]}" >/dev/null
+cmake --build "$dir" -j "$jobs"

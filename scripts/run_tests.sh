@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Quick start, command 2: installs what is missing, builds, and runs the whole test suite; then
+# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the `cpu` tests again.
+# Usage: scripts/run_tests.sh [--no-sanitize]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+jobs=$(nproc 2>/dev/null || echo 2)
+"$root/scripts/install_deps.sh"
+
+echo "== release build: all tests"
+"$root/scripts/build.sh" release
+ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
+
+if [ "${1:-}" != "--no-sanitize" ]; then
+  echo "== sanitizer build (ASan + UBSan): cpu tests"
+  "$root/scripts/build.sh" sanitize
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir "$root/build-asan" --output-on-failure -j "$jobs" -L cpu
+fi
