@@ -138,14 +138,7 @@ TEST(BuildBricks, ScatteredClumpsStayWhole) {
 TEST(BuildBricks, PeelingLayoutHitsTheDepthLimit) {
   // Cells at powers of two along each axis: every gap split peels off one cell, so the kd
   // recursion would be as deep as the cell count without the depth limit.
-  std::vector<glm::ivec3> lowers{{0, 0, 0}};
-  for (int k = 0; k <= 19; ++k)
-    for (int axis = 0; axis < 3; ++axis) {
-      glm::ivec3 p(0);
-      p[axis] = 1 << k;
-      lowers.push_back(p);
-    }
-  const auto field = makeField(lowers, std::vector<std::uint8_t>(lowers.size(), 0));
+  const auto field = powersOfTwoAlongTheAxes();
   for (const int maxSide : {1, 4}) {
     const BrickSet set = buildBricks(field, {maxSide});
     EXPECT_TRUE(bricksAreValid(field, set, maxSide));

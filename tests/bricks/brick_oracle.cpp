@@ -21,6 +21,17 @@ bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint
                           "test");
 }
 
+bricks::AmrField powersOfTwoAlongTheAxes() {
+  std::vector<glm::ivec3> lowers{{0, 0, 0}};
+  for (int k = 0; k <= 19; ++k)
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::ivec3 p(0);
+      p[axis] = 1 << k;
+      lowers.push_back(p);
+    }
+  return makeField(lowers, std::vector<std::uint8_t>(lowers.size(), 0));
+}
+
 ::testing::AssertionResult bricksAreValid(const bricks::AmrField& field,
                                           const bricks::BrickSet& set, int maxSide) {
   const std::size_t n = field.cellCount();

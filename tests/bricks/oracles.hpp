@@ -14,6 +14,10 @@ namespace amrstream::testing {
 // A field with one channel "id" holding each cell's index.
 bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels);
 
+// Level-0 cells at the origin and at 2^k along each axis, k = 0..19: sparse, far apart, and a
+// worst case for recursive splitting.
+bricks::AmrField powersOfTwoAlongTheAxes();
+
 // Every cell in exactly one brick; bricks single-level, without holes (each slot's cell sits at
 // the slot's position), sides within maxSide; cellIds a permutation.
 ::testing::AssertionResult bricksAreValid(const bricks::AmrField& field,

@@ -159,14 +159,7 @@ TEST(BuildRegions, OutputIsDeterministic) {
 TEST(BuildRegions, FarApartBricksInAHugeBox) {
   // Cells at powers of two along each axis up to 2^19: too large for the voxel oracle, so
   // locate() is checked against brute force on domain corners, faces and random points.
-  std::vector<glm::ivec3> lowers{{0, 0, 0}};
-  for (int k = 0; k <= 19; ++k)
-    for (int axis = 0; axis < 3; ++axis) {
-      glm::ivec3 p(0);
-      p[axis] = 1 << k;
-      lowers.push_back(p);
-    }
-  const auto field = makeField(lowers, std::vector<std::uint8_t>(lowers.size(), 0));
+  const auto field = powersOfTwoAlongTheAxes();
   const bricks::BrickSet set = buildBricks(field, {1});
   const RegionSet regions = buildRegions(set.bricks);
   EXPECT_TRUE(

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include "input_error_of.hpp"
 #include "random_amr.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::bricks {
 namespace {
@@ -21,15 +21,6 @@ AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> lev
                    std::vector<float> values = {}) {
   if (values.empty()) values.assign(lowers.size(), 1.0f);
   return AmrField(std::move(lowers), std::move(levels), {{"rho", values}}, {}, "test.exa");
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(AmrField, AcceptsTwoLevelLayoutAndReportsBoundsAndCounts) {
@@ -61,20 +52,22 @@ TEST(AmrField, AcceptsRandomLayoutsWhoseVolumesTileTheRootGrid) {
 }
 
 TEST(AmrField, RejectsDuplicateCells) {
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 makeField({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, {0, 0, 0});
               }),
               HasSubstr("appears twice"));
 }
 
 TEST(AmrField, RejectsFineCellInsideCoarseCell) {
-  const std::string error = errorOf([] { makeField({{4, 4, 4}, {5, 6, 7}}, {2, 0}); });
+  const std::string error = testing::inputErrorOf([] {
+    makeField({{4, 4, 4}, {5, 6, 7}}, {2, 0});
+  });
   EXPECT_THAT(error, HasSubstr("test.exa"));
   EXPECT_THAT(error, HasSubstr("overlaps the level-2 cell at 4,4,4"));
 }
 
 TEST(AmrField, RejectsOverlapAcrossNegativeCoordinates) {
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 makeField({{-4, -4, -4}, {-1, -3, -2}}, {2, 0});
               }),
               HasSubstr("overlaps the level-2 cell at -4,-4,-4"));
@@ -82,7 +75,7 @@ TEST(AmrField, RejectsOverlapAcrossNegativeCoordinates) {
 
 TEST(AmrField, RejectsMisalignedCell) {
   EXPECT_THAT(
-      errorOf([] {
+      testing::inputErrorOf([] {
         makeField({{2, 0, 0}}, {2});
       }),
       HasSubstr("not aligned to its level's grid (corner coordinates must be multiples of 4)"));
@@ -91,41 +84,41 @@ TEST(AmrField, RejectsMisalignedCell) {
 TEST(AmrField, RejectsNonFiniteValues) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  EXPECT_THAT(errorOf([&] {
+  EXPECT_THAT(testing::inputErrorOf([&] {
                 makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {1.0f, nan});
               }),
               HasSubstr("channel 'rho' has a non-finite value (nan) at cell 1"));
-  EXPECT_THAT(errorOf([&] {
+  EXPECT_THAT(testing::inputErrorOf([&] {
                 makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {inf, 1.0f});
               }),
               HasSubstr("non-finite value (inf) at cell 0"));
 }
 
 TEST(AmrField, RejectsChannelSizeMismatchAndBadNames) {
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 makeField({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {1.0f});
               }),
               HasSubstr("channel 'rho' has 1 values for 2 cells"));
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 AmrField({{0, 0, 0}}, {0}, {{"a", {1.0f}}, {"a", {2.0f}}}, {}, "x");
               }),
               HasSubstr("channel 'a' appears twice"));
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 AmrField({{0, 0, 0}}, {0}, {{"", {1.0f}}}, {}, "x");
               }),
               HasSubstr("empty name"));
 }
 
 TEST(AmrField, RejectsEmptyAndMismatchedCellArrays) {
-  EXPECT_THAT(errorOf([] { makeField({}, {}); }), HasSubstr("no cells"));
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] { makeField({}, {}); }), HasSubstr("no cells"));
+  EXPECT_THAT(testing::inputErrorOf([] {
                 AmrField({{0, 0, 0}}, {0, 0}, {}, {}, "x");
               }),
               HasSubstr("1 cell corners but 2 cell levels"));
 }
 
 TEST(AmrField, RejectsExtentBeyondSupportedRange) {
-  EXPECT_THAT(errorOf([] {
+  EXPECT_THAT(testing::inputErrorOf([] {
                 makeField({{0, 0, 0}, {1 << kMaxExtentBits, 0, 0}}, {0, 0});
               }),
               HasSubstr("per axis are supported"));
@@ -135,7 +128,7 @@ TEST(AmrField, ChannelLookupListsAvailableChannels) {
   const AmrField field = makeField({{0, 0, 0}}, {0});
   EXPECT_EQ(&field.channel("rho"), &field.channels()[0]);
   EXPECT_FALSE(field.findChannel("velx").has_value());
-  EXPECT_THAT(errorOf([&] { field.channel("velx"); }),
+  EXPECT_THAT(testing::inputErrorOf([&] { field.channel("velx"); }),
               HasSubstr("no channel named 'velx' (channels: rho)"));
 }
 

@@ -183,14 +183,7 @@ TEST(Integrator, MaxLengthStopsBeforeTheLimitIsPassed) {
 
 TEST(Integrator, InvalidSampleEndsWithUnexpectedValue) {
   // Two blocks with a gap; a seed on the lower face of the second block's domain has no weight.
-  std::vector<glm::ivec3> lowers;
-  for (int block : {0, 8})
-    for (int z = 0; z < 4; ++z)
-      for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) lowers.push_back(glm::ivec3(block + x, y, z));
-  std::vector<float> ones(lowers.size(), 1.0f);
-  const bricks::AmrField field(lowers, std::vector<std::uint8_t>(lowers.size(), 0),
-                               {{"vx", ones}, {"vy", ones}, {"vz", ones}}, {}, "two-blocks");
+  const bricks::AmrField field = testing::twoBlocksWithAGap();
   const TraceSet t = traceOne(testing::volumeOf(field), {7.5, 2.0, 2.0}, {});
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_UNEXPECTED_VALUE);
   EXPECT_EQ(t.pointCounts[0], 1u);

@@ -160,14 +160,7 @@ TEST(Sampler, ReportsRegionCellWidthAndOutOfDomain) {
 TEST(Sampler, PointOnTheLowerFaceOfAnIsolatedBricksDomainHasNoWeight) {
   // Two 4^3 blocks with a gap: the second one's domain starts half a cell before x = 8, where
   // every tent function of its cells is zero.
-  std::vector<glm::ivec3> lowers;
-  for (int block : {0, 8})
-    for (int z = 0; z < 4; ++z)
-      for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) lowers.push_back(glm::ivec3(block + x, y, z));
-  std::vector<float> ones(lowers.size(), 1.0f);
-  const bricks::AmrField field(lowers, std::vector<std::uint8_t>(lowers.size(), 0),
-                               {{"vx", ones}, {"vy", ones}, {"vz", ones}}, {}, "two-blocks");
+  const bricks::AmrField field = testing::twoBlocksWithAGap();
   const VectorVolume volume = testing::volumeOf(field);
   const VectorSample onFace = sampleVector(volume, glm::vec3(7.5f, 2.0f, 2.0f));
   EXPECT_TRUE(onFace.located);

@@ -10,7 +10,7 @@
 
 #include "flow/vector_selection.hpp"
 #include "flow_test_support.hpp"
-#include "util/input_error.hpp"
+#include "input_error_of.hpp"
 
 namespace amrstream::flow {
 namespace {
@@ -22,15 +22,6 @@ fs::path writeSeeds(const std::string& name, const std::string& text) {
   const fs::path path = fs::temp_directory_path() / ("amrstream-seeds-" + name + ".txt");
   std::ofstream(path) << text;
   return path;
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(SeedFile, ReadsSpacesCommasTabsCommentsAndBlankLines) {
@@ -45,15 +36,17 @@ TEST(SeedFile, ReadsSpacesCommasTabsCommentsAndBlankLines) {
 
 TEST(SeedFile, RejectsMalformedLinesNamingTheLine) {
   const fs::path path = writeSeeds("bad", "1 2 3\n1 2\n");
-  EXPECT_THAT(errorOf([&] { readSeedFile(path); }),
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(path); }),
               HasSubstr(path.string() + ":2: expected three numbers"));
   const fs::path extra = writeSeeds("extra", "1 2 3 4\n");
-  EXPECT_THAT(errorOf([&] { readSeedFile(extra); }), HasSubstr(":1: unexpected text"));
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(extra); }),
+              HasSubstr(":1: unexpected text"));
   const fs::path nan = writeSeeds("nan", "1 nan 3\n");
-  EXPECT_THAT(errorOf([&] { readSeedFile(nan); }), HasSubstr(":1: the seed has a non-finite"));
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(nan); }),
+              HasSubstr(":1: the seed has a non-finite"));
   const fs::path empty = writeSeeds("empty", "# nothing\n");
-  EXPECT_THAT(errorOf([&] { readSeedFile(empty); }), HasSubstr("holds no seeds"));
-  EXPECT_THAT(errorOf([&] { readSeedFile("/nonexistent/seeds.txt"); }),
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(empty); }), HasSubstr("holds no seeds"));
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile("/nonexistent/seeds.txt"); }),
               HasSubstr("/nonexistent/seeds.txt: cannot open"));
 }
 
@@ -74,7 +67,7 @@ TEST(SeedCheck, NamesTheFirstSeedOutsideTheDomain) {
       testing::volumeOf(testing::uniformGrid(8, [](auto) { return glm::vec3(1.0f); }));
   const fs::path path = writeSeeds("outside", "1 1 1\n7.9 0 0\n8 1 1\n-0.1 1 1\n");
   const SeedList seeds = readSeedFile(path);
-  EXPECT_THAT(errorOf([&] { checkSeedsInDomain(volume, seeds); }),
+  EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
               HasSubstr(path.string() + ":3: seed (8, 1, 1) is outside the domain [0, 8) x"));
   SeedList inside;
   inside.points = {{0, 0, 0}, {7.99, 7.99, 7.99}};
@@ -98,16 +91,16 @@ TEST(VectorSelection, PrefersVelocityThenMagneticFieldAndNamesTheVector) {
   EXPECT_EQ(chooseVectorChannels(field({"U", "V", "W"}), "").name, "U_V_W");
   EXPECT_EQ(chooseVectorChannels(field({"a", "b", "c"}), "c,b,a").channels,
             (std::array<std::string, 3>{"c", "b", "a"}));
-  EXPECT_THAT(errorOf([&] {
+  EXPECT_THAT(testing::inputErrorOf([&] {
                 chooseVectorChannels(field({"a", "b"}), "");
               }),
               HasSubstr("choose three with --vector a,b,c (channels: a, b)"));
-  EXPECT_THAT(errorOf([&] {
+  EXPECT_THAT(testing::inputErrorOf([&] {
                 chooseVectorChannels(field({"a", "b", "c"}), "a,b,d");
               }),
               HasSubstr("no channel named 'd'"));
   for (const char* bad : {"a,b", "a,b,c,a", "a,b,c,"})
-    EXPECT_THAT(errorOf([&] {
+    EXPECT_THAT(testing::inputErrorOf([&] {
                   chooseVectorChannels(field({"a", "b", "c"}), bad);
                 }),
                 HasSubstr("exactly three channels"))

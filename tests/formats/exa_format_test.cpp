@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "formats/load_input.hpp"
+#include "input_error_of.hpp"
 #include "random_amr.hpp"
 #include "util/input_error.hpp"
 
@@ -38,12 +39,7 @@ class ExaFormat : public ::testing::Test {
     std::ofstream(path) << text;
   }
   static std::string errorOf(const fs::path& config) {
-    try {
-      readExa(config);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
+    return testing::inputErrorOf([&] { readExa(config); });
   }
 
   fs::path dir_;

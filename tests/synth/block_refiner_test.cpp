@@ -15,14 +15,6 @@ namespace {
 
 constexpr std::size_t kSplitCost = 7 * kBlockCells;
 
-GeneratorOptions options(int levels, int rootBlocks, std::size_t targetCells) {
-  GeneratorOptions o;
-  o.levels = levels;
-  o.rootBlocks = rootBlocks;
-  o.targetCells = targetCells;
-  return o;
-}
-
 std::size_t rootCells(const GeneratorOptions& o) {
   return std::size_t(o.rootBlocks) * o.rootBlocks * o.rootBlocks * kBlockCells;
 }
@@ -38,7 +30,7 @@ double hashedPriority(const BlockBox& box) {
 }
 
 TEST(BlockRefiner, BudgetOfTheRootGridGivesTheRootGrid) {
-  const GeneratorOptions o = options(3, 2, 8 * kBlockCells);
+  const GeneratorOptions o = GeneratorOptions{3, 2, 8 * kBlockCells};
   const std::vector<Block> leaves = refineBlocks(o, "test", hashedPriority);
   ASSERT_EQ(leaves.size(), 8u);
   for (const Block& b : leaves) {
@@ -51,7 +43,7 @@ TEST(BlockRefiner, BudgetOfTheRootGridGivesTheRootGrid) {
 TEST(BlockRefiner, TiesGoToTheCoarserBlockThenToTheLowerMortonKey) {
   // A constant priority: the 8 roots are split first (one level everywhere), then the level-1
   // block at the origin (lowest Morton key).
-  const GeneratorOptions o = options(3, 2, 8 * kBlockCells + 9 * kSplitCost);
+  const GeneratorOptions o = GeneratorOptions{3, 2, 8 * kBlockCells + 9 * kSplitCost};
   const std::vector<Block> leaves = refineBlocks(o, "test", [](const BlockBox&) { return 1.0; });
   ASSERT_EQ(cellCount(leaves), o.targetCells);
   int fine = 0;
@@ -69,7 +61,7 @@ TEST(BlockRefiner, TiesGoToTheCoarserBlockThenToTheLowerMortonKey) {
 TEST(BlockRefiner, HighestPriorityIsSplitFirst) {
   // Priority falls with the distance to q, so only the blocks containing q are split.
   const glm::dvec3 q(0.3, 0.7, 0.2);
-  const GeneratorOptions o = options(4, 2, 8 * kBlockCells + 3 * kSplitCost);
+  const GeneratorOptions o = GeneratorOptions{4, 2, 8 * kBlockCells + 3 * kSplitCost};
   const std::vector<Block> leaves = refineBlocks(o, "test", [&](const BlockBox& box) {
     const glm::dvec3 d = glm::max(glm::max(box.lower - q, q - box.upper), glm::dvec3(0.0));
     return -glm::length(d);
@@ -88,20 +80,20 @@ TEST(BlockRefiner, HighestPriorityIsSplitFirst) {
 }
 
 TEST(BlockRefiner, LevelZeroBlocksAreNeverSplit) {
-  const GeneratorOptions uniform = options(1, 3, 1'000'000);
+  const GeneratorOptions uniform = GeneratorOptions{1, 3, 1'000'000};
   std::vector<Block> leaves = refineBlocks(uniform, "test", hashedPriority);
   EXPECT_EQ(cellCount(leaves), rootCells(uniform));
 
-  const GeneratorOptions twoLevels = options(2, 2, 1'000'000);
+  const GeneratorOptions twoLevels = GeneratorOptions{2, 2, 1'000'000};
   leaves = refineBlocks(twoLevels, "test", hashedPriority);
   EXPECT_EQ(cellCount(leaves), 8 * rootCells(twoLevels));
   for (const Block& b : leaves) EXPECT_EQ(b.level, 0);
 }
 
 TEST(BlockRefiner, StaysWithinTheBudgetUsesItAndTilesTheDomain) {
-  for (const GeneratorOptions& o :
-       {options(4, 2, 20'000), options(5, 1, 30'000), options(3, 3, 50'000), options(6, 1, 100'000),
-        options(2, 2, 7'000)}) {
+  for (const GeneratorOptions& o : {GeneratorOptions{4, 2, 20'000}, GeneratorOptions{5, 1, 30'000},
+                                    GeneratorOptions{3, 3, 50'000}, GeneratorOptions{6, 1, 100'000},
+                                    GeneratorOptions{2, 2, 7'000}}) {
     const std::vector<Block> leaves = refineBlocks(o, "test", hashedPriority);
     const std::size_t cells = cellCount(leaves);
     EXPECT_LE(cells, o.targetCells);
@@ -138,15 +130,15 @@ TEST(BlockRefiner, ValidatesTheOptions) {
       EXPECT_EQ(e.source(), "builtin:test");
     }
   };
-  rejects(options(0, 2, 100'000), "levels");
-  rejects(options(9, 2, 100'000), "levels");
-  rejects(options(-1, 2, 100'000), "levels");
-  rejects(options(3, 0, 100'000), "rootBlocks");
-  rejects(options(3, -2, 100'000), "rootBlocks");
-  rejects(options(8, 2048, std::size_t(1) << 60), "rootBlocks");  // 2^21 finest cells per axis
-  rejects(options(3, 2, 8 * kBlockCells - 1), "targetCells");
-  EXPECT_NO_THROW(refineBlocks(options(8, 1, kBlockCells), "test", hashedPriority));
-  EXPECT_NO_THROW(refineBlocks(options(1, 1, kBlockCells), "test", hashedPriority));
+  rejects(GeneratorOptions{0, 2, 100'000}, "levels");
+  rejects(GeneratorOptions{9, 2, 100'000}, "levels");
+  rejects(GeneratorOptions{-1, 2, 100'000}, "levels");
+  rejects(GeneratorOptions{3, 0, 100'000}, "rootBlocks");
+  rejects(GeneratorOptions{3, -2, 100'000}, "rootBlocks");
+  rejects(GeneratorOptions{8, 2048, std::size_t(1) << 60}, "rootBlocks");  // 2^21 finest cells per axis
+  rejects(GeneratorOptions{3, 2, 8 * kBlockCells - 1}, "targetCells");
+  EXPECT_NO_THROW(refineBlocks(GeneratorOptions{8, 1, kBlockCells}, "test", hashedPriority));
+  EXPECT_NO_THROW(refineBlocks(GeneratorOptions{1, 1, kBlockCells}, "test", hashedPriority));
 }
 
 }  // namespace
