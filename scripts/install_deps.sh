@@ -9,6 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   python3 python3-vtk9 python3-numpy
+  libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
 )
 backports_packages=(mesa-vulkan-drivers)
 

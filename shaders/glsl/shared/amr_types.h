@@ -4,6 +4,7 @@
 #define AMRSTREAM_SHARED_AMR_TYPES_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace amrstream::shared {

@@ -1,0 +1,77 @@
+// RK4 streamline integration with the step mode's direction scaling and VTK termination codes;
+// twin of src/flow/integrator.cpp (traceSeed). Needs sampler.glsl.
+
+float parameterStep(VectorSample s) {
+  return params.stepMode == AMRSTREAM_STEP_TIME ? params.stepSize
+                                                : params.stepSize * s.cellWidth * params.physicalCellWidth;
+}
+
+vec3 direction(VectorSample s) {
+  vec3 v = s.value;
+  if (params.stepMode == AMRSTREAM_STEP_ARC) {
+    const float speed = length(v);
+    v = speed > 0.0 ? v / speed : vec3(0.0);
+  }
+  return parameterStep(s) * v * params.cellsPerPhysical;
+}
+
+int sampleFailure(VectorSample s) {
+  if (!s.located) return AMRSTREAM_REASON_OUT_OF_DOMAIN;
+  if (!s.valid) return AMRSTREAM_REASON_UNEXPECTED_VALUE;
+  return AMRSTREAM_REASON_RUNNING;
+}
+
+void traceSeed(uint seedIndex) {
+  const uint base = seedIndex * params.capacity;
+  vec3 x = seeds[seedIndex];
+  VectorSample s = sampleVector(x);
+  float time = 0.0, traceLength = 0.0;
+  uint points = 0;
+  positions[base] = x;
+  times[base] = time;
+  vectors[base] = s.value;
+  points = 1;
+
+  int reason = sampleFailure(s);
+  for (uint step = 0; reason == AMRSTREAM_REASON_RUNNING; ++step) {
+    if (length(s.value) < params.terminalSpeed) {
+      reason = AMRSTREAM_REASON_STAGNATION;
+      break;
+    }
+    if (step == params.maxSteps) {
+      reason = AMRSTREAM_REASON_MAX_STEPS;
+      break;
+    }
+    const vec3 k1 = direction(s);
+    const VectorSample s2 = sampleVector(x + 0.5 * k1);
+    if ((reason = sampleFailure(s2)) != AMRSTREAM_REASON_RUNNING) break;
+    const vec3 k2 = direction(s2);
+    const VectorSample s3 = sampleVector(x + 0.5 * k2);
+    if ((reason = sampleFailure(s3)) != AMRSTREAM_REASON_RUNNING) break;
+    const vec3 k3 = direction(s3);
+    const VectorSample s4 = sampleVector(x + k3);
+    if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
+    const vec3 k4 = direction(s4);
+    const vec3 next = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+    const VectorSample sNext = sampleVector(next);
+    if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
+
+    if (params.maxLength > 0.0) {
+      const float stepLength = length(params.spacing * (next - x));
+      if (traceLength + stepLength > params.maxLength) {
+        reason = AMRSTREAM_REASON_MAX_LENGTH;
+        break;
+      }
+      traceLength += stepLength;
+    }
+    time += parameterStep(s);
+    x = next;
+    s = sNext;
+    positions[base + points] = x;
+    times[base + points] = time;
+    vectors[base + points] = s.value;
+    ++points;
+  }
+  pointCounts[seedIndex] = points;
+  reasons[seedIndex] = reason;
+}

@@ -1,0 +1,23 @@
+// Point location for the `rayquery` backend: a zero-length ray query against the regions' AABBs.
+#extension GL_EXT_ray_query : require
+#include "region_containment.glsl"
+
+layout(set = 0, binding = 11) uniform accelerationStructureEXT regionScene;
+
+int locateInRegions(vec3 p) {
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, regionScene, gl_RayFlagsNoneEXT, 0xFF, p, 0.0, kProbeDirection,
+                        kProbeTMax);
+  int found = -1;
+  while (rayQueryProceedEXT(query)) {
+    if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionAABBEXT)
+      continue;
+    const uint id = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
+                    uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false));
+    if (regionContains(id, p)) {
+      found = int(id);
+      rayQueryTerminateEXT(query);
+    }
+  }
+  return found;
+}

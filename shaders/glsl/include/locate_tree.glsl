@@ -1,0 +1,13 @@
+// Point location for the `compute` backend: descent of the regions' kd-tree, built on the host
+// (src/bricks/region_builder.hpp). Stackless: every point takes exactly one path.
+
+layout(scalar, set = 0, binding = 11) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
+
+int locateInRegions(vec3 p) {
+  uint node = 0;
+  while (tree[node].axis != AMRSTREAM_TREE_LEAF) {
+    const RegionTreeNode n = tree[node];
+    node = p[n.axis] < n.split ? n.child : n.child + 1;
+  }
+  return tree[node].child == AMRSTREAM_NO_REGION ? -1 : int(tree[node].child);
+}

@@ -1,0 +1,36 @@
+// Parameters of one tracing dispatch, shared by the host and the GLSL kernels (scalar layout).
+// Positions are in finest-cell units; velocities and cell widths physical (see
+// src/flow/integrator.cpp, the CPU twin of include/integrator.glsl).
+#ifndef AMRSTREAM_SHARED_TRACE_PARAMS_H
+#define AMRSTREAM_SHARED_TRACE_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace amrstream::shared {
+using vec3 = glm::vec3;
+using ivec3 = glm::ivec3;
+using uint = std::uint32_t;
+#endif
+
+struct TraceParams {
+  ivec3 domainLower;      // the cells' bounding box [domainLower, domainUpper)
+  uint seedCount;
+  ivec3 domainUpper;
+  uint capacity;          // points per trace in the output arrays (max steps + 1)
+  vec3 cellsPerPhysical;  // 1 / spacing
+  float physicalCellWidth;  // smallest spacing: physical width of a finest cell
+  vec3 spacing;
+  int stepMode;           // AMRSTREAM_STEP_*
+  float stepSize;
+  uint maxSteps;
+  float terminalSpeed;
+  float maxLength;        // 0: no limit
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(TraceParams) == 72);
+}  // namespace amrstream::shared
+#endif
+
+#endif
