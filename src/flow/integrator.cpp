@@ -39,7 +39,7 @@ int sampleFailure(const VectorSample& s) {
   return AMRSTREAM_REASON_RUNNING;
 }
 
-void traceOne(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
+void traceSeed(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
               const TraceOptions& options, TraceSet& out, std::uint32_t seedIndex) {
   const glm::dvec3 origin = volume.transform.origin, spacing = volume.transform.spacing;
   glm::vec3 x = seed;
@@ -111,7 +111,7 @@ TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 16), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const glm::vec3 seed(volume.transform.toCellUnits(seeds[i]));
-      traceOne(volume, seed, rule, options, out, static_cast<std::uint32_t>(i));
+      traceSeed(volume, seed, rule, options, out, static_cast<std::uint32_t>(i));
     }
     const std::size_t done = finished += range.size();
     if (progress) progress(done);
