@@ -10,27 +10,24 @@ namespace amrstream::flow {
 
 namespace {
 
-// Positions are integrated in finest-cell units; velocities and cell widths are physical. For a
-// sample s, direction() is the RK4 stage vector in cell units and parameterStep() the advance of
-// IntegrationTime (physical time, or physical arc length in arc mode).
-struct StepRule {
-  StepMode mode;
-  float h;
-  glm::vec3 cellsPerPhysical;  // 1 / spacing
-  float physicalCellWidth;     // physical width of a finest cell: the smallest spacing
+// Positions are integrated in finest-cell units; velocities and cell widths are physical.
+// parameterStep() is the advance of IntegrationTime (physical time, or physical arc length in arc
+// mode) and direction() the RK4 stage vector in cell units; both read the same TraceParams
+// values as their GLSL twins in shaders/glsl/include/integrator.glsl.
+float parameterStep(const shared::TraceParams& params, const VectorSample& s) {
+  return params.stepMode == AMRSTREAM_STEP_TIME
+             ? params.stepSize
+             : params.stepSize * s.cellWidth * params.physicalCellWidth;
+}
 
-  float parameterStep(const VectorSample& s) const {
-    return mode == StepMode::Time ? h : h * s.cellWidth * physicalCellWidth;
+glm::vec3 direction(const shared::TraceParams& params, const VectorSample& s) {
+  glm::vec3 v = s.value;
+  if (params.stepMode == AMRSTREAM_STEP_ARC) {
+    const float speed = glm::length(v);
+    v = speed > 0.0f ? v / speed : glm::vec3(0.0f);
   }
-  glm::vec3 direction(const VectorSample& s) const {
-    glm::vec3 v = s.value;
-    if (mode == StepMode::Arc) {
-      const float speed = glm::length(v);
-      v = speed > 0.0f ? v / speed : glm::vec3(0.0f);
-    }
-    return parameterStep(s) * v * cellsPerPhysical;
-  }
-};
+  return parameterStep(params, s) * v * params.cellsPerPhysical;
+}
 
 // The reason a stage sample ends the trace, or AMRSTREAM_REASON_RUNNING.
 int sampleFailure(const VectorSample& s) {
@@ -39,8 +36,8 @@ int sampleFailure(const VectorSample& s) {
   return AMRSTREAM_REASON_RUNNING;
 }
 
-void traceSeed(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
-              const TraceOptions& options, TraceSet& out, std::uint32_t seedIndex) {
+void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TraceParams& params,
+               TraceSet& out, std::uint32_t seedIndex) {
   const glm::dvec3 origin = volume.transform.origin, spacing = volume.transform.spacing;
   glm::vec3 x = seed;
   VectorSample s = sampleVector(volume, x);
@@ -56,37 +53,37 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
 
   int reason = sampleFailure(s);
   for (std::uint32_t step = 0; reason == AMRSTREAM_REASON_RUNNING; ++step) {
-    if (glm::length(s.value) < options.terminalSpeed) {
+    if (glm::length(s.value) < params.terminalSpeed) {
       reason = AMRSTREAM_REASON_STAGNATION;
       break;
     }
-    if (step == options.maxSteps) {
+    if (step == params.maxSteps) {
       reason = AMRSTREAM_REASON_MAX_STEPS;
       break;
     }
-    const glm::vec3 k1 = rule.direction(s);
+    const glm::vec3 k1 = direction(params, s);
     const VectorSample s2 = sampleVector(volume, x + 0.5f * k1);
     if ((reason = sampleFailure(s2))) break;
-    const glm::vec3 k2 = rule.direction(s2);
+    const glm::vec3 k2 = direction(params, s2);
     const VectorSample s3 = sampleVector(volume, x + 0.5f * k2);
     if ((reason = sampleFailure(s3))) break;
-    const glm::vec3 k3 = rule.direction(s3);
+    const glm::vec3 k3 = direction(params, s3);
     const VectorSample s4 = sampleVector(volume, x + k3);
     if ((reason = sampleFailure(s4))) break;
-    const glm::vec3 k4 = rule.direction(s4);
+    const glm::vec3 k4 = direction(params, s4);
     const glm::vec3 next = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
     const VectorSample sNext = sampleVector(volume, next);
     if ((reason = sampleFailure(sNext))) break;
 
-    if (options.maxLength > 0.0f) {
-      const float stepLength = float(glm::length(spacing * glm::dvec3(next - x)));
-      if (length + stepLength > options.maxLength) {
+    if (params.maxLength > 0.0f) {
+      const float stepLength = glm::length(params.spacing * (next - x));
+      if (length + stepLength > params.maxLength) {
         reason = AMRSTREAM_REASON_MAX_LENGTH;
         break;
       }
       length += stepLength;
     }
-    time += rule.parameterStep(s);
+    time += parameterStep(params, s);
     x = next;
     s = sNext;
     append(x, s);
@@ -97,12 +94,29 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const StepRule& rule,
 
 }  // namespace
 
+shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options,
+                                    std::size_t seedCount) {
+  const glm::dvec3 spacing = volume.transform.spacing;
+  shared::TraceParams params{};
+  params.domainLower = volume.domain.lower;
+  params.domainUpper = volume.domain.upper;
+  params.seedCount = static_cast<std::uint32_t>(seedCount);
+  params.capacity = options.maxSteps + 1;
+  params.cellsPerPhysical = glm::vec3(1.0 / spacing);
+  params.physicalCellWidth = float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)));
+  params.spacing = glm::vec3(spacing);
+  params.stepMode = static_cast<int>(options.stepMode);
+  params.stepSize = options.stepSize;
+  params.maxSteps = options.maxSteps;
+  params.terminalSpeed = options.terminalSpeed;
+  params.maxLength = options.maxLength;
+  return params;
+}
+
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
                           const TraceOptions& options,
                           const std::function<void(std::size_t)>& progress) {
-  const glm::dvec3 spacing = volume.transform.spacing;
-  const StepRule rule{options.stepMode, options.stepSize, glm::vec3(1.0 / spacing),
-                      float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)))};
+  const shared::TraceParams params = makeTraceParams(volume, options, seeds.size());
   TraceSet out;
   out.resize(static_cast<std::uint32_t>(seeds.size()), options.maxSteps + 1);
   out.vectorName = volume.vectorName;
@@ -111,7 +125,7 @@ TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 16), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const glm::vec3 seed(volume.transform.toCellUnits(seeds[i]));
-      traceSeed(volume, seed, rule, options, out, static_cast<std::uint32_t>(i));
+      traceSeed(volume, seed, params, out, static_cast<std::uint32_t>(i));
     }
     const std::size_t done = finished += range.size();
     if (progress) progress(done);

@@ -8,6 +8,7 @@
 #include <span>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "../../shaders/glsl/shared/trace_params.h"
 #include "trace_set.hpp"
 #include "vector_volume.hpp"
 
@@ -26,6 +27,10 @@ struct TraceOptions {
   float terminalSpeed = 1e-12f;   // stagnation below this speed (physical units)
   float maxLength = 0.0f;         // physical arc length limit; 0 means none
 };
+
+// The dispatch parameters shared with the GPU kernels, for `seedCount` seeds.
+shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options,
+                                    std::size_t seedCount);
 
 // Traces every seed (physical coordinates) in parallel over all cores. `progress`, when set, is
 // called from worker threads with the number of seeds finished so far.

@@ -5,6 +5,7 @@
 #define AMRSTREAM_SHARED_TRACE_PARAMS_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace amrstream::shared {
@@ -29,7 +30,8 @@ struct TraceParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 72);
+static_assert(sizeof(TraceParams) == 80 && offsetof(TraceParams, spacing) == 48 &&
+              offsetof(TraceParams, maxLength) == 76);
 }  // namespace amrstream::shared
 #endif
 
