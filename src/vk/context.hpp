@@ -1,0 +1,126 @@
+#pragma once
+// Context: one Vulkan device ready for compute and, as requested, acceleration structures, ray
+// queries and ray tracing pipelines. It owns, in creation (and reverse destruction) order: the
+// validation log, the instance, the debug messenger, the logical device, one compute-capable
+// queue and a command pool on it. Move-only. Not thread-safe: the command pool and the queue are
+// for one thread at a time.
+//
+// ContextBuilder chooses the device and returns a Context or throws ContextError with a readable
+// reason (which device lacks what, and what to do about it).
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vk/capability.hpp"
+#include "vk/context_error.hpp"
+#include "vk/device_functions.hpp"
+#include "vk/device_report.hpp"
+#include "vk/device_support.hpp"
+#include "vk/unique_handle.hpp"
+#include "vk/validation_log.hpp"
+
+namespace amrstream::vk {
+
+class Context {
+ public:
+  Context(Context&&) noexcept = default;
+  Context& operator=(Context&&) noexcept = default;
+  ~Context();
+
+  VkInstance instance() const { return instance_.get(); }
+  VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+  VkDevice device() const { return device_.get(); }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamilyIndex() const { return queueFamilyIndex_; }
+  VkCommandPool commandPool() const { return commandPool_.get(); }
+  const DeviceFunctions& functions() const { return functions_; }
+  const InstanceFunctions& instanceFunctions() const { return instanceFunctions_; }
+
+  const DeviceReport& report() const { return report_; }
+  const std::string& deviceName() const { return report_.name; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_.core; }
+  const VkPhysicalDeviceLimits& limits() const { return properties_.core.limits; }
+  // Zero unless the context has Capability::AccelerationStructure.
+  const VkPhysicalDeviceAccelerationStructurePropertiesKHR& accelerationStructureProperties()
+      const {
+    return properties_.accelerationStructure;
+  }
+  // Zero unless the context has Capability::RayTracingPipeline.
+  const VkPhysicalDeviceRayTracingPipelinePropertiesKHR& rayTracingPipelineProperties() const {
+    return properties_.rayTracingPipeline;
+  }
+  const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return properties_.memory; }
+  std::vector<VkDeviceSize> memoryHeapSizes() const;
+  VkDeviceSize maxMemoryAllocationSize() const { return properties_.maxMemoryAllocationSize; }
+
+  // The requested capabilities plus those they imply (see Capability::AccelerationStructure).
+  CapabilitySet capabilities() const { return capabilities_; }
+  bool has(Capability capability) const { return capabilities_.contains(capability); }
+  bool shaderInt64Enabled() const { return shaderInt64_; }
+  bool bufferDeviceAddressEnabled() const { return bufferDeviceAddress_; }
+  bool debugUtilsEnabled() const { return debugUtils_; }
+  bool validationEnabled() const { return validationLog_ != nullptr; }
+
+  // ERROR-severity messages from the validation layer and the loader so far; 0 without
+  // validation.
+  uint32_t validationErrorCount() const;
+  // Null without validation. Outlives the context, so the messages of its destruction count.
+  std::shared_ptr<const ValidationLog> validationLog() const { return validationLog_; }
+
+ private:
+  friend class ContextBuilder;
+  Context() = default;
+
+  std::shared_ptr<ValidationLog> validationLog_;
+  UniqueHandle<VkInstance> instance_;
+  InstanceFunctions instanceFunctions_;
+  UniqueHandle<VkDebugUtilsMessengerEXT> messenger_;
+  VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+  DeviceReport report_;
+  DeviceProperties properties_;
+  CapabilitySet capabilities_;
+  bool shaderInt64_ = false;
+  bool bufferDeviceAddress_ = false;
+  bool debugUtils_ = false;
+  UniqueHandle<VkDevice> device_;
+  DeviceFunctions functions_;
+  uint32_t queueFamilyIndex_ = 0;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  UniqueHandle<VkCommandPool> commandPool_;
+};
+
+class ContextBuilder {
+ public:
+  ContextBuilder& require(Capability capability);
+  ContextBuilder& require(CapabilitySet capabilities);
+  // Use the device at this index of vkEnumeratePhysicalDevices (see listDevices()).
+  ContextBuilder& deviceIndex(uint32_t index);
+  // Use the first device whose name contains `substring` (case-insensitive) and can serve.
+  ContextBuilder& deviceName(std::string substring);
+  // VK_LAYER_KHRONOS_validation plus a messenger that counts errors. Off by default.
+  ContextBuilder& validation(bool enabled);
+  // The layer's synchronization validation as well (slower); implies validation.
+  ContextBuilder& synchronizationValidation(bool enabled);
+  // Object names for debuggers (RenderDoc, Nsight) without validation; on with validation.
+  ContextBuilder& debugNames(bool enabled);
+
+  // Without a device filter: the first discrete GPU that supports the requirements, else the
+  // first device that does. Throws ContextError when no device qualifies, listing each device
+  // seen and what it lacks; VulkanError when a Vulkan call fails.
+  Context build() const;
+
+ private:
+  CapabilitySet required_{Capability::Compute};
+  std::optional<uint32_t> deviceIndex_;
+  std::optional<std::string> deviceName_;
+  bool validation_ = false;
+  bool synchronizationValidation_ = false;
+  bool debugNames_ = false;
+};
+
+}  // namespace amrstream::vk

@@ -1,0 +1,201 @@
+// ContextBuilder::build(): instance, device choice, logical device with the features of the
+// requested capabilities, queue and command pool.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "vk/context.hpp"
+#include "vk/instance.hpp"
+#include "vk/vk_error.hpp"
+
+namespace amrstream::vk {
+namespace {
+
+struct Candidate {
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  DeviceSupport support;
+  DeviceProperties properties;
+  DeviceReport report;
+};
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string listSeen(const std::vector<Candidate>& all) {
+  std::string text = "devices seen:";
+  for (const Candidate& c : all) text += "\n  " + describeDevice(c.report);
+  return text;
+}
+
+Candidate chooseDevice(VkInstance instance, CapabilitySet required,
+                       const std::optional<uint32_t>& index,
+                       const std::optional<std::string>& name) {
+  std::vector<Candidate> all;
+  const auto devices = enumeratePhysicalDevices(instance);
+  for (uint32_t i = 0; i < devices.size(); ++i) {
+    Candidate c{devices[i], probeSupport(devices[i]), {}, {}};
+    c.properties = queryProperties(devices[i], c.support);
+    c.report = makeReport(i, c.support, c.properties);
+    all.push_back(std::move(c));
+  }
+  if (all.empty()) {
+    throw ContextError(
+        "no Vulkan device found: install a driver (Debian: apt-get install -t "
+        "bookworm-backports mesa-vulkan-drivers) or check VK_DRIVER_FILES");
+  }
+
+  std::vector<const Candidate*> pool;
+  if (index) {
+    if (*index >= all.size()) {
+      throw ContextError(fmt::format("no Vulkan device has index {}; {}", *index, listSeen(all)));
+    }
+    pool.push_back(&all[*index]);
+  } else {
+    for (const Candidate& c : all) {
+      if (!name || lowercase(c.report.name).find(lowercase(*name)) != std::string::npos) {
+        pool.push_back(&c);
+      }
+    }
+    if (pool.empty()) {
+      throw ContextError(
+          fmt::format("no Vulkan device name contains '{}'; {}", *name, listSeen(all)));
+    }
+  }
+
+  const Candidate* chosen = nullptr;
+  for (const Candidate* c : pool) {
+    if (!c->report.supports(required)) continue;
+    if (c->report.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) {
+      chosen = c;
+      break;
+    }
+    if (chosen == nullptr) chosen = c;
+  }
+  if (chosen == nullptr) {
+    if (pool.size() == 1) throw ContextError(describeMissing(pool.front()->report, required));
+    std::string reasons;
+    for (const Candidate* c : pool) reasons += "\n  " + describeMissing(c->report, required);
+    throw ContextError(
+        fmt::format("no Vulkan device supports {}:{}", required.withImplied().toString(), reasons));
+  }
+  return *chosen;
+}
+
+}  // namespace
+
+Context ContextBuilder::build() const {
+  Context ctx;
+  const bool validation = validation_ || synchronizationValidation_;
+  if (validation) ctx.validationLog_ = std::make_shared<ValidationLog>();
+
+  Instance instance = createInstance({validation, synchronizationValidation_,
+                                      validation || debugNames_, ctx.validationLog_.get()});
+  ctx.instance_ = std::move(instance.handle);
+  ctx.debugUtils_ = instance.debugUtilsEnabled;
+  ctx.instanceFunctions_ = InstanceFunctions::load(ctx.instance(), ctx.debugUtils_);
+  if (validation) {
+    if (!ctx.debugUtils_) {
+      throw ContextError(
+          "the validation layer offers no VK_EXT_debug_utils, so its errors "
+          "could not be counted");
+    }
+    const VkDebugUtilsMessengerCreateInfoEXT info = ctx.validationLog_->messengerCreateInfo();
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    AMRSTREAM_VK_CHECK(ctx.instanceFunctions_.vkCreateDebugUtilsMessengerEXT(ctx.instance(), &info,
+                                                                             nullptr, &messenger));
+    ctx.messenger_ = UniqueHandle<VkDebugUtilsMessengerEXT>(
+        {ctx.instance(), ctx.instanceFunctions_.vkDestroyDebugUtilsMessengerEXT.get()}, messenger);
+  }
+
+  CapabilitySet capabilities = required_.withImplied();
+  Candidate chosen = chooseDevice(ctx.instance(), capabilities, deviceIndex_, deviceName_);
+  // Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
+  // enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
+  // request for them alone enables whichever of the two the device has.
+  if (capabilities.contains(Capability::AccelerationStructure) &&
+      !capabilities.contains(Capability::RayQuery) &&
+      !capabilities.contains(Capability::RayTracingPipeline)) {
+    capabilities.insert(chosen.report.status(Capability::RayQuery).supported()
+                            ? Capability::RayQuery
+                            : Capability::RayTracingPipeline);
+  }
+  ctx.physicalDevice_ = chosen.physicalDevice;
+  ctx.report_ = std::move(chosen.report);
+  ctx.properties_ = chosen.properties;
+  ctx.capabilities_ = capabilities;
+  ctx.shaderInt64_ = chosen.support.shaderInt64;
+  ctx.bufferDeviceAddress_ = chosen.support.bufferDeviceAddress;
+  ctx.queueFamilyIndex_ = *chosen.support.computeQueueFamily;
+  if (!capabilities.contains(Capability::AccelerationStructure)) {
+    ctx.properties_.accelerationStructure = {};
+  }
+  if (!capabilities.contains(Capability::RayTracingPipeline)) {
+    ctx.properties_.rayTracingPipeline = {};
+  }
+
+  std::vector<const char*> extensions;
+  for (Capability c : kAllCapabilities) {
+    if (!capabilities.contains(c)) continue;
+    for (const char* extension : requirementsOf(c).extensions) extensions.push_back(extension);
+  }
+
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.features.shaderInt64 = ctx.shaderInt64_ ? VK_TRUE : VK_FALSE;
+  VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  vulkan12.scalarBlockLayout = VK_TRUE;
+  vulkan12.bufferDeviceAddress = ctx.bufferDeviceAddress_ ? VK_TRUE : VK_FALSE;
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR accel{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  accel.accelerationStructure = VK_TRUE;
+  VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  rayQuery.rayQuery = VK_TRUE;
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  pipeline.rayTracingPipeline = VK_TRUE;
+
+  void** next = &features.pNext;
+  auto chain = [&next](auto& s) {
+    *next = &s;
+    next = &s.pNext;
+  };
+  chain(vulkan12);
+  if (capabilities.contains(Capability::AccelerationStructure)) chain(accel);
+  if (capabilities.contains(Capability::RayQuery)) chain(rayQuery);
+  if (capabilities.contains(Capability::RayTracingPipeline)) chain(pipeline);
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = ctx.queueFamilyIndex_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  deviceInfo.pNext = &features;
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  deviceInfo.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  deviceInfo.ppEnabledExtensionNames = extensions.data();
+  VkDevice device = VK_NULL_HANDLE;
+  AMRSTREAM_VK_CHECK(vkCreateDevice(ctx.physicalDevice_, &deviceInfo, nullptr, &device));
+  ctx.device_ = UniqueHandle<VkDevice>(NoOwner{}, device);
+  ctx.functions_ =
+      DeviceFunctions::load(device, capabilities.contains(Capability::AccelerationStructure),
+                            capabilities.contains(Capability::RayTracingPipeline));
+  vkGetDeviceQueue(device, ctx.queueFamilyIndex_, 0, &ctx.queue_);
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags =
+      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = ctx.queueFamilyIndex_;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  AMRSTREAM_VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+  ctx.commandPool_ = UniqueHandle<VkCommandPool>(device, pool);
+  return ctx;
+}
+
+}  // namespace amrstream::vk
