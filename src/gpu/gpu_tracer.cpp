@@ -1,0 +1,197 @@
+#include "gpu_tracer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <stdexcept>
+
+#include "vk/buffer_transfer.hpp"
+#include "vk/commands.hpp"
+#include "vk/context.hpp"
+#include "vk/vk_error.hpp"
+
+namespace amrstream::gpu {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// Bytes per trace point in the output arrays: position, time, vector.
+constexpr std::size_t kPointBytes = 2 * sizeof(glm::vec3) + sizeof(float);
+
+std::vector<VkAabbPositionsKHR> regionBoxes(const bricks::RegionSet& regions) {
+  std::vector<VkAabbPositionsKHR> boxes(regions.regions.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const shared::Region& r = regions.regions[i];
+    boxes[i] = {r.lower.x, r.lower.y, r.lower.z, r.upper.x, r.upper.y, r.upper.z};
+  }
+  return boxes;
+}
+
+VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
+  return {buffer.handle(), 0, VK_WHOLE_SIZE};
+}
+
+}  // namespace
+
+GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume)
+    : ctx_(&ctx), volume_(&volume) {
+  if (backend == Backend::Cpu) throw std::invalid_argument("GpuTracer: cpu is not a GPU backend");
+  bricks_ = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
+  values_ = vk::uploadToDeviceLocal(ctx, volume.values, kStorage, "vector values");
+  regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
+  regionBricks_ =
+      vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
+  if (backend == Backend::Compute)
+    tree_ = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
+  else
+    scene_ = vk::buildAabbScene(ctx, regionBoxes(volume.regions), "regions");
+  kernel_ = createTraceKernel(ctx, backend);
+}
+
+std::size_t GpuTracer::seedsPerChunk(std::uint32_t capacity) const {
+  const std::vector<VkDeviceSize> heaps = ctx_->memoryHeapSizes();
+  const VkDeviceSize largestHeap =
+      heaps.empty() ? 0 : *std::max_element(heaps.begin(), heaps.end());
+  const std::size_t byRange =
+      ctx_->limits().maxStorageBufferRange / (std::size_t(capacity) * sizeof(glm::vec3));
+  const std::size_t byMemory = largestHeap / 4 / (std::size_t(capacity) * kPointBytes);
+  const std::size_t byDispatch =
+      std::size_t(ctx_->limits().maxComputeWorkGroupCount[0]) * kernel_.workgroupSize;
+  return std::min({byRange, byMemory, byDispatch});
+}
+
+flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
+                                const flow::TraceOptions& options,
+                                const std::function<void(std::size_t)>& progress) {
+  flow::TraceSet out;
+  out.resize(static_cast<std::uint32_t>(seeds.size()), options.maxSteps + 1);
+  out.vectorName = volume_->vectorName;
+  const std::size_t chunk = seedsPerChunk(out.capacity);
+  if (chunk == 0)
+    throw std::length_error(fmt::format(
+        "one trace of {} points ({:.1f} MiB of positions) does not fit in the device's storage "
+        "buffer range of {:.1f} MiB; lower --steps",
+        out.capacity, double(out.capacity) * sizeof(glm::vec3) / 0x1p20,
+        double(ctx_->limits().maxStorageBufferRange) / 0x1p20));
+  for (std::size_t first = 0; first < seeds.size(); first += chunk) {
+    const std::size_t count = std::min(chunk, seeds.size() - first);
+    traceChunk(seeds.subspan(first, count), options, out, static_cast<std::uint32_t>(first));
+    if (progress) progress(first + count);
+  }
+  return out;
+}
+
+void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                           flow::TraceSet& out, std::uint32_t firstSeed) {
+  const vk::Context& ctx = *ctx_;
+  const shared::TraceParams params = flow::makeTraceParams(*volume_, options, seeds.size());
+  vk::Buffer paramsBuffer =
+      vk::Buffer::upload(ctx, sizeof(params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "trace params");
+  std::memcpy(paramsBuffer.mapped().data(), &params, sizeof(params));
+
+  std::vector<glm::vec3> seedCells(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    seedCells[i] = glm::vec3(volume_->transform.toCellUnits(seeds[i]));
+  const vk::Buffer seedBuffer = vk::uploadToDeviceLocal(ctx, seedCells, kStorage, "seeds");
+
+  const std::size_t points = seeds.size() * std::size_t(params.capacity);
+  const VkBufferUsageFlags outputUsage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  const vk::Buffer positions =
+      vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), outputUsage, "positions");
+  const vk::Buffer times =
+      vk::Buffer::deviceLocal(ctx, points * sizeof(float), outputUsage, "times");
+  const vk::Buffer vectors =
+      vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), outputUsage, "vectors");
+  const vk::Buffer pointCounts = vk::Buffer::deviceLocal(ctx, seeds.size() * sizeof(std::uint32_t),
+                                                         outputUsage, "point counts");
+  const vk::Buffer reasons =
+      vk::Buffer::deviceLocal(ctx, seeds.size() * sizeof(std::int32_t), outputUsage, "reasons");
+
+  // One descriptor set for this chunk.
+  std::array<VkDescriptorPoolSize, 3> poolSizes{
+      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 11},
+       {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
+  VkDescriptorPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = kernel_.backend == Backend::Compute ? 2 : 3;
+  poolInfo.pPoolSizes = poolSizes.data();
+  VkDescriptorPool rawPool;
+  AMRSTREAM_VK_CHECK(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &rawPool));
+  const vk::UniqueHandle<VkDescriptorPool> pool(ctx.device(), rawPool);
+  VkDescriptorSetAllocateInfo allocInfo{};
+  allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  allocInfo.descriptorPool = rawPool;
+  allocInfo.descriptorSetCount = 1;
+  const VkDescriptorSetLayout setLayout = kernel_.setLayout.get();
+  allocInfo.pSetLayouts = &setLayout;
+  VkDescriptorSet set;
+  AMRSTREAM_VK_CHECK(vkAllocateDescriptorSets(ctx.device(), &allocInfo, &set));
+
+  const std::array<VkDescriptorBufferInfo, kTraceBindingCount> buffers{
+      whole(paramsBuffer),  whole(bricks_),     whole(values_),   whole(regions_),
+      whole(regionBricks_), whole(seedBuffer),  whole(positions), whole(times),
+      whole(vectors),       whole(pointCounts), whole(reasons),   whole(tree_)};
+  std::array<VkWriteDescriptorSet, kTraceBindingCount> writes{};
+  for (std::uint32_t i = 0; i < kTraceBindingCount; ++i) {
+    writes[i] = {};
+    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[i].dstSet = set;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType =
+        i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &buffers[i];
+  }
+  VkWriteDescriptorSetAccelerationStructureKHR sceneWrite{};
+  sceneWrite.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR;
+  VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+  if (scene_) {
+    tlas = scene_->tlas.handle();
+    sceneWrite.accelerationStructureCount = 1;
+    sceneWrite.pAccelerationStructures = &tlas;
+    writes[kLocateBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    writes[kLocateBinding].pBufferInfo = nullptr;
+    writes[kLocateBinding].pNext = &sceneWrite;
+  }
+  vkUpdateDescriptorSets(ctx.device(), kTraceBindingCount, writes.data(), 0, nullptr);
+
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, kernel_.bindPoint, kernel_.pipeline.get());
+    vkCmdBindDescriptorSets(cmd, kernel_.bindPoint, kernel_.pipelineLayout.get(), 0, 1, &set, 0,
+                            nullptr);
+    const std::uint32_t n = static_cast<std::uint32_t>(seeds.size());
+    if (kernel_.backend == Backend::Pipeline) {
+      const ShaderBindingTable& sbt = kernel_.bindingTable;
+      ctx.functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable, n, 1,
+                                        1);
+    } else {
+      vkCmdDispatch(cmd, (n + kernel_.workgroupSize - 1) / kernel_.workgroupSize, 1, 1);
+    }
+    vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
+  });
+
+  // Kernels write positions in cell units; convert in double precision like the CPU path.
+  const auto cellPositions = vk::readBackAs<glm::vec3>(ctx, positions);
+  const auto chunkTimes = vk::readBackAs<float>(ctx, times);
+  const auto chunkVectors = vk::readBackAs<glm::vec3>(ctx, vectors);
+  const auto chunkCounts = vk::readBackAs<std::uint32_t>(ctx, pointCounts);
+  const auto chunkReasons = vk::readBackAs<std::int32_t>(ctx, reasons);
+  const glm::dvec3 origin = volume_->transform.origin, spacing = volume_->transform.spacing;
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    const std::uint32_t seed = firstSeed + static_cast<std::uint32_t>(s);
+    out.pointCounts[seed] = chunkCounts[s];
+    out.reasons[seed] = chunkReasons[s];
+    for (std::uint32_t p = 0; p < chunkCounts[s]; ++p) {
+      const std::size_t from = s * params.capacity + p, to = out.at(seed, p);
+      out.positions[to] = glm::vec3(origin + spacing * glm::dvec3(cellPositions[from]));
+      out.times[to] = chunkTimes[from];
+      out.vectors[to] = chunkVectors[from];
+    }
+  }
+}
+
+}  // namespace amrstream::gpu

@@ -1,0 +1,56 @@
+#pragma once
+// Streamline tracing on a Vulkan device with one of the GPU backends. Owns the volume's device
+// buffers (bricks, values, regions, region bricks), the backend's point-location structure (the
+// region tree for `compute`, an AABB acceleration structure for `rayquery` and `pipeline`) and
+// the kernel; trace() may be called many times.
+//
+// Runs proceed in chunks of seeds so that no output array passes maxStorageBufferRange or a
+// quarter of the device's largest memory heap; the results are those of one run.
+
+#include <cstddef>
+#include <functional>
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+
+#include "backend.hpp"
+#include "flow/integrator.hpp"
+#include "flow/trace_set.hpp"
+#include "flow/vector_volume.hpp"
+#include "trace_kernel.hpp"
+#include "vk/aabb_scene.hpp"
+#include "vk/buffer.hpp"
+
+namespace amrstream::gpu {
+
+class GpuTracer {
+ public:
+  // The context must have requiredCapabilities(backend) and outlive the tracer; `volume` must
+  // outlive it too.
+  GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume);
+
+  // Seeds in physical coordinates, as flow::traceStreamlines; the same output layout.
+  // `progress` is called with the number of seeds finished after each chunk.
+  flow::TraceSet trace(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                       const std::function<void(std::size_t)>& progress = {});
+
+  Backend backend() const { return kernel_.backend; }
+  // Seeds per dispatch for traces of `capacity` points.
+  std::size_t seedsPerChunk(std::uint32_t capacity) const;
+
+ private:
+  void traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                  flow::TraceSet& out, std::uint32_t firstSeed);
+
+  const vk::Context* ctx_;
+  const flow::VectorVolume* volume_;
+  vk::Buffer bricks_;
+  vk::Buffer values_;
+  vk::Buffer regions_;
+  vk::Buffer regionBricks_;
+  vk::Buffer tree_;                     // compute backend
+  std::optional<vk::AabbScene> scene_;  // rayquery and pipeline backends
+  TraceKernel kernel_;
+};
+
+}  // namespace amrstream::gpu

@@ -1,0 +1,45 @@
+#pragma once
+// The tracing kernel of one backend: its descriptor set layout (the bindings of
+// shaders/glsl/include/amr_buffers.glsl plus binding 11, the point-location structure), its
+// pipeline layout and pipeline, and for the ray tracing pipeline its shader binding table.
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include "backend.hpp"
+#include "vk/buffer.hpp"
+#include "vk/unique_handle.hpp"
+
+namespace amrstream::vk {
+class Context;
+}
+
+namespace amrstream::gpu {
+
+inline constexpr std::uint32_t kTraceBindingCount = 12;
+inline constexpr std::uint32_t kLocateBinding = 11;
+
+struct ShaderBindingTable {
+  vk::Buffer buffer;
+  VkStridedDeviceAddressRegionKHR raygen{};
+  VkStridedDeviceAddressRegionKHR miss{};
+  VkStridedDeviceAddressRegionKHR hit{};
+  VkStridedDeviceAddressRegionKHR callable{};
+};
+
+struct TraceKernel {
+  Backend backend = Backend::Compute;
+  VkPipelineBindPoint bindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
+  VkShaderStageFlags stages = 0;
+  std::uint32_t workgroupSize = 1;  // compute kernels only
+  vk::UniqueHandle<VkDescriptorSetLayout> setLayout;
+  vk::UniqueHandle<VkPipelineLayout> pipelineLayout;
+  vk::UniqueHandle<VkPipeline> pipeline;
+  ShaderBindingTable bindingTable;  // pipeline backend only
+};
+
+// Throws std::invalid_argument for Backend::Cpu.
+TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend);
+
+}  // namespace amrstream::gpu

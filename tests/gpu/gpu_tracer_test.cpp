@@ -1,0 +1,136 @@
+// Every GPU backend against the CPU reference: the same datasets, seeds and options must give
+// the same point counts and termination reasons, and positions within a stated tolerance.
+
+#include "gpu/gpu_tracer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "flow/integrator.hpp"
+#include "flow/seeds.hpp"
+#include "gpu_test.hpp"
+#include "random_amr.hpp"
+#include "synth/generators.hpp"
+
+namespace amrstream::gpu {
+namespace {
+
+// Both paths evaluate the same float formulas in the same order; they differ only where the
+// shader compiler contracts a*b+c into an FMA or rounds a division differently, a few ulps per
+// operation. On these smooth, non-chaotic fields that stays below 1e-4 finest cells over a few
+// hundred steps.
+constexpr double kToleranceInFinestCells = 1e-4;
+
+class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
+ protected:
+  vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
+
+  void compare(const flow::VectorVolume& volume, const flow::SeedList& seeds,
+               const flow::TraceOptions& options) {
+    const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+    GpuTracer tracer(ctx(), GetParam(), volume);
+    const flow::TraceSet gpu = tracer.trace(seeds.points, options);
+    ASSERT_EQ(gpu.seedCount, cpu.seedCount);
+    ASSERT_EQ(gpu.capacity, cpu.capacity);
+    const glm::dvec3 spacing = volume.transform.spacing;
+    const double tolerance = kToleranceInFinestCells * std::min({spacing.x, spacing.y, spacing.z});
+    std::size_t points = 0;
+    for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
+      ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
+      ASSERT_EQ(gpu.pointCounts[s], cpu.pointCounts[s]) << "seed " << s;
+      for (std::uint32_t p = 0; p < cpu.pointCounts[s]; ++p, ++points) {
+        const std::size_t i = cpu.at(s, p);
+        ASSERT_LE(glm::length(glm::dvec3(gpu.positions[i]) - glm::dvec3(cpu.positions[i])),
+                  tolerance)
+            << "seed " << s << " point " << p;
+        ASSERT_NEAR(gpu.times[i], cpu.times[i], 1e-5f * std::max(1.0f, std::abs(cpu.times[i])));
+        ASSERT_LE(glm::length(gpu.vectors[i] - cpu.vectors[i]),
+                  1e-5f * std::max(1.0f, glm::length(cpu.vectors[i])));
+      }
+    }
+    EXPECT_GT(points, cpu.seedCount) << "the traces should take steps";
+  }
+
+  static flow::SeedList seedsIn(const flow::VectorVolume& volume, std::size_t count) {
+    const glm::dvec3 lo = flow::domainLower(volume), hi = flow::domainUpper(volume);
+    return flow::randomSeedsInBox(lo, hi - 1e-3 * (hi - lo), count, 7);
+  }
+};
+
+flow::VectorVolume volumeOf(const bricks::AmrField& field) {
+  return flow::buildVectorVolume(field, flow::chooseVectorChannels(field, ""));
+}
+
+TEST_P(GpuTracerTest, MatchesCpuOnRotation) {
+  const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  flow::TraceOptions options;
+  options.maxSteps = 300;
+  compare(volume, seedsIn(volume, 64), options);
+}
+
+TEST_P(GpuTracerTest, MatchesCpuOnAbcInEveryStepMode) {
+  const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  for (flow::StepMode mode : {flow::StepMode::Cell, flow::StepMode::Time, flow::StepMode::Arc}) {
+    flow::TraceOptions options;
+    options.stepMode = mode;
+    options.stepSize = mode == flow::StepMode::Time ? 1e-3f : 0.25f;
+    options.maxSteps = 200;
+    SCOPED_TRACE(static_cast<int>(mode));
+    compare(volume, seedsIn(volume, 48), options);
+  }
+}
+
+TEST_P(GpuTracerTest, MatchesCpuOnRandomMultiLevelLayouts) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    testing::RandomAmrOptions layout;
+    layout.levels = 4;
+    layout.rootCells = glm::ivec3(4, 3, 3);
+    const glm::dvec3 centre(16.0, 12.0, 12.0);
+    const bricks::AmrField field = testing::randomAmr(seed, layout, [&](glm::dvec3 p) {
+      const glm::dvec3 r = p - centre;  // a rotation with a slow drift along z
+      return glm::vec3(-0.05 * r.y, 0.05 * r.x, 0.02);
+    });
+    const flow::VectorVolume volume = volumeOf(field);
+    flow::TraceOptions options;
+    options.maxSteps = 300;
+    SCOPED_TRACE(seed);
+    compare(volume, seedsIn(volume, 64), options);
+  }
+}
+
+TEST_P(GpuTracerTest, MatchesCpuOnEveryTerminationReason) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 3;
+  const bricks::AmrField field = testing::randomAmr(9, layout, [](glm::dvec3 p) {
+    return glm::vec3(1.0 - p.x / 12.0, 0.1, 0.0);  // slows down towards x = 12, stops there
+  });
+  const flow::VectorVolume volume = volumeOf(field);
+  flow::TraceOptions options;
+  options.maxSteps = 120;
+  options.terminalSpeed = 0.2f;  // stagnation near x = 9.6
+  options.maxLength = 30.0f;
+  compare(volume, seedsIn(volume, 96), options);
+}
+
+TEST_P(GpuTracerTest, RunsInChunksWhenTheOutputIsLarge) {
+  const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  flow::TraceOptions options;
+  options.maxSteps = 20;
+  const std::size_t chunk = tracer.seedsPerChunk(options.maxSteps + 1);
+  EXPECT_GT(chunk, 0u);
+  EXPECT_LE(chunk * (options.maxSteps + 1) * sizeof(glm::vec3),
+            ctx().limits().maxStorageBufferRange);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuTracerTest,
+                         ::testing::Values(Backend::RayQuery, Backend::Pipeline, Backend::Compute),
+                         [](const auto& info) { return std::string(backendName(info.param)); });
+
+}  // namespace
+}  // namespace amrstream::gpu
