@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "devices_command.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
 #include "trace_command.hpp"
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   amrstream::cli::addTraceCommand(app);
   amrstream::cli::addInfoCommand(app);
   amrstream::cli::addGenCommand(app);
+  amrstream::cli::addDevicesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

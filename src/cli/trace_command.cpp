@@ -1,9 +1,9 @@
 #include "trace_command.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -15,6 +15,7 @@
 #include "formats/load_input.hpp"
 #include "output/vtp_writer.hpp"
 #include "progress.hpp"
+#include "tracer_choice.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -34,7 +35,7 @@ struct TraceCommandOptions {
   std::string stepMode = "cell";
   float terminalSpeed = 1e-12f;
   float maxLength = 0.0f;
-  std::string backend = "cpu";
+  BackendRequest backend;
   std::string out = "traces.vtp";
 };
 
@@ -128,15 +129,15 @@ void runTrace(const TraceCommandOptions& o) {
   options.maxLength = o.maxLength;
   fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()),
              o.seedsFile.empty() ? fmt::format("random (seed {}) in a box", o.seed) : o.seedsFile);
-  fmt::print("tracing    backend cpu ({} threads), step mode {}, h = {:g}, at most {} steps\n",
-             tbb::info::default_concurrency(), o.stepMode, options.stepSize, o.steps);
+  fmt::print("stepping   mode {}, h = {:g}, at most {} steps\n", o.stepMode, options.stepSize,
+             o.steps);
 
   clock.restart();
   flow::TraceSet traces;
   {
     Progress progress("tracing", seeds.points.size());
-    traces = flow::traceStreamlines(volume, seeds.points, options,
-                                    [&](std::size_t done) { progress.update(done); });
+    traces = traceWithBackend(o.backend, volume, seeds.points, options,
+                              [&](std::size_t done) { progress.update(done); });
   }
   const double traceSeconds = clock.seconds();
 
@@ -206,11 +207,20 @@ void addTraceCommand(CLI::App& app) {
       ->add_option("--max-length", options->maxLength,
                    "stop before the trace's physical length passes this (0: no limit)")
       ->capture_default_str();
-  command->add_option("--backend", options->backend, "tracing backend")
+  command
+      ->add_option("--backend", options->backend.backend,
+                   "auto (rayquery, else pipeline, else compute, else cpu), rayquery, "
+                   "pipeline, compute or cpu")
       ->capture_default_str()
-      ->check(CLI::IsMember({"cpu"}));
+      ->check(CLI::IsMember({"auto", "rayquery", "pipeline", "compute", "cpu"}));
+  command->add_option("--device", options->backend.device,
+                      "the Vulkan device whose name contains this (see `amrstream devices`)");
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
-  command->callback([options] { runTrace(*options); });
+  command->callback([options] {
+    const char* validation = std::getenv("AMRSTREAM_VALIDATION");
+    options->backend.validation = validation && std::string(validation) == "1";
+    runTrace(*options);
+  });
 }
 
 }  // namespace amrstream::cli

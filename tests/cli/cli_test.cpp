@@ -51,8 +51,8 @@ class Cli : public ::testing::Test {
 const std::string kSmall = " --levels 3 --root-blocks 2 --target-cells 20000";
 
 TEST_F(Cli, TraceBuiltinWritesVtpAndPrintsSummary) {
-  const Outcome r =
-      run("trace builtin:rotation" + kSmall + " --steps 50 --count 16 --out " + path("t.vtp"));
+  const Outcome r = run("trace builtin:rotation" + kSmall +
+                        " --backend cpu --steps 50 --count 16 --out " + path("t.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("seeds      16"));
   EXPECT_THAT(r.output, HasSubstr("reasons"));
@@ -71,8 +71,8 @@ TEST_F(Cli, GenWritesExaFilesThatInfoAndTraceRead) {
   EXPECT_THAT(r.output, HasSubstr("regions"));
   EXPECT_THAT(r.output, HasSubstr("velx"));
   std::ofstream(path("seeds.txt")) << "0.5 0.5 0.5\n0.25, 0.75, 0.5\n";
-  r = run("trace " + path("abc.exa") + " --seeds " + path("seeds.txt") + " --steps 20 --out " +
-          path("abc.vtp"));
+  r = run("trace " + path("abc.exa") + " --backend cpu --seeds " + path("seeds.txt") +
+          " --steps 20 --out " + path("abc.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("seeds      2 from"));
 }
@@ -127,8 +127,8 @@ TEST_F(Cli, BadOptionsFail) {
 }
 
 TEST_F(Cli, UnwritableOutputFails) {
-  const Outcome r = run("trace builtin:rotation" + kSmall + " --steps 5 --count 4 --out " +
-                        path("no/such/dir/t.vtp"));
+  const Outcome r = run("trace builtin:rotation" + kSmall +
+                        " --backend cpu --steps 5 --count 4 --out " + path("no/such/dir/t.vtp"));
   EXPECT_NE(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr(path("no/such/dir/t.vtp")));
 }

@@ -8,7 +8,7 @@ amrstream=$1 python=$2 check=$3 dir=$4
 mkdir -p "$dir"
 out="$dir/t.vtp"
 rm -f "$out"
-summary=$("$amrstream" trace builtin:cloud --steps 1000 --count 64 --out "$out")
+summary=$("$amrstream" trace builtin:cloud --backend cpu --steps 1000 --count 64 --out "$out")
 echo "$summary"
 line=$(echo "$summary" | grep '^output ')
 lines=$(echo "$line" | sed -n 's/.*(\([0-9,]*\) polylines, \([0-9,]*\) points).*/\1/p' | tr -d ,)

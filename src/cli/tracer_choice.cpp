@@ -1,0 +1,84 @@
+#include "tracer_choice.hpp"
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "gpu/backend.hpp"
+#include "gpu/gpu_tracer.hpp"
+#include "util/input_error.hpp"
+#include "vk/context.hpp"
+#include "vk/context_error.hpp"
+#include "vk/device_report.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+bool nameMatches(const std::string& name, const std::string& filter) {
+  const auto lower = [](std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+  };
+  return lower(name).find(lower(filter)) != std::string::npos;
+}
+
+// The device `auto` uses: the requested one, else the first discrete GPU with a GPU backend,
+// else the first device with one.
+const vk::DeviceReport* autoDevice(const std::vector<vk::DeviceReport>& devices,
+                                   const std::string& filter) {
+  const vk::CapabilitySet compute = gpu::requiredCapabilities(gpu::Backend::Compute);
+  const vk::DeviceReport* best = nullptr;
+  for (const vk::DeviceReport& d : devices) {
+    if (!filter.empty() && !nameMatches(d.name, filter)) continue;
+    if (!d.supports(compute)) continue;
+    if (d.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) return &d;
+    if (!best) best = &d;
+  }
+  return best;
+}
+
+}  // namespace
+
+flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
+                                std::span<const glm::dvec3> seeds,
+                                const flow::TraceOptions& options,
+                                const std::function<void(std::size_t)>& progress) {
+  gpu::Backend backend;
+  std::string deviceFilter = request.device;
+  if (request.backend == "auto") {
+    std::vector<vk::DeviceReport> devices;
+    try {
+      devices = vk::listDevices();
+    } catch (const vk::ContextError& e) {
+      fmt::print("backend    cpu: no Vulkan ({})\n", e.what());
+    }
+    std::string why;
+    const vk::DeviceReport* device = autoDevice(devices, request.device);
+    backend = gpu::chooseBackend(device, why);
+    if (device) deviceFilter = device->name;
+    fmt::print("backend    auto: {}\n", why);
+  } else {
+    backend = *gpu::parseBackend(request.backend);
+  }
+
+  if (backend == gpu::Backend::Cpu) {
+    fmt::print("tracing    on the CPU reference ({} threads)\n", tbb::info::default_concurrency());
+    return flow::traceStreamlines(volume, seeds, options, progress);
+  }
+  vk::ContextBuilder builder;
+  builder.require(gpu::requiredCapabilities(backend)).validation(request.validation);
+  if (!deviceFilter.empty()) builder.deviceName(deviceFilter);
+  const vk::Context ctx = builder.build();
+  gpu::GpuTracer tracer(ctx, backend, volume);
+  fmt::print("tracing    backend {} on {}\n", gpu::backendName(backend), ctx.deviceName());
+  flow::TraceSet traces = tracer.trace(seeds, options, progress);
+  if (ctx.validationErrorCount() > 0)
+    throw std::runtime_error(
+        fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
+  return traces;
+}
+
+}  // namespace amrstream::cli
