@@ -1,18 +1,22 @@
 // RK4 streamline integration with the step mode's direction scaling and VTK termination codes;
 // twin of src/flow/integrator.cpp (traceSeed). Needs sampler.glsl.
 
+// `precise` throughout, as in sampler.glsl: no FMA contraction, like the CPU reference.
 float parameterStep(VectorSample s) {
-  return params.stepMode == AMRSTREAM_STEP_TIME ? params.stepSize
-                                                : params.stepSize * s.cellWidth * params.physicalCellWidth;
+  precise const float step = params.stepMode == AMRSTREAM_STEP_TIME
+                                 ? params.stepSize
+                                 : params.stepSize * s.cellWidth * params.physicalCellWidth;
+  return step;
 }
 
 vec3 direction(VectorSample s) {
-  vec3 v = s.value;
+  precise vec3 v = s.value;
   if (params.stepMode == AMRSTREAM_STEP_ARC) {
-    const float speed = length(v);
+    precise const float speed = length(v);
     v = speed > 0.0 ? v / speed : vec3(0.0);
   }
-  return parameterStep(s) * v * params.cellsPerPhysical;
+  precise const vec3 k = parameterStep(s) * v * params.cellsPerPhysical;
+  return k;
 }
 
 int sampleFailure(VectorSample s) {
@@ -23,9 +27,9 @@ int sampleFailure(VectorSample s) {
 
 void traceSeed(uint seedIndex) {
   const uint base = seedIndex * params.capacity;
-  vec3 x = seeds[seedIndex];
+  precise vec3 x = seeds[seedIndex];
   VectorSample s = sampleVector(x);
-  float time = 0.0, traceLength = 0.0;
+  precise float time = 0.0, traceLength = 0.0;
   uint points = 0;
   positions[base] = x;
   times[base] = time;
@@ -42,22 +46,25 @@ void traceSeed(uint seedIndex) {
       reason = AMRSTREAM_REASON_MAX_STEPS;
       break;
     }
-    const vec3 k1 = direction(s);
-    const VectorSample s2 = sampleVector(x + 0.5 * k1);
+    precise const vec3 k1 = direction(s);
+    precise const vec3 p2 = x + 0.5 * k1;
+    const VectorSample s2 = sampleVector(p2);
     if ((reason = sampleFailure(s2)) != AMRSTREAM_REASON_RUNNING) break;
-    const vec3 k2 = direction(s2);
-    const VectorSample s3 = sampleVector(x + 0.5 * k2);
+    precise const vec3 k2 = direction(s2);
+    precise const vec3 p3 = x + 0.5 * k2;
+    const VectorSample s3 = sampleVector(p3);
     if ((reason = sampleFailure(s3)) != AMRSTREAM_REASON_RUNNING) break;
-    const vec3 k3 = direction(s3);
-    const VectorSample s4 = sampleVector(x + k3);
+    precise const vec3 k3 = direction(s3);
+    precise const vec3 p4 = x + k3;
+    const VectorSample s4 = sampleVector(p4);
     if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
-    const vec3 k4 = direction(s4);
-    const vec3 next = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+    precise const vec3 k4 = direction(s4);
+    precise const vec3 next = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
     const VectorSample sNext = sampleVector(next);
     if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
 
     if (params.maxLength > 0.0) {
-      const float stepLength = length(params.spacing * (next - x));
+      precise const float stepLength = length(params.spacing * (next - x));
       if (traceLength + stepLength > params.maxLength) {
         reason = AMRSTREAM_REASON_MAX_LENGTH;
         break;

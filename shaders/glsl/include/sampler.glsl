@@ -26,28 +26,31 @@ VectorSample sampleVector(vec3 p) {
   s.located = true;
   s.cellWidth = region.finestCellWidth;
 
-  float weightSum = 0.0;
-  vec3 weighted = vec3(0.0);
+  // `precise` forbids fusing a*b+c into an FMA, which the CPU reference never does: both paths
+  // then round the same operations (NVIDIA's compiler fuses by default).
+  precise float weightSum = 0.0;
+  precise vec3 weighted = vec3(0.0);
   for (uint k = 0; k < region.brickCount; ++k) {
     const Brick brick = bricks[regionBricks[region.brickOffset + k]];
     const float width = float(1 << brick.level);
-    const vec3 local = (p - vec3(brick.lower)) / width - 0.5;
+    precise const vec3 local = (p - vec3(brick.lower)) / width - 0.5;
     const vec3 base = floor(local);
-    const vec3 frac = local - base;
+    precise const vec3 frac = local - base;
     const ivec3 lo = ivec3(base);
     for (int corner = 0; corner < 8; ++corner) {
       const ivec3 offset = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
       const ivec3 cell = lo + offset;
       if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, brick.size))) continue;
-      const vec3 axisWeight = mix(1.0 - frac, frac, vec3(offset));
-      const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+      precise const vec3 axisWeight = mix(1.0 - frac, frac, vec3(offset));
+      precise const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
       const uint slot = brick.valueOffset + uint(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
       weightSum += weight;
       weighted += weight * values[slot];
     }
   }
   if (!(weightSum > kMinWeightSum)) return s;
-  s.value = weighted / weightSum;
+  precise const vec3 value = weighted / weightSum;
+  s.value = value;
   s.valid = !any(isnan(s.value)) && !any(isinf(s.value));
   return s;
 }
