@@ -83,33 +83,26 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
   return out;
 }
 
-void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
-                           flow::TraceSet& out, std::uint32_t firstSeed) {
+GpuTracer::Outputs GpuTracer::makeOutputs(std::size_t seeds, std::uint32_t capacity) const {
   const vk::Context& ctx = *ctx_;
-  const shared::TraceParams params = flow::makeTraceParams(*volume_, options, seeds.size());
+  const std::size_t points = seeds * std::size_t(capacity);
+  const VkBufferUsageFlags usage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  return {vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), usage, "positions"),
+          vk::Buffer::deviceLocal(ctx, points * sizeof(float), usage, "times"),
+          vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), usage, "vectors"),
+          vk::Buffer::deviceLocal(ctx, seeds * sizeof(std::uint32_t), usage, "point counts"),
+          vk::Buffer::deviceLocal(ctx, seeds * sizeof(std::int32_t), usage, "reasons")};
+}
+
+void GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
+                         std::span<const glm::vec3> seedCells, const Outputs& outputs) const {
+  const vk::Context& ctx = *ctx_;
   vk::Buffer paramsBuffer =
       vk::Buffer::upload(ctx, sizeof(params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "trace params");
   std::memcpy(paramsBuffer.mapped().data(), &params, sizeof(params));
-
-  std::vector<glm::vec3> seedCells(seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    seedCells[i] = glm::vec3(volume_->transform.toCellUnits(seeds[i]));
   const vk::Buffer seedBuffer = vk::uploadToDeviceLocal(ctx, seedCells, kStorage, "seeds");
 
-  const std::size_t points = seeds.size() * std::size_t(params.capacity);
-  const VkBufferUsageFlags outputUsage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-  const vk::Buffer positions =
-      vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), outputUsage, "positions");
-  const vk::Buffer times =
-      vk::Buffer::deviceLocal(ctx, points * sizeof(float), outputUsage, "times");
-  const vk::Buffer vectors =
-      vk::Buffer::deviceLocal(ctx, points * sizeof(glm::vec3), outputUsage, "vectors");
-  const vk::Buffer pointCounts = vk::Buffer::deviceLocal(ctx, seeds.size() * sizeof(std::uint32_t),
-                                                         outputUsage, "point counts");
-  const vk::Buffer reasons =
-      vk::Buffer::deviceLocal(ctx, seeds.size() * sizeof(std::int32_t), outputUsage, "reasons");
-
-  // One descriptor set for this chunk.
+  // One descriptor set for this dispatch.
   std::array<VkDescriptorPoolSize, 3> poolSizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 11},
@@ -117,7 +110,7 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = kernel_.backend == Backend::Compute ? 2 : 3;
+  poolInfo.poolSizeCount = kernel.backend == Backend::Compute ? 2 : 3;
   poolInfo.pPoolSizes = poolSizes.data();
   VkDescriptorPool rawPool;
   AMRSTREAM_VK_CHECK(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &rawPool));
@@ -126,15 +119,18 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocInfo.descriptorPool = rawPool;
   allocInfo.descriptorSetCount = 1;
-  const VkDescriptorSetLayout setLayout = kernel_.setLayout.get();
+  const VkDescriptorSetLayout setLayout = kernel.setLayout.get();
   allocInfo.pSetLayouts = &setLayout;
   VkDescriptorSet set;
   AMRSTREAM_VK_CHECK(vkAllocateDescriptorSets(ctx.device(), &allocInfo, &set));
 
   const std::array<VkDescriptorBufferInfo, kTraceBindingCount> buffers{
-      whole(paramsBuffer),  whole(bricks_),     whole(values_),   whole(regions_),
-      whole(regionBricks_), whole(seedBuffer),  whole(positions), whole(times),
-      whole(vectors),       whole(pointCounts), whole(reasons),   whole(tree_)};
+      whole(paramsBuffer),      whole(bricks_),
+      whole(values_),           whole(regions_),
+      whole(regionBricks_),     whole(seedBuffer),
+      whole(outputs.positions), whole(outputs.times),
+      whole(outputs.vectors),   whole(outputs.pointCounts),
+      whole(outputs.reasons),   whole(tree_)};
   std::array<VkWriteDescriptorSet, kTraceBindingCount> writes{};
   for (std::uint32_t i = 0; i < kTraceBindingCount; ++i) {
     writes[i] = {};
@@ -160,26 +156,46 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   vkUpdateDescriptorSets(ctx.device(), kTraceBindingCount, writes.data(), 0, nullptr);
 
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, kernel_.bindPoint, kernel_.pipeline.get());
-    vkCmdBindDescriptorSets(cmd, kernel_.bindPoint, kernel_.pipelineLayout.get(), 0, 1, &set, 0,
+    vkCmdBindPipeline(cmd, kernel.bindPoint, kernel.pipeline.get());
+    vkCmdBindDescriptorSets(cmd, kernel.bindPoint, kernel.pipelineLayout.get(), 0, 1, &set, 0,
                             nullptr);
-    const std::uint32_t n = static_cast<std::uint32_t>(seeds.size());
-    if (kernel_.backend == Backend::Pipeline) {
-      const ShaderBindingTable& sbt = kernel_.bindingTable;
+    const std::uint32_t n = static_cast<std::uint32_t>(seedCells.size());
+    if (kernel.backend == Backend::Pipeline) {
+      const ShaderBindingTable& sbt = kernel.bindingTable;
       ctx.functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable, n, 1,
                                         1);
     } else {
-      vkCmdDispatch(cmd, (n + kernel_.workgroupSize - 1) / kernel_.workgroupSize, 1, 1);
+      vkCmdDispatch(cmd, (n + kernel.workgroupSize - 1) / kernel.workgroupSize, 1, 1);
     }
     vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
   });
+}
+
+std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
+  if (!probe_) probe_ = createTraceKernel(*ctx_, kernel_.backend, KernelProgram::LocateProbe);
+  const shared::TraceParams params =
+      flow::makeTraceParams(*volume_, flow::TraceOptions{}, cellPoints.size());
+  const Outputs outputs = makeOutputs(cellPoints.size(), 1);
+  dispatch(*probe_, params, cellPoints, outputs);
+  return vk::readBackAs<std::int32_t>(*ctx_, outputs.reasons);
+}
+
+void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                           flow::TraceSet& out, std::uint32_t firstSeed) {
+  const vk::Context& ctx = *ctx_;
+  const shared::TraceParams params = flow::makeTraceParams(*volume_, options, seeds.size());
+  std::vector<glm::vec3> seedCells(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    seedCells[i] = glm::vec3(volume_->transform.toCellUnits(seeds[i]));
+  const Outputs outputs = makeOutputs(seeds.size(), params.capacity);
+  dispatch(kernel_, params, seedCells, outputs);
 
   // Kernels write positions in cell units; convert in double precision like the CPU path.
-  const auto cellPositions = vk::readBackAs<glm::vec3>(ctx, positions);
-  const auto chunkTimes = vk::readBackAs<float>(ctx, times);
-  const auto chunkVectors = vk::readBackAs<glm::vec3>(ctx, vectors);
-  const auto chunkCounts = vk::readBackAs<std::uint32_t>(ctx, pointCounts);
-  const auto chunkReasons = vk::readBackAs<std::int32_t>(ctx, reasons);
+  const auto cellPositions = vk::readBackAs<glm::vec3>(ctx, outputs.positions);
+  const auto chunkTimes = vk::readBackAs<float>(ctx, outputs.times);
+  const auto chunkVectors = vk::readBackAs<glm::vec3>(ctx, outputs.vectors);
+  const auto chunkCounts = vk::readBackAs<std::uint32_t>(ctx, outputs.pointCounts);
+  const auto chunkReasons = vk::readBackAs<std::int32_t>(ctx, outputs.reasons);
   const glm::dvec3 origin = volume_->transform.origin, spacing = volume_->transform.spacing;
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const std::uint32_t seed = firstSeed + static_cast<std::uint32_t>(s);

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "backend.hpp"
 #include "flow/integrator.hpp"
@@ -34,11 +35,23 @@ class GpuTracer {
   flow::TraceSet trace(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                        const std::function<void(std::size_t)>& progress = {});
 
+  // The backend's locateRegion() for points in finest-cell units: the region id, or -1 outside
+  // the domain and in empty space. Used by tests to compare point location with brute force.
+  std::vector<std::int32_t> locate(std::span<const glm::vec3> cellPoints);
+
   Backend backend() const { return kernel_.backend; }
   // Seeds per dispatch for traces of `capacity` points.
   std::size_t seedsPerChunk(std::uint32_t capacity) const;
 
  private:
+  // Output buffers of one dispatch, in binding order (positions, times, vectors, point counts,
+  // reasons).
+  struct Outputs {
+    vk::Buffer positions, times, vectors, pointCounts, reasons;
+  };
+  Outputs makeOutputs(std::size_t seeds, std::uint32_t capacity) const;
+  void dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
+                std::span<const glm::vec3> seedCells, const Outputs& outputs) const;
   void traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                   flow::TraceSet& out, std::uint32_t firstSeed);
 
@@ -51,6 +64,7 @@ class GpuTracer {
   vk::Buffer tree_;                     // compute backend
   std::optional<vk::AabbScene> scene_;  // rayquery and pipeline backends
   TraceKernel kernel_;
+  std::optional<TraceKernel> probe_;  // created by the first locate()
 };
 
 }  // namespace amrstream::gpu

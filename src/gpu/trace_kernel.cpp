@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "locate_probe_compute_comp.h"
+#include "locate_probe_pipeline_rgen.h"
+#include "locate_probe_rayquery_comp.h"
 #include "locate_rchit.h"
 #include "locate_rint.h"
 #include "locate_rmiss.h"
@@ -86,9 +89,9 @@ void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
 }
 
 // Groups: 0 ray generation, 1 miss, 2 the procedural hit group (intersection + closest hit).
-void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel) {
-  const auto rgen = vk::createShaderModule(ctx, spirv(amrstream_spirv_trace_pipeline_rgen),
-                                           "trace_pipeline.rgen");
+void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
+                              std::span<const std::uint32_t> raygen) {
+  const auto rgen = vk::createShaderModule(ctx, raygen, "ray generation");
   const auto rmiss =
       vk::createShaderModule(ctx, spirv(amrstream_spirv_locate_rmiss), "locate.rmiss");
   const auto rint = vk::createShaderModule(ctx, spirv(amrstream_spirv_locate_rint), "locate.rint");
@@ -159,7 +162,8 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel) {
 
 }  // namespace
 
-TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend) {
+TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program) {
+  const bool probe = program == KernelProgram::LocateProbe;
   TraceKernel kernel;
   kernel.backend = backend;
   switch (backend) {
@@ -168,17 +172,23 @@ TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend) {
       kernel.bindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
       kernel.stages = VK_SHADER_STAGE_COMPUTE_BIT;
       createLayouts(ctx, kernel);
-      createComputePipeline(ctx, kernel,
-                            backend == Backend::Compute
-                                ? spirv(amrstream_spirv_trace_compute_comp)
-                                : spirv(amrstream_spirv_trace_rayquery_comp));
+      if (backend == Backend::Compute)
+        createComputePipeline(ctx, kernel,
+                              probe ? spirv(amrstream_spirv_locate_probe_compute_comp)
+                                    : spirv(amrstream_spirv_trace_compute_comp));
+      else
+        createComputePipeline(ctx, kernel,
+                              probe ? spirv(amrstream_spirv_locate_probe_rayquery_comp)
+                                    : spirv(amrstream_spirv_trace_rayquery_comp));
       break;
     case Backend::Pipeline:
       kernel.bindPoint = VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR;
       kernel.stages = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR;
       createLayouts(ctx, kernel);
-      createRayTracingPipeline(ctx, kernel);
+      createRayTracingPipeline(ctx, kernel,
+                               probe ? spirv(amrstream_spirv_locate_probe_pipeline_rgen)
+                                     : spirv(amrstream_spirv_trace_pipeline_rgen));
       break;
     case Backend::Cpu:
       throw std::invalid_argument("createTraceKernel: the cpu backend has no kernel");

@@ -39,7 +39,12 @@ struct TraceKernel {
   ShaderBindingTable bindingTable;  // pipeline backend only
 };
 
+// Which entry point the kernel runs: the tracer, or the point-location probe that tests use to
+// compare each backend's locateRegion() with brute force (shaders/glsl/include/locate_probe.glsl).
+enum class KernelProgram { Trace, LocateProbe };
+
 // Throws std::invalid_argument for Backend::Cpu.
-TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend);
+TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend,
+                              KernelProgram program = KernelProgram::Trace);
 
 }  // namespace amrstream::gpu

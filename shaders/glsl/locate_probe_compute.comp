@@ -1,0 +1,14 @@
+#version 460
+// Point-location probe for the `compute` backend (see include/locate_probe.glsl).
+#extension GL_GOOGLE_include_directive : require
+#include "include/amr_buffers.glsl"
+#include "include/locate_tree.glsl"
+#include "include/sampler.glsl"
+#include "include/locate_probe.glsl"
+
+layout(local_size_x_id = 0) in;  // workgroup size: specialization constant 0
+
+void main() {
+  const uint i = gl_GlobalInvocationID.x;
+  if (i < params.seedCount) probeLocation(i);
+}
