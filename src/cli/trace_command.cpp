@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -37,6 +38,7 @@ struct TraceCommandOptions {
   float maxLength = 0.0f;
   BackendRequest backend;
   std::string out = "traces.vtp";
+  bool endpointsOnly = false;
 };
 
 const char* reasonName(int reason) {
@@ -78,15 +80,16 @@ flow::SeedList chooseSeeds(const TraceCommandOptions& o, const flow::VectorVolum
 }
 
 // The traces keep every point (position, time, vector: 28 bytes); refuse runs that cannot fit.
-void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t steps) {
+void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
   const double bytes =
-      double(seeds) * (double(steps) + 1.0) * (2 * sizeof(glm::vec3) + sizeof(float));
+      double(seeds) * double(pointsPerTrace) * (2 * sizeof(glm::vec3) + sizeof(float));
   const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (bytes > 0.75 * memory)
     throw InputError("--count/--steps",
                      fmt::format("{} seeds x {} points need {:.1f} GiB for the traces, more than "
-                                 "3/4 of this machine's {:.1f} GiB; lower --count or --steps",
-                                 seeds, std::size_t(steps) + 1, bytes / 0x1p30, memory / 0x1p30));
+                                 "3/4 of this machine's {:.1f} GiB; lower --count or --steps, or "
+                                 "use --endpoints-only",
+                                 seeds, pointsPerTrace, bytes / 0x1p30, memory / 0x1p30));
 }
 
 float defaultTimeStep(const flow::VectorVolume& volume) {
@@ -115,7 +118,7 @@ void runTrace(const TraceCommandOptions& o) {
 
   const flow::SeedList seeds = chooseSeeds(o, volume);
   flow::checkSeedsInDomain(volume, seeds);
-  checkHistoryFitsInMemory(seeds.points.size(), o.steps);
+  checkHistoryFitsInMemory(seeds.points.size(), o.endpointsOnly ? 1 : o.steps + 1);
 
   flow::TraceOptions options;
   options.stepMode = o.stepMode == "time"  ? flow::StepMode::Time
@@ -125,6 +128,7 @@ void runTrace(const TraceCommandOptions& o) {
       options.stepMode == flow::StepMode::Time ? defaultTimeStep(volume) : options.stepSize);
   if (!(options.stepSize > 0.0f)) throw InputError("--step-size", "the step size must be positive");
   options.maxSteps = o.steps;
+  options.keepHistory = !o.endpointsOnly;
   options.terminalSpeed = o.terminalSpeed;
   options.maxLength = o.maxLength;
   fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()),
@@ -144,7 +148,7 @@ void runTrace(const TraceCommandOptions& o) {
   std::size_t steps = 0;
   std::map<int, std::size_t> reasons;
   for (std::uint32_t i = 0; i < traces.seedCount; ++i) {
-    steps += traces.pointCounts[i] - 1;
+    steps += traces.steps[i];
     ++reasons[traces.reasons[i]];
   }
   std::string histogram;
@@ -160,7 +164,10 @@ void runTrace(const TraceCommandOptions& o) {
   clock.restart();
   output::writeVtp(o.out, traces);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
-             withCommas(traces.seedCount), withCommas(steps + traces.seedCount), clock.seconds());
+             withCommas(traces.seedCount),
+             withCommas(std::accumulate(traces.pointCounts.begin(), traces.pointCounts.end(),
+                                        std::size_t(0))),
+             clock.seconds());
 }
 
 }  // namespace
@@ -216,6 +223,8 @@ void addTraceCommand(CLI::App& app) {
   command->add_option("--device", options->backend.device,
                       "the Vulkan device whose name contains this (see `amrstream devices`)");
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
+  command->add_flag("--endpoints-only", options->endpointsOnly,
+                    "keep only each trace's last point (no history: for very long runs)");
   command->callback([options] {
     const char* validation = std::getenv("AMRSTREAM_VALIDATION");
     options->backend.validation = validation && std::string(validation) == "1";

@@ -43,8 +43,10 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TracePa
   VectorSample s = sampleVector(volume, x);
   float time = 0.0f, length = 0.0f;
   std::uint32_t points = 0;
+  // Without history every point overwrites slot 0, so the last point remains.
   const auto append = [&](glm::vec3 position, const VectorSample& sample) {
-    const std::size_t at = out.at(seedIndex, points++);
+    const std::size_t at = out.at(seedIndex, params.keepHistory ? points : 0);
+    ++points;
     out.positions[at] = glm::vec3(origin + spacing * glm::dvec3(position));
     out.times[at] = time;
     out.vectors[at] = sample.value;
@@ -88,7 +90,8 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TracePa
     s = sNext;
     append(x, s);
   }
-  out.pointCounts[seedIndex] = points;
+  out.pointCounts[seedIndex] = params.keepHistory ? points : 1;
+  out.steps[seedIndex] = points - 1;
   out.reasons[seedIndex] = reason;
 }
 
@@ -101,7 +104,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.domainLower = volume.domain.lower;
   params.domainUpper = volume.domain.upper;
   params.seedCount = static_cast<std::uint32_t>(seedCount);
-  params.capacity = options.maxSteps + 1;
+  params.capacity = options.keepHistory ? options.maxSteps + 1 : 1;
   params.cellsPerPhysical = glm::vec3(1.0 / spacing);
   params.physicalCellWidth = float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)));
   params.spacing = glm::vec3(spacing);
@@ -110,6 +113,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.maxSteps = options.maxSteps;
   params.terminalSpeed = options.terminalSpeed;
   params.maxLength = options.maxLength;
+  params.keepHistory = options.keepHistory ? 1u : 0u;
   return params;
 }
 
@@ -118,7 +122,7 @@ TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3
                           const std::function<void(std::size_t)>& progress) {
   const shared::TraceParams params = makeTraceParams(volume, options, seeds.size());
   TraceSet out;
-  out.resize(static_cast<std::uint32_t>(seeds.size()), options.maxSteps + 1);
+  out.resize(static_cast<std::uint32_t>(seeds.size()), params.capacity);
   out.vectorName = volume.vectorName;
 
   std::atomic<std::size_t> finished{0};

@@ -26,6 +26,7 @@ struct TraceOptions {
   std::uint32_t maxSteps = 1000;  // a trace holds at most maxSteps + 1 points
   float terminalSpeed = 1e-12f;   // stagnation below this speed (physical units)
   float maxLength = 0.0f;         // physical arc length limit; 0 means none
+  bool keepHistory = true;        // false: store only each trace's last point
 };
 
 // The dispatch parameters shared with the GPU kernels, for `seedCount` seeds.

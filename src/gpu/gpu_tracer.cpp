@@ -66,13 +66,14 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
                                 const std::function<void(std::size_t)>& progress) {
   flow::TraceSet out;
-  out.resize(static_cast<std::uint32_t>(seeds.size()), options.maxSteps + 1);
+  out.resize(static_cast<std::uint32_t>(seeds.size()),
+             options.keepHistory ? options.maxSteps + 1 : 1);
   out.vectorName = volume_->vectorName;
   const std::size_t chunk = seedsPerChunk(out.capacity);
   if (chunk == 0)
     throw std::length_error(fmt::format(
         "one trace of {} points ({:.1f} MiB of positions) does not fit in the device's storage "
-        "buffer range of {:.1f} MiB; lower --steps",
+        "buffer range of {:.1f} MiB; lower --steps or use --endpoints-only",
         out.capacity, double(out.capacity) * sizeof(glm::vec3) / 0x1p20,
         double(ctx_->limits().maxStorageBufferRange) / 0x1p20));
   for (std::size_t first = 0; first < seeds.size(); first += chunk) {
@@ -199,9 +200,10 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   const glm::dvec3 origin = volume_->transform.origin, spacing = volume_->transform.spacing;
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const std::uint32_t seed = firstSeed + static_cast<std::uint32_t>(s);
-    out.pointCounts[seed] = chunkCounts[s];
+    out.steps[seed] = chunkCounts[s] - 1;
+    out.pointCounts[seed] = params.keepHistory ? chunkCounts[s] : 1;
     out.reasons[seed] = chunkReasons[s];
-    for (std::uint32_t p = 0; p < chunkCounts[s]; ++p) {
+    for (std::uint32_t p = 0; p < out.pointCounts[seed]; ++p) {
       const std::size_t from = s * params.capacity + p, to = out.at(seed, p);
       out.positions[to] = glm::vec3(origin + spacing * glm::dvec3(cellPositions[from]));
       out.times[to] = chunkTimes[from];

@@ -210,3 +210,34 @@ TEST(Integrator, ResultsDoNotDependOnTheNumberOfThreads) {
 
 }  // namespace
 }  // namespace amrstream::flow
+
+namespace amrstream::flow {
+namespace {
+
+TEST(Integrator, EndpointsOnlyKeepsTheLastPointOfTheFullTrace) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 3;
+  const VectorVolume volume = testing::volumeOf(testing::randomAmr(
+      6, layout, [](glm::dvec3 p) { return glm::vec3(0.3, 0.1 * std::sin(p.x), 0.05); }));
+  std::vector<glm::dvec3> seeds;
+  for (int i = 0; i < 50; ++i) seeds.push_back(glm::dvec3(0.5 + 0.2 * i, 1.0 + 0.1 * i, 2.0));
+  TraceOptions options;
+  options.maxSteps = 150;
+  const TraceSet full = traceStreamlines(volume, seeds, options);
+  options.keepHistory = false;
+  const TraceSet ends = traceStreamlines(volume, seeds, options);
+  ASSERT_EQ(ends.capacity, 1u);
+  for (std::uint32_t s = 0; s < full.seedCount; ++s) {
+    EXPECT_EQ(ends.pointCounts[s], 1u);
+    EXPECT_EQ(ends.steps[s], full.steps[s]);
+    EXPECT_EQ(full.steps[s] + 1, full.pointCounts[s]);
+    EXPECT_EQ(ends.reasons[s], full.reasons[s]);
+    const std::size_t last = full.at(s, full.pointCounts[s] - 1);
+    EXPECT_EQ(ends.positions[ends.at(s, 0)], full.positions[last]);
+    EXPECT_EQ(ends.times[ends.at(s, 0)], full.times[last]);
+    EXPECT_EQ(ends.vectors[ends.at(s, 0)], full.vectors[last]);
+  }
+}
+
+}  // namespace
+}  // namespace amrstream::flow

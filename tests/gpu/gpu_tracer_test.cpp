@@ -43,6 +43,7 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
     for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
       ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
       ASSERT_EQ(gpu.pointCounts[s], cpu.pointCounts[s]) << "seed " << s;
+      ASSERT_EQ(gpu.steps[s], cpu.steps[s]) << "seed " << s;
       for (std::uint32_t p = 0; p < cpu.pointCounts[s]; ++p, ++points) {
         const std::size_t i = cpu.at(s, p);
         ASSERT_LE(glm::length(glm::dvec3(gpu.positions[i]) - glm::dvec3(cpu.positions[i])),
@@ -117,6 +118,29 @@ TEST_P(GpuTracerTest, MatchesCpuOnEveryTerminationReason) {
   options.terminalSpeed = 0.2f;  // stagnation near x = 9.6
   options.maxLength = 30.0f;
   compare(volume, seedsIn(volume, 96), options);
+}
+
+TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
+  const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  const flow::SeedList seeds = seedsIn(volume, 64);
+  flow::TraceOptions options;
+  options.maxSteps = 300;
+  options.keepHistory = false;
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  const flow::TraceSet gpu = tracer.trace(seeds.points, options);
+  ASSERT_EQ(gpu.capacity, 1u);
+  const double finestCell = std::min(
+      {volume.transform.spacing.x, volume.transform.spacing.y, volume.transform.spacing.z});
+  for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
+    ASSERT_EQ(gpu.pointCounts[s], 1u);
+    ASSERT_EQ(gpu.steps[s], cpu.steps[s]) << "seed " << s;
+    ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
+    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[s]) - glm::dvec3(cpu.positions[s])),
+              positionTolerance(cpu.steps[s]) * finestCell)
+        << "seed " << s;
+  }
 }
 
 TEST_P(GpuTracerTest, RunsInChunksWhenTheOutputIsLarge) {

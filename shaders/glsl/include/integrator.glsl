@@ -74,11 +74,13 @@ void traceSeed(uint seedIndex) {
     time += parameterStep(s);
     x = next;
     s = sNext;
-    positions[base + points] = x;
-    times[base + points] = time;
-    vectors[base + points] = s.value;
+    // Without history every point overwrites slot 0, so the last point remains.
+    const uint slot = base + (params.keepHistory != 0 ? points : 0);
+    positions[slot] = x;
+    times[slot] = time;
+    vectors[slot] = s.value;
     ++points;
   }
-  pointCounts[seedIndex] = points;
+  pointCounts[seedIndex] = points;  // points taken; the host derives how many are stored
   reasons[seedIndex] = reason;
 }

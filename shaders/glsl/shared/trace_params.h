@@ -18,7 +18,7 @@ struct TraceParams {
   ivec3 domainLower;      // the cells' bounding box [domainLower, domainUpper)
   uint seedCount;
   ivec3 domainUpper;
-  uint capacity;          // points per trace in the output arrays (max steps + 1)
+  uint capacity;          // points stored per trace: max steps + 1, or 1 without history
   vec3 cellsPerPhysical;  // 1 / spacing
   float physicalCellWidth;  // smallest spacing: physical width of a finest cell
   vec3 spacing;
@@ -27,10 +27,11 @@ struct TraceParams {
   uint maxSteps;
   float terminalSpeed;
   float maxLength;        // 0: no limit
+  uint keepHistory;       // 0: store only each trace's last point (endpoints-only)
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 80 && offsetof(TraceParams, spacing) == 48 &&
+static_assert(sizeof(TraceParams) == 84 && offsetof(TraceParams, spacing) == 48 &&
               offsetof(TraceParams, maxLength) == 76);
 }  // namespace amrstream::shared
 #endif
