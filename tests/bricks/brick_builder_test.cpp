@@ -106,15 +106,7 @@ TEST(BuildBricks, BlockStructuredLayoutKeepsTheBlocks) {
 }
 
 TEST(BuildBricks, LevelJumpOfThreeAcrossAFace) {
-  std::vector<glm::ivec3> lowers{{0, 0, 0}};
-  std::vector<std::uint8_t> levels{3};
-  for (int z = 0; z < 8; ++z)
-    for (int y = 0; y < 8; ++y)
-      for (int x = 8; x < 16; ++x) {
-        lowers.push_back({x, y, z});
-        levels.push_back(0);
-      }
-  const auto field = makeField(lowers, levels);
+  const auto field = levelJumpOfThree();
   const BrickSet set = buildBricks(field, {8});
   EXPECT_TRUE(bricksAreValid(field, set, 8));
   EXPECT_EQ(set.bricks.size(), 2u);

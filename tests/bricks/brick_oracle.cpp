@@ -21,6 +21,18 @@ bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint
                           "test");
 }
 
+bricks::AmrField levelJumpOfThree() {
+  std::vector<glm::ivec3> lowers{{0, 0, 0}};
+  std::vector<std::uint8_t> levels{3};
+  for (int z = 0; z < 8; ++z)
+    for (int y = 0; y < 8; ++y)
+      for (int x = 8; x < 16; ++x) {
+        lowers.push_back({x, y, z});
+        levels.push_back(0);
+      }
+  return makeField(lowers, levels);
+}
+
 bricks::AmrField powersOfTwoAlongTheAxes() {
   std::vector<glm::ivec3> lowers{{0, 0, 0}};
   for (int k = 0; k <= 19; ++k)

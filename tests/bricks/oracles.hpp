@@ -18,6 +18,9 @@ bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint
 // worst case for recursive splitting.
 bricks::AmrField powersOfTwoAlongTheAxes();
 
+// A level-3 cell [0,8)^3 next to 8^3 level-0 cells filling [8,16) x [0,8) x [0,8).
+bricks::AmrField levelJumpOfThree();
+
 // Every cell in exactly one brick; bricks single-level, without holes (each slot's cell sits at
 // the slot's position), sides within maxSide; cellIds a permutation.
 ::testing::AssertionResult bricksAreValid(const bricks::AmrField& field,

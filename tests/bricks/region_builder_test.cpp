@@ -51,16 +51,7 @@ TEST(BuildRegions, SingleCellIsOneRegion) {
 }
 
 TEST(BuildRegions, LevelJumpOfThreeAcrossAFace) {
-  // A level-3 cell [0,8)^3 next to 8^3 level-0 cells filling [8,16) x [0,8) x [0,8).
-  std::vector<glm::ivec3> lowers{{0, 0, 0}};
-  std::vector<std::uint8_t> levels{3};
-  for (int z = 0; z < 8; ++z)
-    for (int y = 0; y < 8; ++y)
-      for (int x = 8; x < 16; ++x) {
-        lowers.push_back({x, y, z});
-        levels.push_back(0);
-      }
-  const auto field = makeField(lowers, levels);
+  const auto field = levelJumpOfThree();
   const bricks::BrickSet set = buildBricks(field, {8});
   ASSERT_EQ(set.bricks.size(), 2u);
   const RegionSet regions = checkLayout(field, 8, 2, 2000);

@@ -4,13 +4,8 @@
 #define AMRSTREAM_SHARED_AMR_TYPES_H
 
 #ifdef __cplusplus
-#include <cstddef>
-#include <cstdint>
-#include <glm/glm.hpp>
+#include "glsl_compat.h"
 namespace amrstream::shared {
-using vec3 = glm::vec3;
-using ivec3 = glm::ivec3;
-using uint = std::uint32_t;
 #endif
 
 // A box of same-level cells with no holes. The value of cell (ix, iy, iz) of the brick is at

@@ -5,13 +5,8 @@
 #define AMRSTREAM_SHARED_TRACE_PARAMS_H
 
 #ifdef __cplusplus
-#include <cstddef>
-#include <cstdint>
-#include <glm/glm.hpp>
+#include "glsl_compat.h"
 namespace amrstream::shared {
-using vec3 = glm::vec3;
-using ivec3 = glm::ivec3;
-using uint = std::uint32_t;
 #endif
 
 struct TraceParams {
