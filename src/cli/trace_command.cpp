@@ -226,8 +226,13 @@ void addTraceCommand(CLI::App& app) {
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each trace's last point (no history: for very long runs)");
   command->callback([options] {
+    // Validation layers: always in debug builds, on request (AMRSTREAM_VALIDATION=1) otherwise.
     const char* validation = std::getenv("AMRSTREAM_VALIDATION");
+#ifdef NDEBUG
     options->backend.validation = validation && std::string(validation) == "1";
+#else
+    options->backend.validation = !(validation && std::string(validation) == "0");
+#endif
     runTrace(*options);
   });
 }

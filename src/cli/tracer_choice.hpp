@@ -15,7 +15,7 @@ namespace amrstream::cli {
 struct BackendRequest {
   std::string backend = "auto";  // auto, rayquery, pipeline, compute or cpu
   std::string device;            // a substring of the device name; empty: the default device
-  bool validation = false;       // Vulkan validation layers (AMRSTREAM_VALIDATION=1)
+  bool validation = false;       // Vulkan validation layers (debug builds, AMRSTREAM_VALIDATION)
 };
 
 // Traces with the requested backend, printing the choice (and for `auto` why). Throws
