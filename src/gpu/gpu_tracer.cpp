@@ -59,7 +59,8 @@ std::size_t GpuTracer::seedsPerChunk(std::uint32_t capacity) const {
   const std::size_t byMemory = largestHeap / 4 / (std::size_t(capacity) * kPointBytes);
   const std::size_t byDispatch =
       std::size_t(ctx_->limits().maxComputeWorkGroupCount[0]) * kernel_.workgroupSize;
-  return std::min({byRange, byMemory, byDispatch});
+  const std::size_t chunk = std::min({byRange, byMemory, byDispatch});
+  return chunkLimit_ > 0 ? std::min(chunk, chunkLimit_) : chunk;
 }
 
 flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,

@@ -42,6 +42,8 @@ class GpuTracer {
   Backend backend() const { return kernel_.backend; }
   // Seeds per dispatch for traces of `capacity` points.
   std::size_t seedsPerChunk(std::uint32_t capacity) const;
+  // Caps the seeds per dispatch (0: no cap), so that tests can run many chunks on small inputs.
+  void limitSeedsPerChunk(std::size_t limit) { chunkLimit_ = limit; }
 
  private:
   // Output buffers of one dispatch, in binding order (positions, times, vectors, point counts,
@@ -65,6 +67,7 @@ class GpuTracer {
   std::optional<vk::AabbScene> scene_;  // rayquery and pipeline backends
   TraceKernel kernel_;
   std::optional<TraceKernel> probe_;  // created by the first locate()
+  std::size_t chunkLimit_ = 0;
 };
 
 }  // namespace amrstream::gpu

@@ -31,9 +31,10 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
   vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
 
   void compare(const flow::VectorVolume& volume, const flow::SeedList& seeds,
-               const flow::TraceOptions& options) {
+               const flow::TraceOptions& options, std::size_t seedsPerChunk = 0) {
     const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
     GpuTracer tracer(ctx(), GetParam(), volume);
+    tracer.limitSeedsPerChunk(seedsPerChunk);
     const flow::TraceSet gpu = tracer.trace(seeds.points, options);
     ASSERT_EQ(gpu.seedCount, cpu.seedCount);
     ASSERT_EQ(gpu.capacity, cpu.capacity);
@@ -143,7 +144,15 @@ TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
   }
 }
 
-TEST_P(GpuTracerTest, RunsInChunksWhenTheOutputIsLarge) {
+TEST_P(GpuTracerTest, ChunksOfSeedsGiveTheSameTraces) {
+  const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  flow::TraceOptions options;
+  options.maxSteps = 100;
+  compare(volume, seedsIn(volume, 50), options, 7);  // 8 dispatches, the last one of 1 seed
+}
+
+TEST_P(GpuTracerTest, ChunkSizeRespectsTheStorageBufferRange) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   GpuTracer tracer(ctx(), GetParam(), volume);
