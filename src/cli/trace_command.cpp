@@ -12,6 +12,7 @@
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "dataset_options.hpp"
 #include "flow/integrator.hpp"
+#include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "formats/load_input.hpp"
 #include "output/vtp_writer.hpp"
@@ -29,6 +30,12 @@ struct TraceCommandOptions {
   std::string vector;
   std::string seedsFile;
   std::vector<double> seedBox;
+  std::vector<int> seedGrid;
+  std::vector<double> seedLine;
+  std::string seedDensity;
+  double seedPercentile = 90.0;
+  bool seedWeighted = false;
+  std::string seedsOut;
   std::size_t count = 256;
   std::uint64_t seed = 1;
   std::uint32_t steps = 1000;
@@ -58,24 +65,56 @@ const char* reasonName(int reason) {
   }
 }
 
-flow::SeedList chooseSeeds(const TraceCommandOptions& o, const flow::VectorVolume& volume) {
-  if (!o.seedsFile.empty()) return flow::readSeedFile(o.seedsFile);
+glm::dvec3 corner(const std::vector<double>& v, int which) {
+  return glm::dvec3(v[3 * which], v[3 * which + 1], v[3 * which + 2]);
+}
+
+// The seed box: --seed-box, checked against the domain, or the domain itself.
+std::pair<glm::dvec3, glm::dvec3> seedBox(const TraceCommandOptions& o,
+                                          const flow::VectorVolume& volume) {
   const glm::dvec3 domainLo = flow::domainLower(volume), domainHi = flow::domainUpper(volume);
-  glm::dvec3 lo = domainLo, hi = domainHi;
-  if (!o.seedBox.empty()) {
-    lo = glm::dvec3(o.seedBox[0], o.seedBox[1], o.seedBox[2]);
-    hi = glm::dvec3(o.seedBox[3], o.seedBox[4], o.seedBox[5]);
-    if (glm::any(glm::greaterThan(lo, hi)))
-      throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
-    if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
-      throw InputError(
-          "--seed-box",
-          fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
-                      "{:g}) x [{:g}, {:g})",
-                      domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
+  if (o.seedBox.empty()) return {domainLo, domainHi};
+  const glm::dvec3 lo = corner(o.seedBox, 0), hi = corner(o.seedBox, 1);
+  if (glm::any(glm::greaterThan(lo, hi)))
+    throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
+  if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
+    throw InputError(
+        "--seed-box",
+        fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
+                    "{:g}) x [{:g}, {:g})",
+                    domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
+  return {lo, hi};
+}
+
+// The seeds of the chosen strategy, and a description of it for the summary.
+flow::SeedList chooseSeeds(const TraceCommandOptions& o, const bricks::AmrField& field,
+                           const flow::VectorVolume& volume, std::string& description) {
+  if (!o.seedsFile.empty()) {
+    description = o.seedsFile;
+    return flow::readSeedFile(o.seedsFile);
   }
-  // Keep random seeds off the domain's open upper faces, where rounding to float could put them.
-  hi = glm::min(hi, domainHi - 1e-4 * volume.transform.spacing);
+  if (!o.seedLine.empty()) {
+    description = "a rake (--seed-line)";
+    return flow::seedsAlongLine(corner(o.seedLine, 0), corner(o.seedLine, 1), o.count);
+  }
+  if (!o.seedDensity.empty()) {
+    description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
+                              o.seedDensity, o.seedPercentile,
+                              o.seedWeighted ? ", weighted by it" : "", o.seed);
+    return flow::seedsInDensestCells(
+        field, {o.seedDensity, o.seedPercentile, o.seedWeighted, o.count, o.seed});
+  }
+  auto [lo, hi] = seedBox(o, volume);
+  // Keep seeds off the domain's open upper faces, where rounding to float could put them.
+  hi = glm::min(hi, flow::domainUpper(volume) - 1e-4 * volume.transform.spacing);
+  if (!o.seedGrid.empty()) {
+    const glm::ivec3 counts(o.seedGrid[0], o.seedGrid[1], o.seedGrid[2]);
+    if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
+      throw InputError("--seed-grid", "every count must be at least 1");
+    description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
+    return flow::seedsOnGrid(lo, hi, counts);
+  }
+  description = fmt::format("random (seed {}) in a box", o.seed);
   return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
 }
 
@@ -116,8 +155,10 @@ void runTrace(const TraceCommandOptions& o) {
              withCommas(volume.bricks.size()), times.bricks,
              withCommas(volume.regions.regions.size()), times.regions);
 
-  const flow::SeedList seeds = chooseSeeds(o, volume);
+  std::string seedDescription;
+  const flow::SeedList seeds = chooseSeeds(o, field, volume, seedDescription);
   flow::checkSeedsInDomain(volume, seeds);
+  if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
   checkHistoryFitsInMemory(seeds.points.size(), o.endpointsOnly ? 1 : o.steps + 1);
 
   flow::TraceOptions options;
@@ -131,8 +172,8 @@ void runTrace(const TraceCommandOptions& o) {
   options.keepHistory = !o.endpointsOnly;
   options.terminalSpeed = o.terminalSpeed;
   options.maxLength = o.maxLength;
-  fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()),
-             o.seedsFile.empty() ? fmt::format("random (seed {}) in a box", o.seed) : o.seedsFile);
+  fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), seedDescription,
+             o.seedsOut.empty() ? "" : ", written to " + o.seedsOut);
   fmt::print("stepping   mode {}, h = {:g}, at most {} steps\n", o.stepMode, options.stepSize,
              o.steps);
 
@@ -189,6 +230,36 @@ void addTraceCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(6)
       ->excludes(seedsFile);
+  auto* seedLine = command
+                       ->add_option("--seed-line", options->seedLine,
+                                    "a rake of --count seeds from x0,y0,z0 to x1,y1,z1")
+                       ->delimiter(',')
+                       ->expected(6)
+                       ->excludes(seedsFile);
+  command
+      ->add_option("--seed-grid", options->seedGrid,
+                   "a regular NX,NY,NZ grid in the seed box instead of random seeds (a box of "
+                   "zero thickness with count 1 on that axis is a plane)")
+      ->delimiter(',')
+      ->expected(3)
+      ->excludes(seedsFile)
+      ->excludes(seedLine);
+  auto* seedDensity =
+      command
+          ->add_option("--seed-density", options->seedDensity,
+                       "the paper's seeding: random points in random cells where this scalar is "
+                       "at or above --seed-percentile")
+          ->excludes(seedsFile)
+          ->excludes(seedLine);
+  command->add_option("--seed-percentile", options->seedPercentile, "see --seed-density")
+      ->capture_default_str()
+      ->needs(seedDensity);
+  command
+      ->add_flag("--seed-weighted", options->seedWeighted,
+                 "with --seed-density: pick cells with probability proportional to the scalar")
+      ->needs(seedDensity);
+  command->add_option("--seeds-out", options->seedsOut,
+                      "write the seeds used to this file, so the run can be repeated with --seeds");
   command->add_option("--count", options->count, "number of random seeds")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)

@@ -42,6 +42,15 @@ SeedList readSeedFile(const std::filesystem::path& path) {
   return seeds;
 }
 
+void writeSeedFile(const std::filesystem::path& path, const SeedList& seeds) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path.string(), "cannot create the seeds file");
+  out << "# amrstream seeds: x y z in physical coordinates\n";
+  for (const glm::dvec3& p : seeds.points)
+    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p.x, p.y, p.z);
+  if (!out.flush()) throw InputError(path.string(), "write failed (disk full?)");
+}
+
 SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,
                           std::uint64_t seed) {
   std::mt19937_64 rng(seed);

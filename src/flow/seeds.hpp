@@ -20,6 +20,10 @@ struct SeedList {
 // are skipped. Throws InputError naming the file and line of anything else.
 SeedList readSeedFile(const std::filesystem::path& path);
 
+// Writes one "x y z" line per seed with 17 significant digits, so that reading the file back gives
+// the same doubles. Throws InputError naming the path when it cannot write.
+void writeSeedFile(const std::filesystem::path& path, const SeedList& seeds);
+
 // `count` points uniformly distributed in [lower, upper), reproducible for a given `seed`.
 SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,
                           std::uint64_t seed);

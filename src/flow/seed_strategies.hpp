@@ -1,0 +1,34 @@
+#pragma once
+// Ways to place seeds besides a file and a random box (seeds.hpp): a rake along a line, a regular
+// grid in a box (a box of zero thickness is a plane), and the paper's strategy, random seeds
+// among the cells with the highest values of a scalar. All in physical coordinates.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+
+#include "bricks/amr_field.hpp"
+#include "seeds.hpp"
+
+namespace amrstream::flow {
+
+// `count` points evenly spaced from `from` to `to`, both included (one point: the midpoint).
+SeedList seedsAlongLine(glm::dvec3 from, glm::dvec3 to, std::size_t count);
+
+// Cell-centred regular grid of counts.x * counts.y * counts.z points in [lower, upper]; an axis
+// with count 1 gets the box's middle, so a zero-thickness box with one count is a plane.
+SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts);
+
+struct DensestCellsOptions {
+  std::string channel;       // the scalar, e.g. "dens"
+  double percentile = 90.0;  // candidate cells have values at or above this percentile
+  bool weighted = false;     // pick candidates with probability proportional to the value
+  std::size_t count = 256;
+  std::uint64_t seed = 1;
+};
+
+// Seeds uniformly inside randomly chosen candidate cells (with repetition). Throws InputError
+// for an unknown channel, a percentile outside [0, 100], or weights that are not positive.
+SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOptions& options);
+
+}  // namespace amrstream::flow

@@ -1,0 +1,115 @@
+// Seeding strategies: rakes, grids, the densest cells, and writing seeds that read back exactly.
+
+#include "flow/seed_strategies.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "input_error_of.hpp"
+#include "random_amr.hpp"
+
+namespace amrstream::flow {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(SeedStrategies, RakeIsEvenlySpacedWithBothEnds) {
+  const SeedList rake = seedsAlongLine({0, 0, 0}, {1, 2, 4}, 5);
+  ASSERT_EQ(rake.points.size(), 5u);
+  EXPECT_EQ(rake.points.front(), glm::dvec3(0, 0, 0));
+  EXPECT_EQ(rake.points.back(), glm::dvec3(1, 2, 4));
+  EXPECT_EQ(rake.points[2], glm::dvec3(0.5, 1, 2));
+  EXPECT_EQ(seedsAlongLine({0, 0, 0}, {2, 2, 2}, 1).points[0], glm::dvec3(1, 1, 1));
+}
+
+TEST(SeedStrategies, GridIsCellCentredAndAPlaneWhenFlat) {
+  const SeedList grid = seedsOnGrid({0, 0, 0}, {4, 2, 1}, {4, 2, 1});
+  ASSERT_EQ(grid.points.size(), 8u);
+  EXPECT_EQ(grid.points[0], glm::dvec3(0.5, 0.5, 0.5));
+  EXPECT_EQ(grid.points[7], glm::dvec3(3.5, 1.5, 0.5));
+  const SeedList plane = seedsOnGrid({0, 0, 0.25}, {1, 1, 0.25}, {10, 10, 1});
+  ASSERT_EQ(plane.points.size(), 100u);
+  for (const glm::dvec3& p : plane.points) EXPECT_EQ(p.z, 0.25);
+}
+
+bricks::AmrField fieldWithDensity() {
+  testing::RandomAmrOptions layout;
+  layout.levels = 3;
+  const bricks::AmrField random = testing::randomAmr(2, layout);
+  std::vector<float> dens;  // the x coordinate of the cell centre: highest on the +x side
+  for (std::size_t i = 0; i < random.cellCount(); ++i)
+    dens.push_back(float(random.lowers()[i].x) + 0.5f * float(1 << random.levels()[i]));
+  std::vector<bricks::Channel> channels = random.channels();
+  channels.push_back({"dens", dens});
+  return bricks::AmrField({random.lowers().begin(), random.lowers().end()},
+                          {random.levels().begin(), random.levels().end()}, channels,
+                          {{1.0, 2.0, 3.0}, {0.5, 0.5, 0.5}}, "dens-test");
+}
+
+TEST(SeedStrategies, DensestCellsSeedsLieInCellsAboveThePercentile) {
+  const bricks::AmrField field = fieldWithDensity();
+  const std::vector<float>& dens = field.channel("dens").values;
+  std::vector<float> sorted = dens;
+  std::sort(sorted.begin(), sorted.end());
+  const float threshold = sorted[std::size_t(0.8 * double(sorted.size()))];
+  DensestCellsOptions options{"dens", 80.0, false, 2000, 5};
+  const SeedList seeds = seedsInDensestCells(field, options);
+  ASSERT_EQ(seeds.points.size(), 2000u);
+  for (const glm::dvec3& p : seeds.points) {
+    const glm::dvec3 c = field.transform().toCellUnits(p);
+    bool found = false;
+    for (std::size_t i = 0; i < field.cellCount() && !found; ++i) {
+      const glm::dvec3 lo(field.lowers()[i]);
+      if (glm::all(glm::greaterThanEqual(c, lo)) &&
+          glm::all(glm::lessThan(c, lo + double(1 << field.levels()[i])))) {
+        found = true;
+        EXPECT_GE(dens[i], threshold);
+      }
+    }
+    EXPECT_TRUE(found);
+  }
+  EXPECT_EQ(seedsInDensestCells(field, options).points, seeds.points);  // reproducible
+  options.seed = 6;
+  EXPECT_NE(seedsInDensestCells(field, options).points, seeds.points);
+}
+
+TEST(SeedStrategies, WeightedPicksCellsInProportionToTheirValue) {
+  std::vector<float> dens{1.0f, 3.0f};
+  const bricks::AmrField field({{0, 0, 0}, {1, 0, 0}}, {0, 0}, {{"dens", dens}}, {}, "two");
+  const SeedList seeds = seedsInDensestCells(field, {"dens", 0.0, true, 20000, 3});
+  const auto inSecond = std::count_if(seeds.points.begin(), seeds.points.end(),
+                                      [](const glm::dvec3& p) { return p.x >= 1.0; });
+  EXPECT_NEAR(double(inSecond) / 20000.0, 0.75, 0.015);  // 4.6 standard deviations
+}
+
+TEST(SeedStrategies, DensestCellsRejectsBadOptions) {
+  const bricks::AmrField field = fieldWithDensity();
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                seedsInDensestCells(field, {"rho", 90.0});
+              }),
+              HasSubstr("no channel named 'rho'"));
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                seedsInDensestCells(field, {"dens", 101.0});
+              }),
+              HasSubstr("not a percentile"));
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                seedsInDensestCells(field, {"vx", 0.0, true});
+              }),
+              HasSubstr("needs positive values"));
+}
+
+TEST(SeedFile, WrittenSeedsReadBackExactly) {
+  const SeedList seeds = randomSeedsInBox({-1e-4, 0.1, 3e5}, {2e-4, 0.7, 4e5}, 500, 9);
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "amrstream-seeds-out.txt";
+  writeSeedFile(path, seeds);
+  EXPECT_EQ(readSeedFile(path).points, seeds.points);
+  EXPECT_THAT(testing::inputErrorOf([&] { writeSeedFile("/nonexistent/dir/s.txt", seeds); }),
+              HasSubstr("/nonexistent/dir/s.txt: cannot create"));
+}
+
+}  // namespace
+}  // namespace amrstream::flow
