@@ -1,0 +1,23 @@
+#pragma once
+// AMReX plotfiles (HyperCLaw-V1.1): a directory with
+//   Header            variable names, dim, prob_lo/hi, ref ratios, domain boxes, dx, and per level
+//                     the grids' physical extents and the level's path (`Level_N/Cell`)
+//   Level_N/Cell_H    the level's BoxArray and one `FabOnDisk: FILE OFFSET` per box, in box order
+//   Level_N/Cell_D_*  FABs: an ASCII line `FAB ((bytes, (format)),(bytes, (byte order)))(box) n`,
+//                     then n components of the box's values, component-major, x fastest
+// Cell-centred boxes only. Power-of-two refinement ratios: the finest plotfile level is our level
+// 0, a coarser one is log2(product of the ratios down to the finest). Coarse cells under a finer
+// level's boxes are dropped. Cell units count finest cells from the domain's lower corner, the
+// world origin is prob_lo and the spacing the finest cell size (prob_hi - prob_lo) / domain size.
+// Every plotfile variable becomes a float channel under its name.
+
+#include <filesystem>
+
+#include "bricks/amr_field.hpp"
+
+namespace amrstream::formats {
+
+// Throws InputError naming the offending file and the inconsistency.
+bricks::AmrField readAmrexPlotfile(const std::filesystem::path& directory);
+
+}  // namespace amrstream::formats

@@ -1,0 +1,20 @@
+#pragma once
+// Enzo packed-AMR HDF5 output (`DD0010/moving7_0010` with `.hierarchy`, `.harrays`, `.cpuNNNN`).
+//
+// `file` may be the parameter file or its `.hierarchy` / `.harrays` / `.cpuNNNN` sibling. The grid
+// table comes from `.harrays` when present, else from `.hierarchy`; field files are the basenames
+// of the hierarchy's BaryonFileName entries, looked up next to `file`. Enzo levels are 0 = root;
+// ours are 0 = finest (ourLevel = finestFileLevel - fileLevel). Cells of a grid covered by any
+// finer grid are dropped. Channels are the grid datasets with one value per active zone (every
+// non-`particle_*` dataset of the first grid), with their file names.
+
+#include <filesystem>
+
+#include "bricks/amr_field.hpp"
+
+namespace amrstream::formats {
+
+// Throws InputError naming the file (and the dataset) for unreadable or inconsistent input.
+bricks::AmrField readEnzo(const std::filesystem::path& file);
+
+}  // namespace amrstream::formats

@@ -1,0 +1,23 @@
+#pragma once
+// FLASH (PARAMESH) HDF5 plotfiles and checkpoints.
+//
+// Only leaf blocks (`node type` 1) become cells. Refine levels are 1-based with the finest leaf
+// level rmax becoming our level 0 (our level = rmax - refine level). The finest cell size per
+// axis, min over leaves of (bounding-box extent / cells per block), is the transform's spacing;
+// the origin is the lower corner of the leaves' bounding boxes.
+//
+// 2D files (nzb = 1): the result is a flat slab, uniformly as thick as the coarsest leaf cell
+// (2^Lc finest cells, Lc = coarsest leaf level). Every level-L cell is stacked 2^(Lc - L) times
+// along z starting at z = 0, each copy carrying the same values; when all leaves share one level
+// this is one cube per cell. spacing.z = spacing.x.
+
+#include <filesystem>
+
+#include "bricks/amr_field.hpp"
+
+namespace amrstream::formats {
+
+// Throws InputError naming the file (and the dataset) for unreadable or inconsistent input.
+bricks::AmrField readFlash(const std::filesystem::path& file);
+
+}  // namespace amrstream::formats
