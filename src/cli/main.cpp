@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "convert_command.hpp"
 #include "devices_command.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   amrstream::cli::addInfoCommand(app);
   amrstream::cli::addGenCommand(app);
   amrstream::cli::addDevicesCommand(app);
+  amrstream::cli::addConvertCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,12 +1,22 @@
 #pragma once
-// Opens any supported input: `builtin:KIND` (a synthetic dataset) or an ExaBricks `.exa` config.
+// Opens any supported input, recognised by content and extension: `builtin:KIND` (a synthetic
+// dataset), an ExaBricks `.exa` config, an AMReX plotfile directory, an Enzo dataset (parameter
+// file, .hierarchy or .harrays), a FLASH HDF5 plotfile or checkpoint, or a Gerris text dump.
 
 #include <string>
+#include <string_view>
 
 #include "bricks/amr_field.hpp"
 #include "synth/generators.hpp"
 
 namespace amrstream::formats {
+
+enum class Format { Builtin, ExaBricks, Amrex, Enzo, Flash, Gerris };
+
+std::string_view formatName(Format format);
+
+// Throws InputError when the input does not exist or is in no known format.
+Format detectFormat(const std::string& input);
 
 // `generatorOptions` sizes builtin datasets. Throws InputError for unknown formats or kinds.
 bricks::AmrField loadInput(const std::string& input,
