@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "temp_dir_test.hpp"
+
 namespace {
 
 using ::testing::HasSubstr;
@@ -33,19 +35,9 @@ Outcome run(const std::string& arguments) {
   return result;
 }
 
-class Cli : public ::testing::Test {
+class Cli : public amrstream::testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-cli-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
 };
 
 const std::string kSmall = " --levels 3 --root-blocks 2 --target-cells 20000";

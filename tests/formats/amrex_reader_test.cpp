@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "input_error_of.hpp"
+#include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -117,17 +118,12 @@ void writeSyntheticPlotfile(const fs::path& dir, bool mixedReals = false) {
   writeFile(dir / "Header", header.str());
 }
 
-class AmrexReader : public ::testing::Test {
+class AmrexReader : public testing::TempDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-amrex-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    TempDirTest::SetUp();
     writeSyntheticPlotfile(dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string errorOf() {
     return testing::inputErrorOf([&] { readAmrexPlotfile(dir_); });
   }
@@ -137,8 +133,6 @@ class AmrexReader : public ::testing::Test {
     out << in.rdbuf();
     return out.str();
   }
-
-  fs::path dir_;
 };
 
 void expectSyntheticLeaves(const bricks::AmrField& field) {

@@ -12,6 +12,7 @@
 #include "formats/load_input.hpp"
 #include "input_error_of.hpp"
 #include "random_amr.hpp"
+#include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -20,17 +21,8 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-class ExaFormat : public ::testing::Test {
+class ExaFormat : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-exa-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path writeSample() {
     bricks::AmrField field = testing::randomAmr(7);
     return writeExa(field, dir_ / "sample");
@@ -41,8 +33,6 @@ class ExaFormat : public ::testing::Test {
   static std::string errorOf(const fs::path& config) {
     return testing::inputErrorOf([&] { readExa(config); });
   }
-
-  fs::path dir_;
 };
 
 TEST_F(ExaFormat, RoundTripsCellsChannelsAndTransform) {

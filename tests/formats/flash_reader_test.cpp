@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "input_error_of.hpp"
+#include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -164,18 +165,8 @@ void writeFlash(const fs::path& path, int dim, const std::vector<Block>& blocks,
   H5Fclose(file);
 }
 
-class FlashReader : public ::testing::Test {
+class FlashReader : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-flash-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path dir_;
 };
 
 const glm::dvec3 kLo(-1.0, 0.0, 2.0), kHi(1.0, 1.0, 2.5);

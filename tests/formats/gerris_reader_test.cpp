@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "input_error_of.hpp"
+#include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -37,24 +38,13 @@ double cellVolume(const bricks::AmrField& field, std::size_t i) {
   return size.x * size.y * size.z;
 }
 
-class GerrisReader : public ::testing::Test {
+class GerrisReader : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-gerris-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
     std::ofstream(path) << text;
     return path;
   }
-
-  fs::path dir_;
 };
 
 // Analytic fields of a cell centre.

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "input_error_of.hpp"
+#include "temp_dir_test.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -16,20 +17,13 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-class DetectFormat : public ::testing::Test {
+class DetectFormat : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / "amrstream-detect";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& bytes) {
     fs::create_directories((dir_ / name).parent_path());
     std::ofstream(dir_ / name, std::ios::binary) << bytes;
     return (dir_ / name).string();
   }
-  fs::path dir_;
 };
 
 TEST_F(DetectFormat, RecognisesEveryFormat) {
