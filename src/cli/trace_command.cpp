@@ -118,10 +118,10 @@ flow::SeedList chooseSeeds(const TraceCommandOptions& o, const bricks::AmrField&
   return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
 }
 
-// The traces keep every point (position, time, vector: 28 bytes); refuse runs that cannot fit.
+// Refuse runs whose stored trace points cannot fit in memory.
 void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
   const double bytes =
-      double(seeds) * double(pointsPerTrace) * (2 * sizeof(glm::vec3) + sizeof(float));
+      double(seeds) * double(pointsPerTrace) * double(flow::TraceSet::kBytesPerPoint);
   const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (bytes > 0.75 * memory)
     throw InputError("--count/--steps",

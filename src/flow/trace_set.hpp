@@ -11,6 +11,9 @@
 namespace amrstream::flow {
 
 struct TraceSet {
+  // Bytes stored per trace point: position, IntegrationTime and vector.
+  static constexpr std::size_t kBytesPerPoint = 2 * sizeof(glm::vec3) + sizeof(float);
+
   std::uint32_t seedCount = 0;
   std::uint32_t capacity = 0;  // points stored per trace: max steps + 1, or 1 without history
   std::string vectorName;      // name of the traced vector, e.g. "velocity" or "velx,vely,velz"

@@ -17,8 +17,6 @@ namespace amrstream::gpu {
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-// Bytes per trace point in the output arrays: position, time, vector.
-constexpr std::size_t kPointBytes = 2 * sizeof(glm::vec3) + sizeof(float);
 
 std::vector<VkAabbPositionsKHR> regionBoxes(const bricks::RegionSet& regions) {
   std::vector<VkAabbPositionsKHR> boxes(regions.regions.size());
@@ -56,7 +54,8 @@ std::size_t GpuTracer::seedsPerChunk(std::uint32_t capacity) const {
       heaps.empty() ? 0 : *std::max_element(heaps.begin(), heaps.end());
   const std::size_t byRange =
       ctx_->limits().maxStorageBufferRange / (std::size_t(capacity) * sizeof(glm::vec3));
-  const std::size_t byMemory = largestHeap / 4 / (std::size_t(capacity) * kPointBytes);
+  const std::size_t byMemory =
+      largestHeap / 4 / (std::size_t(capacity) * flow::TraceSet::kBytesPerPoint);
   const std::size_t byDispatch =
       std::size_t(ctx_->limits().maxComputeWorkGroupCount[0]) * kernel_.workgroupSize;
   const std::size_t chunk = std::min({byRange, byMemory, byDispatch});

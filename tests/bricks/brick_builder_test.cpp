@@ -140,12 +140,7 @@ TEST(BuildBricks, PeelingLayoutHitsTheDepthLimit) {
 TEST(BuildBricks, RandomLayoutsGiveValidBricks) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed)
     for (int levels = 1; levels <= 5; ++levels) {
-      RandomAmrOptions options;
-      options.levels = levels;
-      options.rootCells = glm::ivec3(1 + seed % 3, 2 + seed % 2, 1 + seed % 4);
-      options.origin = (1 << (levels - 1)) * glm::ivec3(int(seed % 5) - 2, -3, int(seed % 3));
-      options.refineProbability = 0.3 + 0.05 * double(seed % 6);
-      const auto field = randomAmr(seed, options);
+      const auto field = variedRandomLayout(seed, levels);
       for (const int maxSide : {1, 2, 3, 8, 32}) {
         const BrickSet set = buildBricks(field, {maxSide});
         EXPECT_TRUE(bricksAreValid(field, set, maxSide))

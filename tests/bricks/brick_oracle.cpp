@@ -1,6 +1,7 @@
 #include <cstring>
 
 #include "oracles.hpp"
+#include "random_amr.hpp"
 
 namespace amrstream::testing {
 
@@ -19,6 +20,15 @@ bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = float(i);
   return bricks::AmrField(std::move(lowers), std::move(levels), {{"id", std::move(ids)}}, {},
                           "test");
+}
+
+bricks::AmrField variedRandomLayout(std::uint64_t seed, int levels) {
+  RandomAmrOptions options;
+  options.levels = levels;
+  options.rootCells = glm::ivec3(1 + seed % 3, 2 + seed % 2, 1 + seed % 4);
+  options.origin = (1 << (levels - 1)) * glm::ivec3(int(seed % 5) - 2, -3, int(seed % 3));
+  options.refineProbability = 0.3 + 0.05 * double(seed % 6);
+  return randomAmr(seed, options);
 }
 
 bricks::AmrField levelJumpOfThree() {

@@ -18,6 +18,10 @@ bricks::AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint
 // worst case for recursive splitting.
 bricks::AmrField powersOfTwoAlongTheAxes();
 
+// A random layout of `levels` levels whose root size, origin (negative and odd multiples of the
+// coarsest width) and refinement probability vary with `seed`.
+bricks::AmrField variedRandomLayout(std::uint64_t seed, int levels);
+
 // A level-3 cell [0,8)^3 next to 8^3 level-0 cells filling [8,16) x [0,8) x [0,8).
 bricks::AmrField levelJumpOfThree();
 

@@ -110,12 +110,7 @@ TEST(BuildRegions, HoleLeavesEmptySpace) {
 TEST(BuildRegions, RandomLayoutsTileTheDomains) {
   for (std::uint64_t seed = 1; seed <= 8; ++seed)
     for (int levels = 1; levels <= 5; ++levels) {
-      RandomAmrOptions options;
-      options.levels = levels;
-      options.rootCells = glm::ivec3(1 + seed % 3, 2 + seed % 2, 1 + seed % 4);
-      options.origin = (1 << (levels - 1)) * glm::ivec3(int(seed % 5) - 2, -3, int(seed % 3));
-      options.refineProbability = 0.3 + 0.05 * double(seed % 6);
-      const auto field = randomAmr(seed, options);
+      const auto field = variedRandomLayout(seed, levels);
       for (const int maxSide : {1, 3, 32}) {
         SCOPED_TRACE(::testing::Message()
                      << "seed " << seed << " levels " << levels << " maxSide " << maxSide);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "hdf5_read.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -47,18 +48,6 @@ double leafVolume(const bricks::AmrField& f) {
   return v * s.x * s.y * s.z;
 }
 
-template <typename T>
-std::vector<T> readAll(hid_t file, const char* name, hid_t type) {
-  const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
-  EXPECT_GE(ds, 0) << name;
-  const hid_t sp = H5Dget_space(ds);
-  std::vector<T> v(H5Sget_simple_extent_npoints(sp));
-  EXPECT_GE(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0);
-  H5Sclose(sp);
-  H5Dclose(ds);
-  return v;
-}
-
 // ---- real data: DD0010/moving7_0010 ----
 
 fs::path realDir() { return fs::path(AMRSTREAM_REAL_DATA_DIR) / "enzo-moving7" / "DD0010"; }
@@ -79,9 +68,9 @@ TEST_F(EnzoRealTest, CellsPerLevelMatchTheGridTable) {
   const hid_t h =
       H5Fopen((realDir() / "moving7_0010.harrays").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(h, 0);
-  const auto dims = readAll<int>(h, "ActiveDimensions", H5T_NATIVE_INT);
-  const auto level = readAll<int>(h, "Level", H5T_NATIVE_INT);
-  const auto parent = readAll<int>(h, "ParentIDs", H5T_NATIVE_INT);
+  const auto dims = testing::readWholeDataset<int>(h, "ActiveDimensions", H5T_NATIVE_INT);
+  const auto level = testing::readWholeDataset<int>(h, "Level", H5T_NATIVE_INT);
+  const auto parent = testing::readWholeDataset<int>(h, "ParentIDs", H5T_NATIVE_INT);
   H5Fclose(h);
   ASSERT_EQ(level.size(), 10u);
   std::vector<long> leaves(level.size());
@@ -127,9 +116,9 @@ TEST_F(EnzoRealTest, SpotValuesMatchTheHdf5Datasets) {
   const auto field = readEnzo(realDir() / "moving7_0010");
   const hid_t h =
       H5Fopen((realDir() / "moving7_0010.harrays").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  const auto left = readAll<double>(h, "LeftEdges", H5T_NATIVE_DOUBLE);
-  const auto right = readAll<double>(h, "RightEdges", H5T_NATIVE_DOUBLE);
-  const auto dims = readAll<int>(h, "ActiveDimensions", H5T_NATIVE_INT);
+  const auto left = testing::readWholeDataset<double>(h, "LeftEdges", H5T_NATIVE_DOUBLE);
+  const auto right = testing::readWholeDataset<double>(h, "RightEdges", H5T_NATIVE_DOUBLE);
+  const auto dims = testing::readWholeDataset<int>(h, "ActiveDimensions", H5T_NATIVE_INT);
   H5Fclose(h);
   const hid_t f =
       H5Fopen((realDir() / "moving7_0010.cpu0000").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -146,7 +135,7 @@ TEST_F(EnzoRealTest, SpotValuesMatchTheHdf5Datasets) {
                        Spot{10, 5, 4, 3, "z-velocity", 0}, Spot{10, 7, 9, 9, "x-velocity", 0}}) {
     const int g = s.grid - 1;
     const auto dataset = fmt::format("/Grid{:08d}/{}", s.grid, s.name);
-    const auto values = readAll<float>(f, dataset.c_str(), H5T_NATIVE_FLOAT);
+    const auto values = testing::readWholeDataset<float>(f, dataset.c_str(), H5T_NATIVE_FLOAT);
     const int nx = dims[3 * g], ny = dims[3 * g + 1];
     const float expected = values[(std::size_t(s.k) * ny + s.j) * nx + s.i];
     glm::dvec3 p;

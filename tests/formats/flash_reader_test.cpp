@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "hdf5_read.hpp"
 #include "input_error_of.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
@@ -282,17 +283,6 @@ TEST_F(FlashReader, MissingFileAndNonHdf5FileAreRejected) {
 
 // ---- the real 2D nanowire plotfile ----------------------------------------------------------
 
-template <typename T>
-std::vector<T> readWhole(hid_t file, const char* name, hid_t type) {
-  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(set);
-  std::vector<T> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-  H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  return values;
-}
-
 TEST_F(FlashReader, RealNanowirePlotfile) {
   if (!fs::exists(kRealFile)) GTEST_SKIP() << "real FLASH file absent: " << kRealFile;
   const bricks::AmrField field = readFlash(kRealFile);
@@ -309,9 +299,9 @@ TEST_F(FlashReader, RealNanowirePlotfile) {
   // Independent read of the file's bounding boxes, node types and dens.
   const hid_t file = H5Fopen(kRealFile.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
-  const auto dens = readWhole<float>(file, "dens", H5T_NATIVE_FLOAT);
-  const auto bbox = readWhole<double>(file, "bounding box", H5T_NATIVE_DOUBLE);
-  const auto nodeType = readWhole<int>(file, "node type", H5T_NATIVE_INT);
+  const auto dens = testing::readWholeDataset<float>(file, "dens", H5T_NATIVE_FLOAT);
+  const auto bbox = testing::readWholeDataset<double>(file, "bounding box", H5T_NATIVE_DOUBLE);
+  const auto nodeType = testing::readWholeDataset<int>(file, "node type", H5T_NATIVE_INT);
   H5Fclose(file);
   ASSERT_EQ(nodeType.size(), 341u);
   ASSERT_EQ(dens.size(), 341u * 256u);
