@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
+#include "bench_command.hpp"
 #include "convert_command.hpp"
 #include "devices_command.hpp"
 #include "gen_command.hpp"
@@ -20,6 +22,9 @@ int main(int argc, char** argv) {
   amrstream::cli::addGenCommand(app);
   amrstream::cli::addDevicesCommand(app);
   amrstream::cli::addConvertCommand(app);
+  std::string commandLine = "amrstream";
+  for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
+  amrstream::cli::addBenchCommand(app, commandLine);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

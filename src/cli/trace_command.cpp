@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -17,6 +16,7 @@
 #include "formats/load_input.hpp"
 #include "output/vtp_writer.hpp"
 #include "progress.hpp"
+#include "trace_settings.hpp"
 #include "tracer_choice.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -131,14 +131,6 @@ void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
                                  seeds, pointsPerTrace, bytes / 0x1p30, memory / 0x1p30));
 }
 
-float defaultTimeStep(const flow::VectorVolume& volume) {
-  float maxSpeed = 0.0f;
-  for (const glm::vec3& v : volume.values) maxSpeed = std::max(maxSpeed, glm::length(v));
-  const glm::dvec3 s = volume.transform.spacing;
-  const double finest = std::min(s.x, std::min(s.y, s.z));
-  return maxSpeed > 0.0f ? float(0.25 * finest / maxSpeed) : 1.0f;
-}
-
 void runTrace(const TraceCommandOptions& o) {
   Stopwatch clock;
   const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
@@ -162,12 +154,8 @@ void runTrace(const TraceCommandOptions& o) {
   checkHistoryFitsInMemory(seeds.points.size(), o.endpointsOnly ? 1 : o.steps + 1);
 
   flow::TraceOptions options;
-  options.stepMode = o.stepMode == "time"  ? flow::StepMode::Time
-                     : o.stepMode == "arc" ? flow::StepMode::Arc
-                                           : flow::StepMode::Cell;
-  options.stepSize = o.stepSize.value_or(
-      options.stepMode == flow::StepMode::Time ? defaultTimeStep(volume) : options.stepSize);
-  if (!(options.stepSize > 0.0f)) throw InputError("--step-size", "the step size must be positive");
+  options.stepMode = parseStepMode(o.stepMode);
+  options.stepSize = chooseStepSize(options.stepMode, o.stepSize, volume);
   options.maxSteps = o.steps;
   options.keepHistory = !o.endpointsOnly;
   options.terminalSpeed = o.terminalSpeed;
@@ -297,13 +285,7 @@ void addTraceCommand(CLI::App& app) {
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each trace's last point (no history: for very long runs)");
   command->callback([options] {
-    // Validation layers: always in debug builds, on request (AMRSTREAM_VALIDATION=1) otherwise.
-    const char* validation = std::getenv("AMRSTREAM_VALIDATION");
-#ifdef NDEBUG
-    options->backend.validation = validation && std::string(validation) == "1";
-#else
-    options->backend.validation = !(validation && std::string(validation) == "0");
-#endif
+    options->backend.validation = validationRequested();
     runTrace(*options);
   });
 }

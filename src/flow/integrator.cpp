@@ -40,7 +40,8 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TracePa
                TraceSet& out, std::uint32_t seedIndex) {
   const glm::dvec3 origin = volume.transform.origin, spacing = volume.transform.spacing;
   glm::vec3 x = seed;
-  VectorSample s = sampleVector(volume, x);
+  RegionCache cache;
+  VectorSample s = sampleVector(volume, x, &cache);
   float time = 0.0f, length = 0.0f;
   std::uint32_t points = 0;
   // Without history every point overwrites slot 0, so the last point remains.
@@ -64,17 +65,17 @@ void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TracePa
       break;
     }
     const glm::vec3 k1 = direction(params, s);
-    const VectorSample s2 = sampleVector(volume, x + 0.5f * k1);
+    const VectorSample s2 = sampleVector(volume, x + 0.5f * k1, &cache);
     if ((reason = sampleFailure(s2))) break;
     const glm::vec3 k2 = direction(params, s2);
-    const VectorSample s3 = sampleVector(volume, x + 0.5f * k2);
+    const VectorSample s3 = sampleVector(volume, x + 0.5f * k2, &cache);
     if ((reason = sampleFailure(s3))) break;
     const glm::vec3 k3 = direction(params, s3);
-    const VectorSample s4 = sampleVector(volume, x + k3);
+    const VectorSample s4 = sampleVector(volume, x + k3, &cache);
     if ((reason = sampleFailure(s4))) break;
     const glm::vec3 k4 = direction(params, s4);
     const glm::vec3 next = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
-    const VectorSample sNext = sampleVector(volume, next);
+    const VectorSample sNext = sampleVector(volume, next, &cache);
     if ((reason = sampleFailure(sNext))) break;
 
     if (params.maxLength > 0.0f) {

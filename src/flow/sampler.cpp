@@ -4,16 +4,32 @@
 
 namespace amrstream::flow {
 
-std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p) {
+namespace {
+
+bool insideDomain(const VectorVolume& volume, glm::vec3 p) {
   const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
-  if (glm::any(glm::lessThan(p, lower)) || glm::any(glm::greaterThanEqual(p, upper))) return -1;
-  return volume.regions.locate(p);
+  return glm::all(glm::greaterThanEqual(p, lower)) && glm::all(glm::lessThan(p, upper));
 }
 
-VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p) {
+bool insideBox(const shared::Region& region, glm::vec3 p) {
+  return glm::all(glm::greaterThanEqual(p, region.lower)) && glm::all(glm::lessThan(p, region.upper));
+}
+
+}  // namespace
+
+std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p) {
+  return insideDomain(volume, p) ? volume.regions.locate(p) : -1;
+}
+
+VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache) {
   VectorSample sample;
-  const std::int32_t regionId = locateRegion(volume, p);
-  if (regionId < 0) return sample;
+  if (!insideDomain(volume, p)) return sample;
+  std::int32_t regionId = cache ? cache->id : -1;
+  if (regionId < 0 || !insideBox(volume.regions.regions[regionId], p)) {
+    regionId = volume.regions.locate(p);
+    if (regionId < 0) return sample;
+    if (cache) cache->id = regionId;
+  }
   const shared::Region& region = volume.regions.regions[regionId];
   sample.located = true;
   sample.cellWidth = region.finestCellWidth;

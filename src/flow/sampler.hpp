@@ -22,6 +22,14 @@ struct VectorSample {
 // Region containing p (finest-cell units), or -1 outside the domain or in empty space.
 std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p);
 
-VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p);
+// The region of a trace's previous sample. Consecutive samples mostly share a region, and
+// regions are disjoint half-open boxes, so a point inside the domain and inside that box is in
+// that region: testing it first gives locateRegion()'s answer without the tree descent.
+struct RegionCache {
+  std::int32_t id = -1;
+};
+
+// With a cache, tries its region first and stores the region found.
+VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache = nullptr);
 
 }  // namespace amrstream::flow

@@ -1,6 +1,7 @@
 #include "gpu_tracer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -10,6 +11,7 @@
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/vk_error.hpp"
 
 namespace amrstream::gpu {
@@ -34,18 +36,31 @@ VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
 }  // namespace
 
 GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume)
-    : ctx_(&ctx), volume_(&volume) {
+    : ctx_(&ctx), volume_(&volume), timer_(ctx) {
   if (backend == Backend::Cpu) throw std::invalid_argument("GpuTracer: cpu is not a GPU backend");
+  Stopwatch clock;
   bricks_ = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
   values_ = vk::uploadToDeviceLocal(ctx, volume.values, kStorage, "vector values");
   regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks_ =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
-  if (backend == Backend::Compute)
+  setup_.uploadSeconds = clock.seconds();
+  setup_.volumeBytes = bricks_.size() + values_.size() + regions_.size() + regionBricks_.size();
+
+  clock.restart();
+  if (backend == Backend::Compute) {
     tree_ = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
-  else
+    setup_.structureBytes = tree_.size();
+  } else {
     scene_ = vk::buildAabbScene(ctx, regionBoxes(volume.regions), "regions");
+    setup_.structureBytes = scene_->tlas.size();
+    for (const vk::AabbBlas& blas : scene_->blases) setup_.structureBytes += blas.structure.size();
+  }
+  setup_.structureSeconds = clock.seconds();
+
+  clock.restart();
   kernel_ = createTraceKernel(ctx, backend);
+  setup_.pipelineSeconds = clock.seconds();
 }
 
 std::size_t GpuTracer::seedsPerChunk(std::uint32_t capacity) const {
@@ -70,6 +85,7 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
              options.keepHistory ? options.maxSteps + 1 : 1);
   out.vectorName = volume_->vectorName;
   const std::size_t chunk = seedsPerChunk(out.capacity);
+  lastRun_ = {};
   if (chunk == 0)
     throw std::length_error(fmt::format(
         "one trace of {} points ({:.1f} MiB of positions) does not fit in the device's storage "
@@ -95,7 +111,7 @@ GpuTracer::Outputs GpuTracer::makeOutputs(std::size_t seeds, std::uint32_t capac
           vk::Buffer::deviceLocal(ctx, seeds * sizeof(std::int32_t), usage, "reasons")};
 }
 
-void GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
+std::optional<double> GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
                          std::span<const glm::vec3> seedCells, const Outputs& outputs) const {
   const vk::Context& ctx = *ctx_;
   vk::Buffer paramsBuffer =
@@ -160,6 +176,7 @@ void GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& p
     vkCmdBindPipeline(cmd, kernel.bindPoint, kernel.pipeline.get());
     vkCmdBindDescriptorSets(cmd, kernel.bindPoint, kernel.pipelineLayout.get(), 0, 1, &set, 0,
                             nullptr);
+    timer_.start(cmd);
     const std::uint32_t n = static_cast<std::uint32_t>(seedCells.size());
     if (kernel.backend == Backend::Pipeline) {
       const ShaderBindingTable& sbt = kernel.bindingTable;
@@ -168,8 +185,10 @@ void GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& p
     } else {
       vkCmdDispatch(cmd, (n + kernel.workgroupSize - 1) / kernel.workgroupSize, 1, 1);
     }
+    timer_.stop(cmd);
     vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
   });
+  return timer_.seconds();
 }
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
@@ -189,27 +208,39 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   for (std::size_t i = 0; i < seeds.size(); ++i)
     seedCells[i] = glm::vec3(volume_->transform.toCellUnits(seeds[i]));
   const Outputs outputs = makeOutputs(seeds.size(), params.capacity);
-  dispatch(kernel_, params, seedCells, outputs);
+  const std::optional<double> kernelSeconds = dispatch(kernel_, params, seedCells, outputs);
+  lastRun_.kernelSeconds =
+      kernelSeconds ? std::optional(lastRun_.kernelSeconds.value_or(0.0) + *kernelSeconds)
+                    : std::nullopt;
+  ++lastRun_.chunks;
+  lastRun_.chunkBytes =
+      std::max<std::uint64_t>(lastRun_.chunkBytes, seedCells.size() * sizeof(glm::vec3) +
+                                                       outputs.positions.size() +
+                                                       outputs.times.size() +
+                                                       outputs.vectors.size() +
+                                                       outputs.pointCounts.size() +
+                                                       outputs.reasons.size());
 
-  // Kernels write positions in cell units; convert in double precision like the CPU path.
+  // Kernels write point-major (point k of seed s at k * seeds + s) in cell units; reorder and
+  // convert in double precision like the CPU path.
   const auto cellPositions = vk::readBackAs<glm::vec3>(ctx, outputs.positions);
   const auto chunkTimes = vk::readBackAs<float>(ctx, outputs.times);
   const auto chunkVectors = vk::readBackAs<glm::vec3>(ctx, outputs.vectors);
   const auto chunkCounts = vk::readBackAs<std::uint32_t>(ctx, outputs.pointCounts);
   const auto chunkReasons = vk::readBackAs<std::int32_t>(ctx, outputs.reasons);
   const glm::dvec3 origin = volume_->transform.origin, spacing = volume_->transform.spacing;
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
+  tbb::parallel_for(std::size_t(0), seeds.size(), [&](std::size_t s) {
     const std::uint32_t seed = firstSeed + static_cast<std::uint32_t>(s);
     out.steps[seed] = chunkCounts[s] - 1;
     out.pointCounts[seed] = params.keepHistory ? chunkCounts[s] : 1;
     out.reasons[seed] = chunkReasons[s];
     for (std::uint32_t p = 0; p < out.pointCounts[seed]; ++p) {
-      const std::size_t from = s * params.capacity + p, to = out.at(seed, p);
+      const std::size_t from = p * seeds.size() + s, to = out.at(seed, p);
       out.positions[to] = glm::vec3(origin + spacing * glm::dvec3(cellPositions[from]));
       out.times[to] = chunkTimes[from];
       out.vectors[to] = chunkVectors[from];
     }
-  }
+  });
 }
 
 }  // namespace amrstream::gpu

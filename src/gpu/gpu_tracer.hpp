@@ -21,8 +21,25 @@
 #include "trace_kernel.hpp"
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
+#include "vk/gpu_timer.hpp"
 
 namespace amrstream::gpu {
+
+// What constructing the tracer took.
+struct TracerSetup {
+  double uploadSeconds = 0.0;     // the volume's buffers to the device
+  double structureSeconds = 0.0;  // the region tree's upload, or the acceleration structure build
+  double pipelineSeconds = 0.0;   // shader modules and pipeline (and binding table)
+  std::uint64_t volumeBytes = 0;     // device bytes of bricks, values, regions and region bricks
+  std::uint64_t structureBytes = 0;  // device bytes of the region tree or of the BLASes and TLAS
+};
+
+// The dispatches of the last trace().
+struct TraceRunStats {
+  std::optional<double> kernelSeconds;  // device time summed over chunks; none without timestamps
+  std::size_t chunks = 0;
+  std::uint64_t chunkBytes = 0;  // device bytes of the largest chunk's seeds and outputs
+};
 
 class GpuTracer {
  public:
@@ -40,6 +57,8 @@ class GpuTracer {
   std::vector<std::int32_t> locate(std::span<const glm::vec3> cellPoints);
 
   Backend backend() const { return kernel_.backend; }
+  const TracerSetup& setup() const { return setup_; }
+  const TraceRunStats& lastRun() const { return lastRun_; }
   // Seeds per dispatch for traces of `capacity` points.
   std::size_t seedsPerChunk(std::uint32_t capacity) const;
   // Caps the seeds per dispatch (0: no cap), so that tests can run many chunks on small inputs.
@@ -52,7 +71,8 @@ class GpuTracer {
     vk::Buffer positions, times, vectors, pointCounts, reasons;
   };
   Outputs makeOutputs(std::size_t seeds, std::uint32_t capacity) const;
-  void dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
+  // Runs the kernel over the seeds; returns its device time when the device has timestamps.
+  std::optional<double> dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
                 std::span<const glm::vec3> seedCells, const Outputs& outputs) const;
   void traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                   flow::TraceSet& out, std::uint32_t firstSeed);
@@ -67,7 +87,10 @@ class GpuTracer {
   std::optional<vk::AabbScene> scene_;  // rayquery and pipeline backends
   TraceKernel kernel_;
   std::optional<TraceKernel> probe_;  // created by the first locate()
+  vk::GpuTimer timer_;
   std::size_t chunkLimit_ = 0;
+  TracerSetup setup_;
+  TraceRunStats lastRun_;
 };
 
 }  // namespace amrstream::gpu

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -162,6 +163,39 @@ TEST_P(GpuTracerTest, ChunkSizeRespectsTheStorageBufferRange) {
   EXPECT_GT(chunk, 0u);
   EXPECT_LE(chunk * (options.maxSteps + 1) * sizeof(glm::vec3),
             ctx().limits().maxStorageBufferRange);
+}
+
+// The run statistics the benchmark reports: kernel time from timestamps (positive and within
+// the wall time of the run), one chunk per dispatch, and device bytes that add up.
+TEST_P(GpuTracerTest, ReportsKernelTimeChunksAndDeviceBytes) {
+  const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  const TracerSetup& setup = tracer.setup();
+  EXPECT_EQ(setup.volumeBytes, volume.bricks.size() * sizeof(shared::Brick) +
+                                   volume.values.size() * sizeof(glm::vec3) +
+                                   volume.regions.regions.size() * sizeof(shared::Region) +
+                                   volume.regions.regionBricks.size() * sizeof(std::uint32_t));
+  if (GetParam() == Backend::Compute)
+    EXPECT_EQ(setup.structureBytes, volume.regions.tree.size() * sizeof(shared::RegionTreeNode));
+  else
+    EXPECT_GT(setup.structureBytes, volume.regions.regions.size() * sizeof(VkAabbPositionsKHR) / 2);
+
+  flow::TraceOptions options;
+  options.maxSteps = 200;
+  const flow::SeedList seeds = seedsIn(volume, 40);
+  tracer.limitSeedsPerChunk(16);
+  const auto start = std::chrono::steady_clock::now();
+  tracer.trace(seeds.points, options);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TraceRunStats& run = tracer.lastRun();
+  EXPECT_EQ(run.chunks, 3u);
+  EXPECT_EQ(run.chunkBytes, 16 * (sizeof(glm::vec3) + 201 * flow::TraceSet::kBytesPerPoint +
+                                  sizeof(std::uint32_t) + sizeof(std::int32_t)));
+  ASSERT_TRUE(run.kernelSeconds.has_value()) << "lavapipe and NVIDIA have compute timestamps";
+  EXPECT_GT(*run.kernelSeconds, 0.0);
+  EXPECT_LT(*run.kernelSeconds, wall);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GpuTracerTest,

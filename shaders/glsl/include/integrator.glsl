@@ -25,16 +25,20 @@ int sampleFailure(VectorSample s) {
   return AMRSTREAM_REASON_RUNNING;
 }
 
+// Outputs are point-major: point k of seed s is at slot k * seedCount + s, so the invocations of
+// a subgroup write one step's points to neighbouring slots. The host reorders them.
+uint outputSlot(uint seedIndex, uint point) { return point * params.seedCount + seedIndex; }
+
 void traceSeed(uint seedIndex) {
-  const uint base = seedIndex * params.capacity;
   precise vec3 x = seeds[seedIndex];
   VectorSample s = sampleVector(x);
   precise float time = 0.0, traceLength = 0.0;
-  uint points = 0;
-  positions[base] = x;
-  times[base] = time;
-  vectors[base] = s.value;
-  points = 1;
+  uint points = 1;
+  if (params.keepHistory != 0) {
+    positions[seedIndex] = x;
+    times[seedIndex] = time;
+    vectors[seedIndex] = s.value;
+  }
 
   int reason = sampleFailure(s);
   for (uint step = 0; reason == AMRSTREAM_REASON_RUNNING; ++step) {
@@ -74,12 +78,18 @@ void traceSeed(uint seedIndex) {
     time += parameterStep(s);
     x = next;
     s = sNext;
-    // Without history every point overwrites slot 0, so the last point remains.
-    const uint slot = base + (params.keepHistory != 0 ? points : 0);
-    positions[slot] = x;
-    times[slot] = time;
-    vectors[slot] = s.value;
+    if (params.keepHistory != 0) {
+      const uint slot = outputSlot(seedIndex, points);
+      positions[slot] = x;
+      times[slot] = time;
+      vectors[slot] = s.value;
+    }
     ++points;
+  }
+  if (params.keepHistory == 0) {  // only the last point, written once
+    positions[seedIndex] = x;
+    times[seedIndex] = time;
+    vectors[seedIndex] = s.value;
   }
   pointCounts[seedIndex] = points;  // points taken; the host derives how many are stored
   reasons[seedIndex] = reason;

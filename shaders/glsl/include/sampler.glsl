@@ -11,18 +11,31 @@ struct VectorSample {
   float cellWidth;
 };
 
-int locateRegion(vec3 p) {
-  if (any(lessThan(p, vec3(params.domainLower))) ||
-      any(greaterThanEqual(p, vec3(params.domainUpper))))
-    return -1;
-  return locateInRegions(p);
+bool insideDomain(vec3 p) {
+  return all(greaterThanEqual(p, vec3(params.domainLower))) &&
+         all(lessThan(p, vec3(params.domainUpper)));
 }
+
+int locateRegion(vec3 p) { return insideDomain(p) ? locateInRegions(p) : -1; }
+
+// The region of this invocation's last sample. Consecutive samples of a trace mostly fall in the
+// same region, and regions are disjoint half-open boxes, so a point inside the domain and inside
+// this box is in this region: the test gives locateRegion()'s answer without its tree descent or
+// ray. It must come after the domain test, since a region's box may reach past the domain.
+int cachedRegionId = -1;
+Region cachedRegion;
 
 VectorSample sampleVector(vec3 p) {
   VectorSample s = VectorSample(false, false, vec3(0.0), 0.0);
-  const int regionId = locateRegion(p);
-  if (regionId < 0) return s;
-  const Region region = regions[regionId];
+  if (!insideDomain(p)) return s;
+  if (cachedRegionId < 0 || any(lessThan(p, cachedRegion.lower)) ||
+      any(greaterThanEqual(p, cachedRegion.upper))) {
+    const int regionId = locateInRegions(p);
+    if (regionId < 0) return s;
+    cachedRegionId = regionId;
+    cachedRegion = regions[regionId];
+  }
+  const Region region = cachedRegion;
   s.located = true;
   s.cellWidth = region.finestCellWidth;
 

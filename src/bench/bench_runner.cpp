@@ -1,0 +1,198 @@
+#include "bench_runner.hpp"
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+
+#include "gpu/backend.hpp"
+#include "gpu/gpu_tracer.hpp"
+#include "util/stopwatch.hpp"
+#include "vk/context.hpp"
+#include "vk/context_error.hpp"
+
+namespace amrstream::bench {
+
+namespace {
+
+std::uint64_t totalSteps(const flow::TraceSet& traces) {
+  return std::accumulate(traces.steps.begin(), traces.steps.end(), std::uint64_t(0));
+}
+
+BenchRow measuredRow(const std::string& backend, const std::string& device, bool history,
+                     const flow::TraceSet& traces, const BenchConfig& config, double wallSeconds) {
+  BenchRow row;
+  row.backend = backend;
+  row.device = device;
+  row.history = history;
+  row.particles = traces.seedCount;
+  row.maxSteps = config.trace.maxSteps;
+  row.steps = totalSteps(traces);
+  row.wallSeconds = wallSeconds;
+  return row;
+}
+
+// Keeps the faster of two measurements of the same row.
+void keepFaster(std::optional<BenchRow>& best, const BenchRow& row) {
+  if (!best || row.stepsPerSecond() > best->stepsPerSecond()) best = row;
+}
+
+// Decides which rows run; the first row skipped for each reason gets a note saying why.
+class RowPlanner {
+ public:
+  RowPlanner(const BenchConfig& config, const BenchCallbacks& callbacks, BenchReport& report)
+      : config_(config), callbacks_(callbacks), report_(report) {}
+
+  bool runs(const std::string& backend, bool history, std::size_t particles) {
+    if (backend == "cpu" && particles > config_.cpuMaxParticles)
+      return skip("cpu", fmt::format("cpu skips counts above --cpu-max-particles {}",
+                                     config_.cpuMaxParticles));
+    const std::uint64_t points = std::uint64_t(particles) * (config_.trace.maxSteps + 1);
+    if (history && points > config_.historyPointBudget)
+      return skip("history " + backend,
+                  fmt::format("{} skips history rows from {} particles: {} points exceed "
+                              "--history-points {}",
+                              backend, particles, points, config_.historyPointBudget));
+    return true;
+  }
+
+ private:
+  bool skip(const std::string& reason, const std::string& why) {
+    if (noted_.insert(reason).second) {
+      report_.notes.push_back(why);
+      if (callbacks_.note) callbacks_.note(why);
+    }
+    return false;
+  }
+
+  const BenchConfig& config_;
+  const BenchCallbacks& callbacks_;
+  BenchReport& report_;
+  std::set<std::string> noted_;
+};
+
+flow::TraceOptions optionsFor(const BenchConfig& config, bool history) {
+  flow::TraceOptions options = config.trace;
+  options.keepHistory = history;
+  return options;
+}
+
+void runCpu(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
+            const BenchConfig& config, BenchReport& report, const BenchCallbacks& callbacks,
+            RowPlanner& planner) {
+  const std::string device = hostDescription();
+  for (const bool history : config.historyModes) {
+    for (const std::size_t n : config.particles) {
+      if (!planner.runs("cpu", history, n)) continue;
+      std::optional<BenchRow> best;
+      for (std::uint32_t r = 0; r < config.repeats; ++r) {
+        Stopwatch clock;
+        const flow::TraceSet traces =
+            flow::traceStreamlines(volume, seeds.first(n), optionsFor(config, history));
+        keepFaster(best, measuredRow("cpu", device, history, traces, config, clock.seconds()));
+      }
+      report.rows.push_back(*best);
+      if (callbacks.rowDone) callbacks.rowDone(*best);
+    }
+  }
+}
+
+void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
+            std::span<const glm::dvec3> seeds, const BenchConfig& config, BenchReport& report,
+            const BenchCallbacks& callbacks, RowPlanner& planner) {
+  const std::string name(gpu::backendName(backend));
+  Stopwatch clock;
+  vk::ContextBuilder builder;
+  builder.require(gpu::requiredCapabilities(backend)).validation(config.validation);
+  if (!config.deviceFilter.empty()) builder.deviceName(config.deviceFilter);
+  std::optional<vk::Context> ctx;
+  try {
+    ctx.emplace(builder.build());
+  } catch (const vk::ContextError& e) {
+    const std::string why = fmt::format("{} not run: {}", name, e.what());
+    report.notes.push_back(why);
+    if (callbacks.note) callbacks.note(why);
+    return;
+  }
+  BackendSetup setup{name, ctx->deviceName(),
+                     fmt::format("{} {}", ctx->report().driverName, ctx->report().driverInfo)};
+  setup.contextSeconds = clock.seconds();
+  gpu::GpuTracer tracer(*ctx, backend, volume);
+  setup.uploadSeconds = tracer.setup().uploadSeconds;
+  setup.structureSeconds = tracer.setup().structureSeconds;
+  setup.pipelineSeconds = tracer.setup().pipelineSeconds;
+  setup.volumeBytes = tracer.setup().volumeBytes;
+  setup.structureBytes = tracer.setup().structureBytes;
+  report.setups.push_back(setup);
+  if (callbacks.setupDone) callbacks.setupDone(setup);
+
+  flow::TraceOptions warmUp = optionsFor(config, false);
+  warmUp.maxSteps = std::min<std::uint32_t>(warmUp.maxSteps, 10);
+  tracer.trace(seeds.first(std::min<std::size_t>(seeds.size(), 1024)), warmUp);
+
+  for (const bool history : config.historyModes) {
+    for (const std::size_t n : config.particles) {
+      if (!planner.runs(name, history, n)) continue;
+      std::optional<BenchRow> best;
+      for (std::uint32_t r = 0; r < config.repeats; ++r) {
+        clock.restart();
+        const flow::TraceSet traces = tracer.trace(seeds.first(n), optionsFor(config, history));
+        BenchRow row = measuredRow(name, setup.device, history, traces, config, clock.seconds());
+        row.kernelSeconds = tracer.lastRun().kernelSeconds;
+        row.chunks = tracer.lastRun().chunks;
+        row.deviceBytes = setup.volumeBytes + setup.structureBytes + tracer.lastRun().chunkBytes;
+        keepFaster(best, row);
+      }
+      report.rows.push_back(*best);
+      if (callbacks.rowDone) callbacks.rowDone(*best);
+    }
+  }
+  if (ctx->validationErrorCount() > 0)
+    throw std::runtime_error(fmt::format("the Vulkan validation layer reported {} errors on {}",
+                                         ctx->validationErrorCount(), name));
+}
+
+}  // namespace
+
+double BenchRow::stepsPerSecond() const {
+  return double(steps) / std::max(kernelSeconds.value_or(wallSeconds), 1e-12);
+}
+
+double BenchRow::wallStepsPerSecond() const {
+  return double(steps) / std::max(wallSeconds, 1e-12);
+}
+
+void runBenchmark(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                  const BenchConfig& config, BenchReport& report,
+                  const BenchCallbacks& callbacks) {
+  if (config.particles.empty()) throw std::invalid_argument("bench: no particle counts");
+  if (seeds.size() < *std::max_element(config.particles.begin(), config.particles.end()))
+    throw std::invalid_argument("bench: fewer seeds than the largest particle count");
+  RowPlanner planner(config, callbacks, report);
+  for (const std::string& name : config.backends) {
+    const std::optional<gpu::Backend> backend = gpu::parseBackend(name);
+    if (!backend) throw std::invalid_argument(fmt::format("bench: unknown backend '{}'", name));
+    if (*backend == gpu::Backend::Cpu)
+      runCpu(volume, seeds, config, report, callbacks, planner);
+    else
+      runGpu(*backend, volume, seeds, config, report, callbacks, planner);
+  }
+}
+
+std::string hostDescription() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return fmt::format("{}, {} threads", model, tbb::info::default_concurrency());
+}
+
+}  // namespace amrstream::bench

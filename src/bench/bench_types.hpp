@@ -1,0 +1,78 @@
+#pragma once
+// What `amrstream bench` measures: one row per (backend, history mode, particle count), plus
+// the cost of building the structures each row relies on.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flow/integrator.hpp"
+
+namespace amrstream::bench {
+
+struct BenchConfig {
+  std::vector<std::string> backends;     // cpu, rayquery, pipeline, compute, in run order
+  std::vector<std::size_t> particles;    // counts, ascending; rows use a prefix of the seeds
+  std::size_t cpuMaxParticles = 65536;   // the CPU path skips larger counts
+  std::vector<bool> historyModes{false, true};  // false: endpoints only; true: every step
+  std::uint64_t historyPointBudget = std::uint64_t(1) << 28;  // larger history rows are skipped
+  std::uint32_t repeats = 1;             // each row keeps its fastest repeat
+  flow::TraceOptions trace;              // keepHistory is set per row
+  std::string deviceFilter;              // a substring of the Vulkan device's name
+  bool validation = false;
+};
+
+struct BenchRow {
+  std::string backend;
+  std::string device;
+  bool history = false;
+  std::size_t particles = 0;
+  std::uint32_t maxSteps = 0;
+  std::uint64_t steps = 0;               // particle-steps taken, summed over the traces
+  std::optional<double> kernelSeconds;   // GPU: timestamp queries around the dispatches
+  double wallSeconds = 0.0;              // the whole trace call: uploads, dispatches, read-back
+  std::uint64_t deviceBytes = 0;         // GPU: volume + structure + the largest chunk's buffers
+  std::size_t chunks = 0;
+
+  // Kernel time where there is one, else wall time.
+  double stepsPerSecond() const;
+  double wallStepsPerSecond() const;
+};
+
+// The setup of one backend: its device and what building the tracer took.
+struct BackendSetup {
+  std::string backend;
+  std::string device;
+  std::string driver;
+  double contextSeconds = 0.0;
+  double uploadSeconds = 0.0;
+  double structureSeconds = 0.0;  // region tree upload, or acceleration structure build
+  double pipelineSeconds = 0.0;
+  std::uint64_t volumeBytes = 0;
+  std::uint64_t structureBytes = 0;
+};
+
+// The dataset and the host-side structures.
+struct DatasetStats {
+  std::string source;
+  std::size_t cells = 0;
+  int finestLevel = 0, coarsestLevel = 0;
+  std::string vector;
+  double loadSeconds = 0.0;  // read or generate, including the AMR model's validation
+  std::size_t bricks = 0, regions = 0;
+  double bricksSeconds = 0.0, regionsSeconds = 0.0, gatherSeconds = 0.0;
+  std::string seeding;
+};
+
+struct BenchReport {
+  DatasetStats dataset;
+  std::string host;  // CPU model and thread count
+  std::string command;
+  BenchConfig config;
+  std::vector<BackendSetup> setups;
+  std::vector<BenchRow> rows;
+  std::vector<std::string> notes;  // skipped rows, unavailable backends
+};
+
+}  // namespace amrstream::bench

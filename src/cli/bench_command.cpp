@@ -1,0 +1,230 @@
+#include "bench_command.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "bench/bench_report.hpp"
+#include "bench/bench_runner.hpp"
+#include "dataset_options.hpp"
+#include "flow/seed_strategies.hpp"
+#include "flow/seeds.hpp"
+#include "formats/load_input.hpp"
+#include "trace_settings.hpp"
+#include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+struct BenchCommandOptions {
+  DatasetOptions dataset;
+  std::string vector;
+  std::vector<std::string> backends{"cpu", "rayquery", "pipeline", "compute"};
+  std::vector<std::size_t> particles;
+  std::size_t cpuMaxParticles = 65536;
+  std::string mode = "both";
+  std::uint64_t historyPoints = std::uint64_t(1) << 28;
+  std::uint32_t repeats = 1;
+  std::uint32_t steps = 1000;
+  std::optional<float> stepSize;
+  std::string stepMode = "cell";
+  std::string seedsFile;
+  std::string seedDensity;
+  double seedPercentile = 90.0;
+  std::uint64_t seed = 1;
+  std::string device;
+  std::string json = "bench.json";
+  std::string commandLine;
+};
+
+std::vector<std::size_t> defaultParticleCounts() {
+  std::vector<std::size_t> counts;
+  for (std::size_t n = 1 << 10; n <= (1 << 20); n *= 2) counts.push_back(n);
+  return counts;
+}
+
+// The paper's seeding (random points in random cells among the densest) on --seed-density, else
+// on `dens` or the first scalar that is not part of the vector; a uniform box without scalars.
+flow::SeedList benchSeeds(const BenchCommandOptions& o, const bricks::AmrField& field,
+                          const flow::VectorVolume& volume, const flow::VectorChannels& vector,
+                          std::size_t count, std::string& description) {
+  if (!o.seedsFile.empty()) {
+    flow::SeedList seeds = flow::readSeedFile(o.seedsFile);
+    if (seeds.points.size() < count)
+      throw InputError(o.seedsFile, fmt::format("has {} seeds, fewer than the largest particle "
+                                                "count {}",
+                                                seeds.points.size(), count));
+    description = o.seedsFile;
+    return seeds;
+  }
+  std::string channel = o.seedDensity;
+  if (channel.empty()) {
+    for (const bricks::Channel& c : field.channels()) {
+      const std::string& name = c.name;
+      const bool inVector = std::find(vector.channels.begin(), vector.channels.end(), name) !=
+                            vector.channels.end();
+      if (name == "dens" || (channel.empty() && !inVector)) channel = name;
+      if (name == "dens") break;
+    }
+  }
+  if (channel.empty()) {
+    description = fmt::format("uniform random in the domain (seed {}; no scalar channel)", o.seed);
+    const glm::dvec3 hi = flow::domainUpper(volume) - 1e-4 * volume.transform.spacing;
+    return flow::randomSeedsInBox(flow::domainLower(volume), hi, count, o.seed);
+  }
+  description = fmt::format("random cells with {} at or above its {:g}th percentile (seed {})",
+                            channel, o.seedPercentile, o.seed);
+  return flow::seedsInDensestCells(field, {channel, o.seedPercentile, false, count, o.seed});
+}
+
+bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVolume& volume) {
+  bench::BenchConfig config;
+  config.backends = o.backends;
+  config.particles = o.particles.empty() ? defaultParticleCounts() : o.particles;
+  std::sort(config.particles.begin(), config.particles.end());
+  config.particles.erase(std::unique(config.particles.begin(), config.particles.end()),
+                         config.particles.end());
+  if (config.particles.front() == 0) throw InputError("--particles", "counts must be positive");
+  config.cpuMaxParticles = o.cpuMaxParticles;
+  config.historyModes = o.mode == "endpoints" ? std::vector<bool>{false}
+                        : o.mode == "history" ? std::vector<bool>{true}
+                                              : std::vector<bool>{false, true};
+  config.historyPointBudget = o.historyPoints;
+  config.repeats = std::max<std::uint32_t>(1, o.repeats);
+  config.trace.stepMode = parseStepMode(o.stepMode);
+  config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
+  config.trace.maxSteps = o.steps;
+  config.deviceFilter = o.device;
+  config.validation = validationRequested();
+  return config;
+}
+
+void runBench(const BenchCommandOptions& o) {
+  bench::BenchReport report;
+  report.command = o.commandLine;
+  report.host = bench::hostDescription();
+  bench::DatasetStats& data = report.dataset;
+
+  Stopwatch clock;
+  const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
+  data.loadSeconds = clock.seconds();
+  const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
+  flow::VolumeBuildTimes times;
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, {}, &times);
+  data.source = field.source();
+  data.cells = field.cellCount();
+  data.finestLevel = field.finestLevel();
+  data.coarsestLevel = field.coarsestLevel();
+  data.vector = vector.name;
+  data.bricks = volume.bricks.size();
+  data.regions = volume.regions.regions.size();
+  data.bricksSeconds = times.bricks;
+  data.regionsSeconds = times.regions;
+  data.gatherSeconds = times.gather;
+  report.config = makeConfig(o, volume);
+  const std::size_t maxParticles = report.config.particles.back();
+
+  const flow::SeedList seeds = benchSeeds(o, field, volume, vector, maxParticles, data.seeding);
+  flow::checkSeedsInDomain(volume, seeds);
+
+  fmt::print("input      {}: {} cells, levels {}..{}, vector {} [{:.2f} s]\n", data.source,
+             withCommas(data.cells), data.finestLevel, data.coarsestLevel, data.vector,
+             data.loadSeconds);
+  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]\n",
+             withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions),
+             data.regionsSeconds, data.gatherSeconds);
+  fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()), data.seeding);
+  fmt::print("stepping   mode {}, h = {:g}, at most {} steps; best of {}\n", o.stepMode,
+             report.config.trace.stepSize, o.steps, report.config.repeats);
+  fmt::print("host       {}\n\n", report.host);
+
+  bench::BenchCallbacks callbacks;
+  bool headerPrinted = false;
+  callbacks.setupDone = [](const bench::BackendSetup& s) {
+    fmt::print("setup      {}", bench::setupLine(s));
+  };
+  callbacks.rowDone = [&](const bench::BenchRow& row) {
+    if (!headerPrinted) fmt::print("{}", bench::tableHeader());
+    headerPrinted = true;
+    fmt::print("{}", bench::tableRow(row));
+    std::fflush(stdout);
+    // The runner has appended the row: rewriting the JSON now keeps what an interrupted run
+    // measured.
+    bench::writeJson(o.json, report);
+  };
+  callbacks.note = [](const std::string& note) { fmt::print("note       {}\n", note); };
+  bench::runBenchmark(volume, seeds.points, report.config, report, callbacks);
+
+  bench::writeJson(o.json, report);
+  fmt::print("\njson       {} ({} rows)\n", o.json, report.rows.size());
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, const std::string& commandLine) {
+  auto options = std::make_shared<BenchCommandOptions>();
+  options->commandLine = commandLine;
+  CLI::App* command = app.add_subcommand(
+      "bench", "the paper's performance experiment: particle-steps per second of every backend");
+  addDatasetOptions(*command, options->dataset, "--gen-seed");
+  command->add_option("--vector", options->vector, "three channels forming the vector");
+  command
+      ->add_option("--backends", options->backends,
+                   "backends in run order; those the device lacks are noted and skipped")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rayquery", "pipeline", "compute", "cpu"}));
+  command
+      ->add_option("--particles", options->particles,
+                   "particle counts, comma-separated [default: 1024,2048,...,1048576]")
+      ->delimiter(',');
+  command->add_option("--cpu-max-particles", options->cpuMaxParticles,
+                      "the CPU path runs counts up to this")
+      ->capture_default_str();
+  command
+      ->add_option("--mode", options->mode,
+                   "endpoints (keep only the last point), history (every step), or both")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"endpoints", "history", "both"}));
+  command
+      ->add_option("--history-points", options->historyPoints,
+                   "history rows storing more trace points than this are skipped")
+      ->capture_default_str();
+  command->add_option("--repeats", options->repeats, "runs per row; the fastest is kept")
+      ->capture_default_str();
+  command->add_option("--steps", options->steps, "maximum integration steps per particle")
+      ->capture_default_str();
+  command->add_option("--step-size", options->stepSize,
+                      "h: in cell widths (cell, arc) or physical time (time) [default 0.25]");
+  command->add_option("--step-mode", options->stepMode, "cell (paper), time or arc")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cell", "time", "arc"}));
+  auto* seedsFile = command
+                        ->add_option("--seeds", options->seedsFile,
+                                     "seed points, one 'x y z' per line (at least the largest "
+                                     "particle count)")
+                        ->check(CLI::ExistingFile);
+  command
+      ->add_option("--seed-density", options->seedDensity,
+                   "the scalar whose densest cells get the seeds [default: dens, else the first "
+                   "scalar outside the vector]")
+      ->excludes(seedsFile);
+  command->add_option("--seed-percentile", options->seedPercentile,
+                      "candidate cells are at or above this percentile of the scalar")
+      ->capture_default_str()
+      ->excludes(seedsFile);
+  command->add_option("--seed", options->seed, "random seed for the seed points")
+      ->capture_default_str()
+      ->excludes(seedsFile);
+  command->add_option("--device", options->device,
+                      "the Vulkan device whose name contains this (see `amrstream devices`)");
+  command->add_option("--json", options->json, "where to write the results")
+      ->capture_default_str();
+  command->callback([options] { runBench(*options); });
+}
+
+}  // namespace amrstream::cli
