@@ -42,6 +42,7 @@ nlohmann::json toJson(const BackendSetup& s) {
           {"upload_seconds", s.uploadSeconds},
           {"structure_seconds", s.structureSeconds},
           {"pipeline_seconds", s.pipelineSeconds},
+          {"region_hint", s.regionHint},
           {"volume_bytes", s.volumeBytes},
           {"structure_bytes", s.structureBytes}};
 }
@@ -75,6 +76,7 @@ nlohmann::json toJson(const BenchConfig& c) {
           {"steps", c.trace.maxSteps},
           {"step_mode", stepMode},
           {"step_size", c.trace.stepSize},
+          {"region_hint", c.regionHint ? nlohmann::json(*c.regionHint) : nlohmann::json("default")},
           {"validation", c.validation}};
 }
 
@@ -97,9 +99,9 @@ std::string tableRow(const BenchRow& r) {
 std::string setupLine(const BackendSetup& s) {
   return fmt::format(
       "{:<9} on {} ({}): context {:.2f} s, upload {:.2f} s ({:.1f} MiB), structure {:.2f} s "
-      "({:.1f} MiB), pipeline {:.2f} s\n",
+      "({:.1f} MiB), pipeline {:.2f} s; region hint {}\n",
       s.backend, s.device, s.driver, s.contextSeconds, s.uploadSeconds, mib(s.volumeBytes),
-      s.structureSeconds, mib(s.structureBytes), s.pipelineSeconds);
+      s.structureSeconds, mib(s.structureBytes), s.pipelineSeconds, s.regionHint ? "on" : "off");
 }
 
 void writeJson(const std::filesystem::path& path, const BenchReport& report) {

@@ -4,6 +4,7 @@
 #include <tbb/info.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <numeric>
 #include <set>
@@ -121,7 +122,10 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   BackendSetup setup{name, ctx->deviceName(),
                      fmt::format("{} {}", ctx->report().driverName, ctx->report().driverInfo)};
   setup.contextSeconds = clock.seconds();
-  gpu::GpuTracer tracer(*ctx, backend, volume);
+  gpu::KernelSettings settings = gpu::defaultKernelSettings(backend);
+  if (config.regionHint) settings.useRegionHint = *config.regionHint;
+  gpu::GpuTracer tracer(*ctx, backend, volume, settings);
+  setup.regionHint = settings.useRegionHint;
   setup.uploadSeconds = tracer.setup().uploadSeconds;
   setup.structureSeconds = tracer.setup().structureSeconds;
   setup.pipelineSeconds = tracer.setup().pipelineSeconds;
@@ -156,6 +160,25 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
                                          ctx->validationErrorCount(), name));
 }
 
+// A GPU row whose step total differs from the CPU reference's for the same particles and mode by
+// more than a few boundary cases (float division differs in the last ulp) gets a note.
+void compareWithCpu(BenchReport& report, const BenchCallbacks& callbacks) {
+  for (const BenchRow& row : report.rows) {
+    if (row.backend == "cpu") continue;
+    for (const BenchRow& cpu : report.rows) {
+      if (cpu.backend != "cpu" || cpu.particles != row.particles || cpu.history != row.history)
+        continue;
+      const double difference = std::abs(double(row.steps) - double(cpu.steps));
+      if (difference <= std::max(2.0, 1e-5 * double(cpu.steps))) continue;
+      const std::string why = fmt::format(
+          "{} with {} particles took {} steps, the cpu {}: the results differ", row.backend,
+          row.particles, row.steps, cpu.steps);
+      report.notes.push_back(why);
+      if (callbacks.note) callbacks.note(why);
+    }
+  }
+}
+
 }  // namespace
 
 double BenchRow::stepsPerSecond() const {
@@ -181,6 +204,7 @@ void runBenchmark(const flow::VectorVolume& volume, std::span<const glm::dvec3> 
     else
       runGpu(*backend, volume, seeds, config, report, callbacks, planner);
   }
+  compareWithCpu(report, callbacks);
 }
 
 std::string hostDescription() {

@@ -19,6 +19,8 @@ struct BenchConfig {
   std::uint64_t historyPointBudget = std::uint64_t(1) << 28;  // larger history rows are skipped
   std::uint32_t repeats = 1;             // each row keeps its fastest repeat
   flow::TraceOptions trace;              // keepHistory is set per row
+  std::optional<bool> regionHint;        // GPU kernels test the previous region first; none:
+                                         // each backend's default (gpu::defaultKernelSettings)
   std::string deviceFilter;              // a substring of the Vulkan device's name
   bool validation = false;
 };
@@ -49,6 +51,7 @@ struct BackendSetup {
   double uploadSeconds = 0.0;
   double structureSeconds = 0.0;  // region tree upload, or acceleration structure build
   double pipelineSeconds = 0.0;
+  bool regionHint = false;
   std::uint64_t volumeBytes = 0;
   std::uint64_t structureBytes = 0;
 };

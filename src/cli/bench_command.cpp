@@ -37,6 +37,7 @@ struct BenchCommandOptions {
   double seedPercentile = 90.0;
   std::uint64_t seed = 1;
   std::string device;
+  std::string regionHint = "default";
   std::string json = "bench.json";
   std::string commandLine;
 };
@@ -99,6 +100,7 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
   config.trace.maxSteps = o.steps;
   config.deviceFilter = o.device;
+  if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
   config.validation = validationRequested();
   return config;
 }
@@ -222,6 +224,13 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
       ->excludes(seedsFile);
   command->add_option("--device", options->device,
                       "the Vulkan device whose name contains this (see `amrstream devices`)");
+  command
+      ->add_option("--region-hint", options->regionHint,
+                   "GPU samples test the previous sample's region before locating: on, off "
+                   "(every sample runs the point location) or each backend's default (on, "
+                   "but off for pipeline)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"default", "on", "off"}));
   command->add_option("--json", options->json, "where to write the results")
       ->capture_default_str();
   command->callback([options] { runBench(*options); });

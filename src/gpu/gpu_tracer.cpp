@@ -36,6 +36,10 @@ VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
 }  // namespace
 
 GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume)
+    : GpuTracer(ctx, backend, volume, defaultKernelSettings(backend)) {}
+
+GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
+                     const KernelSettings& settings)
     : ctx_(&ctx), volume_(&volume), timer_(ctx) {
   if (backend == Backend::Cpu) throw std::invalid_argument("GpuTracer: cpu is not a GPU backend");
   Stopwatch clock;
@@ -59,7 +63,7 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
   setup_.structureSeconds = clock.seconds();
 
   clock.restart();
-  kernel_ = createTraceKernel(ctx, backend);
+  kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings);
   setup_.pipelineSeconds = clock.seconds();
 }
 
@@ -111,8 +115,10 @@ GpuTracer::Outputs GpuTracer::makeOutputs(std::size_t seeds, std::uint32_t capac
           vk::Buffer::deviceLocal(ctx, seeds * sizeof(std::int32_t), usage, "reasons")};
 }
 
-std::optional<double> GpuTracer::dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
-                         std::span<const glm::vec3> seedCells, const Outputs& outputs) const {
+std::optional<double> GpuTracer::dispatch(const TraceKernel& kernel,
+                                          const shared::TraceParams& params,
+                                          std::span<const glm::vec3> seedCells,
+                                          const Outputs& outputs) const {
   const vk::Context& ctx = *ctx_;
   vk::Buffer paramsBuffer =
       vk::Buffer::upload(ctx, sizeof(params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "trace params");
@@ -122,7 +128,7 @@ std::optional<double> GpuTracer::dispatch(const TraceKernel& kernel, const share
   // One descriptor set for this dispatch.
   std::array<VkDescriptorPoolSize, 3> poolSizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 11},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTraceBindingCount - 1},
        {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;

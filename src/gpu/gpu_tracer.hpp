@@ -46,6 +46,8 @@ class GpuTracer {
   // The context must have requiredCapabilities(backend) and outlive the tracer; `volume` must
   // outlive it too.
   GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume);
+  GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
+            const KernelSettings& settings);
 
   // Seeds in physical coordinates, as flow::traceStreamlines; the same output layout.
   // `progress` is called with the number of seeds finished after each chunk.
@@ -73,7 +75,8 @@ class GpuTracer {
   Outputs makeOutputs(std::size_t seeds, std::uint32_t capacity) const;
   // Runs the kernel over the seeds; returns its device time when the device has timestamps.
   std::optional<double> dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
-                std::span<const glm::vec3> seedCells, const Outputs& outputs) const;
+                                 std::span<const glm::vec3> seedCells,
+                                 const Outputs& outputs) const;
   void traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                   flow::TraceSet& out, std::uint32_t firstSeed);
 

@@ -1,6 +1,7 @@
 #include "trace_kernel.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -65,14 +66,24 @@ void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
   kernel.pipelineLayout = {ctx.device(), pipelineLayout};
 }
 
+// The kernels' specialization constants: 0 the workgroup size (compute kernels), 1 whether
+// samples test the previous region first (include/sampler.glsl).
+struct SpecializationValues {
+  std::uint32_t workgroupSize;
+  VkBool32 useRegionHint;
+};
+constexpr std::array<VkSpecializationMapEntry, 2> kSpecializationEntries{
+    {{0, offsetof(SpecializationValues, workgroupSize), sizeof(std::uint32_t)},
+     {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)}}};
+
 void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
-                           std::span<const std::uint32_t> code) {
+                           std::span<const std::uint32_t> code, const KernelSettings& settings) {
   const auto module = vk::createShaderModule(ctx, code, "trace kernel");
   kernel.workgroupSize =
       std::min(kPreferredWorkgroupSize, ctx.limits().maxComputeWorkGroupInvocations);
-  const VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};
-  const VkSpecializationInfo specialization{1, &entry, sizeof(std::uint32_t),
-                                            &kernel.workgroupSize};
+  const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint};
+  const VkSpecializationInfo specialization{kSpecializationEntries.size(),
+                                            kSpecializationEntries.data(), sizeof(values), &values};
   VkComputePipelineCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
   info.stage = {};
@@ -90,7 +101,8 @@ void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
 
 // Groups: 0 ray generation, 1 miss, 2 the procedural hit group (intersection + closest hit).
 void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
-                              std::span<const std::uint32_t> raygen) {
+                              std::span<const std::uint32_t> raygen,
+                              const KernelSettings& settings) {
   const auto rgen = vk::createShaderModule(ctx, raygen, "ray generation");
   const auto rmiss =
       vk::createShaderModule(ctx, spirv(amrstream_spirv_locate_rmiss), "locate.rmiss");
@@ -105,11 +117,15 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
     info.pName = "main";
     return info;
   };
-  const std::array<VkPipelineShaderStageCreateInfo, 4> stages{
+  const SpecializationValues values{0, settings.useRegionHint};
+  const VkSpecializationInfo specialization{1, &kSpecializationEntries[1], sizeof(values),
+                                            &values};
+  std::array<VkPipelineShaderStageCreateInfo, 4> stages{
       stage(VK_SHADER_STAGE_RAYGEN_BIT_KHR, rgen.get()),
       stage(VK_SHADER_STAGE_MISS_BIT_KHR, rmiss.get()),
       stage(VK_SHADER_STAGE_INTERSECTION_BIT_KHR, rint.get()),
       stage(VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, rchit.get())};
+  stages[0].pSpecializationInfo = &specialization;
   std::array<VkRayTracingShaderGroupCreateInfoKHR, 3> groups{};
   for (auto& g : groups) {
     g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
@@ -162,7 +178,12 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
 
 }  // namespace
 
-TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program) {
+KernelSettings defaultKernelSettings(Backend backend) {
+  return {.useRegionHint = backend != Backend::Pipeline};
+}
+
+TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program,
+                              const KernelSettings& settings) {
   const bool probe = program == KernelProgram::LocateProbe;
   TraceKernel kernel;
   kernel.backend = backend;
@@ -175,11 +196,13 @@ TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelPro
       if (backend == Backend::Compute)
         createComputePipeline(ctx, kernel,
                               probe ? spirv(amrstream_spirv_locate_probe_compute_comp)
-                                    : spirv(amrstream_spirv_trace_compute_comp));
+                                    : spirv(amrstream_spirv_trace_compute_comp),
+                              settings);
       else
         createComputePipeline(ctx, kernel,
                               probe ? spirv(amrstream_spirv_locate_probe_rayquery_comp)
-                                    : spirv(amrstream_spirv_trace_rayquery_comp));
+                                    : spirv(amrstream_spirv_trace_rayquery_comp),
+                              settings);
       break;
     case Backend::Pipeline:
       kernel.bindPoint = VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR;
@@ -188,7 +211,8 @@ TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelPro
       createLayouts(ctx, kernel);
       createRayTracingPipeline(ctx, kernel,
                                probe ? spirv(amrstream_spirv_locate_probe_pipeline_rgen)
-                                     : spirv(amrstream_spirv_trace_pipeline_rgen));
+                                     : spirv(amrstream_spirv_trace_pipeline_rgen),
+                               settings);
       break;
     case Backend::Cpu:
       throw std::invalid_argument("createTraceKernel: the cpu backend has no kernel");

@@ -43,8 +43,21 @@ struct TraceKernel {
 // compare each backend's locateRegion() with brute force (shaders/glsl/include/locate_probe.glsl).
 enum class KernelProgram { Trace, LocateProbe };
 
+// Choices baked into the pipeline through specialization constants.
+struct KernelSettings {
+  // Samples test the previous sample's region before locating (include/sampler.glsl). The
+  // results are the same either way; off, every sample runs the backend's point location.
+  bool useRegionHint = true;
+};
+
+// The settings each backend runs with unless told otherwise. The pipeline backend locates every
+// sample: with the hint, NVIDIA's driver 580 ended traces early (as out of domain) where lavapipe
+// and the CPU did not (docs/benchmarks.md).
+KernelSettings defaultKernelSettings(Backend backend);
+
 // Throws std::invalid_argument for Backend::Cpu.
 TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend,
-                              KernelProgram program = KernelProgram::Trace);
+                              KernelProgram program = KernelProgram::Trace,
+                              const KernelSettings& settings = {});
 
 }  // namespace amrstream::gpu

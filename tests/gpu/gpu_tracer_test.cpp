@@ -31,10 +31,12 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
  protected:
   vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
 
+  KernelSettings settings_ = defaultKernelSettings(GetParam());
+
   void compare(const flow::VectorVolume& volume, const flow::SeedList& seeds,
                const flow::TraceOptions& options, std::size_t seedsPerChunk = 0) {
     const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
-    GpuTracer tracer(ctx(), GetParam(), volume);
+    GpuTracer tracer(ctx(), GetParam(), volume, settings_);
     tracer.limitSeedsPerChunk(seedsPerChunk);
     const flow::TraceSet gpu = tracer.trace(seeds.points, options);
     ASSERT_EQ(gpu.seedCount, cpu.seedCount);
@@ -105,6 +107,25 @@ TEST_P(GpuTracerTest, MatchesCpuOnRandomMultiLevelLayouts) {
     options.maxSteps = 300;
     SCOPED_TRACE(seed);
     compare(volume, seedsIn(volume, 64), options);
+  }
+}
+
+// The region hint, on and off (each backend's default is one of them): the same traces.
+TEST_P(GpuTracerTest, WithAndWithoutTheRegionHintMatchesCpu) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 4;
+  const glm::dvec3 centre(16.0, 16.0, 16.0);
+  const bricks::AmrField field = testing::randomAmr(5, layout, [&](glm::dvec3 p) {
+    const glm::dvec3 r = p - centre;
+    return glm::vec3(-0.05 * r.y, 0.05 * r.x, 0.02);
+  });
+  const flow::VectorVolume volume = volumeOf(field);
+  flow::TraceOptions options;
+  options.maxSteps = 200;
+  for (const bool hint : {false, true}) {
+    SCOPED_TRACE(hint ? "with the hint" : "without the hint");
+    settings_.useRegionHint = hint;
+    compare(volume, seedsIn(volume, 48), options);
   }
 }
 

@@ -22,13 +22,15 @@ int locateRegion(vec3 p) { return insideDomain(p) ? locateInRegions(p) : -1; }
 // same region, and regions are disjoint half-open boxes, so a point inside the domain and inside
 // this box is in this region: the test gives locateRegion()'s answer without its tree descent or
 // ray. It must come after the domain test, since a region's box may reach past the domain.
+// Specialization constant 1 turns this hint off: every sample then runs the point location.
+layout(constant_id = 1) const bool kUseRegionHint = true;
 int cachedRegionId = -1;
 Region cachedRegion;
 
 VectorSample sampleVector(vec3 p) {
   VectorSample s = VectorSample(false, false, vec3(0.0), 0.0);
   if (!insideDomain(p)) return s;
-  if (cachedRegionId < 0 || any(lessThan(p, cachedRegion.lower)) ||
+  if (!kUseRegionHint || cachedRegionId < 0 || any(lessThan(p, cachedRegion.lower)) ||
       any(greaterThanEqual(p, cachedRegion.upper))) {
     const int regionId = locateInRegions(p);
     if (regionId < 0) return s;
