@@ -3,13 +3,11 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "run_amrstream.hpp"
 #include "temp_dir_test.hpp"
 
 namespace {
@@ -17,23 +15,9 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
+using amrstream::testing::Outcome;
 
-Outcome run(const std::string& arguments) {
-  const std::string command = std::string(AMRSTREAM_BINARY) + " " + arguments + " 2>&1";
-  Outcome result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+Outcome run(const std::string& arguments) { return amrstream::testing::runAmrstream(arguments); }
 
 class Cli : public amrstream::testing::TempDirTest {
  protected:
@@ -138,6 +122,20 @@ TEST_F(Cli, ConvertWritesExaBricksFilesThatReadBackTheSame) {
   ASSERT_EQ(converted.status, 0) << converted.output;
   const auto cellsLine = [](const std::string& out) { return out.substr(out.find("cells      ")); };
   EXPECT_EQ(cellsLine(converted.output).substr(0, 200), cellsLine(original.output).substr(0, 200));
+}
+
+TEST_F(Cli, BenchRejectsBadCountsAndTooFewSeeds) {
+  Outcome r = run("bench builtin:rotation" + kSmall + " --backends cpu --particles 0 --json " +
+                  path("b.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--particles"));
+  std::ofstream(path("three.txt")) << "1 1 1\n2 2 2\n3 3 3\n";
+  r = run("bench builtin:rotation" + kSmall + " --backends cpu --particles 4 --seeds " +
+          path("three.txt") + " --json " + path("b.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("three.txt"));
+  EXPECT_THAT(r.output, HasSubstr("fewer than the largest particle count 4"));
+  EXPECT_FALSE(fs::exists(path("b.json")));
 }
 
 TEST_F(Cli, InfoAndTraceReadEveryRealDataset) {
