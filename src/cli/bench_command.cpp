@@ -48,6 +48,15 @@ std::vector<std::size_t> defaultParticleCounts() {
   return counts;
 }
 
+// `dens` if present, else the first scalar that is not part of the vector, else none.
+std::string defaultSeedChannel(const bricks::AmrField& field, const flow::VectorChannels& vector) {
+  if (field.findChannel("dens")) return "dens";
+  for (const bricks::Channel& c : field.channels())
+    if (std::find(vector.channels.begin(), vector.channels.end(), c.name) == vector.channels.end())
+      return c.name;
+  return {};
+}
+
 // The paper's seeding (random points in random cells among the densest) on --seed-density, else
 // on `dens` or the first scalar that is not part of the vector; a uniform box without scalars.
 flow::SeedList benchSeeds(const BenchCommandOptions& o, const bricks::AmrField& field,
@@ -62,16 +71,8 @@ flow::SeedList benchSeeds(const BenchCommandOptions& o, const bricks::AmrField& 
     description = o.seedsFile;
     return seeds;
   }
-  std::string channel = o.seedDensity;
-  if (channel.empty()) {
-    for (const bricks::Channel& c : field.channels()) {
-      const std::string& name = c.name;
-      const bool inVector = std::find(vector.channels.begin(), vector.channels.end(), name) !=
-                            vector.channels.end();
-      if (name == "dens" || (channel.empty() && !inVector)) channel = name;
-      if (name == "dens") break;
-    }
-  }
+  const std::string channel =
+      o.seedDensity.empty() ? defaultSeedChannel(field, vector) : o.seedDensity;
   if (channel.empty()) {
     description = fmt::format("uniform random in the domain (seed {}; no scalar channel)", o.seed);
     const glm::dvec3 hi = flow::domainUpper(volume) - 1e-4 * volume.transform.spacing;
