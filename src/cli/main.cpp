@@ -10,6 +10,7 @@
 #include "devices_command.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
+#include "render_command.hpp"
 #include "trace_command.hpp"
 #include "util/input_error.hpp"
 
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   amrstream::cli::addGenCommand(app);
   amrstream::cli::addDevicesCommand(app);
   amrstream::cli::addConvertCommand(app);
+  amrstream::cli::addRenderCommand(app);
   std::string commandLine = "amrstream";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
   amrstream::cli::addBenchCommand(app, commandLine);

@@ -1,24 +1,13 @@
 #include "trace_command.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <map>
 #include <memory>
 #include <numeric>
-#include <optional>
 
-#include "../../shaders/glsl/shared/trace_codes.h"
-#include "dataset_options.hpp"
-#include "flow/integrator.hpp"
-#include "flow/seed_strategies.hpp"
-#include "flow/seeds.hpp"
-#include "formats/load_input.hpp"
 #include "output/vtp_writer.hpp"
-#include "progress.hpp"
+#include "trace_job.hpp"
 #include "trace_settings.hpp"
-#include "tracer_choice.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
@@ -26,171 +15,18 @@ namespace amrstream::cli {
 namespace {
 
 struct TraceCommandOptions {
-  DatasetOptions dataset;
-  std::string vector;
-  std::string seedsFile;
-  std::vector<double> seedBox;
-  std::vector<int> seedGrid;
-  std::vector<double> seedLine;
-  std::string seedDensity;
-  double seedPercentile = 90.0;
-  bool seedWeighted = false;
-  std::string seedsOut;
-  std::size_t count = 256;
-  std::uint64_t seed = 1;
-  std::uint32_t steps = 1000;
-  std::optional<float> stepSize;
-  std::string stepMode = "cell";
-  float terminalSpeed = 1e-12f;
-  float maxLength = 0.0f;
-  BackendRequest backend;
+  TraceJobOptions job;
   std::string out = "traces.vtp";
   bool endpointsOnly = false;
 };
 
-const char* reasonName(int reason) {
-  switch (reason) {
-    case AMRSTREAM_REASON_OUT_OF_DOMAIN:
-      return "out of domain";
-    case AMRSTREAM_REASON_UNEXPECTED_VALUE:
-      return "invalid sample";
-    case AMRSTREAM_REASON_MAX_LENGTH:
-      return "max length";
-    case AMRSTREAM_REASON_MAX_STEPS:
-      return "max steps";
-    case AMRSTREAM_REASON_STAGNATION:
-      return "stagnation";
-    default:
-      return "unknown";
-  }
-}
-
-glm::dvec3 corner(const std::vector<double>& v, int which) {
-  return glm::dvec3(v[3 * which], v[3 * which + 1], v[3 * which + 2]);
-}
-
-// The seed box: --seed-box, checked against the domain, or the domain itself.
-std::pair<glm::dvec3, glm::dvec3> seedBox(const TraceCommandOptions& o,
-                                          const flow::VectorVolume& volume) {
-  const glm::dvec3 domainLo = flow::domainLower(volume), domainHi = flow::domainUpper(volume);
-  if (o.seedBox.empty()) return {domainLo, domainHi};
-  const glm::dvec3 lo = corner(o.seedBox, 0), hi = corner(o.seedBox, 1);
-  if (glm::any(glm::greaterThan(lo, hi)))
-    throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
-  if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
-    throw InputError(
-        "--seed-box",
-        fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
-                    "{:g}) x [{:g}, {:g})",
-                    domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
-  return {lo, hi};
-}
-
-// The seeds of the chosen strategy, and a description of it for the summary.
-flow::SeedList chooseSeeds(const TraceCommandOptions& o, const bricks::AmrField& field,
-                           const flow::VectorVolume& volume, std::string& description) {
-  if (!o.seedsFile.empty()) {
-    description = o.seedsFile;
-    return flow::readSeedFile(o.seedsFile);
-  }
-  if (!o.seedLine.empty()) {
-    description = "a rake (--seed-line)";
-    return flow::seedsAlongLine(corner(o.seedLine, 0), corner(o.seedLine, 1), o.count);
-  }
-  if (!o.seedDensity.empty()) {
-    description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
-                              o.seedDensity, o.seedPercentile,
-                              o.seedWeighted ? ", weighted by it" : "", o.seed);
-    return flow::seedsInDensestCells(
-        field, {o.seedDensity, o.seedPercentile, o.seedWeighted, o.count, o.seed});
-  }
-  auto [lo, hi] = seedBox(o, volume);
-  // Keep seeds off the domain's open upper faces, where rounding to float could put them.
-  hi = glm::min(hi, flow::domainUpper(volume) - 1e-4 * volume.transform.spacing);
-  if (!o.seedGrid.empty()) {
-    const glm::ivec3 counts(o.seedGrid[0], o.seedGrid[1], o.seedGrid[2]);
-    if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
-      throw InputError("--seed-grid", "every count must be at least 1");
-    description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
-    return flow::seedsOnGrid(lo, hi, counts);
-  }
-  description = fmt::format("random (seed {}) in a box", o.seed);
-  return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
-}
-
-// Refuse runs whose stored trace points cannot fit in memory.
-void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
-  const double bytes =
-      double(seeds) * double(pointsPerTrace) * double(flow::TraceSet::kBytesPerPoint);
-  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  if (bytes > 0.75 * memory)
-    throw InputError("--count/--steps",
-                     fmt::format("{} seeds x {} points need {:.1f} GiB for the traces, more than "
-                                 "3/4 of this machine's {:.1f} GiB; lower --count or --steps, or "
-                                 "use --endpoints-only",
-                                 seeds, pointsPerTrace, bytes / 0x1p30, memory / 0x1p30));
-}
-
 void runTrace(const TraceCommandOptions& o) {
+  PreparedInput input = prepareInput(o.job);
+  input.options.keepHistory = !o.endpointsOnly;
+  checkHistoryFitsInMemory(input.seeds.points.size(), o.endpointsOnly ? 1 : o.job.steps + 1);
+  const flow::TraceSet traces = runTraces(o.job, input);
+
   Stopwatch clock;
-  const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
-  const double loadSeconds = clock.seconds();
-  const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
-  fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}) [{:.2f} s]\n",
-             field.source(), withCommas(field.cellCount()), field.finestLevel(),
-             field.coarsestLevel(), vector.name, vector.channels[0], vector.channels[1],
-             vector.channels[2], loadSeconds);
-
-  flow::VolumeBuildTimes times;
-  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, {}, &times);
-  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s]\n",
-             withCommas(volume.bricks.size()), times.bricks,
-             withCommas(volume.regions.regions.size()), times.regions);
-
-  std::string seedDescription;
-  const flow::SeedList seeds = chooseSeeds(o, field, volume, seedDescription);
-  flow::checkSeedsInDomain(volume, seeds);
-  if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
-  checkHistoryFitsInMemory(seeds.points.size(), o.endpointsOnly ? 1 : o.steps + 1);
-
-  flow::TraceOptions options;
-  options.stepMode = parseStepMode(o.stepMode);
-  options.stepSize = chooseStepSize(options.stepMode, o.stepSize, volume);
-  options.maxSteps = o.steps;
-  options.keepHistory = !o.endpointsOnly;
-  options.terminalSpeed = o.terminalSpeed;
-  options.maxLength = o.maxLength;
-  fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), seedDescription,
-             o.seedsOut.empty() ? "" : ", written to " + o.seedsOut);
-  fmt::print("stepping   mode {}, h = {:g}, at most {} steps\n", o.stepMode, options.stepSize,
-             o.steps);
-
-  clock.restart();
-  flow::TraceSet traces;
-  {
-    Progress progress("tracing", seeds.points.size());
-    traces = traceWithBackend(o.backend, volume, seeds.points, options,
-                              [&](std::size_t done) { progress.update(done); });
-  }
-  const double traceSeconds = clock.seconds();
-
-  std::size_t steps = 0;
-  std::map<int, std::size_t> reasons;
-  for (std::uint32_t i = 0; i < traces.seedCount; ++i) {
-    steps += traces.steps[i];
-    ++reasons[traces.reasons[i]];
-  }
-  std::string histogram;
-  for (const auto& [reason, count] : reasons)
-    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
-                             reason, withCommas(count));
-  fmt::print("steps      {} taken, {:.1f} per trace\n", withCommas(steps),
-             double(steps) / double(std::max<std::uint32_t>(1, traces.seedCount)));
-  fmt::print("reasons    {}\n", histogram);
-  fmt::print("time       {:.3f} s, {:.3g} particle-steps/s\n", traceSeconds,
-             double(steps) / std::max(traceSeconds, 1e-9));
-
-  clock.restart();
   output::writeVtp(o.out, traces);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(traces.seedCount),
@@ -204,88 +40,12 @@ void runTrace(const TraceCommandOptions& o) {
 void addTraceCommand(CLI::App& app) {
   auto options = std::make_shared<TraceCommandOptions>();
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
-  addDatasetOptions(*command, options->dataset, "--gen-seed");
-  command->add_option("--vector", options->vector,
-                      "three channels forming the vector, e.g. velx,vely,velz "
-                      "(default: the velocity, else the magnetic field)");
-  auto* seedsFile =
-      command
-          ->add_option("--seeds", options->seedsFile, "file of seed points, one 'x y z' per line")
-          ->check(CLI::ExistingFile);
-  command
-      ->add_option("--seed-box", options->seedBox,
-                   "random seeds in this box: x0,y0,z0,x1,y1,z1 (default: the domain)")
-      ->delimiter(',')
-      ->expected(6)
-      ->excludes(seedsFile);
-  auto* seedLine = command
-                       ->add_option("--seed-line", options->seedLine,
-                                    "a rake of --count seeds from x0,y0,z0 to x1,y1,z1")
-                       ->delimiter(',')
-                       ->expected(6)
-                       ->excludes(seedsFile);
-  command
-      ->add_option("--seed-grid", options->seedGrid,
-                   "a regular NX,NY,NZ grid in the seed box instead of random seeds (a box of "
-                   "zero thickness with count 1 on that axis is a plane)")
-      ->delimiter(',')
-      ->expected(3)
-      ->excludes(seedsFile)
-      ->excludes(seedLine);
-  auto* seedDensity =
-      command
-          ->add_option("--seed-density", options->seedDensity,
-                       "the paper's seeding: random points in random cells where this scalar is "
-                       "at or above --seed-percentile")
-          ->excludes(seedsFile)
-          ->excludes(seedLine);
-  command->add_option("--seed-percentile", options->seedPercentile, "see --seed-density")
-      ->capture_default_str()
-      ->needs(seedDensity);
-  command
-      ->add_flag("--seed-weighted", options->seedWeighted,
-                 "with --seed-density: pick cells with probability proportional to the scalar")
-      ->needs(seedDensity);
-  command->add_option("--seeds-out", options->seedsOut,
-                      "write the seeds used to this file, so the run can be repeated with --seeds");
-  command->add_option("--count", options->count, "number of random seeds")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber)
-      ->excludes(seedsFile);
-  command->add_option("--seed", options->seed, "random seed for the seed points")
-      ->capture_default_str()
-      ->excludes(seedsFile);
-  command->add_option("--steps", options->steps, "maximum integration steps per trace")
-      ->capture_default_str();
-  command->add_option("--step-size", options->stepSize,
-                      "h: in cell widths (cell, arc) or physical time (time; default 1/4 of the "
-                      "finest cell crossed at the maximum speed) [default 0.25]");
-  command
-      ->add_option("--step-mode", options->stepMode,
-                   "cell: RK4 on w(x)v(x) (paper); time: fixed dt; arc: unit speed")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"cell", "time", "arc"}));
-  command
-      ->add_option("--terminal-speed", options->terminalSpeed,
-                   "stop where the speed falls below this")
-      ->capture_default_str();
-  command
-      ->add_option("--max-length", options->maxLength,
-                   "stop before the trace's physical length passes this (0: no limit)")
-      ->capture_default_str();
-  command
-      ->add_option("--backend", options->backend.backend,
-                   "auto (rayquery, else pipeline, else compute, else cpu), rayquery, "
-                   "pipeline, compute or cpu")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "rayquery", "pipeline", "compute", "cpu"}));
-  command->add_option("--device", options->backend.device,
-                      "the Vulkan device whose name contains this (see `amrstream devices`)");
+  addTraceJobOptions(*command, options->job);
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each trace's last point (no history: for very long runs)");
   command->callback([options] {
-    options->backend.validation = validationRequested();
+    options->job.backend.validation = validationRequested();
     runTrace(*options);
   });
 }

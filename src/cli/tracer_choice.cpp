@@ -42,12 +42,8 @@ const vk::DeviceReport* autoDevice(const std::vector<vk::DeviceReport>& devices,
 
 }  // namespace
 
-flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
-                                std::span<const glm::dvec3> seeds,
-                                const flow::TraceOptions& options,
-                                const std::function<void(std::size_t)>& progress) {
-  gpu::Backend backend;
-  std::string deviceFilter = request.device;
+BackendChoice chooseBackend(const BackendRequest& request) {
+  BackendChoice choice{gpu::Backend::Cpu, request.device};
   if (request.backend == "auto") {
     std::vector<vk::DeviceReport> devices;
     try {
@@ -57,27 +53,44 @@ flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::Vecto
     }
     std::string why;
     const vk::DeviceReport* device = autoDevice(devices, request.device);
-    backend = gpu::chooseBackend(device, why);
-    if (device) deviceFilter = device->name;
+    choice.backend = gpu::chooseBackend(device, why);
+    if (device) choice.deviceFilter = device->name;
     fmt::print("backend    auto: {}\n", why);
   } else {
-    backend = *gpu::parseBackend(request.backend);
+    choice.backend = *gpu::parseBackend(request.backend);
   }
+  return choice;
+}
 
+vk::Context createContext(const BackendRequest& request, const BackendChoice& choice,
+                          vk::CapabilitySet extra) {
+  vk::ContextBuilder builder;
+  builder.require(gpu::requiredCapabilities(choice.backend)).require(extra).validation(request.validation);
+  if (!choice.deviceFilter.empty()) builder.deviceName(choice.deviceFilter);
+  return builder.build();
+}
+
+void checkValidation(const vk::Context& ctx) {
+  if (ctx.validationErrorCount() > 0)
+    throw std::runtime_error(
+        fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
+}
+
+flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
+                                std::span<const glm::dvec3> seeds,
+                                const flow::TraceOptions& options,
+                                const std::function<void(std::size_t)>& progress) {
+  const BackendChoice choice = chooseBackend(request);
+  const gpu::Backend backend = choice.backend;
   if (backend == gpu::Backend::Cpu) {
     fmt::print("tracing    on the CPU reference ({} threads)\n", tbb::info::default_concurrency());
     return flow::traceStreamlines(volume, seeds, options, progress);
   }
-  vk::ContextBuilder builder;
-  builder.require(gpu::requiredCapabilities(backend)).validation(request.validation);
-  if (!deviceFilter.empty()) builder.deviceName(deviceFilter);
-  const vk::Context ctx = builder.build();
+  const vk::Context ctx = createContext(request, choice);
   gpu::GpuTracer tracer(ctx, backend, volume);
   fmt::print("tracing    backend {} on {}\n", gpu::backendName(backend), ctx.deviceName());
   flow::TraceSet traces = tracer.trace(seeds, options, progress);
-  if (ctx.validationErrorCount() > 0)
-    throw std::runtime_error(
-        fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
+  checkValidation(ctx);
   return traces;
 }
 

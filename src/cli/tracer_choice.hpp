@@ -9,6 +9,8 @@
 #include "flow/integrator.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "gpu/backend.hpp"
+#include "vk/context.hpp"
 
 namespace amrstream::cli {
 
@@ -17,6 +19,22 @@ struct BackendRequest {
   std::string device;            // a substring of the device name; empty: the default device
   bool validation = false;       // Vulkan validation layers (debug builds, AMRSTREAM_VALIDATION)
 };
+
+struct BackendChoice {
+  gpu::Backend backend;
+  std::string deviceFilter;  // empty: the default device
+};
+
+// Resolves `auto` (printing what was chosen and why) or parses the named backend.
+BackendChoice chooseBackend(const BackendRequest& request);
+
+// A context for the choice's backend and device, plus `extra` capabilities. Throws
+// vk::ContextError naming what is missing.
+vk::Context createContext(const BackendRequest& request, const BackendChoice& choice,
+                          vk::CapabilitySet extra = {});
+
+// Throws when the context's validation layer reported errors.
+void checkValidation(const vk::Context& ctx);
 
 // Traces with the requested backend, printing the choice (and for `auto` why). Throws
 // vk::ContextError naming the missing extension when a forced backend is not available.

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
+#include <span>
 
 #include "vector_volume.hpp"
 
@@ -31,5 +33,10 @@ struct RegionCache {
 
 // With a cache, tries its region first and stores the region found.
 VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache = nullptr);
+
+// The same reconstruction for a scalar gathered in brick order (gatherScalar()): the value at p,
+// or none outside the domain and regions, where the weights vanish, or when it is not finite.
+std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
+                                  glm::vec3 p, RegionCache* cache = nullptr);
 
 }  // namespace amrstream::flow

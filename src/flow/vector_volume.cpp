@@ -30,11 +30,21 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
   local.gather = clock.seconds();
 
   volume.bricks = std::move(brickSet.bricks);
+  volume.cellIds = std::move(brickSet.cellIds);
   volume.domain = field.bounds();
   volume.transform = field.transform();
   volume.vectorName = vector.name;
   if (times) *times = local;
   return volume;
+}
+
+std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
+                                std::string_view channel) {
+  const bricks::Channel& source = field.channel(channel);
+  std::vector<float> values(volume.cellIds.size());
+  tbb::parallel_for(std::size_t(0), values.size(),
+                    [&](std::size_t slot) { values[slot] = source.values[volume.cellIds[slot]]; });
+  return values;
 }
 
 }  // namespace amrstream::flow

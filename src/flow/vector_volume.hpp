@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
@@ -16,6 +17,7 @@ namespace amrstream::flow {
 struct VectorVolume {
   std::vector<shared::Brick> bricks;
   std::vector<glm::vec3> values;  // brick-ordered, see shared::Brick::valueOffset
+  std::vector<std::uint32_t> cellIds;  // the field's cell at each value slot
   bricks::RegionSet regions;
   // Points outside the cells' bounding box [lower, upper) are out of the domain, even where the
   // half-cell padding of the brick domains reaches beyond it.
@@ -33,5 +35,10 @@ struct VolumeBuildTimes {
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const bricks::BrickBuildOptions& options = {},
                                VolumeBuildTimes* times = nullptr);
+
+// A scalar channel of `field` in the volume's brick order, for sampleScalar() and the renderer.
+// Throws InputError listing the channels when `channel` is absent.
+std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
+                                std::string_view channel);
 
 }  // namespace amrstream::flow

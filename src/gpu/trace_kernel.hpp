@@ -9,6 +9,7 @@
 
 #include "backend.hpp"
 #include "vk/buffer.hpp"
+#include "vk/pipelines.hpp"
 #include "vk/unique_handle.hpp"
 
 namespace amrstream::vk {
@@ -20,13 +21,7 @@ namespace amrstream::gpu {
 inline constexpr std::uint32_t kTraceBindingCount = 12;
 inline constexpr std::uint32_t kLocateBinding = 11;
 
-struct ShaderBindingTable {
-  vk::Buffer buffer;
-  VkStridedDeviceAddressRegionKHR raygen{};
-  VkStridedDeviceAddressRegionKHR miss{};
-  VkStridedDeviceAddressRegionKHR hit{};
-  VkStridedDeviceAddressRegionKHR callable{};
-};
+using vk::ShaderBindingTable;
 
 struct TraceKernel {
   Backend backend = Backend::Compute;

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "flow/integrator.hpp"
+#include "flow/progressive_traces.hpp"
 #include "flow/seeds.hpp"
 #include "gpu_test.hpp"
 #include "random_amr.hpp"
@@ -163,6 +164,35 @@ TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
     EXPECT_LE(glm::length(glm::dvec3(gpu.positions[s]) - glm::dvec3(cpu.positions[s])),
               positionTolerance(cpu.steps[s]) * finestCell)
         << "seed " << s;
+  }
+}
+
+// The viewer's progressive tracing: traces grown 13 steps per round on the GPU equal the CPU's
+// one run.
+TEST_P(GpuTracerTest, ProgressiveRoundsMatchOneCpuRun) {
+  const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume = volumeOf(field);
+  const flow::SeedList seeds = seedsIn(volume, 48);
+  flow::TraceOptions options;
+  options.maxSteps = 100;
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+  flow::ProgressiveTraces grown(seeds.points, options, volume.vectorName);
+  const flow::TraceFunction gpuTrace = [&](std::span<const glm::dvec3> starts,
+                                           const flow::TraceOptions& o) {
+    return tracer.trace(starts, o);
+  };
+  while (!grown.finished()) grown.advance(gpuTrace, 13);
+  const flow::TraceSet& gpu = grown.traces();
+  const double finestCell = volume.transform.spacing.x;
+  for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
+    ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
+    ASSERT_EQ(gpu.pointCounts[s], cpu.pointCounts[s]) << "seed " << s;
+    for (std::uint32_t p = 0; p < cpu.pointCounts[s]; ++p)
+      ASSERT_LE(glm::length(glm::dvec3(gpu.positions[gpu.at(s, p)]) -
+                            glm::dvec3(cpu.positions[cpu.at(s, p)])),
+                (positionTolerance(p) + 1e-4) * finestCell)
+          << "seed " << s << " point " << p;
   }
 }
 

@@ -1,7 +1,11 @@
 // Point location for the `compute` backend: descent of the regions' kd-tree, built on the host
 // (src/bricks/region_builder.hpp). Stackless: every point takes exactly one path.
 
-layout(scalar, set = 0, binding = 11) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
+// The tracer binds the tree at 11; other kernels may define AMRSTREAM_TREE_BINDING first.
+#ifndef AMRSTREAM_TREE_BINDING
+#define AMRSTREAM_TREE_BINDING 11
+#endif
+layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
 
 int locateInRegions(vec3 p) {
   uint node = 0;

@@ -1,0 +1,32 @@
+// The tent basis-function sum over one region's bricks (DESIGN.md section 5), for any value type.
+// Include with TENT_TYPE (float or vec3), TENT_VALUE(slot) (the brick-ordered value at a slot)
+// and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers.
+// TENT_FUNCTION(region, p, weighted) returns the sum of the weights and sets `weighted` to the
+// weighted sum of the values; the sample is their quotient.
+
+float TENT_FUNCTION(Region region, vec3 p, out TENT_TYPE weighted) {
+  // `precise` forbids fusing a*b+c into an FMA, which the CPU reference never does: both paths
+  // then round the same operations (NVIDIA's compiler fuses by default).
+  precise float weightSum = 0.0;
+  precise TENT_TYPE sum = TENT_TYPE(0.0);
+  for (uint k = 0; k < region.brickCount; ++k) {
+    const Brick brick = bricks[regionBricks[region.brickOffset + k]];
+    const float width = float(1 << brick.level);
+    precise const vec3 local = (p - vec3(brick.lower)) / width - 0.5;
+    const vec3 base = floor(local);
+    precise const vec3 frac = local - base;
+    const ivec3 lo = ivec3(base);
+    for (int corner = 0; corner < 8; ++corner) {
+      const ivec3 offset = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      const ivec3 cell = lo + offset;
+      if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, brick.size))) continue;
+      precise const vec3 axisWeight = mix(1.0 - frac, frac, vec3(offset));
+      precise const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+      const uint slot = brick.valueOffset + uint(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
+      weightSum += weight;
+      sum += weight * TENT_VALUE(slot);
+    }
+  }
+  weighted = sum;
+  return weightSum;
+}

@@ -1,0 +1,68 @@
+// Buffer structs of the renderer, shared by the host and the GLSL kernels (scalar layout).
+// Positions are in finest-cell units, like the tracer's.
+#ifndef AMRSTREAM_SHARED_RENDER_TYPES_H
+#define AMRSTREAM_SHARED_RENDER_TYPES_H
+
+#ifdef __cplusplus
+#include "glsl_compat.h"
+namespace amrstream::shared {
+#endif
+
+// One piece of a tube: the capsule of radius RenderParams::tubeRadius around segment [a, b], with
+// the colour field's value at both ends (a == b: a sphere).
+struct TubeSegment {
+  vec3 a;
+  float valueA;
+  vec3 b;
+  float valueB;
+};
+
+// Node of the tubes' bounding volume hierarchy for the `compute` backend. Interior node
+// (count == 0): children first and first + 1. Leaf: segments [first, first + count).
+struct TubeBvhNode {
+  vec3 lower;
+  uint first;
+  vec3 upper;
+  uint count;
+};
+
+#define AMRSTREAM_RENDER_AO 1u
+#define AMRSTREAM_RENDER_VOLUME 2u
+#define AMRSTREAM_RENDER_LOG_VOLUME 4u
+
+// A pinhole camera and what one frame draws. A frame adds one jittered sample per pixel to the
+// accumulation buffer; pixels show the mean of the frames since the last reset (frameIndex 0).
+struct RenderParams {
+  vec3 eye;
+  float tanHalfFovY;
+  vec3 forward;  // unit vectors
+  float aspect;  // width / height
+  vec3 right;
+  uint frameIndex;
+  vec3 up;
+  uint flags;  // AMRSTREAM_RENDER_*
+  uvec2 imageSize;
+  uint segmentCount;
+  float tubeRadius;
+  vec3 lightDirection;  // unit, towards the light
+  uint aoSamples;
+  vec3 background;
+  float aoDistance;
+  vec3 domainLower;  // the volume's cell box, for the ray march
+  float valueMin;    // colour field range mapped onto the colour map
+  vec3 domainUpper;
+  float valueMax;
+  float volumeMin;  // scalar (or log10 scalar) range of the transfer function
+  float volumeMax;
+  float volumeOpacity;  // extinction per finest cell at the top of the transfer function
+  float volumeStepScale;  // ray-march step in units of the region's finest cell width
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(TubeSegment) == 32 && sizeof(TubeBvhNode) == 32);
+static_assert(offsetof(RenderParams, imageSize) == 64 && offsetof(RenderParams, volumeMin) == 144 &&
+              sizeof(RenderParams) == 160);
+}  // namespace amrstream::shared
+#endif
+
+#endif

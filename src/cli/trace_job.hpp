@@ -1,0 +1,67 @@
+#pragma once
+// What `trace`, `render` and `view` share: the dataset, the vector, the seeding and the stepping
+// options, and the run from input to traces with its summary lines on stdout.
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bricks/amr_field.hpp"
+#include "dataset_options.hpp"
+#include "flow/integrator.hpp"
+#include "flow/seeds.hpp"
+#include "flow/trace_set.hpp"
+#include "flow/vector_volume.hpp"
+#include "tracer_choice.hpp"
+
+namespace amrstream::cli {
+
+struct TraceJobOptions {
+  DatasetOptions dataset;
+  std::string vector;
+  std::string seedsFile;
+  std::vector<double> seedBox;
+  std::vector<int> seedGrid;
+  std::vector<double> seedLine;
+  std::string seedDensity;
+  double seedPercentile = 90.0;
+  bool seedWeighted = false;
+  std::string seedsOut;
+  std::size_t count = 256;
+  std::uint64_t seed = 1;
+  std::uint32_t steps = 1000;
+  std::optional<float> stepSize;
+  std::string stepMode = "cell";
+  float terminalSpeed = 1e-12f;
+  float maxLength = 0.0f;
+  BackendRequest backend;
+};
+
+// Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
+void addTraceJobOptions(CLI::App& command, TraceJobOptions& options, std::size_t defaultCount = 256);
+
+// The input loaded and prepared for tracing.
+struct PreparedInput {
+  bricks::AmrField field;
+  flow::VectorVolume volume;
+  flow::SeedList seeds;
+  flow::TraceOptions options;  // keepHistory set; the caller may change it
+};
+
+// Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,
+// printing the input, structure, seeds and stepping lines.
+PreparedInput prepareInput(const TraceJobOptions& o);
+
+// Refuses runs whose stored trace points cannot fit in memory.
+void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace);
+
+// Traces with the requested backend (with a progress line) and prints the steps, reasons and
+// time lines.
+flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input);
+
+// The ReasonForTermination's name, e.g. "out of domain".
+const char* reasonName(int reason);
+
+}  // namespace amrstream::cli

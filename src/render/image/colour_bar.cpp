@@ -1,0 +1,61 @@
+#include "render/image/colour_bar.hpp"
+
+#include <fmt/format.h>
+
+#include "render/image/bitmap_font.hpp"
+#include "render/image/colour_bar_layout.hpp"
+
+namespace amrstream::render {
+namespace {
+
+constexpr Rgba8 kPanelColour{0, 0, 0, 160};
+constexpr Rgba8 kFrameColour{170, 170, 170, 255};
+constexpr Rgba8 kTextColour{240, 240, 240, 255};
+
+void blendRect(Image& image, const PixelRect& rect, Rgba8 colour) {
+  for (int y = rect.y; y < rect.y + rect.height; ++y) {
+    for (int x = rect.x; x < rect.x + rect.width; ++x) {
+      image.blend(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), colour);
+    }
+  }
+}
+
+// The 1-pixel outline just outside `rect`.
+void drawFrameAround(Image& image, const PixelRect& rect, Rgba8 colour) {
+  const int left = rect.x - 1, right = rect.x + rect.width;
+  const int top = rect.y - 1, bottom = rect.y + rect.height;
+  blendRect(image, {left, top, rect.width + 2, 1}, colour);
+  blendRect(image, {left, bottom, rect.width + 2, 1}, colour);
+  blendRect(image, {left, rect.y, 1, rect.height}, colour);
+  blendRect(image, {right, rect.y, 1, rect.height}, colour);
+}
+
+void drawGradient(Image& image, const PixelRect& rect, ColourMap map) {
+  const std::vector<glm::vec3> table = colourMapTable(map, static_cast<std::size_t>(rect.width));
+  for (int i = 0; i < rect.width; ++i) {
+    const Rgba8 colour = toRgba8(table[static_cast<std::size_t>(i)]);
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+      image.set(static_cast<std::uint32_t>(rect.x + i), static_cast<std::uint32_t>(y), colour);
+    }
+  }
+}
+
+}  // namespace
+
+std::string formatBarValue(double v) {
+  if (v == 0.0) return "0";  // also -0
+  return fmt::format("{:.3g}", v);
+}
+
+void drawColourBar(Image& image, const ColourBar& bar) {
+  const std::optional<ColourBarLayout> layout = layoutColourBar(image.width, image.height, bar);
+  if (!layout) return;
+  blendRect(image, layout->panel, kPanelColour);
+  drawFrameAround(image, layout->gradient, kFrameColour);
+  drawGradient(image, layout->gradient, bar.map);
+  for (const PlacedText* text : {&layout->label, &layout->minValue, &layout->maxValue}) {
+    drawText(image, text->x, text->y, text->text, kTextColour, layout->scale);
+  }
+}
+
+}  // namespace amrstream::render

@@ -1,0 +1,44 @@
+#pragma once
+// Tubes from traces: one capsule per pair of consecutive trace points, in finest-cell units, with
+// the colour field's value at both ends, and the range of those values for the colour map.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "../../shaders/glsl/shared/render_types.h"
+#include "bricks/amr_field.hpp"
+#include "flow/trace_set.hpp"
+#include "flow/vector_volume.hpp"
+
+namespace amrstream::render {
+
+// What colours the tubes: "speed" (the traced vector's length), "time" (IntegrationTime), or
+// the name of a scalar channel of the input sampled at every trace point.
+struct ColourField {
+  std::string name = "speed";
+  std::vector<float> values;  // one per stored trace point, indexed like TraceSet::positions
+};
+
+// Throws InputError listing the choices when `name` is neither speed, time nor a channel of
+// `field`.
+ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
+                          const bricks::AmrField& field, const flow::VectorVolume& volume);
+
+struct ValueRange {
+  float min = 0.0f;
+  float max = 1.0f;
+
+  bool operator==(const ValueRange&) const = default;
+};
+
+// The range of the finite values (0..1 when there are none).
+ValueRange rangeOf(std::span<const float> values);
+
+// A trace of one point becomes a sphere (a == b); traces of no points are skipped.
+std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
+                                                   const ColourField& colour,
+                                                   const bricks::WorldTransform& transform);
+
+}  // namespace amrstream::render

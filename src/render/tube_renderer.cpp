@@ -1,0 +1,221 @@
+#include "tube_renderer.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "tube_bvh.hpp"
+#include "vk/buffer_transfer.hpp"
+#include "vk/commands.hpp"
+#include "vk/context.hpp"
+#include "vk/vk_error.hpp"
+
+namespace amrstream::render {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
+  return {buffer.handle(), 0, VK_WHOLE_SIZE};
+}
+
+std::vector<VkAabbPositionsKHR> segmentBoxes(std::span<const shared::TubeSegment> segments,
+                                             float radius) {
+  std::vector<VkAabbPositionsKHR> boxes(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const glm::vec3 lo = glm::min(segments[i].a, segments[i].b) - radius;
+    const glm::vec3 hi = glm::max(segments[i].a, segments[i].b) + radius;
+    boxes[i] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+  }
+  return boxes;
+}
+
+shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings& settings,
+                                const flow::VectorVolume& volume, std::uint32_t width,
+                                std::uint32_t height, std::uint32_t frame,
+                                std::size_t segmentCount) {
+  const CameraFrame view = cameraFrame(camera);
+  shared::RenderParams p{};
+  p.eye = view.eye;
+  p.forward = view.forward;
+  p.right = view.right;
+  p.up = view.up;
+  p.tanHalfFovY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
+  p.aspect = float(width) / float(height);
+  p.frameIndex = frame;
+  p.flags = (settings.ambientOcclusion ? AMRSTREAM_RENDER_AO : 0u) |
+            (settings.volume ? AMRSTREAM_RENDER_VOLUME : 0u) |
+            (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u);
+  p.imageSize = {width, height};
+  p.segmentCount = static_cast<std::uint32_t>(segmentCount);
+  p.tubeRadius = settings.tubeRadius;
+  // A key light above and to the left of the viewer.
+  p.lightDirection = glm::normalize(-view.forward + 0.6f * view.up - 0.5f * view.right);
+  p.aoSamples = settings.aoSamples;
+  p.background = settings.background;
+  p.aoDistance = settings.aoDistance;
+  p.domainLower = glm::vec3(volume.domain.lower);
+  p.domainUpper = glm::vec3(volume.domain.upper);
+  p.valueMin = settings.colourRange.min;
+  p.valueMax = settings.colourRange.max;
+  p.volumeMin = settings.volumeRange.min;
+  p.volumeMax = settings.volumeRange.max;
+  p.volumeOpacity = settings.volumeOpacity;
+  p.volumeStepScale = settings.volumeStepScale;
+  return p;
+}
+
+}  // namespace
+
+TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
+                           const flow::VectorVolume& volume, std::span<const float> contextScalars)
+    : ctx_(&ctx), volume_(&volume), kernel_(createRenderKernel(ctx, backend)), timer_(ctx) {
+  if (!contextScalars.empty() && contextScalars.size() != volume.values.size())
+    throw std::invalid_argument("TubeRenderer: context scalars must have one value per cell");
+  hasScalars_ = !contextScalars.empty();
+  bricks_ = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
+  scalars_ = vk::uploadToDeviceLocal(ctx, contextScalars, kStorage, "context scalars");
+  regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
+  regionBricks_ =
+      vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
+  tree_ = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
+
+  const std::array<VkDescriptorPoolSize, 3> sizes{
+      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRenderBindingCount - 1},
+       {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = backend == gpu::Backend::Compute ? 2 : 3;
+  poolInfo.pPoolSizes = sizes.data();
+  VkDescriptorPool pool;
+  AMRSTREAM_VK_CHECK(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &pool));
+  pool_ = {ctx.device(), pool};
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = 1;
+  const VkDescriptorSetLayout layout = kernel_.setLayout.get();
+  allocInfo.pSetLayouts = &layout;
+  AMRSTREAM_VK_CHECK(vkAllocateDescriptorSets(ctx.device(), &allocInfo, &set_));
+
+  setTubes({}, 0.0f);
+  const std::array<glm::vec3, 2> grey{glm::vec3(0.5f), glm::vec3(0.5f)};
+  setColourMap(grey);
+}
+
+void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float radius) {
+  segmentCount_ = segments.size();
+  radius_ = radius;
+  scene_.reset();
+  bvhNodes_ = {};
+  if (kernel_.backend == gpu::Backend::Compute) {
+    const TubeBvh bvh = buildTubeBvh(segments, radius);
+    segments_ = vk::uploadToDeviceLocal(*ctx_, bvh.segments, kStorage, "tube segments");
+    bvhNodes_ = vk::uploadToDeviceLocal(*ctx_, bvh.nodes, kStorage, "tube BVH");
+  } else {
+    segments_ = vk::uploadToDeviceLocal(*ctx_, segments, kStorage, "tube segments");
+    scene_ = vk::buildAabbScene(*ctx_, segmentBoxes(segments, radius), "tubes");
+  }
+  frames_ = 0;
+}
+
+void TubeRenderer::setColourMap(std::span<const glm::vec3> table) {
+  if (table.size() < 2) throw std::invalid_argument("TubeRenderer: a colour map needs 2 entries");
+  colourMap_ = vk::uploadToDeviceLocal(*ctx_, table, kStorage, "colour map");
+  frames_ = 0;
+}
+
+void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
+  if (width == 0 || height == 0)
+    throw std::invalid_argument("TubeRenderer: the image needs at least one pixel");
+  if (width == width_ && height == height_) return;
+  const VkDeviceSize pixelCount = VkDeviceSize(width) * height;
+  accumulation_ = vk::Buffer::deviceLocal(*ctx_, pixelCount * sizeof(glm::vec4), kStorage,
+                                          "accumulation");
+  pixels_ = vk::Buffer::deviceLocal(*ctx_, pixelCount * 4,
+                                    kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "pixels");
+  width_ = width;
+  height_ = height;
+  frames_ = 0;
+}
+
+void TubeRenderer::writeDescriptors(const vk::Buffer& params) {
+  const vk::Buffer& structure = bvhNodes_.handle() != VK_NULL_HANDLE ? bvhNodes_ : tree_;
+  const std::array<VkDescriptorBufferInfo, kRenderBindingCount> buffers{
+      whole(params),        whole(bricks_),    whole(scalars_),      whole(regions_),
+      whole(regionBricks_), whole(tree_),      whole(segments_),     whole(colourMap_),
+      whole(accumulation_), whole(pixels_),    whole(structure)};
+  std::array<VkWriteDescriptorSet, kRenderBindingCount> writes{};
+  for (std::uint32_t i = 0; i < kRenderBindingCount; ++i) {
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = set_;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = i == kRenderParamsBinding ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                                         : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &buffers[i];
+  }
+  VkWriteDescriptorSetAccelerationStructureKHR sceneWrite{
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+  VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+  if (scene_) {
+    tlas = scene_->tlas.handle();
+    sceneWrite.accelerationStructureCount = 1;
+    sceneWrite.pAccelerationStructures = &tlas;
+    writes[kTubeStructureBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    writes[kTubeStructureBinding].pBufferInfo = nullptr;
+    writes[kTubeStructureBinding].pNext = &sceneWrite;
+  }
+  vkUpdateDescriptorSets(ctx_->device(), kRenderBindingCount, writes.data(), 0, nullptr);
+}
+
+void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& settings) {
+  if (width_ == 0) throw std::logic_error("TubeRenderer: resize() before renderFrame()");
+  if (segmentCount_ > 0 && settings.tubeRadius != radius_)
+    throw std::invalid_argument("TubeRenderer: the tubes were built for another radius");
+  if (settings.volume && !hasScalars_)
+    throw std::invalid_argument("TubeRenderer: the volume needs context scalars");
+  if (lastCamera_ != camera || lastSettings_ != settings) frames_ = 0;
+  lastCamera_ = camera;
+  lastSettings_ = settings;
+
+  const shared::RenderParams params =
+      makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_);
+  vk::Buffer paramsBuffer = vk::Buffer::upload(*ctx_, sizeof(params),
+                                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "render params");
+  std::memcpy(paramsBuffer.mapped().data(), &params, sizeof(params));
+  writeDescriptors(paramsBuffer);
+
+  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, kernel_.bindPoint, kernel_.pipeline.get());
+    vkCmdBindDescriptorSets(cmd, kernel_.bindPoint, kernel_.pipelineLayout.get(), 0, 1, &set_, 0,
+                            nullptr);
+    timer_.start(cmd);
+    if (kernel_.backend == gpu::Backend::Pipeline) {
+      const vk::ShaderBindingTable& sbt = kernel_.bindingTable;
+      ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
+                                          width_, height_, 1);
+    } else {
+      vkCmdDispatch(cmd, (width_ + kRenderTileSize - 1) / kRenderTileSize,
+                    (height_ + kRenderTileSize - 1) / kRenderTileSize, 1);
+    }
+    timer_.stop(cmd);
+    vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
+  });
+  lastFrameSeconds_ = timer_.seconds();
+  ++frames_;
+}
+
+Image TubeRenderer::readImage() const {
+  Image image;
+  image.width = width_;
+  image.height = height_;
+  const std::vector<std::byte> bytes = vk::readBack(*ctx_, pixels_);
+  image.rgba.resize(bytes.size());
+  std::memcpy(image.rgba.data(), bytes.data(), bytes.size());
+  return image;
+}
+
+}  // namespace amrstream::render

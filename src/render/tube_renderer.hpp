@@ -1,0 +1,104 @@
+#pragma once
+// The tube renderer on a Vulkan device (DESIGN.md section 7): tubes around traces, shaded with
+// local lighting and ambient occlusion and coloured through a colour map, optionally in front of
+// a scalar field ray-marched as a volume. Each frame adds one jittered sample per pixel (with its
+// ambient-occlusion rays) to a running mean, so a still camera converges; changing the camera,
+// the settings or the tubes starts the mean again.
+//
+// Tubes are intersected through the backend: the tubes' BVH traversed in a compute shader
+// (`compute`), ray queries against their AABB acceleration structure (`rayquery`), or a ray
+// tracing pipeline with a capsule intersection shader (`pipeline`). The volume is located through
+// the regions' kd-tree on every backend.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "../../shaders/glsl/shared/render_types.h"
+#include "camera.hpp"
+#include "flow/vector_volume.hpp"
+#include "gpu/backend.hpp"
+#include "render/image/image.hpp"
+#include "render_kernel.hpp"
+#include "tube_geometry.hpp"
+#include "vk/aabb_scene.hpp"
+#include "vk/buffer.hpp"
+#include "vk/gpu_timer.hpp"
+
+namespace amrstream::render {
+
+struct RenderSettings {
+  float tubeRadius = 0.5f;  // finest-cell units
+  bool ambientOcclusion = true;
+  std::uint32_t aoSamples = 4;  // rays per pixel and frame
+  float aoDistance = 4.0f;      // finest-cell units
+  ValueRange colourRange;       // the colour field's values at the ends of the colour map
+  bool volume = false;          // needs context scalars
+  bool logVolume = true;        // transfer function on log10 of the scalar
+  ValueRange volumeRange;       // (log10) scalar values at the ends of the transfer function
+  float volumeOpacity = 0.05f;  // extinction per finest cell at the top of the transfer function
+  float volumeStepScale = 1.0f;
+  glm::vec3 background{0.12f, 0.13f, 0.16f};
+
+  bool operator==(const RenderSettings&) const = default;
+};
+
+class TubeRenderer {
+ public:
+  // The context must have gpu::requiredCapabilities(backend) and outlive the renderer; so must
+  // `volume`. `contextScalars` (brick-ordered, flow::gatherScalar; may be empty) is the field the
+  // volume shows.
+  TubeRenderer(const vk::Context& ctx, gpu::Backend backend, const flow::VectorVolume& volume,
+               std::span<const float> contextScalars);
+
+  gpu::Backend backend() const { return kernel_.backend; }
+  bool hasContextScalars() const { return hasScalars_; }
+
+  // Replaces the tubes (builds the BVH or the acceleration structure); `radius` is the radius the
+  // boxes are built for and must match RenderSettings::tubeRadius.
+  void setTubes(std::span<const shared::TubeSegment> segments, float radius);
+  std::size_t segmentCount() const { return segmentCount_; }
+  float tubeRadius() const { return radius_; }
+  void setColourMap(std::span<const glm::vec3> table);  // at least 2 entries
+  void resize(std::uint32_t width, std::uint32_t height);
+  void restartAccumulation() { frames_ = 0; }
+
+  // Adds one frame; waits for it. Throws std::invalid_argument when settings.tubeRadius differs
+  // from the tubes' or the volume is asked for without context scalars.
+  void renderFrame(const OrbitCamera& camera, const RenderSettings& settings);
+  std::uint32_t framesAccumulated() const { return frames_; }
+  std::optional<double> lastFrameSeconds() const { return lastFrameSeconds_; }
+
+  std::uint32_t width() const { return width_; }
+  std::uint32_t height() const { return height_; }
+  // RGBA8 pixels, top row first: width * height * 4 bytes; TRANSFER_SRC.
+  const vk::Buffer& pixels() const { return pixels_; }
+  Image readImage() const;
+
+ private:
+  void writeDescriptors(const vk::Buffer& params);
+
+  const vk::Context* ctx_;
+  const flow::VectorVolume* volume_;
+  RenderKernel kernel_;
+  vk::Buffer bricks_, scalars_, regions_, regionBricks_, tree_;
+  bool hasScalars_ = false;
+  vk::Buffer segments_, bvhNodes_;
+  std::optional<vk::AabbScene> scene_;
+  std::size_t segmentCount_ = 0;
+  float radius_ = 0.0f;
+  vk::Buffer colourMap_;
+  vk::Buffer accumulation_, pixels_;
+  std::uint32_t width_ = 0, height_ = 0;
+  vk::UniqueHandle<VkDescriptorPool> pool_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  vk::GpuTimer timer_;
+  std::uint32_t frames_ = 0;
+  std::optional<OrbitCamera> lastCamera_;
+  std::optional<RenderSettings> lastSettings_;
+  std::optional<double> lastFrameSeconds_;
+};
+
+}  // namespace amrstream::render

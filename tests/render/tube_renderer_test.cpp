@@ -1,0 +1,193 @@
+// The tube renderer on every backend the device supports: which pixels show a tube must agree
+// with an independent ray-segment distance test, and a rendered scene (traces of the rotation
+// field with ambient occlusion and the volume) must match the reference image in
+// tests/render/reference within a tolerance.
+
+#include "render/tube_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <optional>
+#include <random>
+
+#include "flow/integrator.hpp"
+#include "flow/seed_strategies.hpp"
+#include "flow/seeds.hpp"
+#include "gpu_test.hpp"
+#include "render/image/colour_map.hpp"
+#include "render/image/image_compare.hpp"
+#include "render/image/png_io.hpp"
+#include "synth/generators.hpp"
+
+namespace amrstream::render {
+namespace {
+
+// The distance between the ray o + t d (t >= 0, d unit) and the segment [a, b]. The distance of
+// a point to the ray is a convex function of the point, so along the segment it is convex in the
+// segment parameter: a ternary search finds its minimum. Independent of the shaders' quadratics.
+double raySegmentDistance(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b) {
+  const auto toRay = [&](double s) {
+    const glm::dvec3 p = a + s * (b - a);
+    const double t = std::max(0.0, glm::dot(p - o, d));
+    return glm::length(o + t * d - p);
+  };
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 100; ++i) {
+    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (toRay(m1) < toRay(m2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  return std::min({toRay(0.0), toRay(1.0), toRay(0.5 * (lo + hi))});
+}
+
+class TubeRendererTest : public testing::GpuTest,
+                         public ::testing::WithParamInterface<gpu::Backend> {
+ protected:
+  vk::CapabilitySet required() const override { return gpu::requiredCapabilities(GetParam()); }
+
+  // A 32^3 rotation dataset: its volume gives the renderer a domain and regions.
+  flow::VectorVolume smallVolume() {
+    field_ = synth::generate("rotation", {.levels = 2, .rootBlocks = 2, .targetCells = 20000});
+    return flow::buildVectorVolume(*field_, flow::chooseVectorChannels(*field_, ""));
+  }
+
+  std::optional<bricks::AmrField> field_;
+};
+
+TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
+  const flow::VectorVolume volume = smallVolume();
+  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<shared::TubeSegment> segments;
+  for (int i = 0; i < 120; ++i) {
+    const glm::vec3 a = lower + (upper - lower) * glm::vec3(unit(random), unit(random), unit(random));
+    const glm::vec3 step = 3.0f * (glm::vec3(unit(random), unit(random), unit(random)) - 0.5f);
+    segments.push_back({a, 0.0f, i % 10 == 0 ? a : a + step, 1.0f});  // some are spheres
+  }
+  const float radius = 0.4f;
+  TubeRenderer renderer(ctx(), GetParam(), volume, {});
+  renderer.setTubes(segments, radius);
+  const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
+  renderer.setColourMap(red);
+  const std::uint32_t w = 96, h = 72;
+  renderer.resize(w, h);
+  RenderSettings settings;
+  settings.tubeRadius = radius;
+  settings.ambientOcclusion = false;
+  const OrbitCamera camera = frameBox(lower, upper, float(w) / h, 30.0f, 20.0f, 1.6f);
+  renderer.renderFrame(camera, settings);  // frame 0: one ray through each pixel's centre
+  const Image image = renderer.readImage();
+
+  const CameraFrame view = cameraFrame(camera);
+  const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2);
+  std::size_t tubePixels = 0, mismatches = 0, ambiguous = 0;
+  for (std::uint32_t y = 0; y < h; ++y)
+    for (std::uint32_t x = 0; x < w; ++x) {
+      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
+      const glm::dvec3 d = glm::normalize(glm::dvec3(view.forward) +
+                                          ndc.x * double(w) / h * tanHalf * glm::dvec3(view.right) -
+                                          ndc.y * tanHalf * glm::dvec3(view.up));
+      double distance = 1e300;
+      for (const auto& s : segments)
+        distance = std::min(distance, raySegmentDistance(view.eye, d, s.a, s.b));
+      const Rgba8 c = image.at(x, y);
+      const bool shownAsTube = c.r > 50 && c.r > c.b + 30;
+      if (std::abs(distance - radius) < 0.02 * radius) {
+        ++ambiguous;
+        continue;
+      }
+      const bool hit = distance < radius;
+      tubePixels += hit;
+      if (hit != shownAsTube) ++mismatches;
+    }
+  EXPECT_GT(tubePixels, w * h / 50) << "the scene should cover a fair part of the image";
+  EXPECT_EQ(mismatches, 0u) << "of " << w * h << " pixels (" << ambiguous << " on tube edges skipped)";
+}
+
+// Traces of the rotation field (circles about the z axis) as tubes with ambient occlusion, in
+// front of the speed as a volume: the scene the reference image shows. Set
+// AMRSTREAM_UPDATE_RENDER_REFERENCE=1 to rewrite the reference (then look at it before committing).
+TEST_P(TubeRendererTest, MatchesTheReferenceImage) {
+  const flow::VectorVolume volume = smallVolume();
+  const flow::SeedList seeds = flow::seedsAlongLine(
+      glm::dvec3(0.55, 0.5, 0.3), glm::dvec3(0.95, 0.5, 0.7), 12);
+  flow::TraceOptions options;
+  options.maxSteps = 120;
+  const flow::TraceSet traces = flow::traceStreamlines(volume, seeds.points, options);
+  const ColourField colour = colourFieldOf(traces, "speed", *field_, volume);
+  const std::vector<float> speed = flow::gatherScalar(*field_, volume, "velx");
+
+  TubeRenderer renderer(ctx(), GetParam(), volume, speed);
+  RenderSettings settings;
+  settings.tubeRadius = 0.6f;
+  settings.aoSamples = 4;
+  settings.aoDistance = 5.0f;
+  settings.colourRange = rangeOf(colour.values);
+  settings.volume = true;
+  settings.logVolume = false;
+  settings.volumeRange = {0.0f, 1.0f};
+  settings.volumeOpacity = 0.03f;
+  renderer.setTubes(buildTubeSegments(traces, colour, volume.transform), settings.tubeRadius);
+  renderer.setColourMap(colourMapTable(ColourMap::Viridis));
+  renderer.resize(128, 128);
+  const OrbitCamera camera = frameBox(glm::vec3(volume.domain.lower),
+                                      glm::vec3(volume.domain.upper), 1.0f, 20.0f, 35.0f, 1.3f);
+  for (int frame = 0; frame < 8; ++frame) renderer.renderFrame(camera, settings);
+  EXPECT_EQ(renderer.framesAccumulated(), 8u);
+  const Image image = renderer.readImage();
+
+  // The source tree's reference, unless AMRSTREAM_RENDER_REFERENCE_DIR names another copy (a
+  // GPU machine running a carried build).
+  const char* directory = std::getenv("AMRSTREAM_RENDER_REFERENCE_DIR");
+  const std::filesystem::path reference =
+      std::filesystem::path(directory ? directory : AMRSTREAM_RENDER_REFERENCE_DIR) /
+      "rotation_tubes.png";
+  if (const char* update = std::getenv("AMRSTREAM_UPDATE_RENDER_REFERENCE"); update && *update == '1') {
+    writePng(reference, image);
+    GTEST_SKIP() << "wrote " << reference;
+  }
+  const ImageDifference difference = compareImages(image, readPng(reference), 24);
+  EXPECT_LT(difference.meanAbsolute, 1.5);
+  EXPECT_LT(difference.fractionAbove, 0.01) << "max difference " << int(difference.maxAbsolute);
+  const ImageContent content = describeContent(image);
+  EXPECT_GT(content.distinctColours, 500u);
+  EXPECT_GT(content.fractionNotBackground, 0.1);
+}
+
+TEST_P(TubeRendererTest, StillFramesAccumulateAndAMovedCameraStartsAgain) {
+  const flow::VectorVolume volume = smallVolume();
+  TubeRenderer renderer(ctx(), GetParam(), volume, {});
+  const std::vector<shared::TubeSegment> one{{glm::vec3(8), 0.0f, glm::vec3(24), 1.0f}};
+  renderer.setTubes(one, 1.0f);
+  renderer.resize(32, 32);
+  RenderSettings settings;
+  settings.tubeRadius = 1.0f;
+  OrbitCamera camera = frameBox(glm::vec3(0), glm::vec3(32), 1.0f);
+  renderer.renderFrame(camera, settings);
+  renderer.renderFrame(camera, settings);
+  EXPECT_EQ(renderer.framesAccumulated(), 2u);
+  orbit(camera, 10.0f, 0.0f);
+  renderer.renderFrame(camera, settings);
+  EXPECT_EQ(renderer.framesAccumulated(), 1u);
+  settings.tubeRadius = 2.0f;
+  EXPECT_THROW(renderer.renderFrame(camera, settings), std::invalid_argument);
+  settings.tubeRadius = 1.0f;
+  settings.volume = true;
+  EXPECT_THROW(renderer.renderFrame(camera, settings), std::invalid_argument);
+}
+
+std::string backendLabel(const ::testing::TestParamInfo<gpu::Backend>& info) {
+  return std::string(gpu::backendName(info.param));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, TubeRendererTest,
+                         ::testing::Values(gpu::Backend::RayQuery, gpu::Backend::Pipeline,
+                                           gpu::Backend::Compute),
+                         backendLabel);
+
+}  // namespace
+}  // namespace amrstream::render
