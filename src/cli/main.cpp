@@ -13,6 +13,9 @@
 #include "render_command.hpp"
 #include "trace_command.hpp"
 #include "util/input_error.hpp"
+#ifdef AMRSTREAM_HAVE_VIEWER
+#include "view_command.hpp"
+#endif
 
 int main(int argc, char** argv) {
   CLI::App app("amrstream: streamlines through adaptive-mesh-refinement vector fields");
@@ -24,6 +27,9 @@ int main(int argc, char** argv) {
   amrstream::cli::addDevicesCommand(app);
   amrstream::cli::addConvertCommand(app);
   amrstream::cli::addRenderCommand(app);
+#ifdef AMRSTREAM_HAVE_VIEWER
+  amrstream::cli::addViewCommand(app);
+#endif
   std::string commandLine = "amrstream";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
   amrstream::cli::addBenchCommand(app, commandLine);

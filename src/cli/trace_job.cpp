@@ -55,7 +55,8 @@ std::pair<glm::dvec3, glm::dvec3> seedBox(const TraceJobOptions& o,
   return {lo, hi};
 }
 
-// The seeds of the chosen strategy, and a description of it for the summary.
+}  // namespace
+
 flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,
                            const flow::VectorVolume& volume, std::string& description) {
   if (!o.seedsFile.empty()) {
@@ -86,8 +87,6 @@ flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& fie
   description = fmt::format("random (seed {}) in a box", o.seed);
   return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
 }
-
-}  // namespace
 
 void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
   const double bytes =

@@ -61,6 +61,10 @@ void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace);
 // time lines.
 flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input);
 
+// The seeds of the chosen strategy; `description` says which, for the summary.
+flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,
+                           const flow::VectorVolume& volume, std::string& description);
+
 // The ReasonForTermination's name, e.g. "out of domain".
 const char* reasonName(int reason);
 

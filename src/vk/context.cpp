@@ -57,4 +57,10 @@ ContextBuilder& ContextBuilder::debugNames(bool enabled) {
   return *this;
 }
 
+ContextBuilder& ContextBuilder::presentation(std::vector<std::string> instanceExtensions,
+                                             SurfaceFactory createSurface) {
+  presentation_ = PresentationRequest{std::move(instanceExtensions), std::move(createSurface)};
+  return *this;
+}
+
 }  // namespace amrstream::vk

@@ -1,9 +1,11 @@
 #pragma once
 // Context: one Vulkan device ready for compute and, as requested, acceleration structures, ray
-// queries and ray tracing pipelines. It owns, in creation (and reverse destruction) order: the
-// validation log, the instance, the debug messenger, the logical device, one compute-capable
-// queue and a command pool on it. Move-only. Not thread-safe: the command pool and the queue are
-// for one thread at a time.
+// queries, ray tracing pipelines and presentation to a window. It owns, in creation (and reverse
+// destruction) order: the validation log, the instance, the debug messenger, the window surface
+// (with presentation only), the logical device, one queue and a command pool on it. The queue is
+// compute-capable; with presentation it also does graphics and presents to the surface, so the
+// tracer, the renderer and the presenter share it. Move-only. Not thread-safe: the command pool
+// and the queue are for one thread at a time.
 //
 // ContextBuilder chooses the device and returns a Context or throws ContextError with a readable
 // reason (which device lacks what, and what to do about it).
@@ -21,6 +23,7 @@
 #include "vk/device_functions.hpp"
 #include "vk/device_report.hpp"
 #include "vk/device_support.hpp"
+#include "vk/presentation.hpp"
 #include "vk/unique_handle.hpp"
 #include "vk/validation_log.hpp"
 
@@ -65,6 +68,9 @@ class Context {
   bool bufferDeviceAddressEnabled() const { return bufferDeviceAddress_; }
   bool debugUtilsEnabled() const { return debugUtils_; }
   bool validationEnabled() const { return validationLog_ != nullptr; }
+  // With presentation: the window's surface and VK_KHR_swapchain enabled. Null when headless.
+  VkSurfaceKHR surface() const { return surface_.get(); }
+  bool presentationEnabled() const { return static_cast<bool>(surface_); }
 
   // ERROR-severity messages from the validation layer and the loader so far; 0 without
   // validation.
@@ -80,6 +86,7 @@ class Context {
   UniqueHandle<VkInstance> instance_;
   InstanceFunctions instanceFunctions_;
   UniqueHandle<VkDebugUtilsMessengerEXT> messenger_;
+  UniqueHandle<VkSurfaceKHR> surface_;
   VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
   DeviceReport report_;
   DeviceProperties properties_;
@@ -108,6 +115,13 @@ class ContextBuilder {
   ContextBuilder& synchronizationValidation(bool enabled);
   // Object names for debuggers (RenderDoc, Nsight) without validation; on with validation.
   ContextBuilder& debugNames(bool enabled);
+  // Presentation to a window: `instanceExtensions` are enabled on the instance (throws
+  // ContextError at build() when the loader lacks one), `createSurface` is called once with the
+  // new instance and the context takes the surface. Only devices with VK_KHR_swapchain and a
+  // queue family doing graphics, compute and presentation to that surface qualify. Off by
+  // default: a context without it is headless.
+  ContextBuilder& presentation(std::vector<std::string> instanceExtensions,
+                               SurfaceFactory createSurface);
 
   // Without a device filter: the first discrete GPU that supports the requirements, else the
   // first device that does. Throws ContextError when no device qualifies, listing each device
@@ -121,6 +135,7 @@ class ContextBuilder {
   bool validation_ = false;
   bool synchronizationValidation_ = false;
   bool debugNames_ = false;
+  std::optional<PresentationRequest> presentation_;
 };
 
 }  // namespace amrstream::vk

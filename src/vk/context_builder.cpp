@@ -1,5 +1,5 @@
-// ContextBuilder::build(): instance, device choice, logical device with the features of the
-// requested capabilities, queue and command pool.
+// ContextBuilder::build(): instance, surface (with presentation), device choice, logical device
+// with the features of the requested capabilities, queue and command pool.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,6 +17,7 @@ struct Candidate {
   DeviceSupport support;
   DeviceProperties properties;
   DeviceReport report;
+  PresentationSupport presentation;  // probed only with a surface
 };
 
 std::string lowercase(std::string text) {
@@ -25,21 +26,36 @@ std::string lowercase(std::string text) {
   return text;
 }
 
+// Empty when `c` can serve; else the device's name and what it lacks.
+std::string reasonAgainst(const Candidate& c, CapabilitySet required, bool presenting) {
+  std::string reason = describeMissing(c.report, required);
+  const std::vector<std::string> missing =
+      presenting ? c.presentation.missing() : std::vector<std::string>{};
+  if (!missing.empty()) {
+    reason += fmt::format("{}cannot present to the window: missing {}",
+                          reason.empty() ? c.report.name + ": " : "; ", fmt::join(missing, ", "));
+  }
+  return reason;
+}
+
 std::string listSeen(const std::vector<Candidate>& all) {
   std::string text = "devices seen:";
   for (const Candidate& c : all) text += "\n  " + describeDevice(c.report);
   return text;
 }
 
-Candidate chooseDevice(VkInstance instance, CapabilitySet required,
+// `surface` is null for a headless context.
+Candidate chooseDevice(VkInstance instance, VkSurfaceKHR surface, CapabilitySet required,
                        const std::optional<uint32_t>& index,
                        const std::optional<std::string>& name) {
+  const bool presenting = surface != VK_NULL_HANDLE;
   std::vector<Candidate> all;
   const auto devices = enumeratePhysicalDevices(instance);
   for (uint32_t i = 0; i < devices.size(); ++i) {
-    Candidate c{devices[i], probeSupport(devices[i]), {}, {}};
+    Candidate c{devices[i], probeSupport(devices[i]), {}, {}, {}};
     c.properties = queryProperties(devices[i], c.support);
     c.report = makeReport(i, c.support, c.properties);
+    if (presenting) c.presentation = probePresentation(devices[i], c.support, surface);
     all.push_back(std::move(c));
   }
   if (all.empty()) {
@@ -68,7 +84,7 @@ Candidate chooseDevice(VkInstance instance, CapabilitySet required,
 
   const Candidate* chosen = nullptr;
   for (const Candidate* c : pool) {
-    if (!c->report.supports(required)) continue;
+    if (!reasonAgainst(*c, required, presenting).empty()) continue;
     if (c->report.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) {
       chosen = c;
       break;
@@ -76,11 +92,12 @@ Candidate chooseDevice(VkInstance instance, CapabilitySet required,
     if (chosen == nullptr) chosen = c;
   }
   if (chosen == nullptr) {
-    if (pool.size() == 1) throw ContextError(describeMissing(pool.front()->report, required));
+    if (pool.size() == 1) throw ContextError(reasonAgainst(*pool.front(), required, presenting));
     std::string reasons;
-    for (const Candidate* c : pool) reasons += "\n  " + describeMissing(c->report, required);
-    throw ContextError(
-        fmt::format("no Vulkan device supports {}:{}", required.withImplied().toString(), reasons));
+    for (const Candidate* c : pool) reasons += "\n  " + reasonAgainst(*c, required, presenting);
+    throw ContextError(fmt::format("no Vulkan device supports {}{}:{}",
+                                   required.withImplied().toString(),
+                                   presenting ? " and presentation to the window" : "", reasons));
   }
   return *chosen;
 }
@@ -92,8 +109,9 @@ Context ContextBuilder::build() const {
   const bool validation = validation_ || synchronizationValidation_;
   if (validation) ctx.validationLog_ = std::make_shared<ValidationLog>();
 
-  Instance instance = createInstance({validation, synchronizationValidation_,
-                                      validation || debugNames_, ctx.validationLog_.get()});
+  Instance instance = createInstance(
+      {validation, synchronizationValidation_, validation || debugNames_, ctx.validationLog_.get(),
+       presentation_ ? presentation_->instanceExtensions : std::vector<std::string>{}});
   ctx.instance_ = std::move(instance.handle);
   ctx.debugUtils_ = instance.debugUtilsEnabled;
   ctx.instanceFunctions_ = InstanceFunctions::load(ctx.instance(), ctx.debugUtils_);
@@ -111,8 +129,15 @@ Context ContextBuilder::build() const {
         {ctx.instance(), ctx.instanceFunctions_.vkDestroyDebugUtilsMessengerEXT.get()}, messenger);
   }
 
+  if (presentation_) {
+    const VkSurfaceKHR surface = presentation_->createSurface(ctx.instance());
+    if (surface == VK_NULL_HANDLE) throw ContextError("the window system gave no Vulkan surface");
+    ctx.surface_ = UniqueHandle<VkSurfaceKHR>(ctx.instance(), surface);
+  }
+
   CapabilitySet capabilities = required_.withImplied();
-  Candidate chosen = chooseDevice(ctx.instance(), capabilities, deviceIndex_, deviceName_);
+  Candidate chosen =
+      chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_, deviceName_);
   // Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
   // enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
   // request for them alone enables whichever of the two the device has.
@@ -129,7 +154,8 @@ Context ContextBuilder::build() const {
   ctx.capabilities_ = capabilities;
   ctx.shaderInt64_ = chosen.support.shaderInt64;
   ctx.bufferDeviceAddress_ = chosen.support.bufferDeviceAddress;
-  ctx.queueFamilyIndex_ = *chosen.support.computeQueueFamily;
+  ctx.queueFamilyIndex_ =
+      presentation_ ? *chosen.presentation.queueFamily : *chosen.support.computeQueueFamily;
   if (!capabilities.contains(Capability::AccelerationStructure)) {
     ctx.properties_.accelerationStructure = {};
   }
@@ -142,6 +168,7 @@ Context ContextBuilder::build() const {
     if (!capabilities.contains(c)) continue;
     for (const char* extension : requirementsOf(c).extensions) extensions.push_back(extension);
   }
+  if (presentation_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.features.shaderInt64 = ctx.shaderInt64_ ? VK_TRUE : VK_FALSE;

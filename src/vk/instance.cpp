@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include "vk/context_error.hpp"
@@ -61,6 +62,15 @@ Instance createInstance(const InstanceOptions& options) {
   Instance instance;
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
+  for (const std::string& extension : options.extensions) {
+    if (!instanceExtensionAvailable(extension, layer)) {
+      throw ContextError(fmt::format(
+          "the Vulkan loader offers no instance extension {}, which the window system needs "
+          "(update libvulkan1 and the driver, or use a headless command)",
+          extension));
+    }
+    extensions.push_back(extension.c_str());
+  }
   if (options.validation) layers.push_back(kValidationLayer);
   if ((options.validation || options.debugUtils) &&
       instanceExtensionAvailable(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, layer)) {

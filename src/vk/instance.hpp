@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <vector>
 
 #include "vk/unique_handle.hpp"
@@ -21,6 +22,8 @@ struct InstanceOptions {
   bool debugUtils = false;
   // Receives the messages of instance creation and destruction; required with validation.
   ValidationLog* log = nullptr;
+  // Required beyond those above, such as the surface extensions a window system needs.
+  std::vector<std::string> extensions;
 };
 
 struct Instance {
@@ -29,7 +32,7 @@ struct Instance {
 };
 
 // Throws ContextError naming what is missing (a Vulkan 1.2 loader, the validation layer, a
-// driver).
+// required instance extension, a driver).
 Instance createInstance(const InstanceOptions& options);
 
 std::vector<VkPhysicalDevice> enumeratePhysicalDevices(VkInstance instance);

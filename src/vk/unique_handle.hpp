@@ -74,6 +74,15 @@ struct HandleTraits<VkDebugUtilsMessengerEXT> {
   }
 };
 
+// A surface is a child of the instance, not of a device.
+template <>
+struct HandleTraits<VkSurfaceKHR> {
+  using Owner = VkInstance;
+  static void destroy(VkInstance instance, VkSurfaceKHR h) {
+    vkDestroySurfaceKHR(instance, h, nullptr);
+  }
+};
+
 #define AMRSTREAM_DEVICE_CHILD(Type, destroyFunction)                                     \
   template <>                                                                             \
   struct HandleTraits<Type> {                                                             \
@@ -95,6 +104,9 @@ AMRSTREAM_DEVICE_CHILD(VkPipelineLayout, vkDestroyPipelineLayout)
 AMRSTREAM_DEVICE_CHILD(VkPipelineCache, vkDestroyPipelineCache)
 AMRSTREAM_DEVICE_CHILD(VkDescriptorSetLayout, vkDestroyDescriptorSetLayout)
 AMRSTREAM_DEVICE_CHILD(VkDescriptorPool, vkDestroyDescriptorPool)
+AMRSTREAM_DEVICE_CHILD(VkRenderPass, vkDestroyRenderPass)
+AMRSTREAM_DEVICE_CHILD(VkFramebuffer, vkDestroyFramebuffer)
+AMRSTREAM_DEVICE_CHILD(VkSwapchainKHR, vkDestroySwapchainKHR)
 #undef AMRSTREAM_DEVICE_CHILD
 
 template <typename Handle>

@@ -1,0 +1,138 @@
+#include "view_panel.hpp"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <array>
+#include <cmath>
+
+#include "render/image/colour_map.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+void text(const std::string& line) { ImGui::TextUnformatted(line.c_str()); }
+
+// The colour map as a gradient with its range and field name.
+void drawColourLegend(const RenderScene& scene) {
+  const std::vector<glm::vec3> table = render::colourMapTable(scene.colourMap, 64);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, height = 14.0f;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (std::size_t i = 0; i + 1 < table.size(); ++i) {
+    const float x0 = origin.x + width * float(i) / float(table.size() - 1);
+    const float x1 = origin.x + width * float(i + 1) / float(table.size() - 1);
+    const auto colour = [](glm::vec3 c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1.0f)); };
+    draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height),
+                                  colour(table[i]), colour(table[i + 1]), colour(table[i + 1]),
+                                  colour(table[i]));
+  }
+  ImGui::Dummy(ImVec2(width, height));
+  text(fmt::format("{}: {:.3g} .. {:.3g}", scene.colourLabel, scene.settings.colourRange.min,
+                   scene.settings.colourRange.max));
+}
+
+}  // namespace
+
+PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
+  PanelRequests requests;
+  ViewOptions& o = session.options();
+  RenderScene& scene = session.scene();
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("amrstream");
+  text(fmt::format("backend {} on {}", gpu::backendName(session.backend()), stats.device));
+  text(fmt::format("frame {:.1f} ms, {:.3g} particle-steps/s", 1e3 * stats.frameSeconds,
+                   stats.stepsPerSecond));
+  const flow::ProgressiveTraces& traces = session.traces();
+  text(fmt::format("traces {} running of {}, {} steps", traces.runningCount(),
+                   traces.traces().seedCount, traces.stepsTaken()));
+  text(fmt::format("{} tube segments, {} frames accumulated", scene.segments.size(),
+                   session.renderer().framesAccumulated()));
+
+  if (ImGui::CollapsingHeader("Seeding and stepping", ImGuiTreeNodeFlags_DefaultOpen)) {
+    bool dense = !o.job.seedDensity.empty();
+    if (ImGui::Checkbox("densest cells (paper)", &dense))
+      o.job.seedDensity = dense && session.input().field.findChannel("dens") ? "dens" : "";
+    int count = int(o.job.count);
+    if (ImGui::SliderInt("seeds", &count, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic))
+      o.job.count = std::size_t(std::max(1, count));
+    int steps = int(o.stepsPerFrame);
+    if (ImGui::SliderInt("steps per frame", &steps, 1, 200)) o.stepsPerFrame = std::uint32_t(steps);
+    flow::TraceOptions& trace = session.input().options;
+    ImGui::InputFloat("step size h", &trace.stepSize, 0.0f, 0.0f, "%.4g");
+    const std::array<const char*, 3> modes{"cell", "time", "arc"};
+    int mode = int(trace.stepMode);
+    if (ImGui::Combo("step mode", &mode, modes.data(), int(modes.size())))
+      trace.stepMode = flow::StepMode(mode);
+    ImGui::Checkbox("pause tracing", &session.paused);
+    if (ImGui::Button("reseed and trace again")) {
+      ++o.job.seed;
+      trace.stepSize = std::max(trace.stepSize, 1e-6f);
+      session.restartTraces();
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Look", ImGuiTreeNodeFlags_DefaultOpen)) {
+    std::vector<std::string> fields{"speed", "time"};
+    for (const bricks::Channel& c : session.input().field.channels()) fields.push_back(c.name);
+    if (ImGui::BeginCombo("colour by", o.look.colourBy.c_str())) {
+      for (const std::string& f : fields)
+        if (ImGui::Selectable(f.c_str(), f == o.look.colourBy)) {
+          o.look.colourBy = f;
+          o.look.range.clear();
+          scene.colourLabel = f == "speed" ? session.traces().traces().vectorName + " speed" : f;
+          session.rebuildTubes();
+        }
+      ImGui::EndCombo();
+    }
+    const std::array<render::ColourMap, 3> maps{render::ColourMap::Viridis,
+                                                render::ColourMap::Magma,
+                                                render::ColourMap::CoolWarm};
+    if (ImGui::BeginCombo("colour map", std::string(render::colourMapName(scene.colourMap)).c_str())) {
+      for (const render::ColourMap m : maps)
+        if (ImGui::Selectable(std::string(render::colourMapName(m)).c_str(), m == scene.colourMap)) {
+          scene.colourMap = m;
+          session.rebuildTubes();
+        }
+      ImGui::EndCombo();
+    }
+    drawColourLegend(scene);
+    float radius = scene.settings.tubeRadius;
+    if (ImGui::SliderFloat("tube radius", &radius, 0.05f, 20.0f, "%.2f cells",
+                           ImGuiSliderFlags_Logarithmic)) {
+      o.look.tubeRadius = scene.settings.tubeRadius = radius;
+      scene.settings.aoDistance = 8.0f * radius;
+      session.rebuildTubes();
+    }
+    ImGui::Checkbox("ambient occlusion", &scene.settings.ambientOcclusion);
+    int ao = int(scene.settings.aoSamples);
+    if (ImGui::SliderInt("AO rays", &ao, 1, 16)) scene.settings.aoSamples = std::uint32_t(ao);
+    if (session.renderer().hasContextScalars()) {
+      ImGui::Checkbox(fmt::format("volume ({})", o.look.volume).c_str(), &scene.settings.volume);
+      ImGui::SliderFloat("opacity", &scene.settings.volumeOpacity, 0.0f, 1.0f, "%.3f",
+                         ImGuiSliderFlags_Logarithmic);
+    } else if (session.input().field.findChannel("dens") && ImGui::Button("show dens as a volume")) {
+      o.look.volume = "dens";
+      session.reloadVolume();
+    }
+  }
+  if (ImGui::Button("screenshot (S)")) requests.screenshot = true;
+  ImGui::SameLine();
+  if (ImGui::Button("export .vtp (E)")) requests.exportTraces = true;
+  text("drag: orbit, right drag: pan, wheel: zoom, H: hide");
+  ImGui::End();
+  return requests;
+}
+
+void moveCamera(render::OrbitCamera& camera, const app::InputFrame& input, float viewHeight) {
+  const glm::dvec2 d = input.cursorDelta;
+  if (input.down(app::MouseButton::Left))
+    render::orbit(camera, float(-0.3 * d.x), float(0.3 * d.y));
+  if (input.down(app::MouseButton::Right) || input.down(app::MouseButton::Middle))
+    render::pan(camera, float(-d.x / viewHeight), float(d.y / viewHeight));
+  if (input.scroll.y != 0.0) render::zoom(camera, float(std::pow(1.1, input.scroll.y)));
+}
+
+}  // namespace amrstream::cli

@@ -1,0 +1,63 @@
+#include "view_session.hpp"
+
+#include <fmt/format.h>
+
+#include "util/input_error.hpp"
+#include "vk/context.hpp"
+
+namespace amrstream::cli {
+
+ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu::Backend backend,
+                         PreparedInput input)
+    : options_(options), ctx_(&ctx), backend_(backend), input_(std::move(input)),
+      tracer_(ctx, backend, input_.volume) {
+  traces_.emplace(input_.seeds.points, input_.options, input_.volume.vectorName);
+  scene_ = prepareScene(options_.look, input_, traces_->traces());
+  renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
+  renderer_->setColourMap(render::colourMapTable(scene_.colourMap));
+  rebuildTubes();
+}
+
+void ViewSession::rebuildTubes() {
+  updateTubes(scene_, options_.look, input_, traces_->traces());
+  vkQueueWaitIdle(ctx_->queue());
+  renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
+  renderer_->setColourMap(render::colourMapTable(scene_.colourMap));
+}
+
+void ViewSession::restartTraces() {
+  std::string description;
+  input_.seeds = chooseSeeds(options_.job, input_.field, input_.volume, description);
+  flow::checkSeedsInDomain(input_.volume, input_.seeds);
+  traces_.emplace(input_.seeds.points, input_.options, input_.volume.vectorName);
+  rebuildTubes();
+}
+
+void ViewSession::reloadVolume() {
+  const render::OrbitCamera camera = scene_.camera;
+  scene_ = prepareScene(options_.look, input_, traces_->traces());
+  scene_.camera = camera;
+  vkQueueWaitIdle(ctx_->queue());
+  renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume, scene_.contextScalars);
+  rebuildTubes();
+}
+
+std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
+  std::size_t taken = 0;
+  if (!paused && !traces_->finished()) {
+    const flow::TraceFunction trace = [&](std::span<const glm::dvec3> starts,
+                                          const flow::TraceOptions& o) {
+      return tracer_.trace(starts, o);
+    };
+    taken = traces_->advance(trace, options_.stepsPerFrame);
+    rebuildTubes();
+  }
+  if (width != renderer_->width() || height != renderer_->height()) {
+    vkQueueWaitIdle(ctx_->queue());
+    renderer_->resize(width, height);
+  }
+  renderer_->renderFrame(scene_.camera, scene_.settings);
+  return taken;
+}
+
+}  // namespace amrstream::cli

@@ -1,0 +1,62 @@
+#pragma once
+// The state of `amrstream view`: the prepared input, traces growing a few steps per frame on the
+// GPU tracer, and the tube renderer; the viewer's controls change it between frames.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "flow/progressive_traces.hpp"
+#include "gpu/gpu_tracer.hpp"
+#include "render/tube_renderer.hpp"
+#include "render_options.hpp"
+#include "trace_job.hpp"
+
+namespace amrstream::cli {
+
+struct ViewOptions {
+  TraceJobOptions job;
+  RenderOptions look;
+  std::uint32_t stepsPerFrame = 10;
+  std::uint32_t frames = 0;  // stop after this many frames (0: until the window closes)
+  float orbitPerFrame = 0.0f;  // degrees of azimuth per frame, for scripted runs
+  std::string screenshot;      // with --frames: save the last frame here
+};
+
+class ViewSession {
+ public:
+  ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu::Backend backend,
+              PreparedInput input);
+
+  // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; then renders one
+  // frame at this size. Returns the particle-steps taken.
+  std::size_t step(std::uint32_t width, std::uint32_t height);
+
+  // Seeds again with the current seeding options and restarts the traces.
+  void restartTraces();
+  // Rebuilds the tubes from the traces as they are (after a colour or radius change).
+  void rebuildTubes();
+  // Reloads the context volume for options().look.volume (empty: none).
+  void reloadVolume();
+
+  ViewOptions& options() { return options_; }
+  PreparedInput& input() { return input_; }
+  RenderScene& scene() { return scene_; }
+  render::OrbitCamera& camera() { return scene_.camera; }
+  bool paused = false;
+  const flow::ProgressiveTraces& traces() const { return *traces_; }
+  const render::TubeRenderer& renderer() const { return *renderer_; }
+  gpu::Backend backend() const { return backend_; }
+
+ private:
+  ViewOptions options_;
+  const vk::Context* ctx_;
+  gpu::Backend backend_;
+  PreparedInput input_;
+  gpu::GpuTracer tracer_;
+  std::optional<flow::ProgressiveTraces> traces_;
+  RenderScene scene_;
+  std::unique_ptr<render::TubeRenderer> renderer_;
+};
+
+}  // namespace amrstream::cli

@@ -1,0 +1,84 @@
+// `amrstream render` and `amrstream view` end to end on the default device (lavapipe in CI),
+// with the validation layer on: the PNGs they write must show tubes.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "render/image/image_compare.hpp"
+#include "render/image/png_io.hpp"
+#include "run_amrstream.hpp"
+
+namespace amrstream {
+namespace {
+
+// Pixels in viridis' blue-green middle, where the cloud's speeds fall: tubes, not the grey-blue
+// background, the grey-cream volume or the white text.
+std::size_t tubeLikePixels(const render::Image& image) {
+  std::size_t n = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const render::Rgba8 c = image.at(x, y);
+      n += c.g > 60 && c.g > c.r + 25 && c.b > c.r;
+    }
+  return n;
+}
+
+std::filesystem::path outputPath(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "amrstream_render_view";
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove(dir / name);
+  return dir / name;
+}
+
+TEST(RenderCommand, WritesAnImageOfTubesWithItsColourBar) {
+  const auto png = outputPath("render.png");
+  const auto run = testing::runAmrstream(
+      "render builtin:cloud --count 64 --steps 300 --width 256 --height 192 --frames 2 "
+      "--tube-radius 1.5 --out " + png.string(),
+      "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("output     " + png.string()), std::string::npos) << run.output;
+  const render::Image image = render::readPng(png);
+  EXPECT_EQ(image.width, 256u);
+  EXPECT_EQ(image.height, 192u);
+  EXPECT_GT(tubeLikePixels(image), 300u);
+  EXPECT_GT(render::describeContent(image).distinctColours, 200u);
+}
+
+TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
+  auto run = testing::runAmrstream("render builtin:cloud --backend cpu --out x.png");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("needs a Vulkan device"), std::string::npos) << run.output;
+  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --colour-map jet --out x.png");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("viridis, magma, coolwarm"), std::string::npos) << run.output;
+  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --colour-by pressure --out x.png");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("no field 'pressure'"), std::string::npos) << run.output;
+}
+
+// The viewer under Xvfb: progressive tracing until every trace ends, a scripted orbit, and a
+// screenshot of the last frame.
+TEST(ViewCommand, TracesProgressivelyAndShowsTubesUnderXvfb) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
+    FAIL() << "xvfb-run is missing: apt-get install xvfb xauth (scripts/install_deps.sh does)";
+  const auto png = outputPath("view.png");
+  const auto run = testing::runAmrstream(
+      "view builtin:cloud --count 64 --steps 200 --steps-per-frame 25 --frames 14 "
+      "--orbit-per-frame 4 --width 320 --height 240 --tube-radius 1.5 --screenshot " +
+          png.string(),
+      "AMRSTREAM_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("traces     all 64 finished after"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("frames     14"), std::string::npos) << run.output;
+  const render::Image image = render::readPng(png);
+  EXPECT_EQ(image.width, 320u);
+  EXPECT_EQ(image.height, 240u);
+  const render::ImageContent content = render::describeContent(image);
+  EXPECT_GT(content.distinctColours, 100u) << "not one colour";
+  EXPECT_GT(tubeLikePixels(image), 200u) << "no tubes";
+}
+
+}  // namespace
+}  // namespace amrstream
