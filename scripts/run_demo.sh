@@ -9,4 +9,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh" release
 "$root/build/src/cli/amrstream" trace builtin:cloud --out traces.vtp "$@"
 "$root/build/src/cli/amrstream" render builtin:cloud --count 512 --steps 2000 --volume dens \
-  --camera 35,25,1.35 --width 800 --height 500 --frames 8 --out cloud.png
+  --camera 35,25,1.2 --width 800 --height 500 --frames 8 --out cloud.png

@@ -4,6 +4,8 @@
 
 #include <memory>
 
+#include "flow/seeds.hpp"
+#include "output/vtp_reader.hpp"
 #include "progress.hpp"
 #include "render/image/colour_bar.hpp"
 #include "render/image/png_io.hpp"
@@ -20,18 +22,44 @@ namespace {
 struct RenderCommandOptions {
   TraceJobOptions job;
   RenderOptions look;
+  std::string traces;  // read traces from this .vtp instead of tracing
   std::uint32_t frames = 32;
   bool colourBar = true;
   std::string out = "render.png";
 };
 
+// Traces read from a file must meet the input's domain, or the image would show nothing of it.
+void checkTracesInDomain(const std::string& path, const flow::TraceSet& traces,
+                         const flow::VectorVolume& volume) {
+  const glm::dvec3 lower = flow::domainLower(volume), upper = flow::domainUpper(volume);
+  std::size_t points = 0, inside = 0;
+  for (std::uint32_t s = 0; s < traces.seedCount; ++s)
+    for (std::uint32_t p = 0; p < traces.pointCounts[s]; ++p, ++points) {
+      const glm::dvec3 x(traces.positions[traces.at(s, p)]);
+      inside += glm::all(glm::greaterThanEqual(x, lower)) && glm::all(glm::lessThanEqual(x, upper));
+    }
+  fmt::print("traces     {} from {} ({} points)\n", withCommas(traces.seedCount), path,
+             withCommas(points));
+  if (points > 0 && inside == 0)
+    throw InputError(path, fmt::format("no trace point lies in the input's domain [{:g}, {:g}] x "
+                                       "[{:g}, {:g}] x [{:g}, {:g}]; were they traced in another "
+                                       "dataset?",
+                                       lower.x, upper.x, lower.y, upper.y, lower.z, upper.z));
+}
+
 void runRender(const RenderCommandOptions& o) {
   if (o.job.backend.backend == "cpu")
     throw InputError("--backend", "rendering needs a Vulkan device: choose auto, rayquery, "
                                   "pipeline or compute");
-  PreparedInput input = prepareInput(o.job);
-  checkHistoryFitsInMemory(input.seeds.points.size(), o.job.steps + 1);
-  const flow::TraceSet traces = runTraces(o.job, input);
+  PreparedInput input = prepareInput(o.job, o.traces.empty());
+  flow::TraceSet traces;
+  if (o.traces.empty()) {
+    checkHistoryFitsInMemory(input.seeds.points.size(), o.job.steps + 1);
+    traces = runTraces(o.job, input);
+  } else {
+    traces = output::readVtpTraces(o.traces);
+    checkTracesInDomain(o.traces, traces, input.volume);
+  }
   const RenderScene scene = prepareScene(o.look, input, traces);
 
   const BackendChoice choice = chooseBackend(o.job.backend);
@@ -79,6 +107,10 @@ void addRenderCommand(CLI::App& app) {
       app.add_subcommand("render", "trace streamlines and render them as tubes to a PNG image");
   addTraceJobOptions(*command, options->job);
   addRenderOptions(*command, options->look);
+  command->add_option("--traces", options->traces,
+                      "render the traces of this .vtp (e.g. from `amrstream trace`) instead of "
+                      "tracing; INPUT gives the domain, the volume and the colour channels")
+      ->check(CLI::ExistingFile);
   command->add_option("--frames", options->frames,
                       "frames accumulated: jittered samples per pixel, each with --ao-samples "
                       "occlusion rays")

@@ -79,7 +79,7 @@ RenderScene prepareScene(const RenderOptions& o, const PreparedInput& input,
     throw InputError("--colour-map", fmt::format("no colour map '{}'; choose one of: {}",
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
-  scene.colourLabel = o.colourBy == "speed" ? traces.vectorName + " speed" : o.colourBy;
+  scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
 
   render::RenderSettings& s = scene.settings;
   s.tubeRadius = o.tubeRadius.value_or(defaultTubeRadius(input.volume));

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <memory>
-#include <numeric>
 
 #include "output/vtp_writer.hpp"
 #include "trace_job.hpp"
@@ -27,12 +26,9 @@ void runTrace(const TraceCommandOptions& o) {
   const flow::TraceSet traces = runTraces(o.job, input);
 
   Stopwatch clock;
-  output::writeVtp(o.out, traces);
+  const output::VtpCounts written = output::writeVtp(o.out, traces);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
-             withCommas(traces.seedCount),
-             withCommas(std::accumulate(traces.pointCounts.begin(), traces.pointCounts.end(),
-                                        std::size_t(0))),
-             clock.seconds());
+             withCommas(written.lines), withCommas(written.points), clock.seconds());
 }
 
 }  // namespace

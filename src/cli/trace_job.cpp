@@ -100,7 +100,7 @@ void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
                                  seeds, pointsPerTrace, bytes / 0x1p30, memory / 0x1p30));
 }
 
-PreparedInput prepareInput(const TraceJobOptions& o) {
+PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   Stopwatch clock;
   PreparedInput input{formats::loadInput(o.dataset.input, o.dataset.generator), {}, {}, {}};
   const bricks::AmrField& field = input.field;
@@ -117,6 +117,7 @@ PreparedInput prepareInput(const TraceJobOptions& o) {
   fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s]\n",
              withCommas(volume.bricks.size()), times.bricks,
              withCommas(volume.regions.regions.size()), times.regions);
+  if (!withSeeds) return input;
 
   std::string seedDescription;
   input.seeds = chooseSeeds(o, field, volume, seedDescription);

@@ -51,8 +51,9 @@ struct PreparedInput {
 };
 
 // Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,
-// printing the input, structure, seeds and stepping lines.
-PreparedInput prepareInput(const TraceJobOptions& o);
+// printing the input, structure, seeds and stepping lines. Without `withSeeds`, stops after the
+// structure (for traces read from a file).
+PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 
 // Refuses runs whose stored trace points cannot fit in memory.
 void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace);

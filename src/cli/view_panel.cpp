@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "render/image/colour_map.hpp"
+#include "trace_settings.hpp"
 
 namespace amrstream::cli {
 
@@ -61,17 +63,30 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     int steps = int(o.stepsPerFrame);
     if (ImGui::SliderInt("steps per frame", &steps, 1, 200)) o.stepsPerFrame = std::uint32_t(steps);
     flow::TraceOptions& trace = session.input().options;
-    ImGui::InputFloat("step size h", &trace.stepSize, 0.0f, 0.0f, "%.4g");
+    // A new step size or mode traces the same seeds again.
+    bool retrace = false;
+    float stepSize = trace.stepSize;
+    if (ImGui::InputFloat("step size h", &stepSize, 0.0f, 0.0f, "%.4g",
+                          ImGuiInputTextFlags_EnterReturnsTrue) &&
+        stepSize > 0.0f) {
+      trace.stepSize = stepSize;
+      retrace = true;
+    }
     const std::array<const char*, 3> modes{"cell", "time", "arc"};
-    int mode = int(trace.stepMode);
-    if (ImGui::Combo("step mode", &mode, modes.data(), int(modes.size())))
-      trace.stepMode = flow::StepMode(mode);
+    const std::array<flow::StepMode, 3> modeValues{flow::StepMode::Cell, flow::StepMode::Time,
+                                                   flow::StepMode::Arc};
+    int mode = int(std::find(modeValues.begin(), modeValues.end(), trace.stepMode) - modeValues.begin());
+    if (ImGui::Combo("step mode", &mode, modes.data(), int(modes.size()))) {
+      trace.stepMode = modeValues[std::size_t(mode)];
+      trace.stepSize = chooseStepSize(trace.stepMode, std::nullopt, session.input().volume);
+      retrace = true;
+    }
     ImGui::Checkbox("pause tracing", &session.paused);
     if (ImGui::Button("reseed and trace again")) {
       ++o.job.seed;
-      trace.stepSize = std::max(trace.stepSize, 1e-6f);
-      session.restartTraces();
+      retrace = true;
     }
+    if (retrace) session.restartTraces();
   }
 
   if (ImGui::CollapsingHeader("Look", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -82,7 +97,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
         if (ImGui::Selectable(f.c_str(), f == o.look.colourBy)) {
           o.look.colourBy = f;
           o.look.range.clear();
-          scene.colourLabel = f == "speed" ? session.traces().traces().vectorName + " speed" : f;
+          scene.colourLabel = f == "speed" ? "|" + session.traces().traces().vectorName + "|" : f;
           session.rebuildTubes();
         }
       ImGui::EndCombo();

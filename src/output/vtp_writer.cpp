@@ -46,6 +46,10 @@ void checkConsistent(const std::filesystem::path& path, const flow::TraceSet& tr
   }
 }
 
+// Points written for a trace: a trace that ends at its seed becomes a 2-point line repeating its
+// point, and a trace without points gets no line (see vtp_writer.hpp for why).
+std::uint64_t writtenPoints(std::uint32_t pointCount) { return pointCount == 1 ? 2 : pointCount; }
+
 // Point arrays need distinct names; a traced field called like one of ours gets a suffix.
 std::string vectorArrayName(const flow::TraceSet& traces) {
   if (traces.vectorName.empty()) return "Vectors";
@@ -55,13 +59,14 @@ std::string vectorArrayName(const flow::TraceSet& traces) {
   return traces.vectorName;
 }
 
-// The valid prefix of every trace's stride, trace after trace.
+// The valid prefix of every trace's stride, trace after trace; a 1-point trace's point twice.
 template <class T>
 void writeValidPoints(BufferedWriter& out, const flow::TraceSet& traces,
                       const std::vector<T>& values) {
   for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
     const std::span<const T> valid(values.data() + traces.at(seed, 0), traces.pointCounts[seed]);
     out.write(std::as_bytes(valid));
+    if (valid.size() == 1) out.write(std::as_bytes(valid));
   }
 }
 
@@ -75,12 +80,20 @@ void writeSpeeds(BufferedWriter& out, const flow::TraceSet& traces) {
     for (std::uint32_t point = 0; point < traces.pointCounts[seed]; ++point) {
       out.put(speed(traces.vectors[traces.at(seed, point)]));
     }
+    if (traces.pointCounts[seed] == 1) out.put(speed(traces.vectors[traces.at(seed, 0)]));
   }
 }
 
+// Cell arrays: one value per trace that has a line.
 void writeSeedIds(BufferedWriter& out, const flow::TraceSet& traces) {
   for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
-    out.put(static_cast<std::int32_t>(seed));
+    if (traces.pointCounts[seed] > 0) out.put(static_cast<std::int32_t>(seed));
+  }
+}
+
+void writeReasons(BufferedWriter& out, const flow::TraceSet& traces) {
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    if (traces.pointCounts[seed] > 0) out.put(traces.reasons[seed]);
   }
 }
 
@@ -92,19 +105,25 @@ void writeConnectivity(BufferedWriter& out, std::uint64_t pointCount) {
 
 void writeLineEnds(BufferedWriter& out, const flow::TraceSet& traces) {
   std::int64_t end = 0;
-  for (const std::uint32_t count : traces.pointCounts) out.put(end += count);
+  for (const std::uint32_t count : traces.pointCounts) {
+    if (count == 0) continue;
+    end += static_cast<std::int64_t>(writtenPoints(count));
+    out.put(end);
+  }
 }
 
 }  // namespace
 
 // An empty TraceSet (no seeds) is written as a valid file with 0 points and 0 lines whose
-// arrays are all present and empty. A trace with 0 points becomes an empty line, so cells and
-// seeds stay one to one.
-void writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces) {
+// arrays are all present and empty.
+VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces) {
   checkConsistent(path, traces);
   std::uint64_t pointCount = 0;
-  for (const std::uint32_t count : traces.pointCounts) pointCount += count;
-  const std::uint64_t lineCount = traces.seedCount;
+  std::uint64_t lineCount = 0;
+  for (const std::uint32_t count : traces.pointCounts) {
+    pointCount += writtenPoints(count);
+    lineCount += count > 0 ? 1 : 0;
+  }
 
   using Out = BufferedWriter&;
   const AppendedArray times{"IntegrationTime", "Float32", 1, pointCount * sizeof(float),
@@ -115,9 +134,8 @@ void writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces) {
                               [&](Out out) { writeValidPoints(out, traces, traces.vectors); }};
   const AppendedArray seedIds{"SeedIds", "Int32", 1, lineCount * sizeof(std::int32_t),
                               [&](Out out) { writeSeedIds(out, traces); }};
-  const AppendedArray reasons{
-      "ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
-      [&](Out out) { out.write(std::as_bytes(std::span(traces.reasons))); }};
+  const AppendedArray reasons{"ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
+                              [&](Out out) { writeReasons(out, traces); }};
   const AppendedArray points{"Points", "Float32", 3, pointCount * sizeof(glm::vec3),
                              [&](Out out) { writeValidPoints(out, traces, traces.positions); }};
   const AppendedArray connectivity{"connectivity", "Int64", 1, pointCount * sizeof(std::int64_t),
@@ -169,6 +187,7 @@ void writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces) {
   out.write("</VTKFile>\n");
   out.flush();
   file.commit();
+  return {lineCount, pointCount};
 }
 
 }  // namespace amrstream::output

@@ -46,6 +46,25 @@ TEST(RenderCommand, WritesAnImageOfTubesWithItsColourBar) {
   EXPECT_GT(render::describeContent(image).distinctColours, 200u);
 }
 
+// Traces written by `trace` rendered with --traces: the same tubes as rendering them directly.
+TEST(RenderCommand, RendersTracesReadFromAVtpLikeTracingThem) {
+  const auto vtp = outputPath("traced.vtp"), direct = outputPath("direct.png"),
+             fromFile = outputPath("from_file.png");
+  const std::string trace = "builtin:cloud --count 32 --steps 300 ";
+  const std::string look = "--width 160 --height 128 --frames 1 --tube-radius 1.5 --ao-samples 0 ";
+  ASSERT_EQ(testing::runAmrstream("trace " + trace + "--out " + vtp.string()).status, 0);
+  auto run = testing::runAmrstream("render " + trace + look + "--out " + direct.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  run = testing::runAmrstream("render builtin:cloud --traces " + vtp.string() + " " + look +
+                              "--out " + fromFile.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("traces     32 from"), std::string::npos) << run.output;
+  const render::Image a = render::readPng(direct), b = render::readPng(fromFile);
+  EXPECT_GT(tubeLikePixels(a), 100u);
+  const render::ImageDifference difference = render::compareImages(a, b, 24);
+  EXPECT_LT(difference.fractionAbove, 0.002) << "mean " << difference.meanAbsolute;
+}
+
 TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
   auto run = testing::runAmrstream("render builtin:cloud --backend cpu --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;

@@ -5,12 +5,19 @@ Run with Debian's /usr/bin/python3 (python3-vtk9):
 
   check_vtp_with_vtk.py FILE --points N --lines M \
       [--point-array NAME:COMPONENTS]... [--cell-array NAME:COMPONENTS]... \
-      [--line-lengths 3,1,5,2] [--scalars NAME] [--vectors NAME] [--speed-of NAME] [--seed-ids]
+      [--line-lengths 3,2,5,2] [--repeated-lines 1,...] [--scalars NAME] [--vectors NAME] \
+      [--speed-of NAME] [--seed-ids]
 
 Fails (exit 1, one line per problem) when vtkXMLPolyDataReader reports an error or warning,
-when the counts differ, when an array is missing or has other components, and, with
---speed-of, when the point array "Speed" is not the magnitude of that vector array, and with
---seed-ids, when the cell array SeedIds is not 0 .. lines-1.
+when the counts differ, when an array is missing or has other components, when a line has fewer
+than 2 points, and, with --line-lengths, when the lines (walked with GetCellPoints) have other
+lengths; with --repeated-lines, when those lines are not 2 copies of one point (coordinates and
+every point array equal); with --speed-of, when the point array "Speed" is not the magnitude of
+that vector array, and with --seed-ids, when the cell array SeedIds is not 0 .. lines-1.
+
+Lines of 0 or 1 point are reported without asking VTK for their points: vtkPolyData refuses to
+build its cell map for them ("Invalid cell size for lines") and VTK 9.1 then crashes in
+GetCellPoints.
 """
 
 import argparse
@@ -40,6 +47,8 @@ def parse_arguments():
     parser.add_argument("--point-array", type=array_spec, action="append", default=[])
     parser.add_argument("--cell-array", type=array_spec, action="append", default=[])
     parser.add_argument("--line-lengths", help="comma-separated point count of each line")
+    parser.add_argument("--repeated-lines",
+                        help="comma-separated indices of lines that repeat a single point")
     parser.add_argument("--scalars", help="expected active point scalars")
     parser.add_argument("--vectors", help="expected active point vectors")
     parser.add_argument("--speed-of", help="vector array whose magnitude Speed must be")
@@ -68,6 +77,28 @@ class Messages:
         return self.reported + ([text] if text else [])
 
 
+def check_repeated(output, first_line, line):
+    """Problems unless line `line` holds two copies of one point, point data included."""
+    if line >= output.GetNumberOfLines():
+        return [f"no line {line} to check for a repeated point"]
+    ids = vtk.vtkIdList()
+    output.GetCellPoints(first_line + line, ids)
+    if ids.GetNumberOfIds() != 2:
+        return [f"line {line} has {ids.GetNumberOfIds()} points, expected a repeated point (2)"]
+    a, b = ids.GetId(0), ids.GetId(1)
+    problems = []
+    if output.GetPoint(a) != output.GetPoint(b):
+        problems.append(f"line {line} joins {output.GetPoint(a)} and {output.GetPoint(b)}, "
+                        "expected one point twice")
+    point_data = output.GetPointData()
+    for i in range(point_data.GetNumberOfArrays()):
+        array = point_data.GetArray(i)
+        if array.GetTuple(a) != array.GetTuple(b):
+            problems.append(f"line {line}: {array.GetName()} {array.GetTuple(a)} and "
+                            f"{array.GetTuple(b)} differ at the repeated point")
+    return problems
+
+
 def check(args):
     problems = []
     messages = Messages()
@@ -77,12 +108,11 @@ def check(args):
         return [f"vtkXMLPolyDataReader cannot read {args.file}"] + messages.all()
     reader.SetFileName(args.file)
     reader.Update()
-    problems += [f"VTK reported: {m}" for m in messages.all()]
     if reader.GetErrorCode() != 0:
         problems.append(f"reader error code {reader.GetErrorCode()}")
     output = reader.GetOutput()
     if output is None:
-        return problems + ["reader produced no output"]
+        return problems + ["reader produced no output"] + messages.all()
 
     if output.GetNumberOfPoints() != args.points:
         problems.append(f"{output.GetNumberOfPoints()} points, expected {args.points}")
@@ -118,16 +148,32 @@ def check(args):
             problems.append(f"active vectors {active and active.GetName()!r}, "
                             f"expected {args.vectors!r}")
 
-    if args.line_lengths is not None:
-        expected = [int(n) for n in args.line_lengths.split(",") if n]
-        lines = output.GetLines()
-        ids = vtk.vtkIdList()
+    # The cell array itself, which needs no cell map.
+    lines = output.GetLines()
+    ids = vtk.vtkIdList()
+    raw_lengths = []
+    lines.InitTraversal()
+    while lines.GetNextCell(ids):
+        raw_lengths.append(ids.GetNumberOfIds())
+    short = [i for i, n in enumerate(raw_lengths) if n < 2]
+    if short:
+        problems.append(f"lines {short[:20]} have fewer than 2 points, which VTK cannot use")
+    else:
+        # Through the cell map, as filters and ParaView see the cells (lines follow the verts).
+        first_line = output.GetNumberOfVerts()
         lengths = []
-        lines.InitTraversal()
-        while lines.GetNextCell(ids):
+        for cell in range(first_line, first_line + output.GetNumberOfLines()):
+            output.GetCellPoints(cell, ids)
             lengths.append(ids.GetNumberOfIds())
-        if lengths != expected:
-            problems.append(f"line lengths {lengths}, expected {expected}")
+        if lengths != raw_lengths:
+            problems.append(f"GetCellPoints gives lengths {lengths}, the lines hold {raw_lengths}")
+        if args.line_lengths is not None:
+            expected = [int(n) for n in args.line_lengths.split(",") if n]
+            if lengths != expected:
+                problems.append(f"line lengths {lengths}, expected {expected}")
+        if args.repeated_lines is not None:
+            for line in (int(n) for n in args.repeated_lines.split(",") if n):
+                problems += check_repeated(output, first_line, line)
 
     if args.speed_of is not None:
         speed, vectors = point_data.GetArray("Speed"), point_data.GetArray(args.speed_of)
@@ -146,7 +192,8 @@ def check(args):
                                               for i in range(seed_ids.GetNumberOfTuples())]
         if values != list(range(args.lines)):
             problems.append(f"SeedIds {values[:20]}, expected 0 .. {args.lines - 1}")
-    return problems
+    # Last, so that errors VTK reports while building its cell map are included.
+    return problems + [f"VTK reported: {m}" for m in messages.all()]
 
 
 def main():

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -71,7 +72,8 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
                                         {"version", "1.0"},
                                         {"byte_order", "LittleEndian"},
                                         {"header_type", "UInt64"}}));
-  EXPECT_EQ(vtp.piece, (XmlAttributes{{"NumberOfPoints", "11"},
+  // 3 + 1 + 5 + 2 trace points; the 1-point trace is written as its point twice.
+  EXPECT_EQ(vtp.piece, (XmlAttributes{{"NumberOfPoints", "12"},
                                       {"NumberOfVerts", "0"},
                                       {"NumberOfLines", "4"},
                                       {"NumberOfStrips", "0"},
@@ -86,13 +88,13 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
     std::size_t bytes;
   };
   const Expected expected[] = {
-      {"PointData", "IntegrationTime", "Float32", 1, 11 * 4},
-      {"PointData", "Speed", "Float32", 1, 11 * 4},
-      {"PointData", "velocity", "Float32", 3, 11 * 12},
+      {"PointData", "IntegrationTime", "Float32", 1, 12 * 4},
+      {"PointData", "Speed", "Float32", 1, 12 * 4},
+      {"PointData", "velocity", "Float32", 3, 12 * 12},
       {"CellData", "SeedIds", "Int32", 1, 4 * 4},
       {"CellData", "ReasonForTermination", "Int32", 1, 4 * 4},
-      {"Points", "Points", "Float32", 3, 11 * 12},
-      {"Lines", "connectivity", "Int64", 1, 11 * 8},
+      {"Points", "Points", "Float32", 3, 12 * 12},
+      {"Lines", "connectivity", "Int64", 1, 12 * 8},
       {"Lines", "offsets", "Int64", 1, 4 * 8},
   };
   ASSERT_EQ(vtp.arrays.size(), std::size(expected));
@@ -107,19 +109,24 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
   }
 }
 
+// Points the file holds for a trace of `count` points: a 1-point trace's point twice.
+std::uint32_t writtenPoints(std::uint32_t count) { return count == 1 ? 2 : count; }
+
 TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
   const auto points = vtp.array("Points", "Points").values<glm::vec3>();
   const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
   const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
-  ASSERT_EQ(points.size(), 11u);
-  ASSERT_EQ(times.size(), 11u);
-  ASSERT_EQ(vectors.size(), 11u);
+  ASSERT_EQ(points.size(), 12u);
+  ASSERT_EQ(times.size(), 12u);
+  ASSERT_EQ(vectors.size(), 12u);
 
   std::size_t i = 0;
   for (std::uint32_t seed = 0; seed < kSamplePointCounts.size(); ++seed) {
-    for (std::uint32_t point = 0; point < kSamplePointCounts[seed]; ++point, ++i) {
-      SCOPED_TRACE(::testing::Message() << "seed " << seed << " point " << point);
+    for (std::uint32_t written = 0; written < writtenPoints(kSamplePointCounts[seed]);
+         ++written, ++i) {
+      const std::uint32_t point = std::min(written, kSamplePointCounts[seed] - 1);
+      SCOPED_TRACE(::testing::Message() << "seed " << seed << " point " << written);
       EXPECT_EQ(points[i], samplePosition(seed, point));
       EXPECT_EQ(times[i], sampleTime(seed, point));
       EXPECT_EQ(vectors[i], sampleVector(seed, point));
@@ -130,10 +137,10 @@ TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
 TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
   EXPECT_EQ(vtp.array("Lines", "connectivity").values<std::int64_t>(),
-            (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
-  // VTK XML offsets are the end of each cell's ids.
+            (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
+  // VTK XML offsets are the end of each cell's ids; the 1-point trace is a 2-point line.
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
-            (std::vector<std::int64_t>{3, 4, 9, 11}));
+            (std::vector<std::int64_t>{3, 5, 10, 12}));
 }
 
 TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
@@ -146,7 +153,8 @@ TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
     EXPECT_FLOAT_EQ(speeds[i], static_cast<float>(std::sqrt(glm::dot(v, v)))) << "point " << i;
   }
   EXPECT_EQ(speeds[0], 5.0f);  // (3, 4, 0)
-  EXPECT_EQ(speeds[3], 0.0f);  // trace 1, a single point with a zero vector
+  EXPECT_EQ(speeds[3], 0.0f);  // trace 1, a single point with a zero vector, written twice
+  EXPECT_EQ(speeds[4], 0.0f);
 }
 
 TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
@@ -191,15 +199,60 @@ TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
   for (const VtpArray& array : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << array.name();
 }
 
-TEST_F(VtpWriter, ATraceWithoutPointsIsAnEmptyLineSoCellsStayOnePerSeed) {
-  const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 1}, 3));
-  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "3");
+// VTK cannot use a line of fewer than 2 points (VTK 9.1 crashes in GetCellPoints on one).
+TEST_F(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
+  const VtpFile vtp = writeAndRead(sampleTraces({2, 1, 1}, 3));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "6");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "3");
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
-            (std::vector<std::int64_t>{2, 2, 3}));
+            (std::vector<std::int64_t>{2, 4, 6}));
   EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
             (std::vector<std::int32_t>{0, 1, 2}));
+  EXPECT_EQ(vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
+            (std::vector<std::int32_t>{sampleReason(0), sampleReason(1), sampleReason(2)}));
+  const auto points = vtp.array("Points", "Points").values<glm::vec3>();
+  const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
+  const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
+  const auto speeds = vtp.array("PointData", "Speed").values<float>();
+  for (const std::uint32_t seed : {1u, 2u}) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    for (const std::size_t i : {2 * seed, 2 * seed + 1}) {
+      EXPECT_EQ(points[i], samplePosition(seed, 0));
+      EXPECT_EQ(times[i], sampleTime(seed, 0));
+      EXPECT_EQ(vectors[i], sampleVector(seed, 0));
+    }
+    EXPECT_EQ(speeds[2 * seed], speeds[2 * seed + 1]);
+  }
+}
+
+TEST_F(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
+  const VtpFile vtp = writeAndRead(sampleTraces({1, 1, 1, 1}, 1));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "8");
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{2, 4, 6, 8}));
+  EXPECT_EQ(vtp.array("Lines", "connectivity").values<std::int64_t>(),
+            (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+}
+
+// A trace without points has nothing to draw and no point to repeat; SeedIds names the others.
+TEST_F(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
+  const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 3}, 3));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "5");
+  EXPECT_EQ(vtp.piece.at("NumberOfLines"), "2");
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{2, 5}));
+  EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
+            (std::vector<std::int32_t>{0, 2}));
+  EXPECT_EQ(vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
+            (std::vector<std::int32_t>{sampleReason(0), sampleReason(2)}));
   EXPECT_EQ(vtp.array("Points", "Points").values<glm::vec3>()[2], samplePosition(2, 0));
+}
+
+TEST_F(VtpWriter, TracesWithoutPointsAloneMakeAFileWithoutLines) {
+  const VtpFile vtp = writeAndRead(sampleTraces({0, 0}, 3));
+  EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
+  EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
+  for (const VtpArray& array : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << array.name();
 }
 
 TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
@@ -214,7 +267,8 @@ TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
   ASSERT_EQ(offsets.size(), counts.size());
   std::size_t i = 0;
   for (std::uint32_t seed = 0; seed < counts.size(); ++seed) {
-    for (std::uint32_t point = 0; point < counts[seed]; ++point, ++i) {
+    for (std::uint32_t written = 0; written < writtenPoints(counts[seed]); ++written, ++i) {
+      const std::uint32_t point = std::min(written, counts[seed] - 1);
       ASSERT_LT(i, points.size());
       ASSERT_EQ(points[i], samplePosition(seed, point)) << "seed " << seed << " point " << point;
       const glm::dvec3 v(sampleVector(seed, point));

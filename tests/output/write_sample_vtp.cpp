@@ -1,5 +1,6 @@
 // Writes a known TraceSet for check_vtp_with_vtk.py: `write_sample_vtp OUT.vtp [--empty]`.
-// The default set has 4 lines of 3, 1, 5 and 2 points (11 points) and the vector "velocity";
+// The default set has 4 traces of 3, 1, 5 and 2 points and the vector "velocity"; the file holds
+// lines of 3, 2, 5 and 2 points (12 points: the 1-point trace is written as its point twice).
 // --empty writes a TraceSet with no seeds.
 
 #include <cstdio>

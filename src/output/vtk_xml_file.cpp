@@ -1,0 +1,422 @@
+#include "output/vtk_xml_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <span>
+#include <system_error>
+#include <type_traits>
+#include <utility>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::output {
+namespace {
+
+std::string readFileBytes(const std::filesystem::path& path) {
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             std::fclose);
+  if (!file) {
+    throw InputError(path.string(), fmt::format("cannot open ({})", std::strerror(errno)));
+  }
+  std::error_code ignored;
+  const std::uintmax_t size = std::filesystem::file_size(path, ignored);
+  std::string bytes;
+  if (!ignored) bytes.reserve(static_cast<std::size_t>(size));
+  std::array<char, 1 << 16> chunk;
+  while (const std::size_t count = std::fread(chunk.data(), 1, chunk.size(), file.get())) {
+    bytes.append(chunk.data(), count);
+  }
+  if (std::ferror(file.get())) {
+    throw InputError(path.string(), fmt::format("cannot read ({})", std::strerror(errno)));
+  }
+  return bytes;
+}
+
+enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, Float32, Float64 };
+
+std::optional<Scalar> scalarNamed(std::string_view name) {
+  static const std::pair<std::string_view, Scalar> names[] = {
+      {"Int8", Scalar::Int8},      {"UInt8", Scalar::UInt8},   {"Int16", Scalar::Int16},
+      {"UInt16", Scalar::UInt16},  {"Int32", Scalar::Int32},   {"UInt32", Scalar::UInt32},
+      {"Int64", Scalar::Int64},    {"UInt64", Scalar::UInt64}, {"Float32", Scalar::Float32},
+      {"Float64", Scalar::Float64}};
+  for (const auto& [text, scalar] : names) {
+    if (text == name) return scalar;
+  }
+  return std::nullopt;
+}
+
+// Calls f with a value of the C++ type of `scalar` (the value itself is unused).
+template <class F>
+decltype(auto) withType(Scalar scalar, F&& f) {
+  switch (scalar) {
+    case Scalar::Int8:
+      return f(std::int8_t{});
+    case Scalar::UInt8:
+      return f(std::uint8_t{});
+    case Scalar::Int16:
+      return f(std::int16_t{});
+    case Scalar::UInt16:
+      return f(std::uint16_t{});
+    case Scalar::Int32:
+      return f(std::int32_t{});
+    case Scalar::UInt32:
+      return f(std::uint32_t{});
+    case Scalar::Int64:
+      return f(std::int64_t{});
+    case Scalar::UInt64:
+      return f(std::uint64_t{});
+    case Scalar::Float32:
+      return f(float{});
+    case Scalar::Float64:
+      break;
+  }
+  return f(double{});
+}
+
+std::size_t scalarBytes(Scalar scalar) {
+  return withType(scalar, [](auto value) { return sizeof(value); });
+}
+
+// `value` as To, or nothing when To cannot hold it. Floats saturate to infinities (a plain cast
+// of an out-of-range double is undefined); integers must be whole and in range.
+template <class To, class From>
+std::optional<To> converted(From value) {
+  if constexpr (std::is_floating_point_v<To>) {
+    if constexpr (std::is_floating_point_v<From>) {
+      constexpr double kMax = std::numeric_limits<To>::max();
+      if (value > kMax) return std::numeric_limits<To>::infinity();
+      if (value < -kMax) return -std::numeric_limits<To>::infinity();
+    }
+    return static_cast<To>(value);
+  } else if constexpr (std::is_floating_point_v<From>) {
+    // [-2^63, 2^63) holds exactly the whole doubles that fit in int64.
+    constexpr double kLimit = 9223372036854775808.0;
+    if (!(value >= -kLimit && value < kLimit) || std::trunc(value) != value) return std::nullopt;
+    return static_cast<To>(value);
+  } else {
+    if (!std::in_range<To>(value)) return std::nullopt;
+    return static_cast<To>(value);
+  }
+}
+
+template <class T>
+T loadElement(const std::byte* data, bool swap) {
+  std::array<std::byte, sizeof(T)> raw;
+  std::memcpy(raw.data(), data, sizeof(T));
+  if (swap) std::reverse(raw.begin(), raw.end());
+  T value;
+  std::memcpy(&value, raw.data(), sizeof(T));
+  return value;
+}
+
+// Decodes base64 text, skipping whitespace; padding may end it. Returns false on a character
+// outside the alphabet or text after the padding.
+bool decodeBase64(std::string_view text, std::vector<std::byte>& out) {
+  static const auto table = [] {
+    std::array<std::int8_t, 256> t;
+    t.fill(-1);
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    for (int i = 0; i < 64; ++i) t[static_cast<unsigned char>(alphabet[i])] = std::int8_t(i);
+    return t;
+  }();
+  out.reserve(out.size() + text.size() / 4 * 3 + 3);
+  std::uint32_t bits = 0;
+  int held = 0;  // 6-bit groups in `bits`
+  bool padded = false;
+  for (const char c : text) {
+    if (isXmlSpace(c)) continue;
+    if (c == '=') {
+      padded = true;
+      continue;
+    }
+    const int value = table[static_cast<unsigned char>(c)];
+    if (value < 0 || padded) return false;
+    bits = (bits << 6) | static_cast<std::uint32_t>(value);
+    if (++held == 4) {
+      out.push_back(std::byte(bits >> 16));
+      out.push_back(std::byte(bits >> 8));
+      out.push_back(std::byte(bits));
+      bits = 0;
+      held = 0;
+    }
+  }
+  // A final group of 2 or 3 characters carries 1 or 2 bytes.
+  if (held == 1) return false;
+  if (held >= 2) out.push_back(std::byte(bits >> (6 * held - 8)));
+  if (held == 3) out.push_back(std::byte(bits >> 2));
+  return true;
+}
+
+std::string joined(const std::vector<std::string_view>& parts) {
+  std::string out;
+  for (const std::string_view part : parts) out += part;
+  return out;
+}
+
+}  // namespace
+
+VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
+    : source_(path.string()), bytes_(readFileBytes(path)) {
+  ScannedXml scanned = scanXml(bytes_, source_);
+  root_ = std::move(scanned.root);
+  if (root_.name != "VTKFile") {
+    fail(fmt::format("not a VTK XML file: the root element is <{}>, not <VTKFile>", root_.name));
+  }
+  const std::string* byteOrder = root_.attribute("byte_order");
+  if (byteOrder != nullptr && *byteOrder != "LittleEndian" && *byteOrder != "BigEndian") {
+    fail(fmt::format("unknown byte_order \"{}\"", *byteOrder));
+  }
+  // Values are stored in the file's order; a cast on read swaps them when it differs from ours.
+  static_assert(std::endian::native == std::endian::little ||
+                std::endian::native == std::endian::big);
+  const bool fileBig = byteOrder != nullptr && *byteOrder == "BigEndian";
+  swapBytes_ = fileBig != (std::endian::native == std::endian::big);
+
+  const std::string* headerType = root_.attribute("header_type");
+  if (headerType == nullptr || *headerType == "UInt32") {
+    headerBytes_ = 4;
+  } else if (*headerType == "UInt64") {
+    headerBytes_ = 8;
+  } else {
+    fail(fmt::format("unknown header_type \"{}\" (VTK writes UInt32 or UInt64)", *headerType));
+  }
+  const std::string* compressor = root_.attribute("compressor");
+  if (compressor != nullptr && !trimmedXmlSpace(*compressor).empty()) {
+    fail(
+        fmt::format("the file is compressed ({}), which is not supported: write it "
+                    "uncompressed (vtkXMLWriter::SetCompressorTypeToNone(), or Compressor Type "
+                    "None in ParaView's Save Data options)",
+                    *compressor));
+  }
+  if (scanned.appendedStart) {
+    const XmlElement* appended = root_.child("AppendedData");
+    const std::string* encoding = appended ? appended->attribute("encoding") : nullptr;
+    if (appended == nullptr) fail("<AppendedData> is not a child of <VTKFile>");
+    if (encoding == nullptr || (*encoding != "raw" && *encoding != "base64")) {
+      fail(fmt::format("<AppendedData> has encoding \"{}\"; raw and base64 are supported",
+                       encoding ? *encoding : ""));
+    }
+    appended_ = Appended{*scanned.appendedStart, *encoding == "base64"};
+  }
+}
+
+std::string VtkXmlFile::datasetType() const {
+  const std::string* type = root_.attribute("type");
+  return type ? *type : std::string();
+}
+
+void VtkXmlFile::fail(const std::string& problem) const { throw InputError(source_, problem); }
+
+std::uint64_t VtkXmlFile::count(const XmlElement& element, std::string_view key,
+                                std::optional<std::uint64_t> fallback) const {
+  const std::string* text = element.attribute(key);
+  if (text == nullptr) {
+    if (fallback) return *fallback;
+    fail(fmt::format("<{}> has no {} attribute", element.name, key));
+  }
+  const std::string_view digits = trimmedXmlSpace(*text);
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
+    fail(fmt::format("<{}> attribute {}=\"{}\" is not a count", element.name, key, excerpt(*text)));
+  }
+  return value;
+}
+
+int VtkXmlFile::components(const XmlElement& dataArray) const {
+  const std::uint64_t n = count(dataArray, "NumberOfComponents", 1);
+  if (n == 0 || n > 1024) {
+    fail(fmt::format("DataArray \"{}\" has NumberOfComponents=\"{}\"",
+                     dataArray.attribute("Name") ? *dataArray.attribute("Name") : "", n));
+  }
+  return static_cast<int>(n);
+}
+
+void VtkXmlFile::checkCount(std::uint64_t values, std::optional<std::uint64_t> tuples,
+                            int components, const std::string& what) const {
+  const auto perTuple = static_cast<std::uint64_t>(components);
+  if (tuples) {
+    const bool fits = *tuples <= std::numeric_limits<std::uint64_t>::max() / perTuple;
+    if (!fits || values != *tuples * perTuple) {
+      fail(fmt::format("array {} holds {} values, expected {} tuples of {}", what, values, *tuples,
+                       perTuple));
+    }
+  } else if (values % perTuple != 0) {
+    fail(fmt::format("array {} holds {} values, not a whole number of {}-component tuples", what,
+                     values, perTuple));
+  }
+}
+
+std::span<const std::byte> VtkXmlFile::inlineBlock(const XmlElement& array, const std::string& what,
+                                                   std::vector<std::byte>& decoded) const {
+  if (!decodeBase64(joined(array.text), decoded)) {
+    fail(fmt::format("array {} is not valid base64", what));
+  }
+  if (decoded.size() < headerBytes_) fail(fmt::format("array {} has no byte count", what));
+  const std::uint64_t size = blockSize(decoded.data());
+  if (size != decoded.size() - headerBytes_) {
+    fail(fmt::format("array {} declares {} bytes but holds {}", what, size,
+                     decoded.size() - headerBytes_));
+  }
+  return std::span(decoded).subspan(headerBytes_);
+}
+
+std::span<const std::byte> VtkXmlFile::appendedBlock(const XmlElement& array,
+                                                     const std::string& what,
+                                                     std::vector<std::byte>& decoded) const {
+  if (!appended_) {
+    fail(fmt::format("array {} is appended, but the file has no <AppendedData>", what));
+  }
+  const std::uint64_t offset = count(array, "offset");
+  const std::size_t available = bytes_.size() - appended_->base;
+  // Raw, the count takes headerBytes_; in base64 it is encoded with the data, in whole groups of
+  // 4 characters for 3 bytes.
+  const std::size_t countChars = appended_->base64 ? (headerBytes_ + 2) / 3 * 4 : headerBytes_;
+  if (offset > available || available - offset < countChars) {
+    fail(fmt::format("array {} has offset {}, outside the appended data ({} bytes)", what, offset,
+                     available));
+  }
+  const auto truncated = [&](std::uint64_t size) {
+    fail(
+        fmt::format("the appended data is truncated: array {} at offset {} needs {} bytes, the "
+                    "file ends first",
+                    what, offset, size));
+  };
+
+  if (!appended_->base64) {
+    const auto* data = reinterpret_cast<const std::byte*>(bytes_.data()) + appended_->base;
+    const std::uint64_t size = blockSize(data + offset);
+    if (size > available - offset - headerBytes_) truncated(size);
+    return {data + offset + headerBytes_, static_cast<std::size_t>(size)};
+  }
+  const std::string_view text(bytes_.data() + appended_->base, available);
+  const auto decode = [&](std::size_t chars, std::size_t bytes) {
+    decoded.clear();
+    if (!decodeBase64(text.substr(offset, chars), decoded) || decoded.size() < bytes) {
+      fail(fmt::format("array {}: appended data at offset {} is not valid base64", what, offset));
+    }
+  };
+  decode(countChars, headerBytes_);
+  const std::uint64_t size = blockSize(decoded.data());
+  // Base64 takes more characters than bytes: a block larger than the file cannot be in it.
+  if (size > available) truncated(size);
+  const std::uint64_t chars = (headerBytes_ + size + 2) / 3 * 4;
+  if (chars > available - offset) truncated(size);
+  decode(static_cast<std::size_t>(chars), static_cast<std::size_t>(headerBytes_ + size));
+  return std::span(decoded).subspan(headerBytes_, static_cast<std::size_t>(size));
+}
+
+std::uint64_t VtkXmlFile::blockSize(const std::byte* header) const {
+  return headerBytes_ == 8 ? loadElement<std::uint64_t>(header, swapBytes_)
+                           : loadElement<std::uint32_t>(header, swapBytes_);
+}
+
+template <class T>
+std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::uint64_t> tuples,
+                                  int expectedComponents, const std::string& what) const {
+  const int arrayComponents = components(array);
+  if (arrayComponents != expectedComponents) {
+    fail(fmt::format("array {} has {} components, expected {}", what, arrayComponents,
+                     expectedComponents));
+  }
+  const std::string* typeName = array.attribute("type");
+  if (typeName == nullptr) fail(fmt::format("array {} has no type", what));
+  const std::optional<Scalar> scalar = scalarNamed(*typeName);
+  if (!scalar) {
+    fail(fmt::format("array {} has type \"{}\"; only numeric types are read", what,
+                     excerpt(*typeName)));
+  }
+  const std::string* format = array.attribute("format");
+  if (format == nullptr) fail(fmt::format("array {} has no format attribute", what));
+
+  const auto convertOne = [&](auto value, std::size_t index) {
+    const std::optional<T> out = converted<T>(value);
+    if (!out) {
+      fail(
+          fmt::format("array {} value {} ({}) is not a whole number in range", what, index, value));
+    }
+    return *out;
+  };
+
+  if (*format == "ascii") {
+    std::vector<T> out;
+    const auto parse = [&](std::string_view token, auto value) {
+      if (token.size() > 1 && token[0] == '+') token.remove_prefix(1);  // from_chars refuses '+'
+      const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+      if (error != std::errc() || end != token.data() + token.size()) {
+        fail(fmt::format("array {} value {} (\"{}\") is not a valid {} value", what, out.size(),
+                         excerpt(token), *typeName));
+      }
+      out.push_back(convertOne(value, out.size()));
+    };
+    for (const std::string_view part : array.text) {
+      for (std::size_t i = 0; i < part.size();) {
+        while (i < part.size() && isXmlSpace(part[i])) ++i;
+        const std::size_t begin = i;
+        while (i < part.size() && !isXmlSpace(part[i])) ++i;
+        if (begin == i) break;
+        const std::string_view token = part.substr(begin, i - begin);
+        if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
+          parse(token, double{});
+        } else if (*scalar == Scalar::UInt64) {
+          parse(token, std::uint64_t{});
+        } else {
+          parse(token, std::int64_t{});
+        }
+      }
+    }
+    checkCount(out.size(), tuples, expectedComponents, what);
+    return out;
+  }
+
+  std::vector<std::byte> decoded;
+  std::span<const std::byte> block;
+  if (*format == "binary") {
+    block = inlineBlock(array, what, decoded);
+  } else if (*format == "appended") {
+    block = appendedBlock(array, what, decoded);
+  } else {
+    fail(fmt::format("array {} has format \"{}\"; appended, binary and ascii are supported", what,
+                     excerpt(*format)));
+  }
+  const std::size_t elementBytes = scalarBytes(*scalar);
+  if (block.size() % elementBytes != 0) {
+    fail(fmt::format("array {} holds {} bytes, not a whole number of {} values", what, block.size(),
+                     *typeName));
+  }
+  checkCount(block.size() / elementBytes, tuples, expectedComponents, what);
+  std::vector<T> out(block.size() / elementBytes);
+  withType(*scalar, [&](auto type) {
+    using From = decltype(type);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      out[i] = convertOne(loadElement<From>(block.data() + i * sizeof(From), swapBytes_), i);
+    }
+  });
+  return out;
+}
+
+std::vector<float> VtkXmlFile::floats(const XmlElement& dataArray,
+                                      std::optional<std::uint64_t> tuples, int components,
+                                      const std::string& what) const {
+  return values<float>(dataArray, tuples, components, what);
+}
+
+std::vector<std::int64_t> VtkXmlFile::integers(const XmlElement& dataArray,
+                                               std::optional<std::uint64_t> tuples, int components,
+                                               const std::string& what) const {
+  return values<std::int64_t>(dataArray, tuples, components, what);
+}
+
+}  // namespace amrstream::output

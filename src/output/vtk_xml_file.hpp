@@ -1,0 +1,87 @@
+#pragma once
+// Reading side of VTK's XML file formats, independent of the dataset type: the <VTKFile>
+// header (xml_scan.hpp gives its element tree) and the values of its DataArrays. The
+// counterpart of vtk_xml_appended.hpp.
+//
+// DataArray formats read: format="appended" with <AppendedData encoding="raw"> or "base64",
+// format="binary" (inline base64) and format="ascii"; header_type UInt32 or UInt64; byte_order
+// LittleEndian or BigEndian; types Int8 .. UInt64, Float32 and Float64. Compressed files (the
+// VTKFile attribute compressor="...") are refused with a message saying how to write them.
+//
+// Every problem throws amrstream::InputError naming the file; nothing is read past the file's
+// end and no allocation is sized by an attribute before the data to fill it has been found.
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "output/xml_scan.hpp"
+
+namespace amrstream::output {
+
+// A whole VTK XML file held in memory (the raw appended blocks are read in place). Owns the bytes
+// that its elements' text views point into, so it is neither copied nor moved.
+class VtkXmlFile {
+ public:
+  // Reads and scans the file and checks the <VTKFile> attributes this reader depends on.
+  explicit VtkXmlFile(const std::filesystem::path& path);
+  VtkXmlFile(const VtkXmlFile&) = delete;
+  VtkXmlFile& operator=(const VtkXmlFile&) = delete;
+
+  const std::string& source() const { return source_; }
+  const XmlElement& root() const { return root_; }  // <VTKFile>
+  std::string datasetType() const;                  // the type attribute: "PolyData", ...
+
+  // Throws InputError(source(), problem).
+  [[noreturn]] void fail(const std::string& problem) const;
+
+  // An unsigned integer attribute of `element`; `fallback` when absent (throws when absent
+  // without fallback, or when not a decimal number).
+  std::uint64_t count(const XmlElement& element, std::string_view key,
+                      std::optional<std::uint64_t> fallback = std::nullopt) const;
+  // NumberOfComponents of a DataArray (1 when absent).
+  int components(const XmlElement& dataArray) const;
+
+  // The values of a DataArray converted to the result type, checked to hold `tuples` tuples of
+  // `components` values (any whole number of tuples when `tuples` is empty). `what` names the
+  // array in messages, e.g. "Points" or "Lines/offsets". Floats: Float64 values beyond the range
+  // of float become infinities. Integers: values must be whole and fit in int64.
+  std::vector<float> floats(const XmlElement& dataArray, std::optional<std::uint64_t> tuples,
+                            int components, const std::string& what) const;
+  std::vector<std::int64_t> integers(const XmlElement& dataArray,
+                                     std::optional<std::uint64_t> tuples, int components,
+                                     const std::string& what) const;
+
+ private:
+  struct Appended {
+    std::size_t base = 0;  // index of the byte after "_"; offsets count from here
+    bool base64 = false;   // encoding="base64" instead of "raw"
+  };
+
+  template <class T>
+  std::vector<T> values(const XmlElement& dataArray, std::optional<std::uint64_t> tuples,
+                        int expectedComponents, const std::string& what) const;
+  void checkCount(std::uint64_t values, std::optional<std::uint64_t> tuples, int components,
+                  const std::string& what) const;
+  // The payload of a format="binary" or format="appended" array; `decoded` holds it when it had
+  // to be decoded from base64.
+  std::span<const std::byte> inlineBlock(const XmlElement& dataArray, const std::string& what,
+                                         std::vector<std::byte>& decoded) const;
+  std::span<const std::byte> appendedBlock(const XmlElement& dataArray, const std::string& what,
+                                           std::vector<std::byte>& decoded) const;
+  // The byte count a block starts with.
+  std::uint64_t blockSize(const std::byte* header) const;
+
+  std::string source_;
+  std::string bytes_;
+  XmlElement root_;
+  std::optional<Appended> appended_;
+  bool swapBytes_ = false;       // the file's byte_order differs from this machine's
+  std::size_t headerBytes_ = 4;  // size of a block's byte count: header_type UInt32 or UInt64
+};
+
+}  // namespace amrstream::output

@@ -1,0 +1,253 @@
+#include "output/vtp_reader.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "output/vtk_xml_file.hpp"
+
+namespace amrstream::output {
+namespace {
+
+struct PieceCounts {
+  std::uint64_t points = 0;
+  std::uint64_t verts = 0;
+  std::uint64_t lines = 0;
+  std::uint64_t cells = 0;  // all four kinds; cell arrays hold one tuple per cell
+};
+
+const XmlElement& onlyPiece(const VtkXmlFile& file) {
+  if (file.datasetType() != "PolyData") {
+    file.fail(fmt::format("a VTK XML \"{}\" file, not PolyData (.vtp)", file.datasetType()));
+  }
+  const std::vector<const XmlElement*> polyData = file.root().childrenNamed("PolyData");
+  if (polyData.size() != 1) {
+    file.fail(fmt::format("<VTKFile> has {} <PolyData> elements, expected 1", polyData.size()));
+  }
+  const std::vector<const XmlElement*> pieces = polyData.front()->childrenNamed("Piece");
+  if (pieces.empty()) file.fail("<PolyData> has no <Piece>");
+  if (pieces.size() > 1) {
+    file.fail(
+        fmt::format("the file has {} pieces; only single-piece files are read (merge them "
+                    "first, e.g. with ParaView's Merge Blocks or vtkAppendPolyData)",
+                    pieces.size()));
+  }
+  return *pieces.front();
+}
+
+PieceCounts countsOf(const VtkXmlFile& file, const XmlElement& piece) {
+  PieceCounts counts;
+  counts.points = file.count(piece, "NumberOfPoints");
+  counts.verts = file.count(piece, "NumberOfVerts", 0);
+  counts.lines = file.count(piece, "NumberOfLines", 0);
+  const std::uint64_t strips = file.count(piece, "NumberOfStrips", 0);
+  const std::uint64_t polys = file.count(piece, "NumberOfPolys", 0);
+  // Each count is backed by data in the file, so real sums are far from overflowing; a sum that
+  // wraps can only come from a corrupt header.
+  counts.cells = counts.verts + counts.lines + strips + polys;
+  if (counts.cells < counts.lines) file.fail("<Piece> cell counts overflow");
+  return counts;
+}
+
+// The point array that becomes TraceSet::vectors, or nullptr.
+const XmlElement* vectorArray(const VtkXmlFile& file, const XmlElement* pointData) {
+  if (pointData == nullptr) return nullptr;
+  if (const std::string* named = pointData->attribute("Vectors")) {
+    const XmlElement* array = pointData->dataArray(*named);
+    if (array == nullptr) {
+      file.fail(fmt::format("<PointData Vectors=\"{}\"> names no point array", *named));
+    }
+    return array;
+  }
+  for (const XmlElement* array : pointData->childrenNamed("DataArray")) {
+    const std::string* type = array->attribute("type");
+    if (array->attribute("Name") != nullptr && file.components(*array) == 3 && type != nullptr &&
+        (*type == "Float32" || *type == "Float64")) {
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+const XmlElement& linesArray(const VtkXmlFile& file, const XmlElement* lines, const char* name) {
+  const XmlElement* array = lines ? lines->dataArray(name) : nullptr;
+  if (array == nullptr) file.fail(fmt::format("<Lines> has no \"{}\" array", name));
+  return *array;
+}
+
+// Line i's point ids are connectivity[ends[i - 1] .. ends[i]) (ends[-1] = 0).
+struct Lines {
+  std::vector<std::int64_t> ends;
+  std::vector<std::int64_t> connectivity;
+};
+
+Lines readLines(const VtkXmlFile& file, const XmlElement& piece, const PieceCounts& counts) {
+  const XmlElement* lines = piece.child("Lines");
+  Lines out;
+  out.ends = file.integers(linesArray(file, lines, "offsets"), counts.lines, 1, "Lines/offsets");
+  std::int64_t previous = 0;
+  for (std::size_t i = 0; i < out.ends.size(); ++i) {
+    if (out.ends[i] < 0) file.fail(fmt::format("Lines/offsets[{}] is {}", i, out.ends[i]));
+    if (out.ends[i] < previous) {
+      file.fail(
+          fmt::format("Lines/offsets decrease at line {}: {} after {}", i, out.ends[i], previous));
+    }
+    previous = out.ends[i];
+  }
+  out.connectivity =
+      file.integers(linesArray(file, lines, "connectivity"), std::nullopt, 1, "Lines/connectivity");
+  if (static_cast<std::uint64_t>(previous) != out.connectivity.size()) {
+    file.fail(fmt::format("Lines/offsets end at {} but Lines/connectivity holds {} point ids",
+                          previous, out.connectivity.size()));
+  }
+  for (std::size_t i = 0; i < out.connectivity.size(); ++i) {
+    const std::int64_t id = out.connectivity[i];
+    if (id < 0 || static_cast<std::uint64_t>(id) >= counts.points) {
+      file.fail(
+          fmt::format("Lines/connectivity[{}] = {} is not a point id (the file has {} "
+                      "points)",
+                      i, id, counts.points));
+    }
+  }
+  return out;
+}
+
+std::vector<glm::vec3> readPositions(const VtkXmlFile& file, const XmlElement& piece,
+                                     std::uint64_t pointCount) {
+  if (pointCount == 0) return {};
+  const XmlElement* points = piece.child("Points");
+  const XmlElement* array = points ? points->child("DataArray") : nullptr;
+  if (array == nullptr) file.fail("<Points> has no DataArray");
+  const std::vector<float> xyz = file.floats(*array, pointCount, 3, "Points");
+  std::vector<glm::vec3> positions(xyz.size() / 3);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    positions[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) ||
+        !std::isfinite(positions[i].z)) {
+      file.fail(fmt::format("point {} has a non-finite position ({}, {}, {})", i, positions[i].x,
+                            positions[i].y, positions[i].z));
+    }
+  }
+  return positions;
+}
+
+std::vector<glm::vec3> readVectors(const VtkXmlFile& file, const XmlElement* array,
+                                   std::uint64_t pointCount, const std::string& name) {
+  if (array == nullptr) return {};
+  const std::vector<float> xyz = file.floats(*array, pointCount, 3, "PointData/" + name);
+  std::vector<glm::vec3> vectors(xyz.size() / 3);
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    vectors[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  }
+  return vectors;
+}
+
+// ReasonForTermination of each line: cell arrays list verts first, then lines.
+std::vector<std::int32_t> readReasons(const VtkXmlFile& file, const XmlElement& piece,
+                                      const PieceCounts& counts) {
+  const XmlElement* cellData = piece.child("CellData");
+  const XmlElement* array = cellData ? cellData->dataArray("ReasonForTermination") : nullptr;
+  std::vector<std::int32_t> reasons(static_cast<std::size_t>(counts.lines), 0);
+  if (array == nullptr) return reasons;
+  const std::vector<std::int64_t> all =
+      file.integers(*array, counts.cells, 1, "CellData/ReasonForTermination");
+  for (std::size_t i = 0; i < reasons.size(); ++i) {
+    const std::int64_t reason = all[static_cast<std::size_t>(counts.verts) + i];
+    if (!std::in_range<std::int32_t>(reason)) {
+      file.fail(fmt::format("ReasonForTermination of line {} is {}, not an Int32", i, reason));
+    }
+    reasons[i] = static_cast<std::int32_t>(reason);
+  }
+  return reasons;
+}
+
+// The writer stores a trace that ends at its seed as a 2-point line repeating the point (see
+// vtp_writer.hpp): such a line is one point.
+std::uint32_t storedPoints(std::int64_t begin, std::int64_t end, const Lines& lines,
+                           const std::vector<glm::vec3>& positions,
+                           const std::vector<float>& times) {
+  const std::int64_t count = end - begin;
+  if (count != 2) return static_cast<std::uint32_t>(count);
+  const auto a = static_cast<std::size_t>(lines.connectivity[static_cast<std::size_t>(begin)]);
+  const auto b = static_cast<std::size_t>(lines.connectivity[static_cast<std::size_t>(begin) + 1]);
+  const bool sameTime = times.empty() || times[a] == times[b];
+  return positions[a] == positions[b] && sameTime ? 1 : 2;
+}
+
+// Like the trace command's check of --count and --steps: the TraceSet must fit in 3/4 of memory.
+void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t lines, std::uint64_t capacity) {
+  const double bytes = double(lines) * double(capacity) * double(flow::TraceSet::kBytesPerPoint);
+  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (lines > std::numeric_limits<std::uint32_t>::max() ||
+      capacity > std::numeric_limits<std::uint32_t>::max() ||
+      (memory > 0 && bytes > 0.75 * memory)) {
+    file.fail(
+        fmt::format("{} lines padded to the longest ({} points) need {:.1f} GiB, more than "
+                    "3/4 of this machine's {:.1f} GiB; split the file or shorten its "
+                    "longest lines",
+                    lines, capacity, bytes / 0x1p30, memory / 0x1p30));
+  }
+}
+
+}  // namespace
+
+flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
+  const VtkXmlFile file(path);
+  const XmlElement& piece = onlyPiece(file);
+  const PieceCounts counts = countsOf(file, piece);
+  const XmlElement* pointData = piece.child("PointData");
+  const XmlElement* vectorsArray = vectorArray(file, pointData);
+
+  flow::TraceSet traces;
+  if (vectorsArray != nullptr) traces.vectorName = *vectorsArray->attribute("Name");
+  if (counts.lines == 0) return traces;
+
+  const Lines lines = readLines(file, piece, counts);
+  const std::vector<glm::vec3> positions = readPositions(file, piece, counts.points);
+  const XmlElement* timeArray = pointData ? pointData->dataArray("IntegrationTime") : nullptr;
+  const std::vector<float> times =
+      timeArray ? file.floats(*timeArray, counts.points, 1, "PointData/IntegrationTime")
+                : std::vector<float>();
+  const std::vector<glm::vec3> vectors =
+      readVectors(file, vectorsArray, counts.points, traces.vectorName);
+  const std::vector<std::int32_t> reasons = readReasons(file, piece, counts);
+
+  std::vector<std::uint32_t> pointCounts(lines.ends.size());
+  std::uint64_t capacity = 0;
+  for (std::size_t line = 0; line < lines.ends.size(); ++line) {
+    const std::int64_t begin = line == 0 ? 0 : lines.ends[line - 1];
+    if (lines.ends[line] - begin > std::numeric_limits<std::uint32_t>::max()) {
+      file.fail(fmt::format("line {} has {} points, more than a trace can hold", line,
+                            lines.ends[line] - begin));
+    }
+    pointCounts[line] = storedPoints(begin, lines.ends[line], lines, positions, times);
+    capacity = std::max<std::uint64_t>(capacity, pointCounts[line]);
+  }
+  checkFitsInMemory(file, counts.lines, capacity);
+
+  traces.resize(static_cast<std::uint32_t>(counts.lines), static_cast<std::uint32_t>(capacity));
+  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
+    const auto begin = static_cast<std::size_t>(seed == 0 ? 0 : lines.ends[seed - 1]);
+    for (std::uint32_t p = 0; p < pointCounts[seed]; ++p) {
+      const auto id = static_cast<std::size_t>(lines.connectivity[begin + p]);
+      const std::size_t to = traces.at(seed, p);
+      traces.positions[to] = positions[id];
+      if (!times.empty()) traces.times[to] = times[id];
+      if (!vectors.empty()) traces.vectors[to] = vectors[id];
+    }
+    traces.pointCounts[seed] = pointCounts[seed];
+    traces.steps[seed] = pointCounts[seed] == 0 ? 0 : pointCounts[seed] - 1;
+    traces.reasons[seed] = reasons[seed];
+  }
+  return traces;
+}
+
+}  // namespace amrstream::output
