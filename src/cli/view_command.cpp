@@ -32,13 +32,14 @@ void runView(const ViewOptions& o) {
   if (o.job.backend.backend == "cpu")
     throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
                                   "pipeline or compute");
+  // The window first: without a display, say so before loading anything.
+  app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   PreparedInput input = prepareInput(o.job);
   checkHistoryFitsInMemory(input.seeds.points.size(), o.job.steps + 1);
   const BackendChoice choice = chooseBackend(o.job.backend);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
 
-  app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   vk::ContextBuilder builder;
   builder.require(gpu::requiredCapabilities(choice.backend))
       .validation(o.job.backend.validation)

@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 
 using amrstream::testing::Outcome;
 
-Outcome run(const std::string& arguments) { return amrstream::testing::runAmrstream(arguments); }
+Outcome run(const std::string& arguments, const std::string& environment = "") {
+  return amrstream::testing::runAmrstream(arguments, environment);
+}
 
 class Cli : public amrstream::testing::TempDirTest {
  protected:
@@ -158,6 +160,15 @@ TEST_F(Cli, InfoAndTraceReadEveryRealDataset) {
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_THAT(r.output, HasSubstr("seeds      32"));
   }
+}
+
+// Without a display the viewer fails at once, saying what to do, before loading the input.
+TEST_F(Cli, ViewWithoutADisplaySaysWhatToDo) {
+  const auto r = run("view builtin:cloud", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("cannot open a window: no display"));
+  EXPECT_THAT(r.output, HasSubstr("xvfb-run"));
+  EXPECT_THAT(r.output, Not(HasSubstr("structure ")));
 }
 
 }  // namespace
