@@ -77,6 +77,7 @@ nlohmann::json toJson(const BenchConfig& c) {
           {"step_mode", stepMode},
           {"step_size", c.trace.stepSize},
           {"region_hint", c.regionHint ? nlohmann::json(*c.regionHint) : nlohmann::json("default")},
+          {"seed_order", c.spatialSeedOrder ? "spatial" : "given"},
           {"validation", c.validation}};
 }
 

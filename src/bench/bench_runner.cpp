@@ -125,6 +125,7 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   gpu::KernelSettings settings = gpu::defaultKernelSettings(backend);
   if (config.regionHint) settings.useRegionHint = *config.regionHint;
   gpu::GpuTracer tracer(*ctx, backend, volume, settings);
+  tracer.orderSeedsSpatially(config.spatialSeedOrder);
   setup.regionHint = settings.useRegionHint;
   setup.uploadSeconds = tracer.setup().uploadSeconds;
   setup.structureSeconds = tracer.setup().structureSeconds;

@@ -21,6 +21,7 @@ struct BenchConfig {
   flow::TraceOptions trace;              // keepHistory is set per row
   std::optional<bool> regionHint;        // GPU kernels test the previous region first; none:
                                          // each backend's default (gpu::defaultKernelSettings)
+  bool spatialSeedOrder = true;          // GPU threads take seeds in Morton order (GpuTracer)
   std::string deviceFilter;              // a substring of the Vulkan device's name
   bool validation = false;
 };

@@ -38,6 +38,7 @@ struct BenchCommandOptions {
   std::uint64_t seed = 1;
   std::string device;
   std::string regionHint = "default";
+  std::string seedOrder = "spatial";
   std::string json = "bench.json";
   std::string commandLine;
 };
@@ -102,6 +103,7 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.maxSteps = o.steps;
   config.deviceFilter = o.device;
   if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
+  config.spatialSeedOrder = o.seedOrder == "spatial";
   config.validation = validationRequested();
   return config;
 }
@@ -140,7 +142,9 @@ void runBench(const BenchCommandOptions& o) {
   fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]\n",
              withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions),
              data.regionsSeconds, data.gatherSeconds);
-  fmt::print("seeds      {} from {}\n", withCommas(seeds.points.size()), data.seeding);
+  fmt::print("seeds      {} from {}; GPU threads take them in {} order\n",
+             withCommas(seeds.points.size()), data.seeding,
+             report.config.spatialSeedOrder ? "Morton (spatial)" : "the given");
   fmt::print("stepping   mode {}, h = {:g}, at most {} steps; best of {}\n", o.stepMode,
              report.config.trace.stepSize, o.steps, report.config.repeats);
   fmt::print("host       {}\n\n", report.host);
@@ -232,6 +236,12 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
                    "but off for pipeline)")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "on", "off"}));
+  command
+      ->add_option("--seed-order", options->seedOrder,
+                   "spatial: GPU threads take seeds in Morton order of their positions; given: "
+                   "in the order drawn")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"spatial", "given"}));
   command->add_option("--json", options->json, "where to write the results")
       ->capture_default_str();
   command->callback([options] { runBench(*options); });

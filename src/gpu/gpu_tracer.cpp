@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <limits>
+#include <numeric>
+#include <utility>
 #include <stdexcept>
 
 #include "vk/buffer_transfer.hpp"
@@ -27,6 +31,37 @@ std::vector<VkAabbPositionsKHR> regionBoxes(const bricks::RegionSet& regions) {
     boxes[i] = {r.lower.x, r.lower.y, r.lower.z, r.upper.x, r.upper.y, r.upper.z};
   }
   return boxes;
+}
+
+// Interleaves the low 10 bits of x with two zero bits after each.
+std::uint32_t spreadBits(std::uint32_t x) {
+  x &= 0x3ff;
+  x = (x | (x << 16)) & 0x030000ff;
+  x = (x | (x << 8)) & 0x0300f00f;
+  x = (x | (x << 4)) & 0x030c30c3;
+  x = (x | (x << 2)) & 0x09249249;
+  return x;
+}
+
+// The seeds' indices sorted by the Morton code of their positions on a 1024^3 grid over their
+// bounding box.
+std::vector<std::uint32_t> mortonOrder(std::span<const glm::vec3> points) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const glm::vec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 scale = 1023.0f / glm::max(hi - lo, glm::vec3(1e-20f));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    const glm::uvec3 q(glm::clamp((points[i] - lo) * scale, glm::vec3(0.0f), glm::vec3(1023.0f)));
+    keyed[i] = {spreadBits(q.x) | (spreadBits(q.y) << 1) | (spreadBits(q.z) << 2),
+                static_cast<std::uint32_t>(i)};
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  return order;
 }
 
 VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
@@ -213,6 +248,15 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   std::vector<glm::vec3> seedCells(seeds.size());
   for (std::size_t i = 0; i < seeds.size(); ++i)
     seedCells[i] = glm::vec3(volume_->transform.toCellUnits(seeds[i]));
+  // Thread k traces seed order[k].
+  std::vector<std::uint32_t> order(seeds.size());
+  std::iota(order.begin(), order.end(), 0u);
+  if (spatialOrder_) {
+    order = mortonOrder(seedCells);
+    std::vector<glm::vec3> sorted(seeds.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = seedCells[order[k]];
+    seedCells = std::move(sorted);
+  }
   const Outputs outputs = makeOutputs(seeds.size(), params.capacity);
   const std::optional<double> kernelSeconds = dispatch(kernel_, params, seedCells, outputs);
   lastRun_.kernelSeconds =
@@ -227,7 +271,7 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
                                                        outputs.pointCounts.size() +
                                                        outputs.reasons.size());
 
-  // Kernels write point-major (point k of seed s at k * seeds + s) in cell units; reorder and
+  // Kernels write point-major (point p of thread k at p * seeds + k) in cell units; reorder and
   // convert in double precision like the CPU path.
   const auto cellPositions = vk::readBackAs<glm::vec3>(ctx, outputs.positions);
   const auto chunkTimes = vk::readBackAs<float>(ctx, outputs.times);
@@ -235,13 +279,13 @@ void GpuTracer::traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceO
   const auto chunkCounts = vk::readBackAs<std::uint32_t>(ctx, outputs.pointCounts);
   const auto chunkReasons = vk::readBackAs<std::int32_t>(ctx, outputs.reasons);
   const glm::dvec3 origin = volume_->transform.origin, spacing = volume_->transform.spacing;
-  tbb::parallel_for(std::size_t(0), seeds.size(), [&](std::size_t s) {
-    const std::uint32_t seed = firstSeed + static_cast<std::uint32_t>(s);
-    out.steps[seed] = chunkCounts[s] - 1;
-    out.pointCounts[seed] = params.keepHistory ? chunkCounts[s] : 1;
-    out.reasons[seed] = chunkReasons[s];
+  tbb::parallel_for(std::size_t(0), seeds.size(), [&](std::size_t k) {
+    const std::uint32_t seed = firstSeed + order[k];
+    out.steps[seed] = chunkCounts[k] - 1;
+    out.pointCounts[seed] = params.keepHistory ? chunkCounts[k] : 1;
+    out.reasons[seed] = chunkReasons[k];
     for (std::uint32_t p = 0; p < out.pointCounts[seed]; ++p) {
-      const std::size_t from = p * seeds.size() + s, to = out.at(seed, p);
+      const std::size_t from = p * seeds.size() + k, to = out.at(seed, p);
       out.positions[to] = glm::vec3(origin + spacing * glm::dvec3(cellPositions[from]));
       out.times[to] = chunkTimes[from];
       out.vectors[to] = chunkVectors[from];

@@ -65,6 +65,10 @@ class GpuTracer {
   std::size_t seedsPerChunk(std::uint32_t capacity) const;
   // Caps the seeds per dispatch (0: no cap), so that tests can run many chunks on small inputs.
   void limitSeedsPerChunk(std::size_t limit) { chunkLimit_ = limit; }
+  // On (the default), each dispatch hands seeds to threads in Morton order of their positions,
+  // so that a subgroup traces neighbouring seeds through the same bricks; results are returned
+  // in the caller's order either way.
+  void orderSeedsSpatially(bool on) { spatialOrder_ = on; }
 
  private:
   // Output buffers of one dispatch, in binding order (positions, times, vectors, point counts,
@@ -92,6 +96,7 @@ class GpuTracer {
   std::optional<TraceKernel> probe_;  // created by the first locate()
   vk::GpuTimer timer_;
   std::size_t chunkLimit_ = 0;
+  bool spatialOrder_ = true;
   TracerSetup setup_;
   TraceRunStats lastRun_;
 };
