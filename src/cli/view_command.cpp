@@ -60,7 +60,11 @@ void runView(const ViewOptions& o) {
     window.pollEvents();
     imgui.newFrame();
     const app::InputFrame input = imgui.uncaptured(window.takeInput());
-    PanelRequests requests = showPanel ? drawViewPanel(session, stats) : PanelRequests{};
+    PanelRequests requests;
+    if (showPanel)
+      requests = drawViewPanel(session, stats);
+    else
+      drawLegendOverlay(session.scene());
     for (const app::KeyPress& key : input.keyPresses) {
       if (key.key == GLFW_KEY_S) requests.screenshot = true;
       if (key.key == GLFW_KEY_E) requests.exportTraces = true;

@@ -141,6 +141,19 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
   return requests;
 }
 
+void drawLegendOverlay(const RenderScene& scene) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 8.0f, display.y - 8.0f), ImGuiCond_Always,
+                          ImVec2(1.0f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(220.0f, 0.45f * display.x), 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  ImGui::Begin("legend", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  drawColourLegend(scene);
+  ImGui::End();
+}
+
 void moveCamera(render::OrbitCamera& camera, const app::InputFrame& input, float viewHeight) {
   const glm::dvec2 d = input.cursorDelta;
   if (input.down(app::MouseButton::Left))
