@@ -232,8 +232,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--region-hint", options->regionHint,
                    "GPU samples test the previous sample's region before locating: on, off "
-                   "(every sample runs the point location) or each backend's default (on, "
-                   "but off for pipeline)")
+                   "(every sample runs the point location) or each backend's default (on)")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "on", "off"}));
   command

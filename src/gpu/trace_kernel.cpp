@@ -78,9 +78,7 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
 
 }  // namespace
 
-KernelSettings defaultKernelSettings(Backend backend) {
-  return {.useRegionHint = backend != Backend::Pipeline};
-}
+KernelSettings defaultKernelSettings(Backend) { return {.useRegionHint = true}; }
 
 TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program,
                               const KernelSettings& settings) {

@@ -45,9 +45,7 @@ struct KernelSettings {
   bool useRegionHint = true;
 };
 
-// The settings each backend runs with unless told otherwise. The pipeline backend locates every
-// sample: with the hint, NVIDIA's driver 580 ended traces early (as out of domain) where lavapipe
-// and the CPU did not (docs/benchmarks.md).
+// The settings each backend runs with unless told otherwise: the region hint on everywhere.
 KernelSettings defaultKernelSettings(Backend backend);
 
 // Throws std::invalid_argument for Backend::Cpu.

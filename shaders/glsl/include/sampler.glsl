@@ -38,13 +38,24 @@ Region cachedRegion;
 VectorSample sampleVector(vec3 p) {
   VectorSample s = VectorSample(false, false, vec3(0.0), 0.0);
   if (!insideDomain(p)) return s;
-  if (!kUseRegionHint || cachedRegionId < 0 || any(lessThan(p, cachedRegion.lower)) ||
-      any(greaterThanEqual(p, cachedRegion.upper))) {
+  const bool hinted = kUseRegionHint && cachedRegionId >= 0 &&
+                      all(greaterThanEqual(p, cachedRegion.lower)) &&
+                      all(lessThan(p, cachedRegion.upper));
+#ifdef AMRSTREAM_LOCATE_EVERY_SAMPLE  // the pipeline backend: see locate_pipeline.glsl
+  const int located = locateInRegionsMasked(p, hinted ? 0x00u : 0xFFu);
+  if (!hinted) {
+    if (located < 0) return s;
+    cachedRegionId = located;
+    cachedRegion = regions[located];
+  }
+#else
+  if (!hinted) {
     const int regionId = locateInRegions(p);
     if (regionId < 0) return s;
     cachedRegionId = regionId;
     cachedRegion = regions[regionId];
   }
+#endif
   const Region region = cachedRegion;
   s.located = true;
   s.cellWidth = region.finestCellWidth;
