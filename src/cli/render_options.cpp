@@ -62,10 +62,15 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
                    "map the volume's scalar linearly instead of its log10");
 }
 
+void setTubeRadius(render::RenderSettings& settings, float radius) {
+  settings.tubeRadius = radius;
+  settings.aoDistance = 8.0f * radius;  // occluders within a few tube widths
+}
+
 void updateTubes(RenderScene& scene, const RenderOptions& o, const PreparedInput& input,
                  const flow::TraceSet& traces) {
   const render::ColourField colour =
-      render::colourFieldOf(traces, o.colourBy, input.field, input.volume);
+      render::colourFieldOf(traces, o.colourBy, input.field, input.volume, scene.colourChannel);
   scene.segments = render::buildTubeSegments(traces, colour, input.volume.transform);
   scene.settings.colourRange =
       o.range.empty() ? render::rangeOf(colour.values) : parseRange(o.range, "--range");
@@ -82,11 +87,10 @@ RenderScene prepareScene(const RenderOptions& o, const PreparedInput& input,
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
 
   render::RenderSettings& s = scene.settings;
-  s.tubeRadius = o.tubeRadius.value_or(defaultTubeRadius(input.volume));
+  setTubeRadius(s, o.tubeRadius.value_or(defaultTubeRadius(input.volume)));
   if (!(s.tubeRadius > 0.0f)) throw InputError("--tube-radius", "must be positive");
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
-  s.aoDistance = 8.0f * s.tubeRadius;
   updateTubes(scene, o, input, traces);
 
   if (!o.volume.empty()) {

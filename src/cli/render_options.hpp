@@ -40,8 +40,12 @@ struct RenderScene {
   render::ColourMap colourMap = render::ColourMap::Viridis;
   std::string colourLabel;
   std::vector<float> contextScalars;  // brick-ordered; empty without --volume
+  render::ChannelValues colourChannel;  // the --colour-by channel, when it is one
   render::OrbitCamera camera;
 };
+
+// Sets the tube radius and what depends on it (the ambient-occlusion ray length).
+void setTubeRadius(render::RenderSettings& settings, float radius);
 
 // Throws InputError for a bad colour map, colour field, volume channel, range or camera.
 RenderScene prepareScene(const RenderOptions& o, const PreparedInput& input,

@@ -1,7 +1,6 @@
 #include "trace_job.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <map>
 
@@ -10,6 +9,7 @@
 #include "formats/load_input.hpp"
 #include "progress.hpp"
 #include "trace_settings.hpp"
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -91,8 +91,8 @@ flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& fie
 void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
   const double bytes =
       double(seeds) * double(pointsPerTrace) * double(flow::TraceSet::kBytesPerPoint);
-  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  if (bytes > 0.75 * memory)
+  const double memory = physicalMemoryBytes();
+  if (memory > 0 && bytes > kTraceMemoryShare * memory)
     throw InputError("--count/--steps",
                      fmt::format("{} seeds x {} points need {:.1f} GiB for the traces, more than "
                                  "3/4 of this machine's {:.1f} GiB; lower --count or --steps, or "

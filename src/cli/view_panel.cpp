@@ -108,8 +108,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     if (ImGui::BeginCombo("colour map", std::string(render::colourMapName(scene.colourMap)).c_str())) {
       for (const render::ColourMap m : maps)
         if (ImGui::Selectable(std::string(render::colourMapName(m)).c_str(), m == scene.colourMap)) {
-          scene.colourMap = m;
-          session.rebuildTubes();
+          session.setColourMap(m);
         }
       ImGui::EndCombo();
     }
@@ -117,8 +116,8 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     float radius = scene.settings.tubeRadius;
     if (ImGui::SliderFloat("tube radius", &radius, 0.05f, 20.0f, "%.2f cells",
                            ImGuiSliderFlags_Logarithmic)) {
-      o.look.tubeRadius = scene.settings.tubeRadius = radius;
-      scene.settings.aoDistance = 8.0f * radius;
+      o.look.tubeRadius = radius;
+      setTubeRadius(scene.settings, radius);
       session.rebuildTubes();
     }
     ImGui::Checkbox("ambient occlusion", &scene.settings.ambientOcclusion);

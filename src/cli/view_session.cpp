@@ -14,7 +14,7 @@ ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu
   traces_.emplace(input_.seeds.points, input_.options, input_.volume.vectorName);
   scene_ = prepareScene(options_.look, input_, traces_->traces());
   renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
-  renderer_->setColourMap(render::colourMapTable(scene_.colourMap));
+  setColourMap(scene_.colourMap);
   rebuildTubes();
 }
 
@@ -22,7 +22,11 @@ void ViewSession::rebuildTubes() {
   updateTubes(scene_, options_.look, input_, traces_->traces());
   vkQueueWaitIdle(ctx_->queue());
   renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
-  renderer_->setColourMap(render::colourMapTable(scene_.colourMap));
+}
+
+void ViewSession::setColourMap(render::ColourMap map) {
+  scene_.colourMap = map;
+  renderer_->setColourMap(render::colourMapTable(map));
 }
 
 void ViewSession::restartTraces() {
@@ -39,6 +43,7 @@ void ViewSession::reloadVolume() {
   scene_.camera = camera;
   vkQueueWaitIdle(ctx_->queue());
   renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume, scene_.contextScalars);
+  setColourMap(scene_.colourMap);
   rebuildTubes();
 }
 

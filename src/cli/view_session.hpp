@@ -36,6 +36,7 @@ class ViewSession {
   void restartTraces();
   // Rebuilds the tubes from the traces as they are (after a colour or radius change).
   void rebuildTubes();
+  void setColourMap(render::ColourMap map);
   // Reloads the context volume for options().look.volume (empty: none).
   void reloadVolume();
 

@@ -12,7 +12,7 @@
 namespace amrstream::flow {
 
 // A sample whose weights sum to no more than this is invalid.
-inline constexpr float kMinWeightSum = 1e-20f;
+inline constexpr float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
 struct VectorSample {
   bool located = false;  // p is inside the domain and in a region

@@ -1,7 +1,6 @@
 #include "output/vtp_reader.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "output/vtk_xml_file.hpp"
+#include "util/host_memory.hpp"
 
 namespace amrstream::output {
 namespace {
@@ -185,10 +185,10 @@ std::uint32_t storedPoints(std::int64_t begin, std::int64_t end, const Lines& li
 // Like the trace command's check of --count and --steps: the TraceSet must fit in 3/4 of memory.
 void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t lines, std::uint64_t capacity) {
   const double bytes = double(lines) * double(capacity) * double(flow::TraceSet::kBytesPerPoint);
-  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  const double memory = physicalMemoryBytes();
   if (lines > std::numeric_limits<std::uint32_t>::max() ||
       capacity > std::numeric_limits<std::uint32_t>::max() ||
-      (memory > 0 && bytes > 0.75 * memory)) {
+      (memory > 0 && bytes > kTraceMemoryShare * memory)) {
     file.fail(
         fmt::format("{} lines padded to the longest ({} points) need {:.1f} GiB, more than "
                     "3/4 of this machine's {:.1f} GiB; split the file or shorten its "

@@ -12,7 +12,8 @@
 namespace amrstream::render {
 
 ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
-                          const bricks::AmrField& field, const flow::VectorVolume& volume) {
+                          const bricks::AmrField& field, const flow::VectorVolume& volume,
+                          ChannelValues& channel) {
   ColourField colour{name, std::vector<float>(traces.positions.size(), 0.0f)};
   if (name == "speed") {
     for (std::size_t i = 0; i < colour.values.size(); ++i)
@@ -28,7 +29,8 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
     for (const bricks::Channel& c : field.channels()) choices += ", " + c.name;
     throw InputError("--colour-by", fmt::format("no field '{}'; choose one of: {}", name, choices));
   }
-  const std::vector<float> scalars = flow::gatherScalar(field, volume, name);
+  if (channel.name != name) channel = {name, flow::gatherScalar(field, volume, name)};
+  const std::vector<float>& scalars = channel.values;
   tbb::parallel_for(std::uint32_t(0), traces.seedCount, [&](std::uint32_t seed) {
     flow::RegionCache cache;
     for (std::uint32_t p = 0; p < traces.pointCounts[seed]; ++p) {

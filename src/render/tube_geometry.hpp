@@ -21,10 +21,18 @@ struct ColourField {
   std::vector<float> values;  // one per stored trace point, indexed like TraceSet::positions
 };
 
+// A scalar channel in brick order (flow::gatherScalar), kept between calls of colourFieldOf so
+// that traces growing frame by frame do not gather it again.
+struct ChannelValues {
+  std::string name;
+  std::vector<float> values;
+};
+
 // Throws InputError listing the choices when `name` is neither speed, time nor a channel of
-// `field`.
+// `field`. A channel is gathered into `channel` unless it already holds it.
 ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
-                          const bricks::AmrField& field, const flow::VectorVolume& volume);
+                          const bricks::AmrField& field, const flow::VectorVolume& volume,
+                          ChannelValues& channel);
 
 struct ValueRange {
   float min = 0.0f;

@@ -81,6 +81,8 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
   regionBricks_ =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
   tree_ = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
+  params_ = vk::Buffer::upload(ctx, sizeof(shared::RenderParams),
+                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "render params");
 
   const std::array<VkDescriptorPoolSize, 3> sizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
@@ -119,12 +121,14 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
     scene_ = vk::buildAabbScene(*ctx_, segmentBoxes(segments, radius), "tubes");
   }
   frames_ = 0;
+  descriptorsStale_ = true;
 }
 
 void TubeRenderer::setColourMap(std::span<const glm::vec3> table) {
   if (table.size() < 2) throw std::invalid_argument("TubeRenderer: a colour map needs 2 entries");
   colourMap_ = vk::uploadToDeviceLocal(*ctx_, table, kStorage, "colour map");
   frames_ = 0;
+  descriptorsStale_ = true;
 }
 
 void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
@@ -139,12 +143,13 @@ void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
   width_ = width;
   height_ = height;
   frames_ = 0;
+  descriptorsStale_ = true;
 }
 
-void TubeRenderer::writeDescriptors(const vk::Buffer& params) {
+void TubeRenderer::writeDescriptors() {
   const vk::Buffer& structure = bvhNodes_.handle() != VK_NULL_HANDLE ? bvhNodes_ : tree_;
   const std::array<VkDescriptorBufferInfo, kRenderBindingCount> buffers{
-      whole(params),        whole(bricks_),    whole(scalars_),      whole(regions_),
+      whole(params_),       whole(bricks_),    whole(scalars_),      whole(regions_),
       whole(regionBricks_), whole(tree_),      whole(segments_),     whole(colourMap_),
       whole(accumulation_), whole(pixels_),    whole(structure)};
   std::array<VkWriteDescriptorSet, kRenderBindingCount> writes{};
@@ -169,6 +174,7 @@ void TubeRenderer::writeDescriptors(const vk::Buffer& params) {
     writes[kTubeStructureBinding].pNext = &sceneWrite;
   }
   vkUpdateDescriptorSets(ctx_->device(), kRenderBindingCount, writes.data(), 0, nullptr);
+  descriptorsStale_ = false;
 }
 
 void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& settings) {
@@ -183,10 +189,9 @@ void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& 
 
   const shared::RenderParams params =
       makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_);
-  vk::Buffer paramsBuffer = vk::Buffer::upload(*ctx_, sizeof(params),
-                                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "render params");
-  std::memcpy(paramsBuffer.mapped().data(), &params, sizeof(params));
-  writeDescriptors(paramsBuffer);
+  // The previous frame has completed (renderFrame waits), so the buffer is free to rewrite.
+  std::memcpy(params_.mapped().data(), &params, sizeof(params));
+  if (descriptorsStale_) writeDescriptors();
 
   vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, kernel_.bindPoint, kernel_.pipeline.get());

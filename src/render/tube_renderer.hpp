@@ -78,7 +78,8 @@ class TubeRenderer {
   Image readImage() const;
 
  private:
-  void writeDescriptors(const vk::Buffer& params);
+  // Points the descriptor set at the current buffers; after any of them was replaced.
+  void writeDescriptors();
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
@@ -92,8 +93,10 @@ class TubeRenderer {
   vk::Buffer colourMap_;
   vk::Buffer accumulation_, pixels_;
   std::uint32_t width_ = 0, height_ = 0;
+  vk::Buffer params_;  // host-visible, rewritten each frame
   vk::UniqueHandle<VkDescriptorPool> pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  bool descriptorsStale_ = true;
   vk::GpuTimer timer_;
   std::uint32_t frames_ = 0;
   std::optional<OrbitCamera> lastCamera_;

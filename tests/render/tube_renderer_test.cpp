@@ -118,7 +118,8 @@ TEST_P(TubeRendererTest, MatchesTheReferenceImage) {
   flow::TraceOptions options;
   options.maxSteps = 120;
   const flow::TraceSet traces = flow::traceStreamlines(volume, seeds.points, options);
-  const ColourField colour = colourFieldOf(traces, "speed", *field_, volume);
+  ChannelValues unused;
+  const ColourField colour = colourFieldOf(traces, "speed", *field_, volume, unused);
   const std::vector<float> speed = flow::gatherScalar(*field_, volume, "velx");
 
   TubeRenderer renderer(ctx(), GetParam(), volume, speed);

@@ -3,7 +3,7 @@
 // ambient occlusion, the result added to the pixel's running mean.
 // Needs render_buffers.glsl, locate_tree.glsl and one tubes_*.glsl included before it.
 
-const float kMinWeightSum = 1e-20;
+const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 const uint kMaxMarchSteps = 8192;
 
 #define TENT_TYPE float

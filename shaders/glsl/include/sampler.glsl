@@ -2,7 +2,7 @@
 // Needs: the buffers of amr_buffers.glsl, params, and `int locateInRegions(vec3 p)` from the
 // backend's locate_*.glsl, included before this file.
 
-const float kMinWeightSum = 1e-20;
+const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
 #define TENT_TYPE vec3
 #define TENT_VALUE(slot) values[slot]

@@ -36,6 +36,9 @@ struct RegionTreeNode {
   uint child;
 };
 
+// A sample whose tent weights sum to no more than this is invalid (no brick covers it).
+#define AMRSTREAM_MIN_WEIGHT_SUM 1e-20f
+
 #define AMRSTREAM_TREE_LEAF 3u
 #define AMRSTREAM_NO_REGION 0xffffffffu
 
