@@ -90,6 +90,8 @@ AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> lev
       channels_(std::move(channels)),
       transform_(transform),
       source_(std::move(source)) {
+  info_.levelsCountDown = false;
+  info_.levelName = "level (0 = finest)";
   validate();
 }
 

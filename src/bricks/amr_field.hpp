@@ -7,6 +7,10 @@
 // at least one cell; every cell aligned to its level's grid; no two cells overlap (no duplicates,
 // no cell inside a coarser one); every channel has one finite value per cell; channel names are
 // unique and non-empty.
+//
+// Beside the cells it carries what the input says about itself (DatasetInfo: time, units,
+// periodicity, the file's level numbers), set by the reader; until then it only numbers levels
+// as above.
 
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +19,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
+
+#include "dataset_info.hpp"
 
 namespace amrstream::bricks {
 
@@ -61,6 +68,9 @@ class AmrField {
   const WorldTransform& transform() const { return transform_; }
   const std::string& source() const { return source_; }
 
+  const DatasetInfo& info() const { return info_; }
+  void setInfo(DatasetInfo info) { info_ = std::move(info); }
+
   CellBox bounds() const { return bounds_; }  // bounding box of all cells
   int coarsestLevel() const;
   int finestLevel() const;
@@ -75,6 +85,7 @@ class AmrField {
   WorldTransform transform_;
   std::string source_;
   CellBox bounds_;
+  DatasetInfo info_;
 };
 
 }  // namespace amrstream::bricks
