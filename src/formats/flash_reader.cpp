@@ -13,198 +13,16 @@
 #include <utility>
 #include <vector>
 
+#include "flash_file.hpp"
+#include "flash_info.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
 
-// Owns an HDF5 identifier and closes it with the matching H5?close.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle() = default;
-  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
-  Handle(Handle&& other) noexcept { *this = std::move(other); }
-  Handle& operator=(Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = std::exchange(other.id_, H5I_INVALID_HID);
-      close_ = other.close_;
-    }
-    return *this;
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { reset(); }
-
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  void reset() {
-    if (id_ >= 0 && close_ != nullptr) close_(id_);
-    id_ = H5I_INVALID_HID;
-  }
-  hid_t id_ = H5I_INVALID_HID;
-  Closer close_ = nullptr;
-};
-
-template <typename T>
-struct Array {
-  std::vector<T> values;
-  std::vector<hsize_t> dims;
-};
-
-class FlashFile {
- public:
-  explicit FlashFile(const std::filesystem::path& path) : path_(path.string()) {
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("no such file");
-    if (H5Fis_hdf5(path_.c_str()) <= 0) fail("not an HDF5 file (or truncated)");
-    file_ = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    if (!file_.valid()) fail("cannot open the HDF5 file (truncated or corrupt?)");
-  }
-
-  [[noreturn]] void fail(const std::string& problem) const { throw InputError(path_, problem); }
-  [[noreturn]] void fail(const std::string& dataset, const std::string& problem) const {
-    throw InputError(path_, fmt::format("dataset '{}': {}", dataset, problem));
-  }
-
-  bool has(const std::string& name) const {
-    return H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0;
-  }
-
-  Handle open(const std::string& name, const std::string& why = "") const {
-    if (!has(name)) fail(name, "missing" + why);
-    Handle set(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
-    if (!set.valid()) fail(name, "cannot open");
-    return set;
-  }
-
-  std::vector<hsize_t> dims(const std::string& name, const Handle& set) const {
-    Handle space(H5Dget_space(set.get()), H5Sclose);
-    if (!space.valid()) fail(name, "cannot read the dataspace");
-    const int rank = H5Sget_simple_extent_ndims(space.get());
-    if (rank < 0) fail(name, "cannot read the dataspace");
-    std::vector<hsize_t> result(static_cast<std::size_t>(rank));
-    if (rank > 0 && H5Sget_simple_extent_dims(space.get(), result.data(), nullptr) < 0)
-      fail(name, "cannot read the dataspace");
-    return result;
-  }
-
-  H5T_class_t typeClass(const std::string& name, const Handle& set, std::size_t* size) const {
-    Handle type(H5Dget_type(set.get()), H5Tclose);
-    if (!type.valid()) fail(name, "cannot read the datatype");
-    if (size != nullptr) *size = H5Tget_size(type.get());
-    return H5Tget_class(type.get());
-  }
-
-  // Reads a numeric dataset, converted by HDF5 to T (int, float or double).
-  template <typename T>
-  Array<T> read(const std::string& name, const std::string& why = "") const {
-    Handle set = open(name, why);
-    Array<T> result{{}, dims(name, set)};
-    std::size_t size = 0;
-    const H5T_class_t cls = typeClass(name, set, &size);
-    hid_t memType;
-    if constexpr (std::is_same_v<T, int>) {
-      if (cls != H5T_INTEGER) fail(name, "expected an integer dataset");
-      memType = H5T_NATIVE_INT;
-    } else {
-      if (cls != H5T_FLOAT || (size != 4 && size != 8))
-        fail(name, fmt::format("expected float32 or float64 data, found class {} size {}",
-                               static_cast<int>(cls), size));
-      memType = std::is_same_v<T, float> ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
-    }
-    const hsize_t count =
-        std::accumulate(result.dims.begin(), result.dims.end(), hsize_t{1}, std::multiplies<>());
-    result.values.resize(count);
-    if (count > 0 &&
-        H5Dread(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, result.values.data()) < 0)
-      fail(name, "cannot read the data");
-    return result;
-  }
-
-  // Fixed-length strings, trimmed of blanks and NULs.
-  std::vector<std::string> readStrings(const std::string& name) const {
-    Handle set = open(name);
-    const auto shape = dims(name, set);
-    Handle fileType(H5Dget_type(set.get()), H5Tclose);
-    if (!fileType.valid() || H5Tget_class(fileType.get()) != H5T_STRING)
-      fail(name, "expected a string dataset");
-    if (H5Tis_variable_str(fileType.get()) > 0)
-      fail(name, "variable-length strings are not supported");
-    const std::size_t width = H5Tget_size(fileType.get());
-    const hsize_t count =
-        std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<>());
-    Handle memType(H5Tcopy(H5T_C_S1), H5Tclose);
-    if (!memType.valid() || H5Tset_size(memType.get(), width) < 0)
-      fail(name, "cannot build the string type");
-    std::vector<char> buffer(count * width + 1, '\0');
-    if (count > 0 &&
-        H5Dread(set.get(), memType.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0)
-      fail(name, "cannot read the data");
-    std::vector<std::string> result;
-    for (hsize_t i = 0; i < count; ++i) {
-      std::string s(buffer.data() + i * width, width);
-      s.erase(std::find(s.begin(), s.end(), '\0'), s.end());
-      const auto first = s.find_first_not_of(' ');
-      const auto last = s.find_last_not_of(' ');
-      result.push_back(first == std::string::npos ? "" : s.substr(first, last - first + 1));
-    }
-    return result;
-  }
-
-  // A {name, value} compound list such as `integer scalars`; empty when the dataset is absent.
-  std::vector<std::pair<std::string, int>> readIntPairs(const std::string& name) const {
-    if (!has(name)) return {};
-    Handle set = open(name);
-    const auto shape = dims(name, set);
-    Handle fileType(H5Dget_type(set.get()), H5Tclose);
-    if (!fileType.valid() || H5Tget_class(fileType.get()) != H5T_COMPOUND)
-      fail(name, "expected a compound dataset of name/value pairs");
-    const int nameIndex = H5Tget_member_index(fileType.get(), "name");
-    if (nameIndex < 0 || H5Tget_member_index(fileType.get(), "value") < 0)
-      fail(name, "expected compound members 'name' and 'value'");
-    Handle nameType(H5Tget_member_type(fileType.get(), static_cast<unsigned>(nameIndex)), H5Tclose);
-    if (!nameType.valid() || H5Tget_class(nameType.get()) != H5T_STRING ||
-        H5Tis_variable_str(nameType.get()) > 0)
-      fail(name, "member 'name' is not a fixed-length string");
-    const std::size_t width = H5Tget_size(nameType.get());
-    const hsize_t count =
-        std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<>());
-
-    Handle nameMem(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(nameMem.get(), width);
-    Handle namesOnly(H5Tcreate(H5T_COMPOUND, width), H5Tclose);
-    Handle valuesOnly(H5Tcreate(H5T_COMPOUND, sizeof(int)), H5Tclose);
-    if (!namesOnly.valid() || !valuesOnly.valid() ||
-        H5Tinsert(namesOnly.get(), "name", 0, nameMem.get()) < 0 ||
-        H5Tinsert(valuesOnly.get(), "value", 0, H5T_NATIVE_INT) < 0)
-      fail(name, "cannot build the compound type");
-    std::vector<char> names(count * width + 1, '\0');
-    std::vector<int> values(count);
-    if (count > 0 &&
-        (H5Dread(set.get(), namesOnly.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, names.data()) < 0 ||
-         H5Dread(set.get(), valuesOnly.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0))
-      fail(name, "cannot read the data");
-    std::vector<std::pair<std::string, int>> result;
-    for (hsize_t i = 0; i < count; ++i) {
-      std::string s(names.data() + i * width, width);
-      s.erase(std::find(s.begin(), s.end(), '\0'), s.end());
-      s.erase(s.find_last_not_of(' ') + 1);
-      result.emplace_back(s, values[i]);
-    }
-    return result;
-  }
-
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  Handle file_;
-};
+using flash::Array;
+using flash::FlashFile;
+using flash::Handle;
 
 std::string shapeText(const std::vector<hsize_t>& dims) {
   return fmt::format("[{}]", fmt::join(dims, ", "));
@@ -220,7 +38,7 @@ BlockShape readBlockShape(const FlashFile& file) {
   BlockShape shape;
   const char* keys[3] = {"nxb", "nyb", "nzb"};
   for (const char* list : {"integer runtime parameters", "integer scalars"}) {
-    for (const auto& [key, value] : file.readIntPairs(list)) {
+    for (const auto& [key, value] : file.readPairs<int>(list)) {
       for (int a = 0; a < 3; ++a)
         if (key == keys[a]) shape.n[a] = value;
       if (key == "dimensionality") shape.dimensionality = value;
@@ -396,8 +214,10 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
     channels.push_back(std::move(channel));
   }
 
-  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels),
-                          bricks::WorldTransform{domainLo, dxf}, path.string());
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
+                         bricks::WorldTransform{domainLo, dxf}, path.string());
+  field.setInfo(flash::readFlashInfo(file, rmax, axes));
+  return field;
 }
 
 }  // namespace amrstream::formats

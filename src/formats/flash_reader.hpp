@@ -10,6 +10,9 @@
 // (2^Lc finest cells, Lc = coarsest leaf level). Every level-L cell is stacked 2^(Lc - L) times
 // along z starting at z = 0, each copy carrying the same values; when all leaves share one level
 // this is one cube per cell. spacing.z = spacing.x.
+//
+// The field's DatasetInfo (time, units, periodicity, refine-level numbering) is read as
+// flash_info.hpp describes.
 
 #include <filesystem>
 
