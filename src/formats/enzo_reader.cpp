@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "enzo_info.hpp"
+#include "enzo_parameters.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -77,20 +80,9 @@ glm::vec<3, T> parse3(const std::string& value, const fs::path& file, const std:
   return v;
 }
 
-// `Key = value` lines of the parameter file.
-std::map<std::string, std::string> readKeyValues(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "cannot open the parameter file");
-  std::map<std::string, std::string> kv;
-  for (std::string line; std::getline(in, line);) {
-    const auto eq = line.find('=');
-    if (eq != std::string::npos) kv[trim(line.substr(0, eq))] = trim(line.substr(eq + 1));
-  }
-  return kv;
-}
-
-Domain readParameters(const fs::path& file) {
-  const auto kv = readKeyValues(file);
+Domain readParameters(const EnzoParameters& parameters) {
+  const auto& kv = parameters.values();
+  const fs::path& file = parameters.file();
   auto need = [&](const char* key) -> const std::string& {
     const auto it = kv.find(key);
     if (it == kv.end()) throw InputError(file.string(), fmt::format("missing {}", key));
@@ -379,8 +371,10 @@ bricks::AmrField readEnzo(const fs::path& file) {
   }
 
   Domain domain;
+  std::optional<EnzoParameters> parameters;
   if (fs::is_regular_file(sib.parameter, ec)) {
-    domain = readParameters(sib.parameter);
+    parameters.emplace(sib.parameter);
+    domain = readParameters(*parameters);
   } else {
     // Without the parameter file, the first grid is the root grid spanning the domain.
     domain.left = grids[0].left;
@@ -435,8 +429,10 @@ bricks::AmrField readEnzo(const fs::path& file) {
             channels[c].values.push_back(fields[c][index]);
         }
   }
-  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels),
-                          bricks::WorldTransform{domain.left, finestDx}, file.string());
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
+                         bricks::WorldTransform{domain.left, finestDx}, file.string());
+  field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
+  return field;
 }
 
 }  // namespace amrstream::formats

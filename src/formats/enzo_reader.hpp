@@ -6,7 +6,8 @@
 // of the hierarchy's BaryonFileName entries, looked up next to `file`. Enzo levels are 0 = root;
 // ours are 0 = finest (ourLevel = finestFileLevel - fileLevel). Cells of a grid covered by any
 // finer grid are dropped. Channels are the grid datasets with one value per active zone (every
-// non-`particle_*` dataset of the first grid), with their file names.
+// non-`particle_*` dataset of the first grid), with their file names. The field's DatasetInfo
+// (time, units, periodicity, Enzo level numbering) comes from the parameter file (enzo_info.hpp).
 
 #include <filesystem>
 
