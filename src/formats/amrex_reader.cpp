@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "amrex_info.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -144,6 +145,7 @@ std::string readText(const fs::path& path, const char* what) {
 
 struct PlotHeader {
   std::vector<std::string> names;
+  double time = 0.0;
   int finestLevel = 0;
   glm::dvec3 probLo{0.0}, probHi{0.0};
   std::vector<int> ratios;  // level L -> L+1
@@ -163,7 +165,7 @@ PlotHeader parseHeader(const fs::path& path) {
   for (int c = 0; c < ncomp; ++c) h.names.push_back(in.line("a variable name"));
   const int dim = in.smallInt("the dimension", 1, 3);
   if (dim != 3) in.fail(fmt::format("the plotfile is {}D; amrstream reads 3D plotfiles", dim));
-  in.real("(the time)");
+  h.time = in.real("(the time)");
   h.finestLevel = in.smallInt("finest_level", 0, bricks::kMaxLevel);
   const int levels = h.finestLevel + 1;
   for (int axis = 0; axis < 3; ++axis) h.probLo[axis] = in.real("in prob_lo");
@@ -437,8 +439,12 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
           }
     }
   }
-  return bricks::AmrField(std::move(lowers), std::move(ourLevels), std::move(channels), transform,
-                          directory.string());
+  bricks::AmrField field(std::move(lowers), std::move(ourLevels), std::move(channels), transform,
+                         directory.string());
+  std::vector<int> internalLevels;
+  for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
+  field.setInfo(readAmrexInfo(directory, h.time, internalLevels));
+  return field;
 }
 
 }  // namespace amrstream::formats

@@ -9,7 +9,8 @@
 // 0, a coarser one is log2(product of the ratios down to the finest). Coarse cells under a finer
 // level's boxes are dropped. Cell units count finest cells from the domain's lower corner, the
 // world origin is prob_lo and the spacing the finest cell size (prob_hi - prob_lo) / domain size.
-// Every plotfile variable becomes a float channel under its name.
+// Every plotfile variable becomes a float channel under its name. The field's DatasetInfo (time,
+// periodicity from job_info, AMReX level numbering) is read as amrex_info.hpp describes.
 
 #include <filesystem>
 
