@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "util/input_error.hpp"
@@ -24,6 +25,7 @@ constexpr double kLatticeTolerance = 0.01;  // of a cell size; the dump has 9 si
 struct Columns {
   std::vector<std::string> names;
   int x = -1, y = -1, z = -1, level = -1;
+  std::optional<double> time;  // the header's last number
 };
 
 std::vector<std::string_view> splitWords(std::string_view line) {
@@ -54,8 +56,10 @@ Columns parseHeader(const std::string& line, const std::string& where) {
   for (std::size_t w = 0; w < words.size(); ++w) {
     const std::string_view word = words[w];
     const std::size_t colon = word.find(':');
-    if (colon == std::string_view::npos && w + 1 == words.size() && parseNumber(word))
-      break;  // the time that ends the header
+    if (colon == std::string_view::npos && w + 1 == words.size() && parseNumber(word)) {
+      columns.time = parseNumber(word);  // the time that ends the header
+      break;
+    }
     if (colon == std::string_view::npos)
       throw InputError(where, fmt::format("garbled header column '{}' (expected N:NAME)", word));
     int number = 0;
@@ -175,8 +179,16 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
     lowers.emplace_back(corner);
     levels.push_back(static_cast<std::uint8_t>(finest - leaf.level));
   }
-  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels),
-                          {origin, glm::dvec3(finestSize)}, source);
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
+                         {origin, glm::dvec3(finestSize)}, source);
+  bricks::DatasetInfo info;
+  info.format = "Gerris";
+  info.time = columns.time;
+  info.finestFileLevel = finest;
+  info.levelsCountDown = true;
+  info.levelName = "Gerris level (cell size 2^-level of the root box)";
+  field.setInfo(std::move(info));
+  return field;
 }
 
 }  // namespace amrstream::formats

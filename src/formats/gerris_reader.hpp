@@ -7,6 +7,11 @@
 // 0 (our level = max Lev - Lev); cell units are finest cells counted from the lower corner of
 // the cells' bounding box, which is the world origin; spacing = 2^-maxLev. Every column except
 // x, y, z and Lev becomes a channel under its file name.
+//
+// DatasetInfo: the time is the header's last number (absent: unknown); Gerris levels count
+// down from the finest (internal level L is Lev = max Lev - L). Units and periodicity are unknown:
+// a text dump names neither (periodic boundaries, GfsBoundaryPeriodic, are only in the .gfs
+// simulation file, and Gerris is dimensionless unless that file scales it).
 
 #include <filesystem>
 
