@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -30,7 +34,11 @@ struct ExaConfig {
   std::filesystem::path cells;
   std::vector<std::pair<std::string, std::filesystem::path>> scalars;
   bricks::WorldTransform transform;
+  bricks::DatasetInfo info;
 };
+
+constexpr const char* kDirectives = "cells, scalar, bricks, origin, spacing, time, periodic, "
+                                    "length-unit or time-unit";
 
 glm::dvec3 readVector(std::istringstream& words, const std::string& where,
                       const std::string& what) {
@@ -38,6 +46,43 @@ glm::dvec3 readVector(std::istringstream& words, const std::string& where,
   if (!(words >> v.x >> v.y >> v.z))
     throw InputError(where, fmt::format("'{}' needs three numbers", what));
   return v;
+}
+
+double readTime(std::istringstream& words, const std::string& where) {
+  std::string word;
+  words >> word;
+  double time = 0.0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), time);
+  if (word.empty() || error != std::errc() || end != word.data() + word.size() ||
+      !std::isfinite(time))
+    throw InputError(where, fmt::format("'time' needs one finite number, got '{}'", word));
+  return time;
+}
+
+std::array<bool, 3> readPeriodic(std::istringstream& words, const std::string& where) {
+  std::vector<std::string> flags;
+  for (std::string word; words >> word;) flags.push_back(word);
+  std::array<bool, 3> periodic{};
+  const bool valid = flags.size() == 3 && std::ranges::all_of(flags, [](const std::string& f) {
+                       return f == "0" || f == "1";
+                     });
+  if (!valid)
+    throw InputError(where, fmt::format("'periodic' needs three flags 0 or 1 (x y z), got {} "
+                                        "value{}",
+                                        flags.size(), flags.size() == 1 ? "" : "s"));
+  for (int a = 0; a < 3; ++a) periodic[a] = flags[a] == "1";
+  return periodic;
+}
+
+// The rest of the line, trimmed: unit names may hold spaces.
+std::string readText(std::istringstream& words, const std::string& where,
+                     const std::string& keyword) {
+  std::string text;
+  std::getline(words, text);
+  text.erase(0, text.find_first_not_of(" \t\r"));
+  text.erase(text.find_last_not_of(" \t\r") + 1);
+  if (text.empty()) throw InputError(where, fmt::format("'{}' needs a text", keyword));
+  return text;
 }
 
 ExaConfig parseConfig(const std::filesystem::path& config) {
@@ -68,10 +113,18 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
       result.transform.spacing = readVector(words, where, keyword);
       if (glm::any(glm::lessThanEqual(result.transform.spacing, glm::dvec3(0.0))))
         throw InputError(where, "'spacing' must be positive");
+    } else if (keyword == "time") {
+      result.info.time = readTime(words, where);
+    } else if (keyword == "periodic") {
+      result.info.periodic = readPeriodic(words, where);
+      result.info.periodicKnown = true;
+    } else if (keyword == "length-unit") {
+      result.info.lengthUnit = readText(words, where, keyword);
+    } else if (keyword == "time-unit") {
+      result.info.timeUnit = readText(words, where, keyword);
     } else {
-      throw InputError(where, fmt::format("unknown directive '{}' (expected cells, scalar, "
-                                          "bricks, origin or spacing)",
-                                          keyword));
+      throw InputError(where,
+                       fmt::format("unknown directive '{}' (expected {})", keyword, kDirectives));
     }
     if (words >> name)
       throw InputError(where, fmt::format("unexpected '{}' after '{}'", name, keyword));
@@ -119,8 +172,15 @@ bricks::AmrField readExa(const std::filesystem::path& config) {
     std::memcpy(channel.values.data(), bytes.data(), bytes.size());
     channels.push_back(std::move(channel));
   }
-  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), exa.transform,
-                          config.string());
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), exa.transform,
+                         config.string());
+  bricks::DatasetInfo info = exa.info;
+  info.format = "ExaBricks";
+  info.finestFileLevel = 0;
+  info.levelsCountDown = false;
+  info.levelName = "ExaBricks level (0 = finest)";
+  field.setInfo(std::move(info));
+  return field;
 }
 
 namespace {
@@ -132,12 +192,34 @@ void writeBytes(const std::filesystem::path& path, const void* data, std::size_t
   if (!out.flush()) throw InputError(path.string(), "write failed (disk full?)");
 }
 
+// The `time`, `time-unit`, `length-unit` and `periodic` lines for what the field's info knows.
+std::string infoLines(const bricks::DatasetInfo& info, const std::filesystem::path& exaPath) {
+  std::string lines;
+  if (info.time) lines += fmt::format("time {:.17g}\n", *info.time);
+  for (const auto& [keyword, text] :
+       {std::pair{"time-unit", &info.timeUnit}, {"length-unit", &info.lengthUnit}}) {
+    if (text->empty()) continue;
+    if (text->find_first_of("#\r\n") != std::string::npos)
+      throw InputError(exaPath.string(),
+                       fmt::format("the {} '{}' holds '#' or a line break, which a .exa line "
+                                   "cannot hold",
+                                   keyword, *text));
+    lines += fmt::format("{} {}\n", keyword, *text);
+  }
+  if (info.periodicKnown)
+    lines += fmt::format("periodic {:d} {:d} {:d}\n", info.periodic[0], info.periodic[1],
+                         info.periodic[2]);
+  return lines;
+}
+
 }  // namespace
 
 std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesystem::path& prefix) {
   const std::string base = prefix.filename().string();
   const std::filesystem::path dir = prefix.parent_path();
   const auto file = [&](const std::string& suffix) { return base + suffix; };
+  const std::filesystem::path exaPath = dir / file(".exa");
+  const std::string info = infoLines(field.info(), exaPath);  // checked before writing anything
 
   std::vector<std::int32_t> cells(4 * field.cellCount());
   for (std::size_t i = 0; i < field.cellCount(); ++i) {
@@ -160,7 +242,7 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
   const bricks::WorldTransform& t = field.transform();
   config << fmt::format("origin {:.17g} {:.17g} {:.17g}\n", t.origin.x, t.origin.y, t.origin.z);
   config << fmt::format("spacing {:.17g} {:.17g} {:.17g}\n", t.spacing.x, t.spacing.y, t.spacing.z);
-  const std::filesystem::path exaPath = dir / file(".exa");
+  config << info;
   const std::string text = config.str();
   writeBytes(exaPath, text.data(), text.size());
   return exaPath;

@@ -8,6 +8,10 @@
 //               scalar NAME FILE      (one per channel)
 //               origin X Y Z          (our addition; physical position of cell-unit 0, default 0)
 //               spacing SX SY SZ      (our addition; physical size of a finest cell, default 1)
+//               time T                (our addition, optional; the snapshot's simulation time)
+//               periodic X Y Z        (our addition, optional; 0 or 1 per axis)
+//               length-unit TEXT      (our addition, optional; the unit of origin and spacing)
+//               time-unit TEXT        (our addition, optional; the unit of `time`)
 //             ExaBricks' own `bricks FILE` line (a prebuilt brick file) is accepted and ignored:
 //             amrstream builds its own bricks from the cells.
 
@@ -17,10 +21,14 @@
 
 namespace amrstream::formats {
 
-// Throws InputError naming the offending file and the problem (missing file, bad size, ...).
+// Throws InputError naming the offending file (and line) and the problem (missing file, bad size,
+// malformed directive, ...). The field's DatasetInfo holds the optional lines above and ExaBricks
+// level numbering (0 = finest).
 bricks::AmrField readExa(const std::filesystem::path& config);
 
-// Writes PREFIX.cells, PREFIX.NAME.scalars for every channel and PREFIX.exa; returns the .exa path.
+// Writes PREFIX.cells, PREFIX.NAME.scalars for every channel and PREFIX.exa, with the optional
+// lines for what the field's DatasetInfo knows; returns the .exa path. A unit text holding '#' or
+// a line break cannot be written and throws InputError naming the .exa before any file is written.
 std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesystem::path& prefix);
 
 }  // namespace amrstream::formats
