@@ -26,6 +26,8 @@ struct AbcField {
   static constexpr double kA = std::numbers::sqrt3;
   static constexpr double kB = std::numbers::sqrt2;
   static constexpr double kC = 1.0;
+  // Every component is 2 pi-periodic in X, Y and Z, and the unit cube maps to exactly one period.
+  static constexpr bool kPeriodic = true;
 
   static glm::dvec3 velocity(glm::dvec3 p) {
     const glm::dvec3 x = 2.0 * std::numbers::pi * p;

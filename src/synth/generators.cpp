@@ -26,11 +26,28 @@ BlockSampler velocitySampler(Velocity velocity) {
   };
 }
 
+// Steady flows on the unit cube in their own dimensionless units; the generator's levels count
+// from the root blocks (0) to the finest possible level (levels - 1).
+bricks::DatasetInfo builtinInfo(const GeneratorOptions& options, bool periodic) {
+  bricks::DatasetInfo info;
+  info.format = "builtin";
+  info.time = 0.0;
+  info.periodic = {periodic, periodic, periodic};
+  info.periodicKnown = true;
+  info.finestFileLevel = options.levels - 1;
+  info.levelsCountDown = true;
+  info.levelName = "builtin level (0 = coarsest)";
+  return info;
+}
+
 bricks::AmrField build(const GeneratorOptions& options, const std::string& source,
                        const RefinementPriority& priority, const std::vector<std::string>& channels,
-                       const BlockSampler& sampler) {
+                       const BlockSampler& sampler, bool periodic) {
   const std::vector<Block> leaves = refineBlocks(options, source, priority);
-  return emitCells(leaves, generatorTransform(options), channels, sampler, source);
+  bricks::AmrField field =
+      emitCells(leaves, generatorTransform(options), channels, sampler, source);
+  field.setInfo(builtinInfo(options, periodic));
+  return field;
 }
 
 }  // namespace
@@ -42,17 +59,18 @@ bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options
   const std::vector<std::string> velocity{"velx", "vely", "velz"};
   if (kind == "rotation")
     return build(options, source, RotationField::refinementPriority, velocity,
-                 velocitySampler(RotationField::velocity));
+                 velocitySampler(RotationField::velocity), false);
   if (kind == "abc")
     return build(options, source, AbcField::refinementPriority, velocity,
-                 velocitySampler(AbcField::velocity));
+                 velocitySampler(AbcField::velocity), AbcField::kPeriodic);
   if (kind == "cloud") {
     const CloudField cloud(options.seed);
     return build(
         options, source, [&](const BlockBox& box) { return cloud.refinementPriority(box); },
         {"dens", "magx", "magy", "magz"},
         [&](const BlockBox& box, std::span<const glm::dvec3> centres,
-            std::span<float* const> values) { cloud.sampleBlock(box, centres, values); });
+            std::span<float* const> values) { cloud.sampleBlock(box, centres, values); },
+        false);
   }
   throw InputError(source, fmt::format("unknown generator kind '{}' (kinds: {})", kind,
                                        fmt::join(generatorKinds(), ", ")));

@@ -24,6 +24,9 @@ struct GeneratorOptions {
 // Kinds: "rotation" (solid-body rotation about the z axis through the domain centre, channels
 // velx vely velz), "abc" (Arnold-Beltrami-Childress flow, velx vely velz), "cloud" (magnetised
 // filament cloud: dens, magx magy magz). Throws InputError naming the kind and listing the kinds.
+// DatasetInfo: format "builtin", time 0, units unknown (dimensionless), periodic on every axis for
+// abc (one full period over the unit cube) and on none for the others, levels numbered 0 = the
+// root blocks' (coarsest) level up to levels - 1.
 bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options);
 std::vector<std::string> generatorKinds();
 
