@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 
 namespace amrstream::formats::flash {
@@ -28,7 +29,7 @@ bricks::DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLev
   bricks::DatasetInfo info;
   info.format = "FLASH";
   for (const auto& [name, value] : file.readPairs<double>("real scalars"))
-    if (name == "time") info.time = value;
+    if (name == "time" && std::isfinite(value)) info.time = value;
 
   const auto parameters = stringParameters(file);
   const auto parameter = [&](const std::string& name) -> const std::string* {

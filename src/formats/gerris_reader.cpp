@@ -57,7 +57,7 @@ Columns parseHeader(const std::string& line, const std::string& where) {
     const std::string_view word = words[w];
     const std::size_t colon = word.find(':');
     if (colon == std::string_view::npos && w + 1 == words.size() && parseNumber(word)) {
-      columns.time = parseNumber(word);  // the time that ends the header
+      if (std::isfinite(*parseNumber(word))) columns.time = parseNumber(word);  // the header's end
       break;
     }
     if (colon == std::string_view::npos)

@@ -1,6 +1,6 @@
 // AMReX plotfiles: the real PeleLMeX plotfile and a synthetic two-level plotfile with known values
-// read back cell by cell, covered coarse cells dropped; damaged plotfiles are rejected naming the
-// file.
+// read back cell by cell, covered coarse cells dropped, with their time, level numbers and
+// periodicity (from job_info); damaged plotfiles are rejected naming the file.
 
 #include "formats/amrex_reader.hpp"
 
@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 
+#include "formats/amrex_info.hpp"
 #include "input_error_of.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
@@ -207,6 +208,84 @@ TEST_F(AmrexReader, RejectsComponentCountMismatch) {
   text.replace(text.find("1\n1\n2\n"), 6, "1\n1\n3\n");
   writeFile(cellH, text);
   EXPECT_THAT(errorOf(), ::testing::AllOf(HasSubstr(cellH.string()), HasSubstr("3 components")));
+}
+
+// ---- what the plotfile says about itself ----------------------------------------------------
+
+TEST_F(AmrexReader, TimeFromTheHeaderLevelsCountFromTheCoarsestPeriodicityUnknown) {
+  const bricks::AmrField field = readAmrexPlotfile(dir_);
+  const bricks::DatasetInfo& info = field.info();
+  EXPECT_EQ(info.format, "AMReX");
+  EXPECT_EQ(info.time, 0.5);  // the synthetic Header's time line
+  EXPECT_FALSE(info.periodicKnown);
+  EXPECT_EQ(info.lengthUnit, "");
+  EXPECT_EQ(info.timeUnit, "");
+  EXPECT_EQ(info.fileLevel(0), 1);  // the fine level
+  EXPECT_EQ(info.fileLevel(1), 0);
+  EXPECT_EQ(info.levelName, "AMReX level (0 = coarsest)");
+}
+
+TEST_F(AmrexReader, PeriodicAxesFromJobInfo) {
+  writeFile(dir_ / "job_info",
+            "==============================================================================\n"
+            " Inputs File Parameters\n"
+            "==============================================================================\n"
+            "amr.n_cell = 8 8 8\n"
+            "geometry.is_periodic = 1 0 1\n"
+            "geometry.coord_sys = 0\n");
+  const bricks::DatasetInfo info = readAmrexPlotfile(dir_).info();
+  EXPECT_TRUE(info.periodicKnown);
+  EXPECT_THAT(info.periodic, ::testing::ElementsAre(true, false, true));
+}
+
+TEST_F(AmrexReader, PeriodicAxesFromACodesOwnJobInfo) {
+  writeFile(dir_ / "PeleLMeX_job_info", "  geometry.is_periodic = 0 1 1\n");
+  const bricks::DatasetInfo info = readAmrexPlotfile(dir_).info();
+  EXPECT_TRUE(info.periodicKnown);
+  EXPECT_THAT(info.periodic, ::testing::ElementsAre(false, true, true));
+}
+
+TEST_F(AmrexReader, RejectsAMalformedPeriodicLineNamingJobInfoAndTheLine) {
+  writeFile(dir_ / "job_info", "amr.n_cell = 8 8 8\ngeometry.is_periodic = 1 0\n");
+  EXPECT_THAT(errorOf(), ::testing::AllOf(HasSubstr((dir_ / "job_info").string() + ":2"),
+                                          HasSubstr("geometry.is_periodic")));
+  writeFile(dir_ / "job_info", "geometry.is_periodic = 1 2 0\n");
+  EXPECT_THAT(errorOf(), HasSubstr((dir_ / "job_info").string() + ":1"));
+}
+
+TEST(AmrexInfo, RatiosOtherThanTwoNumberEachLevel) {
+  // Three levels with ratios 4 and 4: cell widths 16, 4 and 1 finest cells.
+  const bricks::DatasetInfo info = readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile",
+                                                 0.0, {4, 2, 0});
+  EXPECT_EQ(info.fileLevel(0), 2);
+  EXPECT_EQ(info.fileLevel(2), 1);
+  EXPECT_EQ(info.fileLevel(4), 0);
+  EXPECT_EQ(info.fileLevel(1), -1);
+}
+
+// Oracle: the Header read here: after the variable names and the dimension comes the time.
+TEST(AmrexRealData, TimeFromTheHeaderAndNoJobInfo) {
+  if (!fs::exists(kRealPlotfile))
+    GTEST_SKIP() << "real data " << kRealPlotfile << " is absent (a clone without ../shared/data)";
+  std::ifstream header(kRealPlotfile / "Header");
+  std::string line;
+  std::getline(header, line);  // version
+  std::getline(header, line);
+  const int variables = std::stoi(line);
+  for (int v = 0; v < variables + 1; ++v) std::getline(header, line);  // names, dimension
+  std::getline(header, line);
+  const double time = std::stod(line);
+  EXPECT_NEAR(time, 1.3924e-8, 1e-12);  // README
+
+  bool jobInfo = false;
+  for (const auto& entry : fs::directory_iterator(kRealPlotfile))
+    jobInfo |= entry.path().filename().string().ends_with("job_info");
+
+  const bricks::DatasetInfo info = readAmrexPlotfile(kRealPlotfile).info();
+  EXPECT_EQ(info.time, time);
+  EXPECT_EQ(info.periodicKnown, jobInfo);
+  EXPECT_FALSE(jobInfo) << "the shared plotfile gained a job_info: check its is_periodic here";
+  EXPECT_EQ(info.fileLevel(0), 2);  // only the finest level (2) holds leaves
 }
 
 TEST(AmrexRealData, ReadsPeleLMeXPlotfile) {

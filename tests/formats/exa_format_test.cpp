@@ -1,11 +1,13 @@
-// ExaBricks files: a written dataset reads back identically; truncated, inconsistent and
-// malformed files are rejected with errors naming the file and the numbers involved.
+// ExaBricks files: a written dataset reads back identically, with its time, units and periodic
+// axes; truncated, inconsistent and malformed files are rejected with errors naming the file (and
+// line) and the numbers involved.
 
 #include "formats/exa_format.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -129,6 +131,89 @@ TEST_F(ExaFormat, RejectsMalformedConfigWithLineNumbers) {
   EXPECT_THAT(errorOf(config), HasSubstr("no 'cells FILE' line"));
   writeText(config, "cells missing.cells\n");
   EXPECT_THAT(errorOf(config), HasSubstr("missing.cells: cannot open the file"));
+}
+
+// ---- what the dataset says about itself: time, periodic, length-unit, time-unit -------------
+
+TEST_F(ExaFormat, RoundTripsTimeUnitsAndPeriodicity) {
+  bricks::AmrField field = testing::randomAmr(5);
+  bricks::DatasetInfo info;
+  info.format = "Enzo";
+  info.time = 0.81751317119117;
+  info.timeUnit = "code units (1 = 1.381e+16 s)";
+  info.lengthUnit = "code units (1 = 5.615e+23 cm proper at z = 9.991; 1 Mpc/h comoving)";
+  info.periodic = {true, false, true};
+  info.periodicKnown = true;
+  info.finestFileLevel = 7;  // Enzo numbering: not carried, .exa levels are ExaBricks levels
+  field.setInfo(info);
+  const fs::path config = writeExa(field, dir_ / "described");
+
+  const bricks::DatasetInfo read = readExa(config).info();
+  EXPECT_EQ(read.format, "ExaBricks");
+  EXPECT_EQ(read.time, info.time);
+  EXPECT_EQ(read.timeUnit, info.timeUnit);
+  EXPECT_EQ(read.lengthUnit, info.lengthUnit);
+  EXPECT_TRUE(read.periodicKnown);
+  EXPECT_EQ(read.periodic, info.periodic);
+  EXPECT_EQ(read.fileLevel(0), 0);
+  EXPECT_EQ(read.fileLevel(2), 2);
+}
+
+TEST_F(ExaFormat, WithoutTheOptionalLinesNothingIsKnown) {
+  const bricks::DatasetInfo info = readExa(writeSample()).info();
+  EXPECT_FALSE(info.time.has_value());
+  EXPECT_FALSE(info.periodicKnown);
+  EXPECT_EQ(info.timeUnit, "");
+  EXPECT_EQ(info.lengthUnit, "");
+  std::ifstream in(dir_ / "sample.exa");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("periodic")));
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("time")));
+}
+
+TEST_F(ExaFormat, ReadsHandWrittenLines) {
+  writeSample();
+  const fs::path config = dir_ / "hand.exa";
+  writeText(config,
+            "cells sample.cells\ntime -2.5e-3   # before the event\nperiodic 0 1 0\n"
+            "length-unit   Mpc / h   \ntime-unit Gyr\n");
+  const bricks::DatasetInfo info = readExa(config).info();
+  EXPECT_EQ(info.time, -2.5e-3);
+  EXPECT_EQ(info.periodic, (std::array<bool, 3>{false, true, false}));
+  EXPECT_EQ(info.lengthUnit, "Mpc / h");
+  EXPECT_EQ(info.timeUnit, "Gyr");
+}
+
+TEST_F(ExaFormat, RejectsMalformedInfoLinesWithLineNumbers) {
+  writeSample();
+  const fs::path config = dir_ / "bad.exa";
+  writeText(config, "cells sample.cells\nperiodic 1 0\n");
+  EXPECT_THAT(errorOf(config),
+              HasSubstr(config.string() + ":2: 'periodic' needs three flags 0 or 1 (x y z), got 2"));
+  writeText(config, "cells sample.cells\nperiodic 1 0 2\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(config.string() + ":2: 'periodic' needs three flags"));
+  writeText(config, "cells sample.cells\n\ntime soon\n");
+  EXPECT_THAT(errorOf(config),
+              HasSubstr(config.string() + ":3: 'time' needs one finite number, got 'soon'"));
+  writeText(config, "cells sample.cells\ntime 1.5s\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":2: 'time' needs one finite number, got '1.5s'"));
+  writeText(config, "cells sample.cells\ntime 1 2\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":2: unexpected '2' after 'time'"));
+  writeText(config, "cells sample.cells\ntime\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":2: 'time' needs one finite number"));
+  writeText(config, "cells sample.cells\nlength-unit   # none\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":2: 'length-unit' needs a text"));
+}
+
+TEST_F(ExaFormat, RefusesToWriteAUnitThatALineCannotHold) {
+  bricks::AmrField field = testing::randomAmr(5);
+  bricks::DatasetInfo info;
+  info.lengthUnit = "furlongs # per fortnight";
+  field.setInfo(info);
+  const std::string error = testing::inputErrorOf([&] { writeExa(field, dir_ / "unit"); });
+  EXPECT_THAT(error, HasSubstr((dir_ / "unit.exa").string()));
+  EXPECT_THAT(error, HasSubstr("length-unit"));
+  EXPECT_FALSE(fs::exists(dir_ / "unit.cells"));
 }
 
 TEST_F(ExaFormat, LoadInputDispatchesAndRejectsUnknownInputs) {

@@ -166,6 +166,51 @@ void writeFlash(const fs::path& path, int dim, const std::vector<Block>& blocks,
   H5Fclose(file);
 }
 
+// Adds `real scalars` and `string runtime parameters` name/value lists to a written file.
+void addMetadata(const fs::path& path, const std::vector<std::pair<std::string, double>>& reals,
+                 const std::vector<std::pair<std::string, std::string>>& strings) {
+  struct RealPair {
+    char name[80];
+    double value;
+  };
+  struct StringPair {
+    char name[80];
+    char value[80];
+  };
+  const auto blankPadded = [](char* to, const std::string& from) {
+    std::memset(to, ' ', 80);
+    std::memcpy(to, from.data(), from.size());
+  };
+  const hid_t file = H5Fopen(path.string().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t text = H5Tcopy(H5T_C_S1);
+  H5Tset_size(text, 80);
+  const hid_t realType = H5Tcreate(H5T_COMPOUND, sizeof(RealPair));
+  H5Tinsert(realType, "name", HOFFSET(RealPair, name), text);
+  H5Tinsert(realType, "value", HOFFSET(RealPair, value), H5T_NATIVE_DOUBLE);
+  std::vector<RealPair> realPairs(reals.size());
+  for (std::size_t i = 0; i < reals.size(); ++i) {
+    blankPadded(realPairs[i].name, reals[i].first);
+    realPairs[i].value = reals[i].second;
+  }
+  if (!reals.empty()) writeArray(file, "real scalars", realType, {reals.size()}, realPairs.data());
+  const hid_t stringType = H5Tcreate(H5T_COMPOUND, sizeof(StringPair));
+  H5Tinsert(stringType, "name", HOFFSET(StringPair, name), text);
+  H5Tinsert(stringType, "value", HOFFSET(StringPair, value), text);
+  std::vector<StringPair> stringPairs(strings.size());
+  for (std::size_t i = 0; i < strings.size(); ++i) {
+    blankPadded(stringPairs[i].name, strings[i].first);
+    blankPadded(stringPairs[i].value, strings[i].second);
+  }
+  if (!strings.empty())
+    writeArray(file, "string runtime parameters", stringType, {strings.size()},
+               stringPairs.data());
+  H5Tclose(stringType);
+  H5Tclose(realType);
+  H5Tclose(text);
+  H5Fclose(file);
+}
+
 class FlashReader : public testing::TempDirTest {
  protected:
 };
@@ -260,6 +305,55 @@ TEST_F(FlashReader, BlockSizeInconsistentWithBoundingBoxIsRejected) {
               AllOf(HasSubstr(path.string()), HasSubstr("'block size'"), HasSubstr("block 4")));
 }
 
+// ---- what the file says about itself --------------------------------------------------------
+
+TEST_F(FlashReader, WithoutParametersOnlyLevelsAreKnownAndUnitsAreFlashsDefaultCgs) {
+  const fs::path path = dir_ / "bare";
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  const bricks::DatasetInfo info = readFlash(path).info();
+  EXPECT_EQ(info.format, "FLASH");
+  EXPECT_FALSE(info.time.has_value());
+  EXPECT_FALSE(info.periodicKnown);
+  EXPECT_EQ(info.lengthUnit, "cm");
+  EXPECT_EQ(info.timeUnit, "s");
+  // Leaves at refine levels 2 and 3 (1 = root): our level 0 is refine level 3.
+  EXPECT_EQ(info.fileLevel(0), 3);
+  EXPECT_EQ(info.fileLevel(1), 2);
+  EXPECT_THAT(info.levelName, HasSubstr("refine level (1 = root)"));
+}
+
+TEST_F(FlashReader, TimeUnitsAndPeriodicAxesComeFromScalarsAndRuntimeParameters) {
+  const fs::path path = dir_ / "described";
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  addMetadata(path, {{"dt", 0.01}, {"time", 2.5}},
+              {{"xl_boundary_type", "periodic"},
+               {"xr_boundary_type", "periodic"},
+               {"yl_boundary_type", "outflow"},
+               {"yr_boundary_type", "periodic"},
+               {"zl_boundary_type", "periodic"},
+               {"zr_boundary_type", "periodic"},
+               {"pc_unitsbase", "MKS"}});
+  const bricks::DatasetInfo info = readFlash(path).info();
+  EXPECT_EQ(info.time, 2.5);
+  EXPECT_EQ(info.timeUnit, "s");
+  EXPECT_EQ(info.lengthUnit, "m");
+  EXPECT_EQ(info.lengthUnitCentimetres, 100.0);
+  EXPECT_TRUE(info.periodicKnown);
+  // y is periodic on one face only: not periodic.
+  EXPECT_THAT(info.periodic, ElementsAre(true, false, true));
+}
+
+TEST_F(FlashReader, TwoDimensionalFilesIgnoreTheZBoundary) {
+  const fs::path path = dir_ / "flat_described";
+  writeFlash(path, 2, makeTree(2, kLo, kHi));
+  addMetadata(path, {}, {{"xl_boundary_type", "outflow"}, {"xr_boundary_type", "outflow"},
+                         {"yl_boundary_type", "periodic"}, {"yr_boundary_type", "periodic"},
+                         {"zl_boundary_type", "periodic"}, {"zr_boundary_type", "periodic"}});
+  const bricks::DatasetInfo info = readFlash(path).info();
+  EXPECT_TRUE(info.periodicKnown);
+  EXPECT_THAT(info.periodic, ElementsAre(false, true, false));
+}
+
 void copyHalf(const fs::path& from, const fs::path& to) {
   std::ifstream in(from, std::ios::binary);
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -343,6 +437,22 @@ TEST_F(FlashReader, RealNanowirePlotfile) {
       ++checked;
     }
   EXPECT_EQ(checked, 20);
+}
+
+// Oracle: `h5dump -m %.17g -d "real scalars"` and `-d "string runtime parameters"` on the file:
+// time 1.0000117238534479e-09, pc_unitsbase "CGS", x boundaries periodic, y outflow, z periodic
+// (ignored: the file is 2D); leaves at refine level 5 only (README).
+TEST_F(FlashReader, RealNanowirePlotfileDescribesItself) {
+  if (!fs::exists(kRealFile)) GTEST_SKIP() << "real FLASH file absent: " << kRealFile;
+  const bricks::AmrField field = readFlash(kRealFile);
+  const bricks::DatasetInfo& info = field.info();
+  EXPECT_EQ(info.format, "FLASH");
+  EXPECT_EQ(info.time, 1.0000117238534479e-09);
+  EXPECT_EQ(info.timeUnit, "s");
+  EXPECT_EQ(info.lengthUnit, "cm");
+  EXPECT_TRUE(info.periodicKnown);
+  EXPECT_THAT(info.periodic, ElementsAre(true, false, false));
+  EXPECT_EQ(info.fileLevel(field.finestLevel()), 5);
 }
 
 TEST_F(FlashReader, TruncatedRealFileIsRejected) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -151,6 +152,61 @@ TEST_F(GerrisReader, RejectsMalformedFiles) {
   }
   EXPECT_THAT(testing::inputErrorOf([&] { readGerris(dir_ / "missing.txt"); }),
               HasSubstr("missing.txt"));
+}
+
+// ---- what the dump says about itself --------------------------------------------------------
+
+TEST_F(GerrisReader, TimeIsTheHeadersLastNumberAndLevelsAreGerrisLevels) {
+  std::vector<glm::dvec3> centres;
+  std::vector<int> levels;
+  const bricks::DatasetInfo info = readGerris(write("two.txt", twoLevelDump(&centres, &levels))).info();
+  EXPECT_EQ(info.format, "Gerris");
+  EXPECT_EQ(info.time, 0.25);  // the header ends with 0.25
+  EXPECT_EQ(info.fileLevel(0), 2);  // the dump's Lev 2 cells are the finest
+  EXPECT_EQ(info.fileLevel(1), 1);
+  EXPECT_FALSE(info.periodicKnown);
+  EXPECT_EQ(info.lengthUnit, "");
+  EXPECT_EQ(info.timeUnit, "");
+}
+
+TEST_F(GerrisReader, HeaderWithoutATimeLeavesItUnknown) {
+  const fs::path path = write("untimed.txt", "# 1:x 2:y 3:z 4:U 5:Lev\n0.25 0.25 0.25 1 1\n");
+  EXPECT_FALSE(readGerris(path).info().time.has_value());
+}
+
+// The header's last word, read here independently of the reader.
+double headerTime(const fs::path& file) {
+  std::ifstream in(file);
+  std::string header;
+  std::getline(in, header);
+  return std::stod(header.substr(header.find_last_of(' ') + 1));
+}
+
+TEST(GerrisRealData, RingDumpTimeAndLevels) {
+  if (!fs::exists(kRealFile))
+    GTEST_SKIP() << "real data " << kRealFile << " is absent (a clone without ../shared/data)";
+  const bricks::AmrField field = readGerris(kRealFile);
+  EXPECT_EQ(field.info().time, headerTime(kRealFile));
+  EXPECT_EQ(field.info().time, 1.0);  // ring.gfs runs to TEND = 1.0 and dumps at the end
+  EXPECT_EQ(field.info().fileLevel(0), 7);  // README: octree levels 3..7
+  EXPECT_EQ(field.info().fileLevel(field.coarsestLevel()), 3);
+}
+
+TEST(GerrisRealData, SeriesSnapshotTimeMatchesItsName) {
+  const fs::path archive = kRealFile.parent_path().parent_path() / "gerris-ring-series.tar.xz";
+  if (!fs::exists(archive))
+    GTEST_SKIP() << "real data " << archive << " is absent (a clone without ../shared/data)";
+  const fs::path dir = fs::temp_directory_path() / "amrstream-gerris-series-time";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string command = "tar -xJf '" + archive.string() + "' -C '" + dir.string() +
+                              "' gerris-ring-series/ring-0.020.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const fs::path snapshot = dir / "gerris-ring-series" / "ring-0.020.txt";
+  const auto time = readGerris(snapshot).info().time;
+  EXPECT_EQ(time, headerTime(snapshot));
+  EXPECT_EQ(time, 0.02);  // named ring-%05.3f.txt after its time
+  fs::remove_all(dir);
 }
 
 TEST(GerrisRealData, ReadsVortexRingDump) {

@@ -1,10 +1,12 @@
-// Format detection by content and extension, on small files the test writes.
+// Format detection by content and extension, on small files the test writes; what the builtin
+// datasets say about themselves.
 
 #include "formats/load_input.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -51,6 +53,27 @@ TEST_F(DetectFormat, NamesTheInputWhenItIsNotRecognised) {
   fs::create_directories(dir_ / "empty");
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "empty").string()); }),
               HasSubstr("not an AMReX plotfile"));
+}
+
+// ABC is sin/cos of 2 pi x, y, z over the unit cube: one full period on every axis.
+TEST(BuiltinInfo, AbcIsPeriodicTheOthersAreNot) {
+  synth::GeneratorOptions small;
+  small.levels = 3;
+  small.rootBlocks = 1;
+  small.targetCells = 5000;
+  const bricks::DatasetInfo abc = loadInput("builtin:abc", small).info();
+  EXPECT_EQ(abc.format, "builtin");
+  EXPECT_EQ(abc.time, 0.0);
+  EXPECT_TRUE(abc.periodicKnown);
+  EXPECT_EQ(abc.periodic, (std::array<bool, 3>{true, true, true}));
+  for (const char* kind : {"builtin:rotation", "builtin:cloud"}) {
+    const bricks::DatasetInfo info = loadInput(kind, small).info();
+    EXPECT_TRUE(info.periodicKnown) << kind;
+    EXPECT_EQ(info.periodic, (std::array<bool, 3>{false, false, false})) << kind;
+  }
+  // Generator levels count from the root blocks: level 0 is the coarsest of the 3.
+  EXPECT_EQ(abc.fileLevel(2), 0);
+  EXPECT_EQ(abc.fileLevel(0), 2);
 }
 
 }  // namespace
