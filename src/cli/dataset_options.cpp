@@ -17,7 +17,16 @@ void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
 }
 
 void addDatasetOptions(CLI::App& command, DatasetOptions& options, const std::string& seedFlag) {
-  command.add_option("input", options.input, "an ExaBricks .exa file or builtin:NAME")->required();
+  std::string kinds;
+  for (const std::string& kind : synth::generatorKinds())
+    kinds += (kinds.empty() ? "" : "|") + kind;
+  command
+      .add_option("input", options.input,
+                  "the dataset: a FLASH HDF5 plotfile or checkpoint, an Enzo parameter file (or "
+                  "its .hierarchy, .harrays or .cpuNNNN), an AMReX plotfile directory, a Gerris "
+                  "text dump, an ExaBricks .exa file, or builtin:" +
+                      kinds)
+      ->required();
   addGeneratorOptions(command, options.generator, seedFlag);
 }
 

@@ -15,19 +15,37 @@ namespace amrstream::cli {
 
 namespace {
 
+// The time with its unit, or what is missing.
+std::string timeText(const bricks::DatasetInfo& info) {
+  if (!info.time) return "unknown";
+  return fmt::format("{:.9g} {}", *info.time,
+                     info.timeUnit.empty() ? "(unit unknown)" : info.timeUnit);
+}
+
+// Cell counts per level, coarsest first, numbered as the file numbers its levels.
+void printLevels(const bricks::AmrField& field) {
+  const std::vector<std::size_t> perLevel = field.cellsPerLevel();
+  const bricks::DatasetInfo& info = field.info();
+  fmt::print("levels     {} used, numbered as {}; coarsest first, widths in finest cells\n",
+             std::count_if(perLevel.begin(), perLevel.end(), [](std::size_t n) { return n > 0; }),
+             info.levelName);
+  for (int level = int(perLevel.size()) - 1; level >= 0; --level)
+    if (perLevel[level] > 0)
+      fmt::print("  level {:<3} {:>14} cells  width {}\n", info.fileLevel(level),
+                 withCommas(perLevel[level]), bricks::AmrField::cellWidth(level));
+}
+
 void runInfo(const DatasetOptions& options) {
   Stopwatch clock;
   const bricks::AmrField field = formats::loadInput(options.input, options.generator);
+  const bricks::DatasetInfo& info = field.info();
   fmt::print("input      {} [{:.2f} s]\n", field.source(), clock.seconds());
+  fmt::print("format     {}\n", info.format.empty() ? "unknown" : info.format);
+  fmt::print("time       {}\n", timeText(info));
+  fmt::print("lengths    {}\n", info.lengthUnit.empty() ? "unit unknown" : info.lengthUnit);
+  fmt::print("periodic   {}\n", bricks::periodicAxesText(info));
   fmt::print("cells      {}\n", withCommas(field.cellCount()));
-
-  const std::vector<std::size_t> perLevel = field.cellsPerLevel();
-  fmt::print("levels     {} used (level 0 = finest, a level-L cell is 2^L finest cells wide)\n",
-             std::count_if(perLevel.begin(), perLevel.end(), [](std::size_t n) { return n > 0; }));
-  for (std::size_t level = 0; level < perLevel.size(); ++level)
-    if (perLevel[level] > 0)
-      fmt::print("  level {:<2}  {:>14} cells  width {}\n", level, withCommas(perLevel[level]),
-                 1 << level);
+  printLevels(field);
 
   const bricks::CellBox box = field.bounds();
   const bricks::WorldTransform& t = field.transform();

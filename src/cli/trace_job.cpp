@@ -106,10 +106,10 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   const bricks::AmrField& field = input.field;
   const double loadSeconds = clock.seconds();
   const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
-  fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}) [{:.2f} s]\n",
+  fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",
              field.source(), withCommas(field.cellCount()), field.finestLevel(),
              field.coarsestLevel(), vector.name, vector.channels[0], vector.channels[1],
-             vector.channels[2], loadSeconds);
+             vector.channels[2], bricks::timeAndUnitsClause(field.info()), loadSeconds);
 
   flow::VolumeBuildTimes times;
   input.volume = flow::buildVectorVolume(field, vector, {}, &times);

@@ -4,8 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
 
 #include "run_amrstream.hpp"
 #include "temp_dir_test.hpp"
@@ -13,6 +17,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 namespace fs = std::filesystem;
 
 using amrstream::testing::Outcome;
@@ -122,8 +127,35 @@ TEST_F(Cli, ConvertWritesExaBricksFilesThatReadBackTheSame) {
   const Outcome original = run("info builtin:abc" + kSmall);
   const Outcome converted = run("info " + path("abc.exa"));
   ASSERT_EQ(converted.status, 0) << converted.output;
-  const auto cellsLine = [](const std::string& out) { return out.substr(out.find("cells      ")); };
-  EXPECT_EQ(cellsLine(converted.output).substr(0, 200), cellsLine(original.output).substr(0, 200));
+  // The same cells per level and widths (the level numbers differ: generator levels count from
+  // the root, ExaBricks levels from the finest), bounds and channels.
+  const auto levelCounts = [](const std::string& out) {
+    std::string counts;
+    for (std::size_t at = out.find("\n  level "); at != std::string::npos;
+         at = out.find("\n  level ", at + 1))
+      counts += out.substr(out.find("  ", at + 9), out.find('\n', at + 1) - out.find("  ", at + 9));
+    return counts;
+  };
+  EXPECT_THAT(levelCounts(original.output), HasSubstr("cells  width 4"));
+  EXPECT_EQ(levelCounts(converted.output), levelCounts(original.output));
+  const auto fromBounds = [](const std::string& out) { return out.substr(out.find("bounds     ")); };
+  EXPECT_EQ(fromBounds(converted.output).substr(0, 200), fromBounds(original.output).substr(0, 200));
+  // What the builtin dataset says about itself travels in the .exa.
+  EXPECT_THAT(original.output, HasSubstr("periodic   x y z\n"));
+  EXPECT_THAT(converted.output, HasSubstr("periodic   x y z\n"));
+  EXPECT_THAT(converted.output, HasSubstr("time       0 (unit unknown)\n"));
+  EXPECT_THAT(converted.output, HasSubstr("numbered as ExaBricks level (0 = finest)"));
+}
+
+TEST_F(Cli, HelpSaysWhichInputsAreAccepted) {
+  for (const char* command : {"info", "trace", "convert", "bench", "render"}) {
+    const Outcome r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* input : {"FLASH", "Enzo", "AMReX plotfile", "Gerris", ".exa",
+                              "builtin:rotation|abc|cloud"})
+      EXPECT_THAT(r.output, HasSubstr(input)) << command;
+    EXPECT_THAT(r.output, Not(HasSubstr("an ExaBricks .exa file or builtin:NAME"))) << command;
+  }
 }
 
 TEST_F(Cli, BenchRejectsBadCountsAndTooFewSeeds) {
@@ -160,6 +192,85 @@ TEST_F(Cli, InfoAndTraceReadEveryRealDataset) {
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_THAT(r.output, HasSubstr("seeds      32"));
   }
+}
+
+// "1234567" -> "1,234,567", as amrstream prints counts.
+std::string withCommas(long n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+// `Key = value` lines of one `Grid = N` block of an Enzo .hierarchy file.
+std::map<int, std::map<std::string, std::string>> hierarchyBlocks(const fs::path& file) {
+  std::map<int, std::map<std::string, std::string>> blocks;
+  std::ifstream in(file);
+  int grid = 0;
+  for (std::string line; std::getline(in, line);) {
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    std::string key = line.substr(0, eq);
+    key.erase(key.find_last_not_of(' ') + 1);
+    const std::string value = line.substr(eq + 1);
+    if (key == "Grid")
+      grid = std::stoi(value);
+    else
+      blocks[grid][key] = value;
+  }
+  return blocks;
+}
+
+// Enzo numbers levels from the root grid (0) down; `info` must too, coarsest first, and its level
+// 0 must hold the root grid's leaf cells: the 16^3 root cells less those under level-1 grids.
+TEST_F(Cli, InfoNumbersEnzoLevelsFromTheRootGrid) {
+  const fs::path dir = fs::path(AMRSTREAM_REAL_DATA_DIR) / "enzo-moving7" / "DD0010";
+  if (!fs::exists(dir)) GTEST_SKIP() << "real Enzo data not found at " << dir;
+  // Oracle from the .hierarchy text: a level-1 grid has cells half the root's (1/16) wide, and
+  // each of its cells covers 1/8 of a root cell.
+  long rootLeaves = 0, underLevelOne = 0;
+  for (const auto& [grid, keys] : hierarchyBlocks(dir / "moving7_0010.hierarchy")) {
+    std::istringstream start(keys.at("GridStartIndex")), end(keys.at("GridEndIndex")),
+        left(keys.at("GridLeftEdge")), right(keys.at("GridRightEdge"));
+    long cells = 1;
+    double cellSize = 0;
+    for (int a = 0; a < 3; ++a) {
+      int s, e;
+      double l, r;
+      start >> s;
+      end >> e;
+      left >> l;
+      right >> r;
+      cells *= e - s + 1;
+      cellSize = (r - l) / (e - s + 1);
+    }
+    if (grid == 1) rootLeaves = cells;
+    if (std::abs(cellSize - 1.0 / 32) < 1e-9) underLevelOne += cells / 8;
+  }
+  ASSERT_EQ(rootLeaves, 16 * 16 * 16);
+  ASSERT_GT(underLevelOne, 0);
+
+  const Outcome r = run("info " + (dir / "moving7_0010").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("format     Enzo\n"));
+  EXPECT_THAT(r.output, HasSubstr("periodic   x y z\n"));
+  EXPECT_THAT(r.output, HasSubstr("time       0.817513171 code units (1 = "));
+  EXPECT_THAT(r.output, HasSubstr("levels     8 used, numbered as Enzo level (0 = root grid)"));
+  const std::size_t level0 = r.output.find("\n  level 0 ");
+  ASSERT_NE(level0, std::string::npos) << r.output;
+  const std::string line = r.output.substr(level0 + 1, r.output.find('\n', level0 + 1) - level0 - 1);
+  EXPECT_THAT(line, HasSubstr(" " + withCommas(rootLeaves - underLevelOne) + " cells"));
+  EXPECT_THAT(line, HasSubstr("width 128"));  // 2^7 finest cells: root dx 1/16, finest 1/2048
+  for (int level = 1; level <= 7; ++level)  // coarsest first
+    EXPECT_GT(r.output.find("\n  level " + std::to_string(level) + " "), level0) << level;
+
+  const Outcome trace = run("trace " + (dir / "moving7_0010").string() +
+                            " --backend cpu --steps 5 --count 4 --out " + path("enzo.vtp"));
+  ASSERT_EQ(trace.status, 0) << trace.output;
+  EXPECT_THAT(trace.output, HasSubstr(", t = 0.817513171 code units (1 = "));
+  EXPECT_THAT(trace.output, HasSubstr(", lengths in code units (1 = "));
 }
 
 // Without a display the viewer fails at once, saying what to do, before loading the input.
