@@ -47,6 +47,10 @@ TEST_F(Cli, GenWritesExaFilesThatInfoAndTraceRead) {
   Outcome r = run("gen abc" + kSmall + " --seed 3 --out " + path("abc"));
   ASSERT_EQ(r.status, 0) << r.output;
   ASSERT_TRUE(fs::exists(path("abc.exa")));
+  std::ifstream exa(path("abc.exa"));
+  const std::string exaText((std::istreambuf_iterator<char>(exa)), {});
+  EXPECT_THAT(exaText, HasSubstr("\ntime 0\n"));  // abc is steady, at t = 0
+  EXPECT_THAT(exaText, HasSubstr("\nperiodic 1 1 1\n"));  // one full period over the unit cube
   r = run("info " + path("abc.exa"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("level 2"));
