@@ -10,5 +10,5 @@ layout(local_size_x_id = 0) in;  // workgroup size: specialization constant 0
 
 void main() {
   const uint i = gl_GlobalInvocationID.x;
-  if (i < params.seedCount) probeLocation(i);
+  if (i < params.lineCount) probeLocation(i);
 }

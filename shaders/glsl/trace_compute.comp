@@ -1,14 +1,14 @@
 #version 460
-// Streamline tracing with the host-built region tree: plain Vulkan compute, no ray tracing.
+// One tracing round with the host-built region tree: plain Vulkan compute, no ray tracing.
 #extension GL_GOOGLE_include_directive : require
 #include "include/amr_buffers.glsl"
 #include "include/locate_tree.glsl"
 #include "include/sampler.glsl"
-#include "include/integrator.glsl"
+#include "include/line_round.glsl"
 
 layout(local_size_x_id = 0) in;  // workgroup size: specialization constant 0
 
 void main() {
-  const uint seed = gl_GlobalInvocationID.x;
-  if (seed < params.seedCount) traceSeed(seed);
+  const uint thread = gl_GlobalInvocationID.x;
+  if (thread < params.lineCount) advanceLine(thread);
 }

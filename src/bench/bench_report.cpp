@@ -27,11 +27,13 @@ nlohmann::json toJson(const BenchRow& r) {
           {"max_steps", r.maxSteps},
           {"steps", r.steps},
           {"kernel_seconds", optionalNumber(r.kernelSeconds)},
+          {"compaction_seconds", optionalNumber(r.compactionSeconds)},
           {"wall_seconds", r.wallSeconds},
           {"steps_per_second", r.stepsPerSecond()},
           {"wall_steps_per_second", r.wallStepsPerSecond()},
           {"device_bytes", r.deviceBytes},
-          {"chunks", r.chunks}};
+          {"chunks", r.chunks},
+          {"rounds", r.rounds}};
 }
 
 nlohmann::json toJson(const BackendSetup& s) {

@@ -25,12 +25,13 @@ std::uint64_t totalSteps(const flow::TraceSet& traces) {
 }
 
 BenchRow measuredRow(const std::string& backend, const std::string& device, bool history,
-                     const flow::TraceSet& traces, const BenchConfig& config, double wallSeconds) {
+                     std::size_t particles, const flow::TraceSet& traces,
+                     const BenchConfig& config, double wallSeconds) {
   BenchRow row;
   row.backend = backend;
   row.device = device;
   row.history = history;
-  row.particles = traces.seedCount;
+  row.particles = particles;
   row.maxSteps = config.trace.maxSteps;
   row.steps = totalSteps(traces);
   row.wallSeconds = wallSeconds;
@@ -94,7 +95,7 @@ void runCpu(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
         Stopwatch clock;
         const flow::TraceSet traces =
             flow::traceStreamlines(volume, seeds.first(n), optionsFor(config, history));
-        keepFaster(best, measuredRow("cpu", device, history, traces, config, clock.seconds()));
+        keepFaster(best, measuredRow("cpu", device, history, n, traces, config, clock.seconds()));
       }
       report.rows.push_back(*best);
       if (callbacks.rowDone) callbacks.rowDone(*best);
@@ -126,6 +127,7 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   if (config.regionHint) settings.useRegionHint = *config.regionHint;
   gpu::GpuTracer tracer(*ctx, backend, volume, settings);
   tracer.orderSeedsSpatially(config.spatialSeedOrder);
+  tracer.timeKernels(true);
   setup.regionHint = settings.useRegionHint;
   setup.uploadSeconds = tracer.setup().uploadSeconds;
   setup.structureSeconds = tracer.setup().structureSeconds;
@@ -146,10 +148,13 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
       for (std::uint32_t r = 0; r < config.repeats; ++r) {
         clock.restart();
         const flow::TraceSet traces = tracer.trace(seeds.first(n), optionsFor(config, history));
-        BenchRow row = measuredRow(name, setup.device, history, traces, config, clock.seconds());
+        BenchRow row =
+            measuredRow(name, setup.device, history, n, traces, config, clock.seconds());
         row.kernelSeconds = tracer.lastRun().kernelSeconds;
-        row.chunks = tracer.lastRun().chunks;
-        row.deviceBytes = setup.volumeBytes + setup.structureBytes + tracer.lastRun().chunkBytes;
+        row.compactionSeconds = tracer.lastRun().compactionSeconds;
+        row.chunks = tracer.lastRun().batches;
+        row.rounds = tracer.lastRun().rounds;
+        row.deviceBytes = setup.volumeBytes + setup.structureBytes + tracer.lastRun().roundBytes;
         keepFaster(best, row);
       }
       report.rows.push_back(*best);

@@ -33,10 +33,12 @@ struct BenchRow {
   std::size_t particles = 0;
   std::uint32_t maxSteps = 0;
   std::uint64_t steps = 0;               // particle-steps taken, summed over the traces
-  std::optional<double> kernelSeconds;   // GPU: timestamp queries around the dispatches
-  double wallSeconds = 0.0;              // the whole trace call: uploads, dispatches, read-back
-  std::uint64_t deviceBytes = 0;         // GPU: volume + structure + the largest chunk's buffers
-  std::size_t chunks = 0;
+  std::optional<double> kernelSeconds;   // GPU: timestamp queries around the tracing kernel
+  std::optional<double> compactionSeconds;  // GPU: the same around compaction and point data
+  double wallSeconds = 0.0;              // the whole trace call: uploads, rounds, read-back
+  std::uint64_t deviceBytes = 0;         // GPU: volume + structure + the largest batch's buffers
+  std::size_t chunks = 0;                // GPU: batches of lines
+  std::size_t rounds = 0;                // GPU: rounds of steps, over all batches
 
   // Kernel time where there is one, else wall time.
   double stepsPerSecond() const;

@@ -101,6 +101,7 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.stepMode = parseStepMode(o.stepMode);
   config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
   config.trace.maxSteps = o.steps;
+  config.trace.direction = flow::Direction::Forward;  // the paper's experiment
   config.deviceFilter = o.device;
   if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
   config.spatialSeedOrder = o.seedOrder == "spatial";

@@ -32,13 +32,13 @@ struct RenderCommandOptions {
 void checkTracesInDomain(const std::string& path, const flow::TraceSet& traces,
                          const flow::VectorVolume& volume) {
   const glm::dvec3 lower = flow::domainLower(volume), upper = flow::domainUpper(volume);
-  std::size_t points = 0, inside = 0;
-  for (std::uint32_t s = 0; s < traces.seedCount; ++s)
-    for (std::uint32_t p = 0; p < traces.pointCounts[s]; ++p, ++points) {
-      const glm::dvec3 x(traces.positions[traces.at(s, p)]);
-      inside += glm::all(glm::greaterThanEqual(x, lower)) && glm::all(glm::lessThanEqual(x, upper));
-    }
-  fmt::print("traces     {} from {} ({} points)\n", withCommas(traces.seedCount), path,
+  const std::size_t points = traces.positions.size();
+  std::size_t inside = 0;
+  for (const glm::vec3& p : traces.positions) {
+    const glm::dvec3 x(p);
+    inside += glm::all(glm::greaterThanEqual(x, lower)) && glm::all(glm::lessThanEqual(x, upper));
+  }
+  fmt::print("traces     {} lines from {} ({} points)\n", withCommas(traces.lineCount()), path,
              withCommas(points));
   if (points > 0 && inside == 0)
     throw InputError(path, fmt::format("no trace point lies in the input's domain [{:g}, {:g}] x "
@@ -54,7 +54,6 @@ void runRender(const RenderCommandOptions& o) {
   PreparedInput input = prepareInput(o.job, o.traces.empty());
   flow::TraceSet traces;
   if (o.traces.empty()) {
-    checkHistoryFitsInMemory(input.seeds.points.size(), o.job.steps + 1);
     traces = runTraces(o.job, input);
   } else {
     traces = output::readVtpTraces(o.traces);

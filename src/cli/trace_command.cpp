@@ -17,16 +17,19 @@ struct TraceCommandOptions {
   TraceJobOptions job;
   std::string out = "traces.vtp";
   bool endpointsOnly = false;
+  std::string periodicLines = "split";
 };
 
 void runTrace(const TraceCommandOptions& o) {
   PreparedInput input = prepareInput(o.job);
   input.options.keepHistory = !o.endpointsOnly;
-  checkHistoryFitsInMemory(input.seeds.points.size(), o.endpointsOnly ? 1 : o.job.steps + 1);
   const flow::TraceSet traces = runTraces(o.job, input);
 
   Stopwatch clock;
-  const output::VtpCounts written = output::writeVtp(o.out, traces);
+  output::VtpWriteOptions writeOptions;
+  writeOptions.periodicLines =
+      o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped : output::PeriodicLines::Split;
+  const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
 }
@@ -39,7 +42,13 @@ void addTraceCommand(CLI::App& app) {
   addTraceJobOptions(*command, options->job);
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
   command->add_flag("--endpoints-only", options->endpointsOnly,
-                    "keep only each trace's last point (no history: for very long runs)");
+                    "keep only each line's last point (no history)");
+  command
+      ->add_option("--periodic-lines", options->periodicLines,
+                   "lines crossing a periodic face: split (one polyline per piece inside the "
+                   "domain) or unwrapped (one polyline continuing past the face)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"split", "unwrapped"}));
   command->callback([options] {
     options->job.backend.validation = validationRequested();
     runTrace(*options);

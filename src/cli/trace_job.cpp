@@ -5,6 +5,7 @@
 #include <map>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "flow/line_plan.hpp"
 #include "flow/seed_strategies.hpp"
 #include "formats/load_input.hpp"
 #include "progress.hpp"
@@ -27,6 +28,8 @@ const char* reasonName(int reason) {
       return "max steps";
     case AMRSTREAM_REASON_STAGNATION:
       return "stagnation";
+    case AMRSTREAM_REASON_MAX_TIME:
+      return "max time";
     default:
       return "unknown";
   }
@@ -53,6 +56,53 @@ std::pair<glm::dvec3, glm::dvec3> seedBox(const TraceJobOptions& o,
                     "{:g}) x [{:g}, {:g})",
                     domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
   return {lo, hi};
+}
+
+// The periodic axes the input declares (none when it says nothing).
+flow::PeriodicAxes filePeriodicAxes(const bricks::AmrField& field) {
+  return field.info().periodicKnown ? field.info().periodic : flow::PeriodicAxes{};
+}
+
+flow::Direction parseDirection(const std::string& name) {
+  if (name == "forward") return flow::Direction::Forward;
+  if (name == "backward") return flow::Direction::Backward;
+  return flow::Direction::Both;
+}
+
+// --periodic: "auto" (what the file says), "none", or the periodic axes, e.g. "x,y,z" or "xz".
+flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::AmrField& field) {
+  flow::PeriodicAxes axes{};
+  if (request == "auto") return filePeriodicAxes(field);
+  if (request == "none") return axes;
+  for (const char c : request) {
+    if (c == ',') continue;
+    const auto axis = std::string_view("xyz").find(char(std::tolower(static_cast<unsigned char>(c))));
+    if (axis == std::string_view::npos)
+      throw InputError("--periodic", fmt::format("'{}' is not auto, none or a list of the axes "
+                                                 "x, y and z",
+                                                 request));
+    axes[axis] = true;
+  }
+  return axes;
+}
+
+std::string axesText(const flow::PeriodicAxes& axes) {
+  std::string text;
+  for (int a = 0; a < 3; ++a)
+    if (axes[a]) text += (text.empty() ? "" : ",") + std::string(1, "xyz"[a]);
+  return text;
+}
+
+std::string directionText(flow::Direction direction) {
+  switch (direction) {
+    case flow::Direction::Forward:
+      return "forward";
+    case flow::Direction::Backward:
+      return "backward";
+    case flow::Direction::Both:
+      break;
+  }
+  return "both directions";
 }
 
 }  // namespace
@@ -88,18 +138,6 @@ flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& fie
   return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
 }
 
-void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace) {
-  const double bytes =
-      double(seeds) * double(pointsPerTrace) * double(flow::TraceSet::kBytesPerPoint);
-  const double memory = physicalMemoryBytes();
-  if (memory > 0 && bytes > kTraceMemoryShare * memory)
-    throw InputError("--count/--steps",
-                     fmt::format("{} seeds x {} points need {:.1f} GiB for the traces, more than "
-                                 "3/4 of this machine's {:.1f} GiB; lower --count or --steps, or "
-                                 "use --endpoints-only",
-                                 seeds, pointsPerTrace, bytes / 0x1p30, memory / 0x1p30));
-}
-
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   Stopwatch clock;
   PreparedInput input{formats::loadInput(o.dataset.input, o.dataset.generator), {}, {}, {}};
@@ -107,21 +145,36 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   const double loadSeconds = clock.seconds();
   const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",
-             field.source(), withCommas(field.cellCount()), field.finestLevel(),
-             field.coarsestLevel(), vector.name, vector.channels[0], vector.channels[1],
-             vector.channels[2], bricks::timeAndUnitsClause(field.info()), loadSeconds);
+             field.source(), withCommas(field.cellCount()),
+             field.info().fileLevel(field.coarsestLevel()),
+             field.info().fileLevel(field.finestLevel()), vector.name, vector.channels[0],
+             vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(field.info()),
+             loadSeconds);
 
+  flow::VolumeOptions volumeOptions;
+  volumeOptions.periodic = periodicAxes(o.periodic, field);
+  volumeOptions.pointData = flow::choosePointData(field, vector, o.pointData);
   flow::VolumeBuildTimes times;
-  input.volume = flow::buildVectorVolume(field, vector, {}, &times);
+  input.volume = flow::buildVectorVolume(field, vector, volumeOptions, &times);
   const flow::VectorVolume& volume = input.volume;
-  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s]\n",
-             withCommas(volume.bricks.size()), times.bricks,
-             withCommas(volume.regions.regions.size()), times.regions);
+  const std::size_t images = volume.bricks.size() - volume.originalBrickCount;
+  fmt::print("structure  {} bricks{} [{:.2f} s], {} regions [{:.2f} s]\n",
+             withCommas(volume.originalBrickCount),
+             images > 0 ? fmt::format(" + {} periodic images ({})", withCommas(images),
+                                      axesText(volume.periodic))
+                        : std::string(),
+             times.bricks, withCommas(volume.regions.regions.size()), times.regions);
   if (!withSeeds) return input;
+
+  std::string pointData;
+  for (const std::string& name : volume.channelNames) pointData += (pointData.empty() ? "" : ", ") + name;
+  if (o.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
+  fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
   std::string seedDescription;
   input.seeds = chooseSeeds(o, field, volume, seedDescription);
-  const flow::SeedList& seeds = input.seeds;
+  flow::SeedList& seeds = input.seeds;
+  flow::closeUpperFaces(volume, seeds);
   flow::checkSeedsInDomain(volume, seeds);
   if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
 
@@ -131,29 +184,41 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   options.maxSteps = o.steps;
   options.keepHistory = true;
   options.terminalSpeed = o.terminalSpeed;
+  if (!(o.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");
+  if (!(o.maxTime >= 0.0f)) throw InputError("--max-time", "must be 0 (no limit) or positive");
   options.maxLength = o.maxLength;
+  options.maxTime = o.maxTime;
+  options.direction = parseDirection(o.direction);
+  options.vorticity = o.vorticity;
+  options.memoryBudget = o.memoryBudget;
+  options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
   fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), seedDescription,
              o.seedsOut.empty() ? "" : ", written to " + o.seedsOut);
-  fmt::print("stepping   mode {}, h = {:g}, at most {} steps\n", o.stepMode, options.stepSize,
-             o.steps);
-
+  std::string limits;
+  if (o.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.maxLength);
+  if (o.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.maxTime);
+  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.stepMode,
+             options.stepSize, directionText(options.direction), o.steps, limits);
   return input;
 }
 
 flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input) {
   const flow::SeedList& seeds = input.seeds;
-  Stopwatch clock;
   flow::TraceSet traces;
+  TraceTimes times;
   {
     Progress progress("tracing", seeds.points.size());
     traces = traceWithBackend(o.backend, input.volume, seeds.points, input.options,
-                              [&](std::size_t done) { progress.update(done); });
+                              [&](std::size_t done, std::size_t lines) {
+                                progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
+                              },
+                              &times);
   }
-  const double traceSeconds = clock.seconds();
+  const double traceSeconds = times.traceSeconds;
 
   std::size_t steps = 0;
   std::map<int, std::size_t> reasons;
-  for (std::uint32_t i = 0; i < traces.seedCount; ++i) {
+  for (std::size_t i = 0; i < traces.lineCount(); ++i) {
     steps += traces.steps[i];
     ++reasons[traces.reasons[i]];
   }
@@ -161,11 +226,15 @@ flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input) {
   for (const auto& [reason, count] : reasons)
     histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
                              reason, withCommas(count));
-  fmt::print("steps      {} taken, {:.1f} per trace\n", withCommas(steps),
-             double(steps) / double(std::max<std::uint32_t>(1, traces.seedCount)));
+  fmt::print("steps      {} taken in {} lines, {:.1f} per line\n", withCommas(steps),
+             withCommas(traces.lineCount()),
+             double(steps) / double(std::max<std::size_t>(1, traces.lineCount())));
   fmt::print("reasons    {}\n", histogram);
-  fmt::print("time       {:.3f} s, {:.3g} particle-steps/s\n", traceSeconds,
-             double(steps) / std::max(traceSeconds, 1e-9));
+  fmt::print("time       {:.3f} s tracing, {:.3g} particle-steps/s{}\n", traceSeconds,
+             double(steps) / std::max(traceSeconds, 1e-9),
+             times.setupSeconds > 0.0
+                 ? fmt::format(" (device setup {:.2f} s before it)", times.setupSeconds)
+                 : std::string());
 
   return traces;
 }
@@ -202,6 +271,7 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->expected(3)
       ->excludes(seedsFile)
       ->excludes(seedLine);
+  auto* seedGrid = command->get_option("--seed-grid");
   auto* seedDensity =
       command
           ->add_option("--seed-density", options->seedDensity,
@@ -218,10 +288,13 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->needs(seedDensity);
   command->add_option("--seeds-out", options->seedsOut,
                       "write the seeds used to this file, so the run can be repeated with --seeds");
-  command->add_option("--count", options->count, "number of random seeds")
+  command
+      ->add_option("--count", options->count,
+                   "number of seeds (random, along --seed-line, or of --seed-density)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
-      ->excludes(seedsFile);
+      ->excludes(seedsFile)
+      ->excludes(seedGrid);
   command->add_option("--seed", options->seed, "random seed for the seed points")
       ->capture_default_str()
       ->excludes(seedsFile);
@@ -236,12 +309,40 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->capture_default_str()
       ->check(CLI::IsMember({"cell", "time", "arc"}));
   command
+      ->add_option("--direction", options->direction,
+                   "integration direction: forward, backward, or both (two lines per seed, as "
+                   "ParaView's Stream Tracer)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"forward", "backward", "both"}));
+  command
+      ->add_option("--point-data", options->pointData,
+                   "channels sampled at every trace point: all (every channel but the vector's), "
+                   "none, or NAME,NAME,...")
+      ->capture_default_str();
+  command->add_flag("--vorticity", options->vorticity,
+                    "also write Vorticity, Rotation and AngularVelocity (as vtkStreamTracer)");
+  command
+      ->add_option("--periodic", options->periodic,
+                   "periodic axes: auto (as the file says), none, or a list such as x,y,z")
+      ->capture_default_str();
+  command
       ->add_option("--terminal-speed", options->terminalSpeed,
                    "stop where the speed falls below this")
       ->capture_default_str();
   command
       ->add_option("--max-length", options->maxLength,
                    "stop before the trace's physical length passes this (0: no limit)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-time", options->maxTime,
+                   "stop where |IntegrationTime| reaches this, the last step shortened to end "
+                   "on it (0: no limit)")
+      ->capture_default_str();
+  command
+      ->add_option("--memory-budget", options->memoryBudget,
+                   "bytes the tracing rounds may use on the device and for the host copies, "
+                   "e.g. 512M or 2G (the collected traces come on top)")
+      ->transform(CLI::AsSizeValue(false))
       ->capture_default_str();
   command
       ->add_option("--backend", options->backend.backend,

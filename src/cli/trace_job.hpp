@@ -1,6 +1,6 @@
 #pragma once
-// What `trace`, `render` and `view` share: the dataset, the vector, the seeding and the stepping
-// options, and the run from input to traces with its summary lines on stdout.
+// What `trace`, `render` and `view` share: the dataset, the vector, the point data, the seeding
+// and the stepping options, and the run from input to traces with its summary lines on stdout.
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -21,6 +21,9 @@ namespace amrstream::cli {
 struct TraceJobOptions {
   DatasetOptions dataset;
   std::string vector;
+  std::string pointData = "all";
+  bool vorticity = false;
+  std::string periodic = "auto";
   std::string seedsFile;
   std::vector<double> seedBox;
   std::vector<int> seedGrid;
@@ -34,8 +37,11 @@ struct TraceJobOptions {
   std::uint32_t steps = 1000;
   std::optional<float> stepSize;
   std::string stepMode = "cell";
+  std::string direction = "both";
   float terminalSpeed = 1e-12f;
   float maxLength = 0.0f;
+  float maxTime = 0.0f;
+  std::uint64_t memoryBudget = flow::kDefaultMemoryBudget;
   BackendRequest backend;
 };
 
@@ -54,9 +60,6 @@ struct PreparedInput {
 // printing the input, structure, seeds and stepping lines. Without `withSeeds`, stops after the
 // structure (for traces read from a file).
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
-
-// Refuses runs whose stored trace points cannot fit in memory.
-void checkHistoryFitsInMemory(std::size_t seeds, std::uint32_t pointsPerTrace);
 
 // Traces with the requested backend (with a progress line) and prints the steps, reasons and
 // time lines.

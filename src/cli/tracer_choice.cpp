@@ -9,6 +9,7 @@
 #include "gpu/backend.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 #include "vk/context_error.hpp"
 #include "vk/device_report.hpp"
@@ -42,7 +43,7 @@ const vk::DeviceReport* autoDevice(const std::vector<vk::DeviceReport>& devices,
 
 }  // namespace
 
-BackendChoice chooseBackend(const BackendRequest& request) {
+BackendChoice chooseBackend(const BackendRequest& request, BackendUse use) {
   BackendChoice choice{gpu::Backend::Cpu, request.device};
   if (request.backend == "auto") {
     std::vector<vk::DeviceReport> devices;
@@ -53,6 +54,13 @@ BackendChoice chooseBackend(const BackendRequest& request) {
     }
     std::string why;
     const vk::DeviceReport* device = autoDevice(devices, request.device);
+    if (use == BackendUse::Trace && request.device.empty() && device &&
+        device->type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+      fmt::print("backend    auto: cpu ({} is a software Vulkan device, slower than the CPU "
+                 "reference; name --backend rayquery, pipeline or compute to trace on it)\n",
+                 device->name);
+      return choice;
+    }
     choice.backend = gpu::chooseBackend(device, why);
     if (device) choice.deviceFilter = device->name;
     fmt::print("backend    auto: {}\n", why);
@@ -79,17 +87,29 @@ void checkValidation(const vk::Context& ctx) {
 flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
-                                const std::function<void(std::size_t)>& progress) {
-  const BackendChoice choice = chooseBackend(request);
+                                const flow::TraceProgress& progress, TraceTimes* times) {
+  TraceTimes local;
+  TraceTimes& t = times ? *times : local;
+  const BackendChoice choice = chooseBackend(request, BackendUse::Trace);
   const gpu::Backend backend = choice.backend;
+  Stopwatch clock;
   if (backend == gpu::Backend::Cpu) {
     fmt::print("tracing    on the CPU reference ({} threads)\n", tbb::info::default_concurrency());
-    return flow::traceStreamlines(volume, seeds, options, progress);
+    flow::TraceSet traces = flow::traceStreamlines(volume, seeds, options, progress);
+    t.traceSeconds = clock.seconds();
+    return traces;
   }
   const vk::Context ctx = createContext(request, choice);
   gpu::GpuTracer tracer(ctx, backend, volume);
-  fmt::print("tracing    backend {} on {}\n", gpu::backendName(backend), ctx.deviceName());
+  t.setupSeconds = clock.seconds();
+  fmt::print("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
+             "{:.2f} s, kernels {:.2f} s]\n",
+             gpu::backendName(backend), ctx.deviceName(), t.setupSeconds,
+             tracer.setup().uploadSeconds, tracer.setup().structureSeconds,
+             tracer.setup().pipelineSeconds);
+  clock.restart();
   flow::TraceSet traces = tracer.trace(seeds, options, progress);
+  t.traceSeconds = clock.seconds();
   checkValidation(ctx);
   return traces;
 }

@@ -25,8 +25,14 @@ struct BackendChoice {
   std::string deviceFilter;  // empty: the default device
 };
 
-// Resolves `auto` (printing what was chosen and why) or parses the named backend.
-BackendChoice chooseBackend(const BackendRequest& request);
+// What the backend is for: tracing alone may fall back to the CPU reference, rendering needs a
+// Vulkan device.
+enum class BackendUse { Trace, Render };
+
+// Resolves `auto` (printing what was chosen and why) or parses the named backend. For tracing,
+// `auto` picks the fastest: a GPU backend on a GPU, the CPU reference when the only Vulkan
+// device is a software one (lavapipe), which traces several times slower than the CPU path.
+BackendChoice chooseBackend(const BackendRequest& request, BackendUse use = BackendUse::Render);
 
 // A context for the choice's backend and device, plus `extra` capabilities. Throws
 // vk::ContextError naming what is missing.
@@ -36,11 +42,18 @@ vk::Context createContext(const BackendRequest& request, const BackendChoice& ch
 // Throws when the context's validation layer reported errors.
 void checkValidation(const vk::Context& ctx);
 
+// Where a trace's time went: creating the device context, uploading the volume and building its
+// point-location structure and kernels (0 on the CPU), then tracing proper.
+struct TraceTimes {
+  double setupSeconds = 0.0;
+  double traceSeconds = 0.0;
+};
+
 // Traces with the requested backend, printing the choice (and for `auto` why). Throws
 // vk::ContextError naming the missing extension when a forced backend is not available.
 flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
-                                const std::function<void(std::size_t)>& progress);
+                                const flow::TraceProgress& progress, TraceTimes* times = nullptr);
 
 }  // namespace amrstream::cli

@@ -35,7 +35,6 @@ void runView(const ViewOptions& o) {
   // The window first: without a display, say so before loading anything.
   app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   PreparedInput input = prepareInput(o.job);
-  checkHistoryFitsInMemory(input.seeds.points.size(), o.job.steps + 1);
   const BackendChoice choice = chooseBackend(o.job.backend);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
@@ -100,7 +99,7 @@ void runView(const ViewOptions& o) {
     if (!tracesDone && session.traces().finished()) {
       tracesDone = true;
       fmt::print("traces     all {} finished after {} frames, {} particle-steps\n",
-                 session.traces().traces().seedCount, frame, session.traces().stepsTaken());
+                 session.traces().traces().lineCount(), frame, session.traces().stepsTaken());
     }
     if (o.frames > 0 && frame >= o.frames) window.requestClose();
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "flow/line_plan.hpp"
 #include "util/input_error.hpp"
 #include "vk/context.hpp"
 
@@ -11,11 +12,20 @@ ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu
                          PreparedInput input)
     : options_(options), ctx_(&ctx), backend_(backend), input_(std::move(input)),
       tracer_(ctx, backend, input_.volume) {
-  traces_.emplace(input_.seeds.points, input_.options, input_.volume.vectorName);
+  startTraces();
   scene_ = prepareScene(options_.look, input_, traces_->traces());
   renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
   setColourMap(scene_.colourMap);
   rebuildTubes();
+}
+
+void ViewSession::startTraces() {
+  flow::LinePlan plan =
+      flow::planLines(input_.volume, input_.seeds.points, input_.options.direction);
+  traces_.reset();
+  vkQueueWaitIdle(ctx_->queue());
+  traces_.emplace(tracer_.startRounds(plan.states, input_.options), std::move(plan.layout),
+                  flow::traceShape(input_.volume, input_.options));
 }
 
 void ViewSession::rebuildTubes() {
@@ -32,8 +42,9 @@ void ViewSession::setColourMap(render::ColourMap map) {
 void ViewSession::restartTraces() {
   std::string description;
   input_.seeds = chooseSeeds(options_.job, input_.field, input_.volume, description);
+  flow::closeUpperFaces(input_.volume, input_.seeds);
   flow::checkSeedsInDomain(input_.volume, input_.seeds);
-  traces_.emplace(input_.seeds.points, input_.options, input_.volume.vectorName);
+  startTraces();
   rebuildTubes();
 }
 
@@ -50,11 +61,7 @@ void ViewSession::reloadVolume() {
 std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
   std::size_t taken = 0;
   if (!paused && !traces_->finished()) {
-    const flow::TraceFunction trace = [&](std::span<const glm::dvec3> starts,
-                                          const flow::TraceOptions& o) {
-      return tracer_.trace(starts, o);
-    };
-    taken = traces_->advance(trace, options_.stepsPerFrame);
+    taken = traces_->advance(options_.stepsPerFrame);
     rebuildTubes();
   }
   if (width != renderer_->width() || height != renderer_->height()) {

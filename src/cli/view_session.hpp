@@ -34,6 +34,8 @@ class ViewSession {
 
   // Seeds again with the current seeding options and restarts the traces.
   void restartTraces();
+  // Starts the traces of the current seeds and options.
+  void startTraces();
   // Rebuilds the tubes from the traces as they are (after a colour or radius change).
   void rebuildTubes();
   void setColourMap(render::ColourMap map);

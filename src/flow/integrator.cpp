@@ -4,138 +4,148 @@
 
 #include <atomic>
 
+#include "line_plan.hpp"
+#include "line_tracer.hpp"
+#include "round_tracer.hpp"
 #include "sampler.hpp"
+#include "trace_accumulator.hpp"
 
 namespace amrstream::flow {
 
 namespace {
 
-// Positions are integrated in finest-cell units; velocities and cell widths are physical.
-// parameterStep() is the advance of IntegrationTime (physical time, or physical arc length in arc
-// mode) and direction() the RK4 stage vector in cell units; both read the same TraceParams
-// values as their GLSL twins in shaders/glsl/include/integrator.glsl.
-float parameterStep(const shared::TraceParams& params, const VectorSample& s) {
-  return params.stepMode == AMRSTREAM_STEP_TIME
-             ? params.stepSize
-             : params.stepSize * s.cellWidth * params.physicalCellWidth;
+// A point as the line tracer emits it, before its point data.
+struct EmittedPoint {
+  glm::vec3 position;  // cell units
+  float time;
+  glm::vec3 vector;
+  std::int32_t region;
+};
+
+constexpr RoundCosts kCpuCosts{sizeof(shared::LineState) + sizeof(shared::LineRound) +
+                                   sizeof(std::vector<EmittedPoint>),
+                               sizeof(EmittedPoint)};
+
+// One round over the live lines: each line's points, then the block in line order with its point
+// data. `live` keeps the lines that go on.
+// `lineEnded` is called from the worker threads as lines end.
+RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& params,
+                      const TraceOptions& options, std::vector<shared::LineState>& live,
+                      const std::function<void()>& lineEnded) {
+  std::vector<std::vector<EmittedPoint>> emitted(live.size());
+  RoundBlock block;
+  block.lines.resize(live.size());
+  tbb::parallel_for(std::size_t(0), live.size(), [&](std::size_t i) {
+    std::vector<EmittedPoint>& points = emitted[i];
+    points.reserve(params.pointsPerLine);
+    block.lines[i] = advanceLine(volume, params, live[i],
+                                 [&](glm::vec3 x, float time, const VectorSample& s) {
+                                   points.push_back({x, time, s.value, s.region});
+                                 });
+    if (block.lines[i].reason != AMRSTREAM_REASON_RUNNING) lineEnded();
+  });
+
+  std::vector<std::size_t> first(live.size() + 1, 0);
+  for (std::size_t i = 0; i < live.size(); ++i) first[i + 1] = first[i] + emitted[i].size();
+  const std::size_t points = first.back(), channels = volume.channelCount();
+  block.positions.resize(points);
+  block.times.resize(points);
+  block.vectors.resize(points);
+  block.channels.resize(points * channels);
+  if (options.vorticity) block.vorticity.resize(points);
+  tbb::parallel_for(std::size_t(0), live.size(), [&](std::size_t i) {
+    for (std::size_t k = 0; k < emitted[i].size(); ++k) {
+      const EmittedPoint& p = emitted[i][k];
+      const std::size_t at = first[i] + k;
+      block.positions[at] = glm::vec3(volume.transform.toPhysical(glm::dvec3(p.position)));
+      block.times[at] = p.time;
+      block.vectors[at] = p.vector;
+      sampleChannels(volume, p.region, p.position,
+                     std::span<float>(block.channels.data() + at * channels, channels));
+      if (options.vorticity) block.vorticity[at] = sampleVorticity(volume, p.region, p.position);
+    }
+  });
+
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < live.size(); ++i)
+    if (block.lines[i].reason == AMRSTREAM_REASON_RUNNING) live[kept++] = live[i];
+  live.resize(kept);
+  return block;
 }
 
-glm::vec3 direction(const shared::TraceParams& params, const VectorSample& s) {
-  glm::vec3 v = s.value;
-  if (params.stepMode == AMRSTREAM_STEP_ARC) {
-    const float speed = glm::length(v);
-    v = speed > 0.0f ? v / speed : glm::vec3(0.0f);
+class CpuRoundTracer final : public RoundTracer {
+ public:
+  CpuRoundTracer(const VectorVolume& volume, std::vector<shared::LineState> lines,
+                 const TraceOptions& options, std::function<void()> lineEnded)
+      : volume_(&volume), options_(options), params_(makeTraceParams(volume, options)),
+        live_(std::move(lines)), lineEnded_(std::move(lineEnded)) {}
+
+  std::size_t liveLines() const override { return live_.size(); }
+
+  RoundBlock advance(std::uint32_t steps) override {
+    params_.lineCount = static_cast<std::uint32_t>(live_.size());
+    params_.roundSteps = std::max(steps, 1u);
+    params_.pointsPerLine = pointsPerLine(options_, params_.roundSteps);
+    return traceRound(*volume_, params_, options_, live_, lineEnded_);
   }
-  return parameterStep(params, s) * v * params.cellsPerPhysical;
-}
 
-// The reason a stage sample ends the trace, or AMRSTREAM_REASON_RUNNING.
-int sampleFailure(const VectorSample& s) {
-  if (!s.located) return AMRSTREAM_REASON_OUT_OF_DOMAIN;
-  if (!s.valid) return AMRSTREAM_REASON_UNEXPECTED_VALUE;
-  return AMRSTREAM_REASON_RUNNING;
-}
-
-void traceSeed(const VectorVolume& volume, glm::vec3 seed, const shared::TraceParams& params,
-               TraceSet& out, std::uint32_t seedIndex) {
-  const glm::dvec3 origin = volume.transform.origin, spacing = volume.transform.spacing;
-  glm::vec3 x = seed;
-  RegionCache cache;
-  VectorSample s = sampleVector(volume, x, &cache);
-  float time = 0.0f, length = 0.0f;
-  std::uint32_t points = 0;
-  // Without history every point overwrites slot 0, so the last point remains.
-  const auto append = [&](glm::vec3 position, const VectorSample& sample) {
-    const std::size_t at = out.at(seedIndex, params.keepHistory ? points : 0);
-    ++points;
-    out.positions[at] = glm::vec3(origin + spacing * glm::dvec3(position));
-    out.times[at] = time;
-    out.vectors[at] = sample.value;
-  };
-  append(x, s);
-
-  int reason = sampleFailure(s);
-  for (std::uint32_t step = 0; reason == AMRSTREAM_REASON_RUNNING; ++step) {
-    if (glm::length(s.value) < params.terminalSpeed) {
-      reason = AMRSTREAM_REASON_STAGNATION;
-      break;
-    }
-    if (step == params.maxSteps) {
-      reason = AMRSTREAM_REASON_MAX_STEPS;
-      break;
-    }
-    const glm::vec3 k1 = direction(params, s);
-    const VectorSample s2 = sampleVector(volume, x + 0.5f * k1, &cache);
-    if ((reason = sampleFailure(s2))) break;
-    const glm::vec3 k2 = direction(params, s2);
-    const VectorSample s3 = sampleVector(volume, x + 0.5f * k2, &cache);
-    if ((reason = sampleFailure(s3))) break;
-    const glm::vec3 k3 = direction(params, s3);
-    const VectorSample s4 = sampleVector(volume, x + k3, &cache);
-    if ((reason = sampleFailure(s4))) break;
-    const glm::vec3 k4 = direction(params, s4);
-    const glm::vec3 next = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
-    const VectorSample sNext = sampleVector(volume, next, &cache);
-    if ((reason = sampleFailure(sNext))) break;
-
-    if (params.maxLength > 0.0f) {
-      const float stepLength = glm::length(params.spacing * (next - x));
-      if (length + stepLength > params.maxLength) {
-        reason = AMRSTREAM_REASON_MAX_LENGTH;
-        break;
-      }
-      length += stepLength;
-    }
-    time += parameterStep(params, s);
-    x = next;
-    s = sNext;
-    append(x, s);
-  }
-  out.pointCounts[seedIndex] = params.keepHistory ? points : 1;
-  out.steps[seedIndex] = points - 1;
-  out.reasons[seedIndex] = reason;
-}
+ private:
+  const VectorVolume* volume_;
+  TraceOptions options_;
+  shared::TraceParams params_;
+  std::vector<shared::LineState> live_;
+  std::function<void()> lineEnded_;
+};
 
 }  // namespace
 
-shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options,
-                                    std::size_t seedCount) {
+std::unique_ptr<RoundTracer> cpuRoundTracer(const VectorVolume& volume,
+                                            std::vector<shared::LineState> lines,
+                                            const TraceOptions& options) {
+  return std::make_unique<CpuRoundTracer>(volume, std::move(lines), options, [] {});
+}
+
+shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options) {
   const glm::dvec3 spacing = volume.transform.spacing;
   shared::TraceParams params{};
   params.domainLower = volume.domain.lower;
   params.domainUpper = volume.domain.upper;
-  params.seedCount = static_cast<std::uint32_t>(seedCount);
-  params.capacity = options.keepHistory ? options.maxSteps + 1 : 1;
   params.cellsPerPhysical = glm::vec3(1.0 / spacing);
   params.physicalCellWidth = float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)));
   params.spacing = glm::vec3(spacing);
   params.stepMode = static_cast<int>(options.stepMode);
+  params.period = glm::vec3(volume.period());
+  for (int a = 0; a < 3; ++a) params.periodicAxes |= volume.periodic[a] ? 1u << a : 0u;
   params.stepSize = options.stepSize;
   params.maxSteps = options.maxSteps;
   params.terminalSpeed = options.terminalSpeed;
   params.maxLength = options.maxLength;
+  params.maxTime = options.maxTime;
   params.keepHistory = options.keepHistory ? 1u : 0u;
   return params;
 }
 
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
-                          const TraceOptions& options,
-                          const std::function<void(std::size_t)>& progress) {
-  const shared::TraceParams params = makeTraceParams(volume, options, seeds.size());
-  TraceSet out;
-  out.resize(static_cast<std::uint32_t>(seeds.size()), params.capacity);
-  out.vectorName = volume.vectorName;
-
-  std::atomic<std::size_t> finished{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 16), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const glm::vec3 seed(volume.transform.toCellUnits(seeds[i]));
-      traceSeed(volume, seed, params, out, static_cast<std::uint32_t>(i));
-    }
-    const std::size_t done = finished += range.size();
-    if (progress) progress(done);
-  });
-  return out;
+                          const TraceOptions& options, const TraceProgress& progress) {
+  LinePlan plan = planLines(volume, seeds, options.direction);
+  const std::size_t lines = plan.states.size();
+  TraceAccumulator accumulator(std::move(plan.layout), traceShape(volume, options));
+  accumulator.setMemoryLimit(options.maxResultBytes);
+  const std::size_t batch = linesPerBatch(options, kCpuCosts, lines);
+  std::atomic<std::size_t> ended{0};
+  const auto lineEnded = [&] {
+    const std::size_t done = ++ended;
+    if (progress) progress(done, lines);
+  };
+  for (std::size_t first = 0; first < lines; first += batch) {
+    const std::size_t last = std::min(lines, first + batch);
+    CpuRoundTracer rounds(volume, {plan.states.begin() + first, plan.states.begin() + last},
+                          options, lineEnded);
+    const std::uint64_t slots = pointSlots(options, kCpuCosts, last - first);
+    while (rounds.liveLines() > 0)
+      accumulator.add(rounds.advance(stepsPerRound(options, slots, rounds.liveLines())));
+  }
+  return accumulator.assemble();
 }
 
 }  // namespace amrstream::flow

@@ -1,6 +1,7 @@
 #pragma once
-// The streamline integrator (DESIGN.md section 6): RK4 with the step mode's direction scaling,
-// terminated with VTK's ReasonForTermination codes. The CPU reference of the GLSL integrator.
+// Streamline tracing options and the CPU reference tracer: RK4 with the step mode's direction
+// scaling (docs/architecture.md, "Integration"), in rounds of steps whose points are collected
+// into a TraceSet (trace_accumulator.hpp), terminated with VTK's ReasonForTermination codes.
 
 #include <cstdint>
 #include <functional>
@@ -20,23 +21,38 @@ enum class StepMode : int {
   Arc = AMRSTREAM_STEP_ARC,
 };
 
+// vtkStreamTracer's IntegrationDirection: Both traces each seed forward and backward, two lines.
+enum class Direction { Forward, Backward, Both };
+
+inline constexpr std::uint64_t kDefaultMemoryBudget = std::uint64_t(1) << 30;
+
 struct TraceOptions {
   StepMode stepMode = StepMode::Cell;
   float stepSize = 0.25f;         // h: cell widths (cell, arc) or physical time (time)
-  std::uint32_t maxSteps = 1000;  // a trace holds at most maxSteps + 1 points
+  std::uint32_t maxSteps = 1000;  // a line holds at most maxSteps + 1 points
   float terminalSpeed = 1e-12f;   // stagnation below this speed (physical units)
   float maxLength = 0.0f;         // physical arc length limit; 0 means none
-  bool keepHistory = true;        // false: store only each trace's last point
+  float maxTime = 0.0f;           // |IntegrationTime| limit, the last step shortened to meet it
+  Direction direction = Direction::Both;
+  bool keepHistory = true;  // false: store only each line's last point
+  bool vorticity = false;   // sample the curl of the vector at every point
+  // Bytes the rounds' working buffers may take (device and host staging; the collected result
+  // is not counted). Sets the steps per round and the lines traced at once.
+  std::uint64_t memoryBudget = kDefaultMemoryBudget;
+  std::uint32_t roundSteps = 0;  // steps per round; 0: as many as memoryBudget allows
+  // The collected traces may take at most this many bytes (0: no limit): tracing stops with an
+  // InputError once they grow past it, rather than exhausting the machine's memory.
+  std::uint64_t maxResultBytes = 0;
 };
 
-// The dispatch parameters shared with the GPU kernels, for `seedCount` seeds.
-shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options,
-                                    std::size_t seedCount);
+// The round parameters shared with the GPU kernels; lineCount, roundSteps and pointsPerLine are
+// set per round.
+shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options);
 
-// Traces every seed (physical coordinates) in parallel over all cores. `progress`, when set, is
-// called from worker threads with the number of seeds finished so far.
+// Traces every seed (physical coordinates) in the options' directions on all cores. `progress`,
+// when set, is called with the lines finished so far and the number of lines.
+using TraceProgress = std::function<void(std::size_t finished, std::size_t lines)>;
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
-                          const TraceOptions& options,
-                          const std::function<void(std::size_t)>& progress = {});
+                          const TraceOptions& options, const TraceProgress& progress = {});
 
 }  // namespace amrstream::flow

@@ -1,48 +1,39 @@
 #pragma once
 // Traces that grow a few steps at a time, for the viewer's progressive tracing: each advance()
-// continues every running trace from its last point for up to N more steps, through any tracer
-// (the CPU reference or a GPU backend, one thread per running particle). RK4 keeps no state
-// between steps but the point, so the traces equal one run of maxSteps, up to the rounding of
-// the stored float end points; IntegrationTime and the remaining --max-length carry over.
+// runs one round of any RoundTracer (the CPU reference or a GPU backend, one thread per live
+// line) and the traces so far are kept as a TraceSet. The lines equal one run of maxSteps: a
+// line continued in the next round is the line traced in one go.
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <glm/glm.hpp>
-#include <span>
-#include <string>
+#include <memory>
 #include <vector>
 
-#include "integrator.hpp"
+#include "round_tracer.hpp"
+#include "trace_accumulator.hpp"
 #include "trace_set.hpp"
 
 namespace amrstream::flow {
 
-using TraceFunction =
-    std::function<TraceSet(std::span<const glm::dvec3> seeds, const TraceOptions& options)>;
-
 class ProgressiveTraces {
  public:
-  // options.keepHistory must be true.
-  ProgressiveTraces(std::span<const glm::dvec3> seeds, const TraceOptions& options,
-                    std::string vectorName);
+  // `shape` gives the names and the periodic box of the traces (see TraceAccumulator).
+  ProgressiveTraces(std::unique_ptr<RoundTracer> tracer, LineLayout lines, const TraceSet& shape);
 
-  // Advances the running traces by up to `steps` steps each; returns the particle-steps taken.
-  std::size_t advance(const TraceFunction& trace, std::uint32_t steps);
+  // Advances the live lines by up to `steps` steps each; returns the particle-steps taken.
+  std::size_t advance(std::uint32_t steps);
 
-  bool finished() const { return running_.empty(); }
-  std::size_t runningCount() const { return running_.size(); }
+  bool finished() const { return tracer_->liveLines() == 0; }
+  std::size_t runningCount() const { return tracer_->liveLines(); }
   std::size_t stepsTaken() const { return stepsTaken_; }
-  // Reasons are AMRSTREAM_REASON_RUNNING until a trace ends; capacity is maxSteps + 1.
+  // The lines so far; reasons are AMRSTREAM_REASON_RUNNING until a line ends.
   const TraceSet& traces() const { return traces_; }
 
  private:
-  TraceOptions options_;
-  std::vector<glm::dvec3> seeds_;
-  std::uint32_t roundSteps_ = 0;         // steps every running trace has taken
+  std::unique_ptr<RoundTracer> tracer_;
+  TraceAccumulator accumulator_;
   TraceSet traces_;
-  std::vector<std::uint32_t> running_;  // seeds of the traces still running
-  std::vector<float> lengths_;          // physical arc length so far, per seed
+  std::vector<std::uint32_t> lineSteps_;
   std::size_t stepsTaken_ = 0;
 };
 

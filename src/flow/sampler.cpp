@@ -1,6 +1,7 @@
 #include "sampler.hpp"
 
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace amrstream::flow {
@@ -16,37 +17,50 @@ bool insideBox(const shared::Region& region, glm::vec3 p) {
   return glm::all(glm::greaterThanEqual(p, region.lower)) && glm::all(glm::lessThan(p, region.upper));
 }
 
+// The 2x2x2 cells of one brick around p with a non-zero tent weight
+// H_i(p) = prod_d max(0, 1 - |c_i,d - p_d| / w_i): calls visit(slot, axisWeights, offset, width)
+// for each such cell inside the brick, in the order every reconstruction sums them.
+template <typename Visit>
+void forEachTentCell(const shared::Brick& brick, glm::vec3 p, Visit&& visit) {
+  const float width = float(1 << brick.level);
+  const glm::vec3 local = (p - glm::vec3(brick.lower)) / width - 0.5f;
+  const glm::vec3 base = glm::floor(local);
+  const glm::vec3 frac = local - base;
+  const glm::ivec3 lo(base);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::ivec3 offset(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    const glm::ivec3 cell = lo + offset;
+    if (glm::any(glm::lessThan(cell, glm::ivec3(0))) ||
+        glm::any(glm::greaterThanEqual(cell, brick.size)))
+      continue;
+    const glm::vec3 axisWeight = glm::mix(1.0f - frac, frac, glm::vec3(offset));
+    const std::uint32_t slot =
+        brick.valueOffset + std::uint32_t(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
+    visit(slot, axisWeight, offset, width);
+  }
+}
+
+template <typename Visit>
+void forEachRegionTentCell(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
+                           Visit&& visit) {
+  for (std::uint32_t k = 0; k < region.brickCount; ++k)
+    forEachTentCell(volume.bricks[volume.regions.regionBricks[region.brickOffset + k]], p, visit);
+}
+
 // The tent basis-function sum over the region's bricks: returns the sum of the weights and sets
-// `weighted` to the weighted sum of the brick-ordered `values`. Only the 2x2x2 cells of each
-// brick around p have a non-zero tent weight H_i(p) = prod_d max(0, 1 - |c_i,d - p_d| / w_i);
-// the weights are computed once per brick and applied to all components.
+// `weighted` to the weighted sum of the brick-ordered `values`. The weights are computed once per
+// cell and applied to all components.
 template <typename Value>
 float reconstruct(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
                   std::span<const Value> values, Value& weighted) {
   float weightSum = 0.0f;
   weighted = Value(0.0f);
-  for (std::uint32_t k = 0; k < region.brickCount; ++k) {
-    const shared::Brick& brick = volume.bricks[volume.regions.regionBricks[region.brickOffset + k]];
-    const float width = float(1 << brick.level);
-    const glm::vec3 local = (p - glm::vec3(brick.lower)) / width - 0.5f;
-    const glm::vec3 base = glm::floor(local);
-    const glm::vec3 frac = local - base;
-    const glm::ivec3 lo(base);
-    for (int corner = 0; corner < 8; ++corner) {
-      const glm::ivec3 offset(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-      const glm::ivec3 cell = lo + offset;
-      if (glm::any(glm::lessThan(cell, glm::ivec3(0))) ||
-          glm::any(glm::greaterThanEqual(cell, brick.size)))
-        continue;
-      const glm::vec3 axisWeight = glm::mix(1.0f - frac, frac, glm::vec3(offset));
-      const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
-      const std::uint32_t slot =
-          brick.valueOffset +
-          std::uint32_t(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
-      weightSum += weight;
-      weighted += weight * values[slot];
-    }
-  }
+  forEachRegionTentCell(volume, region, p,
+                        [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float) {
+                          const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+                          weightSum += weight;
+                          weighted += weight * values[slot];
+                        });
   return weightSum;
 }
 
@@ -61,7 +75,23 @@ std::int32_t findRegion(const VectorVolume& volume, glm::vec3 p, RegionCache* ca
   return regionId;
 }
 
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
 }  // namespace
+
+glm::vec3 wrapPeriodic(const VectorVolume& volume, glm::vec3 p) {
+  for (int a = 0; a < 3; ++a) {
+    if (!volume.periodic[a]) continue;
+    const float lower = float(volume.domain.lower[a]), upper = float(volume.domain.upper[a]);
+    const float period = upper - lower;
+    if (p[a] >= upper)
+      p[a] -= period;
+    else if (p[a] < lower)
+      p[a] += period;
+    if (p[a] >= upper) p[a] = lower;  // a point just below the lower face rounded onto the upper
+  }
+  return p;
+}
 
 std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p) {
   return insideDomain(volume, p) ? volume.regions.locate(p) : -1;
@@ -74,9 +104,11 @@ VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* 
   const shared::Region& region = volume.regions.regions[regionId];
   sample.located = true;
   sample.cellWidth = region.finestCellWidth;
+  sample.region = regionId;
 
   glm::vec3 weighted(0.0f);
-  const float weightSum = reconstruct(volume, region, p, std::span<const glm::vec3>(volume.values), weighted);
+  const float weightSum =
+      reconstruct(volume, region, p, std::span<const glm::vec3>(volume.values), weighted);
   if (!(weightSum > kMinWeightSum)) return sample;
   sample.value = weighted / weightSum;
   sample.valid = !glm::any(glm::isnan(sample.value)) && !glm::any(glm::isinf(sample.value));
@@ -94,6 +126,49 @@ std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const fl
   const float value = weighted / weightSum;
   if (!std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p,
+                    std::span<float> out) {
+  const std::size_t channels = out.size();
+  std::fill(out.begin(), out.end(), 0.0f);
+  float weightSum = 0.0f;
+  if (region >= 0)
+    forEachRegionTentCell(volume, volume.regions.regions[region], p,
+                          [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float) {
+                            const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+                            weightSum += weight;
+                            const float* values = &volume.channelValues[slot * channels];
+                            for (std::size_t c = 0; c < channels; ++c) out[c] += weight * values[c];
+                          });
+  for (float& value : out) value = weightSum > kMinWeightSum ? value / weightSum : kNaN;
+}
+
+glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p) {
+  if (region < 0) return glm::vec3(kNaN);
+  float weightSum = 0.0f;
+  glm::vec3 weighted(0.0f), weightGradient(0.0f);
+  glm::vec3 weightedGradient[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+  forEachRegionTentCell(
+      volume, volume.regions.regions[region], p,
+      [&](std::uint32_t slot, glm::vec3 a, glm::ivec3 offset, float width) {
+        const glm::vec3 da = (2.0f * glm::vec3(offset) - 1.0f) / width;
+        const float weight = a.x * a.y * a.z;
+        const glm::vec3 gradient(da.x * a.y * a.z, a.x * da.y * a.z, a.x * a.y * da.z);
+        const glm::vec3 v = volume.values[slot];
+        weightSum += weight;
+        weighted += weight * v;
+        weightGradient += gradient;
+        for (int d = 0; d < 3; ++d) weightedGradient[d] += gradient[d] * v;
+      });
+  if (!(weightSum > kMinWeightSum)) return glm::vec3(kNaN);
+  const glm::vec3 value = weighted / weightSum;
+  const glm::vec3 cellsPerPhysical(1.0 / volume.transform.spacing);
+  glm::vec3 jacobian[3];  // jacobian[d] = dB/dx_d, physical
+  for (int d = 0; d < 3; ++d)
+    jacobian[d] = (weightedGradient[d] - value * weightGradient[d]) / weightSum * cellsPerPhysical[d];
+  return {jacobian[1].z - jacobian[2].y, jacobian[2].x - jacobian[0].z,
+          jacobian[0].y - jacobian[1].x};
 }
 
 }  // namespace amrstream::flow

@@ -1,6 +1,7 @@
 #pragma once
-// Point location and basis-function reconstruction (DESIGN.md section 5): the CPU reference of
-// the GLSL functions of the same names.
+// Point location and basis-function reconstruction (docs/architecture.md, "Sampling"): the CPU
+// reference of the GLSL functions of the same names (shaders/glsl/include/sampler.glsl and
+// point_data.glsl).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -18,8 +19,12 @@ struct VectorSample {
   bool located = false;  // p is inside the domain and in a region
   bool valid = false;    // located and the weights sum above kMinWeightSum
   glm::vec3 value{0.0f};
-  float cellWidth = 0.0f;  // finest cell width of p's region, in finest-cell units
+  float cellWidth = 0.0f;   // finest cell width of p's region, in finest-cell units
+  std::int32_t region = -1;  // p's region when located
 };
+
+// p moved by whole periods into the domain along its periodic axes; unchanged otherwise.
+glm::vec3 wrapPeriodic(const VectorVolume& volume, glm::vec3 p);
 
 // Region containing p (finest-cell units), or -1 outside the domain or in empty space.
 std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p);
@@ -31,12 +36,24 @@ struct RegionCache {
   std::int32_t id = -1;
 };
 
-// With a cache, tries its region first and stores the region found.
+// p must already be wrapped (wrapPeriodic). With a cache, tries its region first and stores the
+// region found.
 VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache = nullptr);
 
 // The same reconstruction for a scalar gathered in brick order (gatherScalar()): the value at p,
 // or none outside the domain and regions, where the weights vanish, or when it is not finite.
 std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
                                   glm::vec3 p, RegionCache* cache = nullptr);
+
+// The point-data channels at p in `region` (where p's vector sample was located): one value per
+// channel into `out`, NaN for all when region is -1 or the weights vanish.
+void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p,
+                    std::span<float> out);
+
+// The curl of the reconstructed vector at p in `region`, in the vector's units per physical
+// length; NaN when region is -1 or the weights vanish. The reconstruction is a quotient of tent
+// sums, B = S_v / S_1, so dB/dp = (dS_v/dp - B dS_1/dp) / S_1 with the tents' piecewise-constant
+// derivatives.
+glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p);
 
 }  // namespace amrstream::flow

@@ -1,5 +1,7 @@
 #include "seeds.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -70,6 +72,14 @@ glm::dvec3 domainLower(const VectorVolume& volume) {
 }
 glm::dvec3 domainUpper(const VectorVolume& volume) {
   return volume.transform.toPhysical(glm::dvec3(volume.domain.upper));
+}
+
+void closeUpperFaces(const VectorVolume& volume, SeedList& seeds) {
+  const glm::dvec3 upper = domainUpper(volume);
+  const glm::dvec3 inside = upper - 1e-4 * volume.transform.spacing;
+  for (glm::dvec3& p : seeds.points)
+    for (int a = 0; a < 3; ++a)
+      if (p[a] >= inside[a] && p[a] <= upper[a]) p[a] = std::min(p[a], inside[a]);
 }
 
 void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {

@@ -32,6 +32,10 @@ SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,
 glm::dvec3 domainLower(const VectorVolume& volume);
 glm::dvec3 domainUpper(const VectorVolume& volume);
 
+// Seeds on the domain's upper faces, which the half-open domain [lower, upper) leaves out, moved
+// inside by 1e-4 of a finest cell: users give the domain's corners as rake ends and grid bounds.
+void closeUpperFaces(const VectorVolume& volume, SeedList& seeds);
+
 // Throws InputError naming the first seed outside the domain (outside the cells' bounding box or
 // in empty space between them), with its origin and the domain bounds.
 void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds);

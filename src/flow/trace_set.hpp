@@ -1,42 +1,67 @@
 #pragma once
-// The result of tracing: for each seed a polyline of up to `capacity` points (the seed and one
-// point per step), stored seed-major with a fixed stride, plus per-trace counts and reasons.
-// Without history (endpoints-only) capacity is 1 and each trace stores only its last point.
+// The result of tracing: polylines ("lines"), each one seed traced in one direction, stored one
+// after the other (compressed rows: the points of line i are [offsets[i], offsets[i + 1])), with
+// the data of every point and of every line. Lines are in vtkStreamTracer's order: with both
+// directions, the forward lines of all seeds, then the backward lines of all seeds; every line
+// starts at its seed.
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace amrstream::flow {
 
-struct TraceSet {
-  // Bytes stored per trace point: position, IntegrationTime and vector.
-  static constexpr std::size_t kBytesPerPoint = 2 * sizeof(glm::vec3) + sizeof(float);
+// The box positions were wrapped into along its periodic axes (physical coordinates); a line
+// that crosses a periodic face jumps by the period between two consecutive points.
+struct PeriodicBox {
+  std::array<bool, 3> axes{};
+  glm::dvec3 lower{0.0}, upper{0.0};
 
-  std::uint32_t seedCount = 0;
-  std::uint32_t capacity = 0;  // points stored per trace: max steps + 1, or 1 without history
-  std::string vectorName;      // name of the traced vector, e.g. "velocity" or "velx,vely,velz"
-  std::vector<glm::vec3> positions;        // physical coordinates, [seed * capacity + point]
-  std::vector<float> times;                // IntegrationTime at each point
-  std::vector<glm::vec3> vectors;          // sampled vector at each point
-  std::vector<std::uint32_t> pointCounts;  // points stored for each trace, >= 1
-  std::vector<std::uint32_t> steps;        // integration steps each trace took
-  std::vector<std::int32_t> reasons;       // ReasonForTermination of each trace (trace_codes.h)
-
-  void resize(std::uint32_t seeds, std::uint32_t pointsPerTrace) {
-    seedCount = seeds;
-    capacity = pointsPerTrace;
-    const std::size_t n = std::size_t(seeds) * pointsPerTrace;
-    positions.assign(n, glm::vec3(0.0f));
-    times.assign(n, 0.0f);
-    vectors.assign(n, glm::vec3(0.0f));
-    pointCounts.assign(seeds, 0);
-    steps.assign(seeds, 0);
-    reasons.assign(seeds, 0);
+  bool any() const { return axes[0] || axes[1] || axes[2]; }
+  // Whether the segment a -> b crosses a periodic face (jumps by more than half a period).
+  bool wraps(glm::vec3 a, glm::vec3 b) const {
+    for (int axis = 0; axis < 3; ++axis)
+      if (axes[axis] && std::abs(double(b[axis]) - double(a[axis])) >
+                            0.5 * (upper[axis] - lower[axis]))
+        return true;
+    return false;
   }
-  std::size_t at(std::uint32_t seed, std::uint32_t point) const {
-    return std::size_t(seed) * capacity + point;
+};
+
+struct TraceSet {
+  std::string vectorName;                 // e.g. "vel" for velx,vely,velz
+  std::vector<std::string> channelNames;  // point-data channels, in the order of `channels`
+  PeriodicBox periodic;
+
+  // Per line.
+  std::vector<std::uint32_t> seedIds;
+  std::vector<float> directions;       // +1 forward, -1 backward
+  std::vector<std::uint32_t> steps;    // integration steps the line took
+  std::vector<std::int32_t> reasons;   // ReasonForTermination (trace_codes.h)
+  std::vector<std::uint64_t> offsets{0};  // lineCount() + 1 entries, offsets[0] == 0
+
+  // Per point.
+  std::vector<glm::vec3> positions;  // physical coordinates
+  std::vector<float> times;          // IntegrationTime: negative along backward lines
+  std::vector<glm::vec3> vectors;    // the traced vector sampled at the point
+  std::vector<float> channels;       // channelNames.size() values per point
+  std::vector<glm::vec3> vorticity;  // one per point with withVorticity, else empty
+  bool withVorticity = false;
+
+  std::size_t lineCount() const { return seedIds.size(); }
+  std::uint64_t pointCount() const { return offsets.empty() ? 0 : offsets.back(); }
+  std::uint64_t pointCount(std::size_t line) const { return offsets[line + 1] - offsets[line]; }
+  std::uint64_t firstPoint(std::size_t line) const { return offsets[line]; }
+  std::size_t channelCount() const { return channelNames.size(); }
+
+  // Host bytes per stored point: position, IntegrationTime, vector, channels, vorticity.
+  static std::size_t bytesPerPoint(std::size_t channelCount, bool vorticity) {
+    return 2 * sizeof(glm::vec3) + sizeof(float) + channelCount * sizeof(float) +
+           (vorticity ? sizeof(glm::vec3) : 0);
   }
 };
 

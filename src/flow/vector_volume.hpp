@@ -1,7 +1,15 @@
 #pragma once
 // Everything the sampler reads, in the layout the GPU kernels also use: bricks, the vector
-// values in brick order, the regions with their kd-tree, and the domain box.
+// values in brick order, the point-data channels in brick order, the regions with their kd-tree,
+// the domain box and which of its axes are periodic.
+//
+// Periodic axes: positions wrap into the domain, and the tent sum near a periodic face must see
+// the cells on the far side. So for every brick whose domain (its box padded by half a cell)
+// reaches across a face, an image brick is added, shifted by the period, that shares the
+// original's values (the same valueOffset); the regions are built over originals and images, so
+// the sampler needs no other change. Images never create values and never hold seeds.
 
+#include <array>
 #include <glm/glm.hpp>
 #include <string>
 #include <string_view>
@@ -14,16 +22,33 @@
 
 namespace amrstream::flow {
 
+using PeriodicAxes = std::array<bool, 3>;
+
 struct VectorVolume {
-  std::vector<shared::Brick> bricks;
-  std::vector<glm::vec3> values;  // brick-ordered, see shared::Brick::valueOffset
+  std::vector<shared::Brick> bricks;   // originals first, then periodic images
+  std::size_t originalBrickCount = 0;  // bricks before the images
+  std::vector<glm::vec3> values;       // brick-ordered, see shared::Brick::valueOffset
   std::vector<std::uint32_t> cellIds;  // the field's cell at each value slot
+  // Point data: scalar channels sampled along the traces, brick-ordered and interleaved:
+  // channel c of slot s is channelValues[s * channelNames.size() + c].
+  std::vector<std::string> channelNames;
+  std::vector<float> channelValues;
   bricks::RegionSet regions;
   // Points outside the cells' bounding box [lower, upper) are out of the domain, even where the
   // half-cell padding of the brick domains reaches beyond it.
   bricks::CellBox domain;
+  PeriodicAxes periodic{};
   bricks::WorldTransform transform;
   std::string vectorName;
+
+  glm::ivec3 period() const { return domain.upper - domain.lower; }
+  std::size_t channelCount() const { return channelNames.size(); }
+};
+
+struct VolumeOptions {
+  bricks::BrickBuildOptions bricks;
+  PeriodicAxes periodic{};
+  std::vector<std::string> pointData;  // channel names to sample along the traces
 };
 
 struct VolumeBuildTimes {
@@ -32,13 +57,20 @@ struct VolumeBuildTimes {
   double gather = 0.0;
 };
 
+// Throws InputError (listing the channels) when a point-data channel is absent.
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
-                               const bricks::BrickBuildOptions& options = {},
+                               const VolumeOptions& options = {},
                                VolumeBuildTimes* times = nullptr);
 
 // A scalar channel of `field` in the volume's brick order, for sampleScalar() and the renderer.
 // Throws InputError listing the channels when `channel` is absent.
 std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
                                 std::string_view channel);
+
+// The point-data channels a request names: "all" (every channel but the vector's three), "none"
+// (or empty), or a comma-separated list. Throws InputError naming an unknown channel and listing
+// the available ones.
+std::vector<std::string> choosePointData(const bricks::AmrField& field,
+                                         const VectorChannels& vector, const std::string& request);
 
 }  // namespace amrstream::flow

@@ -1,44 +1,41 @@
 #pragma once
 // Streamline tracing on a Vulkan device with one of the GPU backends. Owns the volume's device
-// buffers (bricks, values, regions, region bricks), the backend's point-location structure (the
-// region tree for `compute`, an AABB acceleration structure for `rayquery` and `pipeline`) and
-// the kernel; trace() may be called many times.
+// buffers and point-location structure (volume_buffers.hpp) and the kernels; trace() may be
+// called many times.
 //
-// Runs proceed in chunks of seeds so that no output array passes maxStorageBufferRange or a
-// quarter of the device's largest memory heap; the results are those of one run.
+// A trace runs its lines in batches that fit the options' memory budget (and the device's buffer
+// range and dispatch limits), each batch in rounds of steps (gpu_rounds.hpp) whose real points
+// alone come back to the host, so host and device memory stay within the budget whatever the
+// number of steps; the result is that of one run. Within a batch, threads take the lines in
+// Morton order of their seeds, so that a subgroup traces neighbouring seeds through the same
+// bricks; results are returned in line order either way.
 
 #include <cstddef>
-#include <functional>
 #include <glm/glm.hpp>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "backend.hpp"
 #include "flow/integrator.hpp"
+#include "flow/line_plan.hpp"
+#include "flow/round_tracer.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "round_kernels.hpp"
 #include "trace_kernel.hpp"
-#include "vk/aabb_scene.hpp"
-#include "vk/buffer.hpp"
-#include "vk/gpu_timer.hpp"
+#include "volume_buffers.hpp"
 
 namespace amrstream::gpu {
 
-// What constructing the tracer took.
-struct TracerSetup {
-  double uploadSeconds = 0.0;     // the volume's buffers to the device
-  double structureSeconds = 0.0;  // the region tree's upload, or the acceleration structure build
-  double pipelineSeconds = 0.0;   // shader modules and pipeline (and binding table)
-  std::uint64_t volumeBytes = 0;     // device bytes of bricks, values, regions and region bricks
-  std::uint64_t structureBytes = 0;  // device bytes of the region tree or of the BLASes and TLAS
-};
-
-// The dispatches of the last trace().
+// The work of the last trace().
 struct TraceRunStats {
-  std::optional<double> kernelSeconds;  // device time summed over chunks; none without timestamps
-  std::size_t chunks = 0;
-  std::uint64_t chunkBytes = 0;  // device bytes of the largest chunk's seeds and outputs
+  std::optional<double> kernelSeconds;      // the tracing kernel, summed over rounds (with timing)
+  std::optional<double> compactionSeconds;  // compaction and point data (with timing)
+  std::size_t batches = 0;
+  std::size_t rounds = 0;
+  std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
 };
 
 class GpuTracer {
@@ -49,10 +46,14 @@ class GpuTracer {
   GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
             const KernelSettings& settings);
 
-  // Seeds in physical coordinates, as flow::traceStreamlines; the same output layout.
-  // `progress` is called with the number of seeds finished after each chunk.
+  // Seeds in physical coordinates, as flow::traceStreamlines, with the same result layout.
   flow::TraceSet trace(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
-                       const std::function<void(std::size_t)>& progress = {});
+                       const flow::TraceProgress& progress = {});
+
+  // Lines (flow::planLines) that advance one round per call, for progressive tracing; all in
+  // one batch. The tracer must outlive the result.
+  std::unique_ptr<flow::RoundTracer> startRounds(std::span<const shared::LineState> lines,
+                                                 const flow::TraceOptions& options);
 
   // The backend's locateRegion() for points in finest-cell units: the region id, or -1 outside
   // the domain and in empty space. Used by tests to compare point location with brute force.
@@ -61,43 +62,30 @@ class GpuTracer {
   Backend backend() const { return kernel_.backend; }
   const TracerSetup& setup() const { return setup_; }
   const TraceRunStats& lastRun() const { return lastRun_; }
-  // Seeds per dispatch for traces of `capacity` points.
-  std::size_t seedsPerChunk(std::uint32_t capacity) const;
-  // Caps the seeds per dispatch (0: no cap), so that tests can run many chunks on small inputs.
-  void limitSeedsPerChunk(std::size_t limit) { chunkLimit_ = limit; }
-  // On (the default), each dispatch hands seeds to threads in Morton order of their positions,
-  // so that a subgroup traces neighbouring seeds through the same bricks; results are returned
-  // in the caller's order either way.
+  // Lines one batch of trace() holds for these options.
+  std::size_t linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const;
+  // Caps the lines per batch (0: no cap), so that tests can run many batches on small inputs.
+  void limitLinesPerBatch(std::size_t limit) { batchLimit_ = limit; }
+  // Whether threads take lines in Morton order of their positions (on by default).
   void orderSeedsSpatially(bool on) { spatialOrder_ = on; }
+  // Timestamps around each round's kernels (off by default: they may keep the device from
+  // overlapping a round with the copy of the one before).
+  void timeKernels(bool on) { timeKernels_ = on; }
 
  private:
-  // Output buffers of one dispatch, in binding order (positions, times, vectors, point counts,
-  // reasons).
-  struct Outputs {
-    vk::Buffer positions, times, vectors, pointCounts, reasons;
-  };
-  Outputs makeOutputs(std::size_t seeds, std::uint32_t capacity) const;
-  // Runs the kernel over the seeds; returns its device time when the device has timestamps.
-  std::optional<double> dispatch(const TraceKernel& kernel, const shared::TraceParams& params,
-                                 std::span<const glm::vec3> seedCells,
-                                 const Outputs& outputs) const;
-  void traceChunk(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
-                  flow::TraceSet& out, std::uint32_t firstSeed);
+  // Output slots for a batch: the budget's, within the device's buffer range.
+  std::uint64_t pointSlots(const flow::TraceOptions& options, std::size_t batchLines) const;
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
-  vk::Buffer bricks_;
-  vk::Buffer values_;
-  vk::Buffer regions_;
-  vk::Buffer regionBricks_;
-  vk::Buffer tree_;                     // compute backend
-  std::optional<vk::AabbScene> scene_;  // rayquery and pipeline backends
-  TraceKernel kernel_;
-  std::optional<TraceKernel> probe_;  // created by the first locate()
-  vk::GpuTimer timer_;
-  std::size_t chunkLimit_ = 0;
-  bool spatialOrder_ = true;
   TracerSetup setup_;
+  VolumeBuffers device_;
+  TraceKernel kernel_;
+  RoundKernels roundKernels_;
+  std::optional<TraceKernel> probe_;  // created by the first locate()
+  std::size_t batchLimit_ = 0;
+  bool spatialOrder_ = true;
+  bool timeKernels_ = false;
   TraceRunStats lastRun_;
 };
 

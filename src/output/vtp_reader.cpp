@@ -150,23 +150,25 @@ std::vector<glm::vec3> readVectors(const VtkXmlFile& file, const XmlElement* arr
   return vectors;
 }
 
-// ReasonForTermination of each line: cell arrays list verts first, then lines.
-std::vector<std::int32_t> readReasons(const VtkXmlFile& file, const XmlElement& piece,
-                                      const PieceCounts& counts) {
+// An Int32 cell array of each line (cell arrays list verts first, then lines), or `fallback(i)`
+// for line i when the file has no such array.
+template <typename Fallback>
+std::vector<std::int32_t> readLineInts(const VtkXmlFile& file, const XmlElement& piece,
+                                       const PieceCounts& counts, const std::string& name,
+                                       Fallback fallback) {
   const XmlElement* cellData = piece.child("CellData");
-  const XmlElement* array = cellData ? cellData->dataArray("ReasonForTermination") : nullptr;
-  std::vector<std::int32_t> reasons(static_cast<std::size_t>(counts.lines), 0);
-  if (array == nullptr) return reasons;
-  const std::vector<std::int64_t> all =
-      file.integers(*array, counts.cells, 1, "CellData/ReasonForTermination");
-  for (std::size_t i = 0; i < reasons.size(); ++i) {
-    const std::int64_t reason = all[static_cast<std::size_t>(counts.verts) + i];
-    if (!std::in_range<std::int32_t>(reason)) {
-      file.fail(fmt::format("ReasonForTermination of line {} is {}, not an Int32", i, reason));
-    }
-    reasons[i] = static_cast<std::int32_t>(reason);
+  const XmlElement* array = cellData ? cellData->dataArray(name) : nullptr;
+  std::vector<std::int32_t> values(static_cast<std::size_t>(counts.lines));
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = fallback(i);
+  if (array == nullptr) return values;
+  const std::vector<std::int64_t> all = file.integers(*array, counts.cells, 1, "CellData/" + name);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::int64_t value = all[static_cast<std::size_t>(counts.verts) + i];
+    if (!std::in_range<std::int32_t>(value))
+      file.fail(fmt::format("{} of line {} is {}, not an Int32", name, i, value));
+    values[i] = static_cast<std::int32_t>(value);
   }
-  return reasons;
+  return values;
 }
 
 // The writer stores a trace that ends at its seed as a 2-point line repeating the point (see
@@ -182,19 +184,14 @@ std::uint32_t storedPoints(std::int64_t begin, std::int64_t end, const Lines& li
   return positions[a] == positions[b] && sameTime ? 1 : 2;
 }
 
-// Like the trace command's check of --count and --steps: the TraceSet must fit in 3/4 of memory.
-void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t lines, std::uint64_t capacity) {
-  const double bytes = double(lines) * double(capacity) * double(flow::TraceSet::kBytesPerPoint);
+// Like the trace command's check of --count and --steps: the traces must fit in 3/4 of memory.
+void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t points) {
+  const double bytes = double(points) * double(flow::TraceSet::bytesPerPoint(0, false));
   const double memory = physicalMemoryBytes();
-  if (lines > std::numeric_limits<std::uint32_t>::max() ||
-      capacity > std::numeric_limits<std::uint32_t>::max() ||
-      (memory > 0 && bytes > kTraceMemoryShare * memory)) {
-    file.fail(
-        fmt::format("{} lines padded to the longest ({} points) need {:.1f} GiB, more than "
-                    "3/4 of this machine's {:.1f} GiB; split the file or shorten its "
-                    "longest lines",
-                    lines, capacity, bytes / 0x1p30, memory / 0x1p30));
-  }
+  if (memory > 0 && bytes > kTraceMemoryShare * memory)
+    file.fail(fmt::format("its {} points need {:.1f} GiB, more than 3/4 of this machine's {:.1f} "
+                          "GiB; split the file",
+                          points, bytes / 0x1p30, memory / 0x1p30));
 }
 
 }  // namespace
@@ -218,34 +215,41 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
                 : std::vector<float>();
   const std::vector<glm::vec3> vectors =
       readVectors(file, vectorsArray, counts.points, traces.vectorName);
-  const std::vector<std::int32_t> reasons = readReasons(file, piece, counts);
+  const std::vector<std::int32_t> reasons =
+      readLineInts(file, piece, counts, "ReasonForTermination", [](std::size_t) { return 0; });
+  const std::vector<std::int32_t> seedIds = readLineInts(
+      file, piece, counts, "SeedIds", [](std::size_t i) { return static_cast<std::int32_t>(i); });
 
-  std::vector<std::uint32_t> pointCounts(lines.ends.size());
-  std::uint64_t capacity = 0;
-  for (std::size_t line = 0; line < lines.ends.size(); ++line) {
+  const std::size_t lineCount = lines.ends.size();
+  traces.offsets.assign(lineCount + 1, 0);
+  for (std::size_t line = 0; line < lineCount; ++line) {
     const std::int64_t begin = line == 0 ? 0 : lines.ends[line - 1];
-    if (lines.ends[line] - begin > std::numeric_limits<std::uint32_t>::max()) {
-      file.fail(fmt::format("line {} has {} points, more than a trace can hold", line,
-                            lines.ends[line] - begin));
-    }
-    pointCounts[line] = storedPoints(begin, lines.ends[line], lines, positions, times);
-    capacity = std::max<std::uint64_t>(capacity, pointCounts[line]);
+    traces.offsets[line + 1] =
+        traces.offsets[line] + storedPoints(begin, lines.ends[line], lines, positions, times);
   }
-  checkFitsInMemory(file, counts.lines, capacity);
+  checkFitsInMemory(file, traces.pointCount());
 
-  traces.resize(static_cast<std::uint32_t>(counts.lines), static_cast<std::uint32_t>(capacity));
-  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
-    const auto begin = static_cast<std::size_t>(seed == 0 ? 0 : lines.ends[seed - 1]);
-    for (std::uint32_t p = 0; p < pointCounts[seed]; ++p) {
+  const std::uint64_t points = traces.pointCount();
+  traces.positions.resize(points);
+  traces.times.assign(points, 0.0f);
+  traces.vectors.assign(points, glm::vec3(0.0f));
+  for (std::size_t line = 0; line < lineCount; ++line) {
+    const auto begin = static_cast<std::size_t>(line == 0 ? 0 : lines.ends[line - 1]);
+    bool backward = false;
+    for (std::uint64_t p = 0; p < traces.pointCount(line); ++p) {
       const auto id = static_cast<std::size_t>(lines.connectivity[begin + p]);
-      const std::size_t to = traces.at(seed, p);
+      const std::uint64_t to = traces.offsets[line] + p;
       traces.positions[to] = positions[id];
       if (!times.empty()) traces.times[to] = times[id];
       if (!vectors.empty()) traces.vectors[to] = vectors[id];
+      backward = backward || traces.times[to] < 0.0f;
     }
-    traces.pointCounts[seed] = pointCounts[seed];
-    traces.steps[seed] = pointCounts[seed] == 0 ? 0 : pointCounts[seed] - 1;
-    traces.reasons[seed] = reasons[seed];
+    traces.seedIds.push_back(static_cast<std::uint32_t>(std::max(seedIds[line], 0)));
+    traces.directions.push_back(backward ? -1.0f : 1.0f);
+    traces.steps.push_back(traces.pointCount(line) == 0
+                               ? 0
+                               : static_cast<std::uint32_t>(traces.pointCount(line) - 1));
+    traces.reasons.push_back(reasons[line]);
   }
   return traces;
 }

@@ -2,17 +2,18 @@
 // Reads traces back from VTK XML PolyData (.vtp): the files vtp_writer.hpp writes, and the same
 // layout written by other tools (VTK's vtkXMLPolyDataWriter, ParaView) when uncompressed.
 //
-// Mapping (one polyline of the file's <Lines> = one trace, in file order):
-// - positions from <Points>, gathered through the lines' connectivity; capacity is the longest
-//   polyline, pointCounts come from the offsets and steps are points - 1;
-// - times from the point array IntegrationTime (1 component), else 0;
+// Mapping (one polyline of the file's <Lines> = one line of the TraceSet, in file order):
+// - positions from <Points>, gathered through the lines' connectivity;
+// - times from the point array IntegrationTime (1 component), else 0; a line with a negative time
+//   is a backward line (direction -1);
 // - vectors from the point array that <PointData Vectors="..."> names (3 components), else the
 //   first 3-component Float32/Float64 point array, else zero; vectorName is that array's name
 //   ("" when there is none);
-// - reasons from the cell array ReasonForTermination (1 component), else 0.
-// Vertex, strip and polygon cells are ignored; a file without lines gives an empty TraceSet
-// (seedCount 0, capacity 0), and an empty line (which VTK itself refuses) a trace of 0 points,
-// so traces and cells stay one to one.
+// - reasons and seed ids from the cell arrays ReasonForTermination and SeedIds, else 0 and the
+//   line's index; steps are points - 1. Other point arrays (channels, vorticity) are not read.
+// Vertex, strip and polygon cells are ignored; a file without lines gives an empty TraceSet, and
+// an empty line (which VTK itself refuses) a line of 0 points, so lines and cells stay one to one.
+// A periodic line that the writer split at its wraps comes back as one line per piece.
 //
 // A 2-point line whose two points have the same position and IntegrationTime is read as a
 // 1-point trace: that is how the writer stores a trace that ends at its seed (an integration step
@@ -31,8 +32,7 @@ namespace amrstream::output {
 // Throws amrstream::InputError naming `path` and the problem on a missing or unreadable file,
 // one that is not VTK XML PolyData, has several pieces, is compressed or truncated, has an array
 // offset outside the appended data, connectivity ids out of range, decreasing offsets,
-// non-finite positions, or traces that would not fit in this machine's memory once padded to
-// the TraceSet's fixed stride.
+// non-finite positions, or traces that would not fit in this machine's memory.
 flow::TraceSet readVtpTraces(const std::filesystem::path& path);
 
 }  // namespace amrstream::output

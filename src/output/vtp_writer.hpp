@@ -1,19 +1,22 @@
 #pragma once
-// Writes traces as VTK XML PolyData (.vtp), readable by VTK 9 and ParaView: one polyline per
-// seed; point arrays IntegrationTime, Speed and the traced vector; cell arrays SeedIds and
-// ReasonForTermination.
+// Writes traces as VTK XML PolyData (.vtp), readable by VTK 9 and ParaView, laid out as
+// vtkStreamTracer's output: one polyline per line of the TraceSet (with both directions, the
+// forward lines of all seeds, then the backward ones, each starting at its seed); point arrays
+// the traced vector, the point-data channels, IntegrationTime, with vorticity Vorticity, Rotation
+// and AngularVelocity, and Speed; cell arrays ReasonForTermination and SeedIds.
+//
+// Periodic domains: positions are wrapped into the domain, so a line that crosses a periodic face
+// jumps by the period. By default (PeriodicLines::Split) such a line is written as several
+// polylines, split where it wraps, every piece inside the domain, all with the line's SeedIds;
+// every piece but the last has ReasonForTermination 8 (AMRSTREAM_REASON_PERIODIC_WRAP). With
+// PeriodicLines::Unwrapped, each line is one polyline in unwrapped coordinates (continuing past
+// the faces), so lengths and tangents along it are plain differences.
 //
 // Every polyline has at least 2 points. VTK rejects shorter lines when it builds its cell map
 // ("Invalid cell size for lines") and VTK 9.1 then crashes in vtkPolyData::GetCellPoints, so a
-// trace that ends at its seed (1 point) is written as a degenerate 2-point line that repeats the
-// point with all its point data (same position, IntegrationTime and vector). The file then has
-// one point more than the TraceSet for each such trace, and still one cell per trace, so the
-// cell arrays stay aligned with the seeds. readVtpTraces (vtp_reader.hpp) reads such a line back
-// as one point: a real integration step always advances IntegrationTime.
-//
-// A trace without points (TraceSet promises at least the seed; only the viewer's export of
-// progressive traces before their first step has them) has nothing to draw and gets no line:
-// cells then skip it, and the cell array SeedIds says which seed each line traces.
+// piece of one point (a line that ends at its seed) is written as a degenerate 2-point line that
+// repeats the point with all its point data. readVtpTraces (vtp_reader.hpp) reads such a line
+// back as one point: a real integration step always changes IntegrationTime.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,7 +25,13 @@
 
 namespace amrstream::output {
 
-// What a file holds: its polylines and points (more points than the TraceSet's when traces of
+enum class PeriodicLines { Split, Unwrapped };
+
+struct VtpWriteOptions {
+  PeriodicLines periodicLines = PeriodicLines::Split;
+};
+
+// What a file holds: its polylines and points (more points than the TraceSet's when pieces of
 // one point were written as 2-point lines).
 struct VtpCounts {
   std::uint64_t lines = 0;
@@ -31,6 +40,7 @@ struct VtpCounts {
 
 // Throws std::invalid_argument before creating the file when the TraceSet is inconsistent;
 // std::runtime_error naming the path when the file cannot be written.
-VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces);
+VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
+                   const VtpWriteOptions& options = {});
 
 }  // namespace amrstream::output

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,12 +30,18 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
     for (const bricks::Channel& c : field.channels()) choices += ", " + c.name;
     throw InputError("--colour-by", fmt::format("no field '{}'; choose one of: {}", name, choices));
   }
+  const auto traced = std::find(traces.channelNames.begin(), traces.channelNames.end(), name);
+  if (traced != traces.channelNames.end()) {
+    const std::size_t c = std::size_t(traced - traces.channelNames.begin());
+    for (std::size_t i = 0; i < colour.values.size(); ++i)
+      colour.values[i] = traces.channels[i * traces.channelCount() + c];
+    return colour;
+  }
   if (channel.name != name) channel = {name, flow::gatherScalar(field, volume, name)};
   const std::vector<float>& scalars = channel.values;
-  tbb::parallel_for(std::uint32_t(0), traces.seedCount, [&](std::uint32_t seed) {
+  tbb::parallel_for(std::size_t(0), traces.lineCount(), [&](std::size_t line) {
     flow::RegionCache cache;
-    for (std::uint32_t p = 0; p < traces.pointCounts[seed]; ++p) {
-      const std::size_t i = traces.at(seed, p);
+    for (std::uint64_t i = traces.offsets[line]; i < traces.offsets[line + 1]; ++i) {
       const glm::vec3 cell(volume.transform.toCellUnits(glm::dvec3(traces.positions[i])));
       colour.values[i] = flow::sampleScalar(volume, scalars, cell, &cache)
                              .value_or(std::numeric_limits<float>::quiet_NaN());
@@ -58,18 +65,17 @@ std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
                                                    const ColourField& colour,
                                                    const bricks::WorldTransform& transform) {
   std::vector<shared::TubeSegment> segments;
-  const auto cell = [&](std::size_t i) {
+  const auto cell = [&](std::uint64_t i) {
     return glm::vec3(transform.toCellUnits(glm::dvec3(traces.positions[i])));
   };
-  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
-    const std::uint32_t n = traces.pointCounts[seed];
-    if (n == 1) {
-      const std::size_t i = traces.at(seed, 0);
-      segments.push_back({cell(i), colour.values[i], cell(i), colour.values[i]});
-    }
-    for (std::uint32_t p = 0; p + 1 < n; ++p) {
-      const std::size_t i = traces.at(seed, p), j = traces.at(seed, p + 1);
-      segments.push_back({cell(i), colour.values[i], cell(j), colour.values[j]});
+  for (std::size_t line = 0; line < traces.lineCount(); ++line) {
+    const std::uint64_t first = traces.offsets[line], end = traces.offsets[line + 1];
+    if (end - first == 1) segments.push_back({cell(first), colour.values[first], cell(first),
+                                              colour.values[first]});
+    for (std::uint64_t i = first; i + 1 < end; ++i) {
+      // A line that crosses a periodic face goes on from the other side: no tube across the box.
+      if (traces.periodic.wraps(traces.positions[i], traces.positions[i + 1])) continue;
+      segments.push_back({cell(i), colour.values[i], cell(i + 1), colour.values[i + 1]});
     }
   }
   return segments;

@@ -15,10 +15,11 @@
 namespace amrstream::render {
 
 // What colours the tubes: "speed" (the traced vector's length), "time" (IntegrationTime), or
-// the name of a scalar channel of the input sampled at every trace point.
+// the name of a scalar channel: the traces' point data when they carry it, else sampled from the
+// input at every trace point.
 struct ColourField {
   std::string name = "speed";
-  std::vector<float> values;  // one per stored trace point, indexed like TraceSet::positions
+  std::vector<float> values;  // one per trace point, indexed like TraceSet::positions
 };
 
 // A scalar channel in brick order (flow::gatherScalar), kept between calls of colourFieldOf so
@@ -44,7 +45,8 @@ struct ValueRange {
 // The range of the finite values (0..1 when there are none).
 ValueRange rangeOf(std::span<const float> values);
 
-// A trace of one point becomes a sphere (a == b); traces of no points are skipped.
+// A line of one point becomes a sphere (a == b); lines of no points are skipped, and so are the
+// steps where a periodic line wraps.
 std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
                                                    const ColourField& colour,
                                                    const bricks::WorldTransform& transform);

@@ -39,10 +39,17 @@ UniqueHandle<VkDescriptorSetLayout> createDescriptorSetLayout(
 }
 
 UniqueHandle<VkPipelineLayout> createPipelineLayout(const Context& ctx,
-                                                    VkDescriptorSetLayout setLayout) {
+                                                    VkDescriptorSetLayout setLayout,
+                                                    std::uint32_t pushConstantBytes,
+                                                    VkShaderStageFlags pushConstantStages) {
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   info.setLayoutCount = 1;
   info.pSetLayouts = &setLayout;
+  const VkPushConstantRange range{pushConstantStages, 0, pushConstantBytes};
+  if (pushConstantBytes > 0) {
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &range;
+  }
   VkPipelineLayout layout;
   AMRSTREAM_VK_CHECK(vkCreatePipelineLayout(ctx.device(), &info, nullptr, &layout));
   return {ctx.device(), layout};

@@ -27,8 +27,11 @@ std::span<const std::uint32_t> spirv(const std::uint32_t (&words)[N]) {
 UniqueHandle<VkDescriptorSetLayout> createDescriptorSetLayout(
     const Context& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings);
 
+// With `pushConstantBytes` > 0, one push-constant range at offset 0 for `pushConstantStages`.
 UniqueHandle<VkPipelineLayout> createPipelineLayout(const Context& ctx,
-                                                    VkDescriptorSetLayout setLayout);
+                                                    VkDescriptorSetLayout setLayout,
+                                                    std::uint32_t pushConstantBytes = 0,
+                                                    VkShaderStageFlags pushConstantStages = 0);
 
 UniqueHandle<VkPipeline> createComputePipeline(const Context& ctx, VkPipelineLayout layout,
                                                std::span<const std::uint32_t> spirv,

@@ -59,7 +59,7 @@ TEST(RenderCommand, RendersTracesReadFromAVtpLikeTracingThem) {
   run = testing::runAmrstream("render builtin:cloud --traces " + vtp.string() + " " + look +
                               "--out " + fromFile.string());
   ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("traces     32 from"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("traces     64 lines from"), std::string::npos) << run.output;
   const render::Image a = render::readPng(direct), b = render::readPng(fromFile);
   EXPECT_GT(tubeLikePixels(a), 100u);
   const render::ImageDifference difference = render::compareImages(a, b, 24);
@@ -90,7 +90,8 @@ TEST(ViewCommand, TracesProgressivelyAndShowsTubesUnderXvfb) {
           png.string(),
       "AMRSTREAM_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24'");
   ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("traces     all 64 finished after"), std::string::npos) << run.output;
+  // 64 seeds traced in both directions.
+  EXPECT_NE(run.output.find("traces     all 128 finished after"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("frames     14"), std::string::npos) << run.output;
   const render::Image image = render::readPng(png);
   EXPECT_EQ(image.width, 320u);

@@ -19,7 +19,7 @@ TraceSet traceOne(const VectorVolume& volume, glm::dvec3 seed, const TraceOption
   return traceStreamlines(volume, seeds, options);
 }
 
-glm::vec3 point(const TraceSet& t, std::uint32_t i) { return t.positions[t.at(0, i)]; }
+glm::vec3 point(const TraceSet& t, std::uint64_t i) { return t.positions[t.firstPoint(0) + i]; }
 
 TEST(Integrator, ConstantFieldMovesBySteptimesCellWidthTimesVelocityEachStep) {
   const glm::vec3 v(0.5f, 0.25f, -0.125f);
@@ -28,12 +28,12 @@ TEST(Integrator, ConstantFieldMovesBySteptimesCellWidthTimesVelocityEachStep) {
   options.maxSteps = 20;
   const TraceSet t = traceOne(volume, {4.0, 4.0, 8.0}, options);
   ASSERT_EQ(t.reasons[0], AMRSTREAM_REASON_MAX_STEPS);
-  ASSERT_EQ(t.pointCounts[0], 21u);
+  ASSERT_EQ(t.pointCount(0), 21u);
   for (std::uint32_t i = 0; i < 21; ++i) {
     const glm::vec3 expected = glm::vec3(4.0f, 4.0f, 8.0f) + float(i) * 0.25f * v;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(point(t, i)[c], expected[c], 1e-5f) << "point " << i;
-    EXPECT_NEAR(t.times[t.at(0, i)], 0.25f * float(i), 1e-6f);
-    EXPECT_NEAR(t.vectors[t.at(0, i)].x, v.x, 1e-6f);
+    EXPECT_NEAR(t.times[t.firstPoint(0) + i], 0.25f * float(i), 1e-6f);
+    EXPECT_NEAR(t.vectors[t.firstPoint(0) + i].x, v.x, 1e-6f);
   }
 }
 
@@ -53,11 +53,11 @@ TEST(Integrator, TimeModeMovesByDtTimesVelocityOnMultiLevelDataInPhysicalUnits) 
   options.maxSteps = 30;
   const glm::dvec3 seed(16.0, 21.0, 31.0);
   const TraceSet t = traceOne(volume, seed, options);
-  ASSERT_EQ(t.pointCounts[0], 31u);
+  ASSERT_EQ(t.pointCount(0), 31u);
   for (std::uint32_t i = 0; i < 31; ++i) {
     const glm::dvec3 expected = seed + 0.5 * double(i) * glm::dvec3(v);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(point(t, i)[c], expected[c], 1e-4) << "point " << i;
-    EXPECT_NEAR(t.times[t.at(0, i)], 0.5f * float(i), 1e-5f);
+    EXPECT_NEAR(t.times[t.firstPoint(0) + i], 0.5f * float(i), 1e-5f);
   }
 }
 
@@ -69,10 +69,10 @@ TEST(Integrator, ArcModeStepsUnitSpeedWhateverTheMagnitude) {
   options.stepSize = 0.5f;
   options.maxSteps = 10;
   const TraceSet t = traceOne(volume, {8.0, 2.0, 8.0}, options);
-  ASSERT_EQ(t.pointCounts[0], 11u);
+  ASSERT_EQ(t.pointCount(0), 11u);
   for (std::uint32_t i = 0; i < 11; ++i) {
     EXPECT_NEAR(point(t, i).y, 2.0f + 0.5f * float(i), 1e-5f);
-    EXPECT_NEAR(t.times[t.at(0, i)], 0.5f * float(i), 1e-5f);  // arc length
+    EXPECT_NEAR(t.times[t.firstPoint(0) + i], 0.5f * float(i), 1e-5f);  // arc length
   }
 }
 
@@ -84,14 +84,14 @@ double radiusDriftOverOneRevolution(const VectorVolume& volume, glm::dvec3 centr
   options.stepSize = h;
   options.maxSteps = 50000;
   const TraceSet t = traceOne(volume, centre + glm::dvec3(radius, 0.0, 0.3), options);
-  std::uint32_t end = 0;
+  std::uint64_t end = 0;
   double maxDrift = 0.0;
-  while (end + 1 < t.pointCounts[0] && t.times[t.at(0, end)] < float(period)) {
+  while (end + 1 < t.pointCount(0) && t.times[t.firstPoint(0) + end] < float(period)) {
     ++end;
     const glm::dvec3 r = glm::dvec3(point(t, end)) - centre;
     maxDrift = std::max(maxDrift, std::abs(glm::length(glm::dvec2(r)) - radius));
   }
-  EXPECT_GE(t.times[t.at(0, end)], float(period)) << "radius " << radius << ": no full revolution";
+  EXPECT_GE(t.times[t.firstPoint(0) + end], float(period)) << "radius " << radius << ": no full revolution";
   EXPECT_NEAR(point(t, end).z, float(centre.z + 0.3), 1e-4f);
   return maxDrift;
 }
@@ -142,10 +142,10 @@ TEST(Integrator, LeavingTheDomainEndsAtTheLastInsidePoint) {
   options.stepSize = 0.3f;
   const TraceSet t = traceOne(volume, {2.0, 8.0, 8.0}, options);
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_OUT_OF_DOMAIN);
-  const glm::vec3 last = point(t, t.pointCounts[0] - 1);
+  const glm::vec3 last = point(t, t.pointCount(0) - 1);
   EXPECT_LT(last.x, 16.0f);                 // inside the domain [0, 16)
   EXPECT_GE(last.x + 0.3f, 16.0f - 1e-4f);  // the next step would leave it
-  EXPECT_EQ(t.pointCounts[0], 47u);         // 2 + 46 * 0.3 = 15.8
+  EXPECT_EQ(t.pointCount(0), 47u);         // 2 + 46 * 0.3 = 15.8
 }
 
 TEST(Integrator, ZeroFieldStagnatesAtTheSeed) {
@@ -153,7 +153,7 @@ TEST(Integrator, ZeroFieldStagnatesAtTheSeed) {
       testing::volumeOf(testing::uniformGrid(8, [](auto) { return glm::vec3(0.0f); }));
   const TraceSet t = traceOne(volume, {4.0, 4.0, 4.0}, {});
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_STAGNATION);
-  EXPECT_EQ(t.pointCounts[0], 1u);
+  EXPECT_EQ(t.pointCount(0), 1u);
 }
 
 TEST(Integrator, SlowingBelowTheTerminalSpeedStagnates) {
@@ -164,9 +164,9 @@ TEST(Integrator, SlowingBelowTheTerminalSpeedStagnates) {
   options.terminalSpeed = 0.5f;
   const TraceSet t = traceOne(volume, {1.0, 8.0, 8.0}, options);
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_STAGNATION);
-  const std::uint32_t n = t.pointCounts[0];
-  EXPECT_LT(glm::length(t.vectors[t.at(0, n - 1)]), 0.5f);
-  EXPECT_GE(glm::length(t.vectors[t.at(0, n - 2)]), 0.5f);
+  const std::uint64_t n = t.pointCount(0);
+  EXPECT_LT(glm::length(t.vectors[t.firstPoint(0) + (n - 1)]), 0.5f);
+  EXPECT_GE(glm::length(t.vectors[t.firstPoint(0) + (n - 2)]), 0.5f);
   EXPECT_NEAR(point(t, n - 1).x, 4.0f, 0.25f);
 }
 
@@ -177,7 +177,7 @@ TEST(Integrator, MaxLengthStopsBeforeTheLimitIsPassed) {
   options.maxLength = 2.6f;
   const TraceSet t = traceOne(volume, {8.0, 8.0, 1.0}, options);
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_MAX_LENGTH);
-  EXPECT_EQ(t.pointCounts[0], 3u);
+  EXPECT_EQ(t.pointCount(0), 3u);
   EXPECT_NEAR(point(t, 2).z, 3.0f, 1e-5f);
 }
 
@@ -186,7 +186,7 @@ TEST(Integrator, InvalidSampleEndsWithUnexpectedValue) {
   const bricks::AmrField field = testing::twoBlocksWithAGap();
   const TraceSet t = traceOne(testing::volumeOf(field), {7.5, 2.0, 2.0}, {});
   EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_UNEXPECTED_VALUE);
-  EXPECT_EQ(t.pointCounts[0], 1u);
+  EXPECT_EQ(t.pointCount(0), 1u);
 }
 
 TEST(Integrator, ResultsDoNotDependOnTheNumberOfThreads) {
@@ -203,7 +203,7 @@ TEST(Integrator, ResultsDoNotDependOnTheNumberOfThreads) {
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     serial = traceStreamlines(volume, seeds, options);
   }
-  EXPECT_EQ(parallel.pointCounts, serial.pointCounts);
+  EXPECT_EQ(parallel.offsets, serial.offsets);
   EXPECT_EQ(parallel.reasons, serial.reasons);
   EXPECT_EQ(parallel.positions, serial.positions);
 }
@@ -226,17 +226,61 @@ TEST(Integrator, EndpointsOnlyKeepsTheLastPointOfTheFullTrace) {
   const TraceSet full = traceStreamlines(volume, seeds, options);
   options.keepHistory = false;
   const TraceSet ends = traceStreamlines(volume, seeds, options);
-  ASSERT_EQ(ends.capacity, 1u);
-  for (std::uint32_t s = 0; s < full.seedCount; ++s) {
-    EXPECT_EQ(ends.pointCounts[s], 1u);
+  ASSERT_EQ(ends.lineCount(), full.lineCount());
+  for (std::size_t s = 0; s < full.lineCount(); ++s) {
+    EXPECT_EQ(ends.pointCount(s), 1u);
+    EXPECT_EQ(ends.seedIds[s], full.seedIds[s]);
     EXPECT_EQ(ends.steps[s], full.steps[s]);
-    EXPECT_EQ(full.steps[s] + 1, full.pointCounts[s]);
+    EXPECT_EQ(full.steps[s] + 1, full.pointCount(s));
     EXPECT_EQ(ends.reasons[s], full.reasons[s]);
-    const std::size_t last = full.at(s, full.pointCounts[s] - 1);
-    EXPECT_EQ(ends.positions[ends.at(s, 0)], full.positions[last]);
-    EXPECT_EQ(ends.times[ends.at(s, 0)], full.times[last]);
-    EXPECT_EQ(ends.vectors[ends.at(s, 0)], full.vectors[last]);
+    const std::size_t last = full.firstPoint(s) + (full.pointCount(s) - 1);
+    EXPECT_EQ(ends.positions[ends.firstPoint(s) + 0], full.positions[last]);
+    EXPECT_EQ(ends.times[ends.firstPoint(s) + 0], full.times[last]);
+    EXPECT_EQ(ends.vectors[ends.firstPoint(s) + 0], full.vectors[last]);
   }
+}
+
+}  // namespace
+}  // namespace amrstream::flow
+
+namespace amrstream::flow {
+namespace {
+
+TEST(Integrator, MaxTimeShortensTheLastStepToEndOnIt) {
+  const glm::vec3 v(0.5f, 0.25f, 0.0f);
+  const VectorVolume volume = testing::volumeOf(testing::uniformGrid(16, [&](auto) { return v; }));
+  TraceOptions options;
+  options.stepMode = StepMode::Time;
+  options.stepSize = 0.5f;
+  options.maxTime = 2.2f;
+  const TraceSet t = traceOne(volume, {4.0, 4.0, 8.0}, options);
+  // Forward: times 0, 0.5, ..., 2.0, then a step of 0.2 to 2.2; backward the same, negated.
+  for (std::size_t line : {0u, 1u}) {
+    const float sign = line == 0 ? 1.0f : -1.0f;
+    EXPECT_EQ(t.reasons[line], AMRSTREAM_REASON_MAX_TIME);
+    ASSERT_EQ(t.pointCount(line), 6u);
+    const std::uint64_t last = t.firstPoint(line) + 5;
+    EXPECT_EQ(t.times[last], sign * 2.2f);
+    EXPECT_NEAR(t.times[last - 1], sign * 2.0f, 1e-6f);
+    const glm::vec3 expected = glm::vec3(4.0f, 4.0f, 8.0f) + sign * 2.2f * v;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(t.positions[last][c], expected[c], 1e-5f);
+    EXPECT_EQ(t.steps[line], 5u);
+  }
+}
+
+TEST(Integrator, MaxTimeInCellModeIsPhysicalTime) {
+  // Level-0 cells of width 1, h = 0.25, speed 2: each cell-mode step advances time by 0.25 and
+  // moves 0.5 cells; a limit of 1.1 ends with a shortened step of 0.1 (0.2 cells).
+  const VectorVolume volume = testing::volumeOf(
+      testing::uniformGrid(16, [](auto) { return glm::vec3(2.0f, 0.0f, 0.0f); }));
+  TraceOptions options;
+  options.maxTime = 1.1f;
+  options.direction = Direction::Forward;
+  const TraceSet t = traceOne(volume, {2.0, 8.0, 8.0}, options);
+  EXPECT_EQ(t.reasons[0], AMRSTREAM_REASON_MAX_TIME);
+  ASSERT_EQ(t.pointCount(0), 6u);
+  EXPECT_EQ(t.times.back(), 1.1f);
+  EXPECT_NEAR(t.positions.back().x, 2.0f + 2.2f, 1e-5f);
 }
 
 }  // namespace

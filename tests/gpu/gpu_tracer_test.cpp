@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "flow/integrator.hpp"
+#include "flow/line_plan.hpp"
 #include "flow/progressive_traces.hpp"
 #include "flow/seeds.hpp"
 #include "gpu_test.hpp"
@@ -28,6 +29,50 @@ namespace {
 // 298; a wrong RK4 stage (x + 0.51 k1) misses by orders of magnitude more.
 double positionTolerance(std::uint32_t step) { return 1e-5 + 2e-6 * double(step); }
 
+// Lines, counts, steps and reasons exactly; every point's position within the tolerance for its
+// index along its line, times, vectors, channels and vorticity within float tolerances.
+void expectGpuMatchesCpu(const flow::TraceSet& gpu, const flow::TraceSet& cpu,
+                         const flow::VectorVolume& volume, double extraCells = 0.0) {
+  ASSERT_EQ(gpu.lineCount(), cpu.lineCount());
+  ASSERT_EQ(gpu.seedIds, cpu.seedIds);
+  ASSERT_EQ(gpu.directions, cpu.directions);
+  ASSERT_EQ(gpu.channelNames, cpu.channelNames);
+  ASSERT_EQ(gpu.withVorticity, cpu.withVorticity);
+  const glm::dvec3 spacing = volume.transform.spacing;
+  const double finestCell = std::min({spacing.x, spacing.y, spacing.z});
+  const std::size_t channels = cpu.channelCount();
+  const auto close = [](float a, float b, float relative) {
+    return (std::isnan(a) && std::isnan(b)) ||
+           std::abs(a - b) <= relative * std::max(1.0f, std::abs(b));
+  };
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line) {
+    ASSERT_EQ(gpu.reasons[line], cpu.reasons[line]) << "line " << line;
+    ASSERT_EQ(gpu.steps[line], cpu.steps[line]) << "line " << line;
+    ASSERT_EQ(gpu.pointCount(line), cpu.pointCount(line)) << "line " << line;
+    for (std::uint64_t k = 0; k < cpu.pointCount(line); ++k) {
+      const std::uint64_t i = cpu.firstPoint(line) + k;
+      const std::uint32_t step = cpu.steps[line] + 1 == cpu.pointCount(line)
+                                     ? std::uint32_t(k)
+                                     : cpu.steps[line];  // endpoints: the last step
+      ASSERT_LE(glm::length(glm::dvec3(gpu.positions[i]) - glm::dvec3(cpu.positions[i])),
+                (positionTolerance(step) + extraCells) * finestCell)
+          << "line " << line << " point " << k;
+      ASSERT_TRUE(close(gpu.times[i], cpu.times[i], 1e-5f)) << "line " << line << " point " << k;
+      ASSERT_LE(glm::length(gpu.vectors[i] - cpu.vectors[i]),
+                1e-5f * std::max(1.0f, glm::length(cpu.vectors[i])));
+      for (std::size_t c = 0; c < channels; ++c)
+        ASSERT_TRUE(close(gpu.channels[i * channels + c], cpu.channels[i * channels + c], 1e-4f))
+            << "line " << line << " point " << k << " channel " << cpu.channelNames[c] << ": "
+            << gpu.channels[i * channels + c] << " vs " << cpu.channels[i * channels + c];
+      if (cpu.withVorticity)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_TRUE(close(gpu.vorticity[i][c], cpu.vorticity[i][c], 1e-4f))
+              << "line " << line << " point " << k << " vorticity " << c;
+    }
+  }
+  EXPECT_GT(cpu.pointCount(), 2 * cpu.lineCount()) << "the traces should take steps";
+}
+
 class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
  protected:
   vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
@@ -35,31 +80,11 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
   KernelSettings settings_ = defaultKernelSettings(GetParam());
 
   void compare(const flow::VectorVolume& volume, const flow::SeedList& seeds,
-               const flow::TraceOptions& options, std::size_t seedsPerChunk = 0) {
+               const flow::TraceOptions& options, std::size_t linesPerBatch = 0) {
     const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
     GpuTracer tracer(ctx(), GetParam(), volume, settings_);
-    tracer.limitSeedsPerChunk(seedsPerChunk);
-    const flow::TraceSet gpu = tracer.trace(seeds.points, options);
-    ASSERT_EQ(gpu.seedCount, cpu.seedCount);
-    ASSERT_EQ(gpu.capacity, cpu.capacity);
-    const glm::dvec3 spacing = volume.transform.spacing;
-    const double finestCell = std::min({spacing.x, spacing.y, spacing.z});
-    std::size_t points = 0;
-    for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
-      ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
-      ASSERT_EQ(gpu.pointCounts[s], cpu.pointCounts[s]) << "seed " << s;
-      ASSERT_EQ(gpu.steps[s], cpu.steps[s]) << "seed " << s;
-      for (std::uint32_t p = 0; p < cpu.pointCounts[s]; ++p, ++points) {
-        const std::size_t i = cpu.at(s, p);
-        ASSERT_LE(glm::length(glm::dvec3(gpu.positions[i]) - glm::dvec3(cpu.positions[i])),
-                  positionTolerance(p) * finestCell)
-            << "seed " << s << " point " << p;
-        ASSERT_NEAR(gpu.times[i], cpu.times[i], 1e-5f * std::max(1.0f, std::abs(cpu.times[i])));
-        ASSERT_LE(glm::length(gpu.vectors[i] - cpu.vectors[i]),
-                  1e-5f * std::max(1.0f, glm::length(cpu.vectors[i])));
-      }
-    }
-    EXPECT_GT(points, cpu.seedCount) << "the traces should take steps";
+    tracer.limitLinesPerBatch(linesPerBatch);
+    expectGpuMatchesCpu(tracer.trace(seeds.points, options), cpu, volume);
   }
 
   static flow::SeedList seedsIn(const flow::VectorVolume& volume, std::size_t count) {
@@ -68,11 +93,11 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
   }
 };
 
-flow::VectorVolume volumeOf(const bricks::AmrField& field) {
-  return flow::buildVectorVolume(field, flow::chooseVectorChannels(field, ""));
+flow::VectorVolume volumeOf(const bricks::AmrField& field, flow::VolumeOptions options = {}) {
+  return flow::buildVectorVolume(field, flow::chooseVectorChannels(field, ""), options);
 }
 
-TEST_P(GpuTracerTest, MatchesCpuOnRotation) {
+TEST_P(GpuTracerTest, MatchesCpuOnRotationInBothDirections) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   flow::TraceOptions options;
@@ -80,7 +105,7 @@ TEST_P(GpuTracerTest, MatchesCpuOnRotation) {
   compare(volume, seedsIn(volume, 64), options);
 }
 
-TEST_P(GpuTracerTest, MatchesCpuOnAbcInEveryStepMode) {
+TEST_P(GpuTracerTest, MatchesCpuOnAbcInEveryStepModeAndDirection) {
   const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   for (flow::StepMode mode : {flow::StepMode::Cell, flow::StepMode::Time, flow::StepMode::Arc}) {
@@ -88,6 +113,8 @@ TEST_P(GpuTracerTest, MatchesCpuOnAbcInEveryStepMode) {
     options.stepMode = mode;
     options.stepSize = mode == flow::StepMode::Time ? 1e-3f : 0.25f;
     options.maxSteps = 200;
+    options.direction = mode == flow::StepMode::Arc ? flow::Direction::Backward
+                                                    : flow::Direction::Both;
     SCOPED_TRACE(static_cast<int>(mode));
     compare(volume, seedsIn(volume, 48), options);
   }
@@ -142,32 +169,105 @@ TEST_P(GpuTracerTest, MatchesCpuOnEveryTerminationReason) {
   options.terminalSpeed = 0.2f;  // stagnation near x = 9.6
   options.maxLength = 30.0f;
   compare(volume, seedsIn(volume, 96), options);
+  options.maxLength = 0.0f;
+  options.maxTime = 9.0f;  // the last step shortened
+  options.stepMode = flow::StepMode::Time;
+  options.stepSize = 0.4f;
+  compare(volume, seedsIn(volume, 96), options);
 }
 
 TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
   const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
-  const flow::SeedList seeds = seedsIn(volume, 64);
   flow::TraceOptions options;
   options.maxSteps = 300;
   options.keepHistory = false;
+  const flow::SeedList seeds = seedsIn(volume, 64);
   const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
-  GpuTracer tracer(ctx(), GetParam(), volume);
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
   const flow::TraceSet gpu = tracer.trace(seeds.points, options);
-  ASSERT_EQ(gpu.capacity, 1u);
-  const double finestCell = std::min(
-      {volume.transform.spacing.x, volume.transform.spacing.y, volume.transform.spacing.z});
-  for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
-    ASSERT_EQ(gpu.pointCounts[s], 1u);
-    ASSERT_EQ(gpu.steps[s], cpu.steps[s]) << "seed " << s;
-    ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
-    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[s]) - glm::dvec3(cpu.positions[s])),
-              positionTolerance(cpu.steps[s]) * finestCell)
-        << "seed " << s;
-  }
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line) ASSERT_EQ(gpu.pointCount(line), 1u);
+  ASSERT_EQ(gpu.steps, cpu.steps);
+  ASSERT_EQ(gpu.reasons, cpu.reasons);
+  const double finestCell = volume.transform.spacing.x;
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line)
+    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
+              positionTolerance(cpu.steps[line]) * finestCell)
+        << "line " << line;
 }
 
-// The viewer's progressive tracing: traces grown 13 steps per round on the GPU equal the CPU's
+// Point data: several channels (more than one group of four in the kernel) and the vorticity.
+TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 4;
+  const bricks::AmrField cells = testing::randomAmr(12, layout, [](glm::dvec3 p) {
+    return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05 + 0.01 * p.z);
+  });
+  std::vector<bricks::Channel> channels = cells.channels();
+  for (int c = 0; c < 3; ++c) {
+    bricks::Channel extra{"s" + std::to_string(c), {}};
+    for (std::size_t i = 0; i < cells.cellCount(); ++i)
+      extra.values.push_back(float(std::sin(0.1 * double(i) + c)));
+    channels.push_back(extra);
+  }
+  const bricks::AmrField field({cells.lowers().begin(), cells.lowers().end()},
+                               {cells.levels().begin(), cells.levels().end()}, channels,
+                               {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
+  const flow::VectorVolume volume = flow::buildVectorVolume(
+      field, {{"vx", "vy", "vz"}, "v"},
+      flow::VolumeOptions{.pointData = {"s0", "vy", "s1", "vx", "s2"}});
+  flow::TraceOptions options;
+  options.maxSteps = 150;
+  options.vorticity = true;
+  compare(volume, seedsIn(volume, 40), options);
+}
+
+TEST_P(GpuTracerTest, PeriodicAbcMatchesCpuAcrossEveryFace) {
+  const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
+  const flow::VectorVolume volume =
+      volumeOf(field, flow::VolumeOptions{.periodic = {true, true, true}, .pointData = {}});
+  flow::TraceOptions options;
+  options.maxSteps = 400;
+  const flow::SeedList seeds = seedsIn(volume, 32);
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+  std::size_t wraps = 0;
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line) {
+    EXPECT_EQ(cpu.reasons[line], AMRSTREAM_REASON_MAX_STEPS);
+    for (std::uint64_t i = cpu.firstPoint(line) + 1; i < cpu.offsets[line + 1]; ++i)
+      wraps += cpu.periodic.wraps(cpu.positions[i - 1], cpu.positions[i]);
+  }
+  EXPECT_GT(wraps, 20u);
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+  // Positions are compared as they are stored, wrapped: a point that the two paths place on
+  // opposite sides of a face within the tolerance would differ by a period, and fail.
+  expectGpuMatchesCpu(tracer.trace(seeds.points, options), cpu, volume);
+}
+
+// Streamed history: lines of 1e5 steps in rounds of a few thousand steps, through a budget of
+// 2 MiB, equal the CPU's one run.
+TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
+  const glm::dvec3 centre(12.0, 12.0, 4.0);
+  testing::RandomAmrOptions layout;
+  layout.levels = 2;
+  layout.rootCells = glm::ivec3(12, 12, 4);
+  const bricks::AmrField field = testing::randomAmr(3, layout, [&](glm::dvec3 p) {
+    return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0);
+  });
+  const flow::VectorVolume volume = volumeOf(field);
+  const std::vector<glm::dvec3> seeds{{17.0, 12.0, 4.1}, {12.0, 4.5, 2.0}, {15.0, 15.0, 6.0}};
+  flow::TraceOptions options;
+  options.maxSteps = 100000;
+  options.stepSize = 0.02f;
+  options.direction = flow::Direction::Forward;
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds, options);
+  options.memoryBudget = 2 << 20;
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+  const flow::TraceSet gpu = tracer.trace(seeds, options);
+  EXPECT_GT(tracer.lastRun().rounds, 10u);
+  expectGpuMatchesCpu(gpu, cpu, volume);
+}
+
+// The viewer's progressive tracing: lines grown 13 steps per round on the GPU equal the CPU's
 // one run.
 TEST_P(GpuTracerTest, ProgressiveRoundsMatchOneCpuRun) {
   const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
@@ -177,28 +277,21 @@ TEST_P(GpuTracerTest, ProgressiveRoundsMatchOneCpuRun) {
   options.maxSteps = 100;
   const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
-  flow::ProgressiveTraces grown(seeds.points, options, volume.vectorName);
-  const flow::TraceFunction gpuTrace = [&](std::span<const glm::dvec3> starts,
-                                           const flow::TraceOptions& o) {
-    return tracer.trace(starts, o);
-  };
-  while (!grown.finished()) grown.advance(gpuTrace, 13);
-  const flow::TraceSet& gpu = grown.traces();
-  const double finestCell = volume.transform.spacing.x;
-  for (std::uint32_t s = 0; s < cpu.seedCount; ++s) {
-    ASSERT_EQ(gpu.reasons[s], cpu.reasons[s]) << "seed " << s;
-    ASSERT_EQ(gpu.pointCounts[s], cpu.pointCounts[s]) << "seed " << s;
-    for (std::uint32_t p = 0; p < cpu.pointCounts[s]; ++p)
-      ASSERT_LE(glm::length(glm::dvec3(gpu.positions[gpu.at(s, p)]) -
-                            glm::dvec3(cpu.positions[cpu.at(s, p)])),
-                (positionTolerance(p) + 1e-4) * finestCell)
-          << "seed " << s << " point " << p;
+  flow::LinePlan plan = flow::planLines(volume, seeds.points, options.direction);
+  flow::ProgressiveTraces grown(tracer.startRounds(plan.states, options), plan.layout,
+                                flow::traceShape(volume, options));
+  std::size_t rounds = 0;
+  while (!grown.finished()) {
+    grown.advance(13);
+    ++rounds;
   }
+  EXPECT_EQ(rounds, 8u);  // ceil(100 / 13)
+  expectGpuMatchesCpu(grown.traces(), cpu, volume);
 }
 
-// Threads take seeds in Morton order by default; the traces, returned in the caller's order, are
-// the same bit for bit as with seeds in the given order (each thread's work does not depend on
-// its neighbours).
+// Threads take lines in Morton order by default; the traces, returned in line order, are the
+// same bit for bit as with lines in the given order (each thread's work does not depend on its
+// neighbours).
 TEST_P(GpuTracerTest, SpatialSeedOrderGivesTheSameTraces) {
   const bricks::AmrField field = synth::generate("abc", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
@@ -209,36 +302,35 @@ TEST_P(GpuTracerTest, SpatialSeedOrderGivesTheSameTraces) {
   const flow::TraceSet spatial = tracer.trace(seeds.points, options);
   tracer.orderSeedsSpatially(false);
   const flow::TraceSet given = tracer.trace(seeds.points, options);
-  EXPECT_EQ(spatial.pointCounts, given.pointCounts);
+  EXPECT_EQ(spatial.offsets, given.offsets);
   EXPECT_EQ(spatial.reasons, given.reasons);
   EXPECT_EQ(spatial.positions, given.positions);
   EXPECT_EQ(spatial.times, given.times);
   EXPECT_EQ(spatial.vectors, given.vectors);
 }
 
-TEST_P(GpuTracerTest, ChunksOfSeedsGiveTheSameTraces) {
+TEST_P(GpuTracerTest, BatchesOfLinesGiveTheSameTraces) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   flow::TraceOptions options;
   options.maxSteps = 100;
-  compare(volume, seedsIn(volume, 50), options, 7);  // 8 dispatches, the last one of 1 seed
+  compare(volume, seedsIn(volume, 50), options, 7);  // 100 lines: 15 batches, the last of 2
 }
 
-TEST_P(GpuTracerTest, ChunkSizeRespectsTheStorageBufferRange) {
+TEST_P(GpuTracerTest, BatchesRespectTheStorageBufferRange) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   GpuTracer tracer(ctx(), GetParam(), volume);
   flow::TraceOptions options;
-  options.maxSteps = 20;
-  const std::size_t chunk = tracer.seedsPerChunk(options.maxSteps + 1);
-  EXPECT_GT(chunk, 0u);
-  EXPECT_LE(chunk * (options.maxSteps + 1) * sizeof(glm::vec3),
-            ctx().limits().maxStorageBufferRange);
+  options.memoryBudget = std::uint64_t(1) << 40;  // far more than any range
+  const std::size_t batch = tracer.linesPerBatch(options, std::size_t(1) << 34);
+  EXPECT_GT(batch, 0u);
+  EXPECT_LE(batch * 2 * sizeof(glm::vec3), ctx().limits().maxStorageBufferRange);
 }
 
 // The run statistics the benchmark reports: kernel time from timestamps (positive and within
-// the wall time of the run), one chunk per dispatch, and device bytes that add up.
-TEST_P(GpuTracerTest, ReportsKernelTimeChunksAndDeviceBytes) {
+// the wall time of the run), batches and rounds, and the round buffers' device bytes.
+TEST_P(GpuTracerTest, ReportsKernelTimeBatchesRoundsAndDeviceBytes) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
   GpuTracer tracer(ctx(), GetParam(), volume);
@@ -254,19 +346,24 @@ TEST_P(GpuTracerTest, ReportsKernelTimeChunksAndDeviceBytes) {
 
   flow::TraceOptions options;
   options.maxSteps = 200;
+  options.roundSteps = 50;
+  options.direction = flow::Direction::Forward;
   const flow::SeedList seeds = seedsIn(volume, 40);
-  tracer.limitSeedsPerChunk(16);
+  tracer.limitLinesPerBatch(16);
+  tracer.timeKernels(true);
   const auto start = std::chrono::steady_clock::now();
   tracer.trace(seeds.points, options);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const TraceRunStats& run = tracer.lastRun();
-  EXPECT_EQ(run.chunks, 3u);
-  EXPECT_EQ(run.chunkBytes, 16 * (sizeof(glm::vec3) + 201 * flow::TraceSet::kBytesPerPoint +
-                                  sizeof(std::uint32_t) + sizeof(std::int32_t)));
+  EXPECT_EQ(run.batches, 3u);
+  EXPECT_GE(run.rounds, 3u * 1u);
+  EXPECT_LE(run.rounds, 3u * 4u);  // 200 steps in rounds of 50
+  EXPECT_GT(run.roundBytes, 16u * 51u * sizeof(glm::vec3));
   ASSERT_TRUE(run.kernelSeconds.has_value()) << "lavapipe and NVIDIA have compute timestamps";
+  ASSERT_TRUE(run.compactionSeconds.has_value());
   EXPECT_GT(*run.kernelSeconds, 0.0);
-  EXPECT_LT(*run.kernelSeconds, wall);
+  EXPECT_LT(*run.kernelSeconds + *run.compactionSeconds, wall);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GpuTracerTest,

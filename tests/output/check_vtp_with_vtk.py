@@ -6,14 +6,17 @@ Run with Debian's /usr/bin/python3 (python3-vtk9):
   check_vtp_with_vtk.py FILE --points N --lines M \
       [--point-array NAME:COMPONENTS]... [--cell-array NAME:COMPONENTS]... \
       [--line-lengths 3,2,5,2] [--repeated-lines 1,...] [--scalars NAME] [--vectors NAME] \
-      [--speed-of NAME] [--seed-ids]
+      [--speed-of NAME] [--seed-ids] [--both-directions SEEDS]
 
 Fails (exit 1, one line per problem) when vtkXMLPolyDataReader reports an error or warning,
 when the counts differ, when an array is missing or has other components, when a line has fewer
 than 2 points, and, with --line-lengths, when the lines (walked with GetCellPoints) have other
 lengths; with --repeated-lines, when those lines are not 2 copies of one point (coordinates and
 every point array equal); with --speed-of, when the point array "Speed" is not the magnitude of
-that vector array, and with --seed-ids, when the cell array SeedIds is not 0 .. lines-1.
+that vector array, with --seed-ids, when the cell array SeedIds is not 0 .. lines-1, and with
+--both-directions SEEDS, when the lines are not vtkStreamTracer's BOTH layout: SeedIds 0 .. SEEDS-1
+for the forward lines (IntegrationTime >= 0), then again for the backward ones (<= 0), each line
+starting at IntegrationTime 0.
 
 Lines of 0 or 1 point are reported without asking VTK for their points: vtkPolyData refuses to
 build its cell map for them ("Invalid cell size for lines") and VTK 9.1 then crashes in
@@ -54,6 +57,8 @@ def parse_arguments():
     parser.add_argument("--speed-of", help="vector array whose magnitude Speed must be")
     parser.add_argument("--seed-ids", action="store_true",
                         help="cell array SeedIds must be 0, 1, ... lines-1")
+    parser.add_argument("--both-directions", type=int, metavar="SEEDS",
+                        help="lines are SEEDS forward lines, then SEEDS backward ones")
     return parser.parse_args()
 
 
@@ -96,6 +101,28 @@ def check_repeated(output, first_line, line):
         if array.GetTuple(a) != array.GetTuple(b):
             problems.append(f"line {line}: {array.GetName()} {array.GetTuple(a)} and "
                             f"{array.GetTuple(b)} differ at the repeated point")
+    return problems
+
+
+def check_both_directions(output, seeds):
+    problems = []
+    seed_ids = output.GetCellData().GetArray("SeedIds")
+    times = output.GetPointData().GetArray("IntegrationTime")
+    if seed_ids is None or times is None:
+        return ["no SeedIds or IntegrationTime to check the directions with"]
+    values = [int(seed_ids.GetValue(i)) for i in range(seed_ids.GetNumberOfTuples())]
+    if values != list(range(seeds)) * 2:
+        problems.append(f"SeedIds {values[:20]}, expected 0 .. {seeds - 1} twice")
+    ids = vtk.vtkIdList()
+    first_line = output.GetNumberOfVerts()
+    for line in range(min(len(values), 2 * seeds)):
+        output.GetCellPoints(first_line + line, ids)
+        line_times = [times.GetValue(ids.GetId(k)) for k in range(ids.GetNumberOfIds())]
+        backward = line >= seeds
+        if line_times[0] != 0.0 or any((t > 0.0) if backward else (t < 0.0) for t in line_times):
+            problems.append(f"line {line} ({'backward' if backward else 'forward'}) has "
+                            f"IntegrationTime {line_times[:5]}...")
+            break
     return problems
 
 
@@ -192,6 +219,8 @@ def check(args):
                                               for i in range(seed_ids.GetNumberOfTuples())]
         if values != list(range(args.lines)):
             problems.append(f"SeedIds {values[:20]}, expected 0 .. {args.lines - 1}")
+    if args.both_directions is not None:
+        problems += check_both_directions(output, args.both_directions)
     # Last, so that errors VTK reports while building its cell map are included.
     return problems + [f"VTK reported: {m}" for m in messages.all()]
 

@@ -15,20 +15,22 @@
 namespace {
 
 using amrstream::flow::TraceSet;
+using amrstream::testing::at;
+using amrstream::testing::pointCountsOf;
 
 // The first difference from `expected` over the valid points, or "" when there is none.
 std::string difference(const TraceSet& read, const TraceSet& expected) {
-  if (read.seedCount != expected.seedCount) {
-    return std::to_string(read.seedCount) + " traces, expected " +
-           std::to_string(expected.seedCount);
+  if (read.lineCount() != expected.lineCount()) {
+    return std::to_string(read.lineCount()) + " traces, expected " +
+           std::to_string(expected.lineCount());
   }
-  if (read.pointCounts != expected.pointCounts) return "point counts differ";
+  if (pointCountsOf(read) != pointCountsOf(expected)) return "point counts differ";
   if (read.reasons != expected.reasons) return "reasons differ";
   if (read.vectorName != expected.vectorName) return "vector name '" + read.vectorName + "'";
-  for (std::uint32_t seed = 0; seed < read.seedCount; ++seed) {
-    if (read.steps[seed] != read.pointCounts[seed] - 1) return "steps differ";
-    for (std::uint32_t p = 0; p < read.pointCounts[seed]; ++p) {
-      const std::size_t r = read.at(seed, p), e = expected.at(seed, p);
+  for (std::uint32_t seed = 0; seed < read.lineCount(); ++seed) {
+    if (read.steps[seed] != pointCountsOf(read)[seed] - 1) return "steps differ";
+    for (std::uint32_t p = 0; p < pointCountsOf(read)[seed]; ++p) {
+      const std::size_t r = at(read, seed, p), e = at(expected, seed, p);  // NOLINT
       const std::string where = " at trace " + std::to_string(seed) + " point " + std::to_string(p);
       if (read.positions[r] != expected.positions[e]) return "position" + where;
       if (read.times[r] != expected.times[e]) return "IntegrationTime" + where;
@@ -49,7 +51,7 @@ int main(int argc, char** argv) {
   }
   const fs::path dir = argv[1];
   const TraceSet expected =
-      testing::sampleTraces(testing::kSamplePointCounts, testing::kSampleCapacity);
+      testing::sampleTraces(testing::kSamplePointCounts);
   int failures = 0;
   const auto report = [&](const fs::path& path, const std::string& problem) {
     std::printf("read_vtk_written_vtp: %s: %s\n", path.c_str(),

@@ -1,6 +1,5 @@
 #include "sample_traces.hpp"
 
-#include <limits>
 
 #include "shaders/glsl/shared/trace_codes.h"
 
@@ -27,21 +26,19 @@ std::int32_t sampleReason(std::uint32_t seed) {
   return reasons[seed % std::size(reasons)];
 }
 
-flow::TraceSet sampleTraces(const std::vector<std::uint32_t>& pointCounts, std::uint32_t capacity,
-                            const char* vectorName) {
-  const float nan = std::numeric_limits<float>::quiet_NaN();
+flow::TraceSet sampleTraces(const std::vector<std::uint32_t>& pointCounts, const char* vectorName) {
   flow::TraceSet traces;
-  traces.resize(static_cast<std::uint32_t>(pointCounts.size()), capacity);
   traces.vectorName = vectorName;
-  for (std::uint32_t seed = 0; seed < traces.seedCount; ++seed) {
-    traces.pointCounts[seed] = pointCounts[seed];
-    traces.reasons[seed] = sampleReason(seed);
-    for (std::uint32_t point = 0; point < capacity; ++point) {
-      const bool valid = point < pointCounts[seed];
-      const std::size_t i = traces.at(seed, point);
-      traces.positions[i] = valid ? samplePosition(seed, point) : glm::vec3(nan);
-      traces.times[i] = valid ? sampleTime(seed, point) : nan;
-      traces.vectors[i] = valid ? sampleVector(seed, point) : glm::vec3(nan);
+  for (std::uint32_t line = 0; line < pointCounts.size(); ++line) {
+    traces.seedIds.push_back(line);
+    traces.directions.push_back(1.0f);
+    traces.steps.push_back(pointCounts[line] == 0 ? 0 : pointCounts[line] - 1);
+    traces.reasons.push_back(sampleReason(line));
+    traces.offsets.push_back(traces.offsets.back() + pointCounts[line]);
+    for (std::uint32_t point = 0; point < pointCounts[line]; ++point) {
+      traces.positions.push_back(samplePosition(line, point));
+      traces.times.push_back(sampleTime(line, point));
+      traces.vectors.push_back(sampleVector(line, point));
     }
   }
   return traces;

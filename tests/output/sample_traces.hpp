@@ -8,10 +8,9 @@
 
 namespace amrstream::testing {
 
-// Trace s has pointCounts[s] valid points (each <= capacity). Point p of trace s sits at
-// samplePosition(s, p) with time sampleTime(s, p) and vector sampleVector(s, p); the slots past
-// a trace's end hold NaN so a writer that copies them is caught.
-flow::TraceSet sampleTraces(const std::vector<std::uint32_t>& pointCounts, std::uint32_t capacity,
+// Line s (seed s, forward) has pointCounts[s] points. Point p of line s sits at
+// samplePosition(s, p) with time sampleTime(s, p) and vector sampleVector(s, p).
+flow::TraceSet sampleTraces(const std::vector<std::uint32_t>& pointCounts,
                             const char* vectorName = "velocity");
 
 glm::vec3 samplePosition(std::uint32_t seed, std::uint32_t point);
@@ -19,8 +18,24 @@ float sampleTime(std::uint32_t seed, std::uint32_t point);
 glm::vec3 sampleVector(std::uint32_t seed, std::uint32_t point);
 std::int32_t sampleReason(std::uint32_t seed);
 
-// The set write_sample_vtp writes: 4 traces of 3, 1, 5 and 2 points, capacity 5.
+// The set write_sample_vtp writes: 4 lines of 3, 1, 5 and 2 points.
 inline const std::vector<std::uint32_t> kSamplePointCounts{3, 1, 5, 2};
-inline constexpr std::uint32_t kSampleCapacity = 5;
+
+}  // namespace amrstream::testing
+
+namespace amrstream::testing {
+
+// The number of points of every line.
+inline std::vector<std::uint32_t> pointCountsOf(const flow::TraceSet& traces) {
+  std::vector<std::uint32_t> counts;
+  for (std::size_t line = 0; line < traces.lineCount(); ++line)
+    counts.push_back(static_cast<std::uint32_t>(traces.pointCount(line)));
+  return counts;
+}
+
+// The index of point p of a line.
+inline std::uint64_t at(const flow::TraceSet& traces, std::size_t line, std::uint64_t p) {
+  return traces.firstPoint(line) + p;
+}
 
 }  // namespace amrstream::testing

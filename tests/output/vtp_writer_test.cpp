@@ -66,7 +66,7 @@ std::string readText(const fs::path& path) {
 }
 
 TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
 
   EXPECT_EQ(vtp.vtkFile, (XmlAttributes{{"type", "PolyData"},
                                         {"version", "1.0"},
@@ -78,7 +78,8 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
                                       {"NumberOfLines", "4"},
                                       {"NumberOfStrips", "0"},
                                       {"NumberOfPolys", "0"}}));
-  EXPECT_EQ(vtp.pointData, (XmlAttributes{{"Scalars", "Speed"}, {"Vectors", "velocity"}}));
+  EXPECT_EQ(vtp.pointData,
+            (XmlAttributes{{"Scalars", "IntegrationTime"}, {"Vectors", "velocity"}}));
 
   struct Expected {
     const char* section;
@@ -87,12 +88,13 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
     int components;
     std::size_t bytes;
   };
+  // vtkStreamTracer's order: the input's arrays, IntegrationTime; then ours.
   const Expected expected[] = {
+      {"PointData", "velocity", "Float32", 3, 12 * 12},
       {"PointData", "IntegrationTime", "Float32", 1, 12 * 4},
       {"PointData", "Speed", "Float32", 1, 12 * 4},
-      {"PointData", "velocity", "Float32", 3, 12 * 12},
-      {"CellData", "SeedIds", "Int32", 1, 4 * 4},
       {"CellData", "ReasonForTermination", "Int32", 1, 4 * 4},
+      {"CellData", "SeedIds", "Int32", 1, 4 * 4},
       {"Points", "Points", "Float32", 3, 12 * 12},
       {"Lines", "connectivity", "Int64", 1, 12 * 8},
       {"Lines", "offsets", "Int64", 1, 4 * 8},
@@ -113,7 +115,7 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
 std::uint32_t writtenPoints(std::uint32_t count) { return count == 1 ? 2 : count; }
 
 TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   const auto points = vtp.array("Points", "Points").values<glm::vec3>();
   const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
   const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
@@ -135,7 +137,7 @@ TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
 }
 
 TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   EXPECT_EQ(vtp.array("Lines", "connectivity").values<std::int64_t>(),
             (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
   // VTK XML offsets are the end of each cell's ids; the 1-point trace is a 2-point line.
@@ -144,7 +146,7 @@ TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
 }
 
 TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   const auto speeds = vtp.array("PointData", "Speed").values<float>();
   const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
   ASSERT_EQ(speeds.size(), vectors.size());
@@ -158,7 +160,7 @@ TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
 }
 
 TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
             (std::vector<std::int32_t>{0, 1, 2, 3}));
   EXPECT_EQ(vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
@@ -167,14 +169,14 @@ TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
 }
 
 TEST_F(VtpWriter, NamesTheVectorVectorsWhenTheTraceSetHasNoName) {
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, ""));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, ""));
   EXPECT_EQ(vtp.pointData.at("Vectors"), "Vectors");
   EXPECT_EQ(vtp.array("PointData", "Vectors").components(), 3);
 }
 
 TEST_F(VtpWriter, EscapesTheVectorNameInXml) {
   const char* name = "u<v> & \"w\"";
-  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, name));
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, name));
   EXPECT_EQ(vtp.pointData.at("Vectors"), name);
   EXPECT_EQ(vtp.array("PointData", name).components(), 3);
   EXPECT_NE(readText(dir_ / "traces.vtp").find("u&lt;v&gt; &amp; &quot;w&quot;"),
@@ -184,7 +186,7 @@ TEST_F(VtpWriter, EscapesTheVectorNameInXml) {
 TEST_F(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
   for (const std::string name : {"Speed", "IntegrationTime"}) {
     const VtpFile vtp =
-        writeAndRead(sampleTraces(kSamplePointCounts, kSampleCapacity, name.c_str()));
+        writeAndRead(sampleTraces(kSamplePointCounts, name.c_str()));
     EXPECT_EQ(vtp.pointData.at("Vectors"), name + "_vector");
     EXPECT_EQ(vtp.array("PointData", name + "_vector").components(), 3);
     EXPECT_EQ(vtp.array("PointData", name).components(), 1);
@@ -192,7 +194,7 @@ TEST_F(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
 }
 
 TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
-  const VtpFile vtp = writeAndRead(sampleTraces({}, kSampleCapacity));
+  const VtpFile vtp = writeAndRead(sampleTraces({}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
   ASSERT_EQ(vtp.arrays.size(), 8u);
@@ -201,7 +203,7 @@ TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
 
 // VTK cannot use a line of fewer than 2 points (VTK 9.1 crashes in GetCellPoints on one).
 TEST_F(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
-  const VtpFile vtp = writeAndRead(sampleTraces({2, 1, 1}, 3));
+  const VtpFile vtp = writeAndRead(sampleTraces({2, 1, 1}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "6");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "3");
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
@@ -226,7 +228,7 @@ TEST_F(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
 }
 
 TEST_F(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
-  const VtpFile vtp = writeAndRead(sampleTraces({1, 1, 1, 1}, 1));
+  const VtpFile vtp = writeAndRead(sampleTraces({1, 1, 1, 1}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "8");
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
             (std::vector<std::int64_t>{2, 4, 6, 8}));
@@ -236,7 +238,7 @@ TEST_F(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
 
 // A trace without points has nothing to draw and no point to repeat; SeedIds names the others.
 TEST_F(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
-  const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 3}, 3));
+  const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 3}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "5");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "2");
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
@@ -249,7 +251,7 @@ TEST_F(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
 }
 
 TEST_F(VtpWriter, TracesWithoutPointsAloneMakeAFileWithoutLines) {
-  const VtpFile vtp = writeAndRead(sampleTraces({0, 0}, 3));
+  const VtpFile vtp = writeAndRead(sampleTraces({0, 0}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
   for (const VtpArray& array : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << array.name();
@@ -259,7 +261,7 @@ TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
   // 3000 traces of 1 to 100 points: ~150k points, several MiB per array group.
   std::vector<std::uint32_t> counts;
   for (std::uint32_t seed = 0; seed < 3000; ++seed) counts.push_back(1 + (seed * 37) % 100);
-  const VtpFile vtp = writeAndRead(sampleTraces(counts, 100));
+  const VtpFile vtp = writeAndRead(sampleTraces(counts));
   const auto points = vtp.array("Points", "Points").values<glm::vec3>();
   const auto speeds = vtp.array("PointData", "Speed").values<float>();
   const auto connectivity = vtp.array("Lines", "connectivity").values<std::int64_t>();
@@ -284,7 +286,7 @@ TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
 TEST_F(VtpWriter, ReplacesAnExistingFile) {
   const fs::path path = dir_ / "traces.vtp";
   std::ofstream(path) << "previous run";
-  output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+  output::writeVtp(path, sampleTraces(kSamplePointCounts));
   EXPECT_EQ(readVtp(path).piece.at("NumberOfLines"), "4");
   EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
 }
@@ -293,7 +295,7 @@ TEST_F(VtpWriter, CreatesTheFileWithTheUsualPermissions) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   const fs::path path = dir_ / "traces.vtp";
-  output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+  output::writeVtp(path, sampleTraces(kSamplePointCounts));
   struct stat status {};
   ASSERT_EQ(::stat(path.c_str(), &status), 0);
   EXPECT_EQ(status.st_mode & 0777, 0666 & ~mask);
@@ -308,7 +310,7 @@ void expectErrorNames(const std::runtime_error& error, const fs::path& path, int
 TEST_F(VtpWriter, AMissingDirectoryThrowsNamingThePathAndReason) {
   const fs::path path = dir_ / "no-such-directory" / "traces.vtp";
   try {
-    output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+    output::writeVtp(path, sampleTraces(kSamplePointCounts));
     FAIL() << "no exception";
   } catch (const std::runtime_error& error) {
     expectErrorNames(error, path, ENOENT);
@@ -320,7 +322,7 @@ TEST_F(VtpWriter, ATargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
   const fs::path path = dir_ / "traces.vtp";
   fs::create_directory(path);
   try {
-    output::writeVtp(path, sampleTraces(kSamplePointCounts, kSampleCapacity));
+    output::writeVtp(path, sampleTraces(kSamplePointCounts));
     FAIL() << "no exception";
   } catch (const std::runtime_error& error) {
     expectErrorNames(error, path, EISDIR);
@@ -333,7 +335,7 @@ TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
   const fs::path path = dir_ / "traces.vtp";
   std::ofstream(path) << "previous run";
   // A file size limit makes write() fail part way (EFBIG), as a full disk would (ENOSPC).
-  const flow::TraceSet traces = sampleTraces(std::vector<std::uint32_t>(2000, 100), 100);
+  const flow::TraceSet traces = sampleTraces(std::vector<std::uint32_t>(2000, 100));
   rlimit saved{};
   ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
   rlimit limited = saved;
@@ -354,15 +356,19 @@ TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
 
 TEST_F(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
   const fs::path path = dir_ / "traces.vtp";
-  flow::TraceSet tooLong = sampleTraces(kSamplePointCounts, kSampleCapacity);
-  tooLong.pointCounts[2] = kSampleCapacity + 1;
+  flow::TraceSet tooLong = sampleTraces(kSamplePointCounts);
+  tooLong.offsets.back() += 1;  // one point more than the arrays hold
   EXPECT_THROW(output::writeVtp(path, tooLong), std::invalid_argument);
 
-  flow::TraceSet missingTimes = sampleTraces(kSamplePointCounts, kSampleCapacity);
+  flow::TraceSet backwards = sampleTraces(kSamplePointCounts);
+  backwards.offsets[2] = backwards.offsets[3] + 1;
+  EXPECT_THROW(output::writeVtp(path, backwards), std::invalid_argument);
+
+  flow::TraceSet missingTimes = sampleTraces(kSamplePointCounts);
   missingTimes.times.pop_back();
   EXPECT_THROW(output::writeVtp(path, missingTimes), std::invalid_argument);
 
-  flow::TraceSet missingReason = sampleTraces(kSamplePointCounts, kSampleCapacity);
+  flow::TraceSet missingReason = sampleTraces(kSamplePointCounts);
   missingReason.reasons.pop_back();
   EXPECT_THROW(output::writeVtp(path, missingReason), std::invalid_argument);
   EXPECT_TRUE(entries().empty());

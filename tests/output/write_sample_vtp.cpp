@@ -19,8 +19,8 @@ int main(int argc, char** argv) {
   }
   try {
     const flow::TraceSet traces =
-        empty ? testing::sampleTraces({}, testing::kSampleCapacity)
-              : testing::sampleTraces(testing::kSamplePointCounts, testing::kSampleCapacity);
+        empty ? testing::sampleTraces({})
+              : testing::sampleTraces(testing::kSamplePointCounts);
     output::writeVtp(argv[1], traces);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "write_sample_vtp: %s\n", e.what());

@@ -4,7 +4,7 @@
 #extension GL_EXT_ray_tracing : require
 #include "region_containment.glsl"
 
-layout(set = 0, binding = 11) uniform accelerationStructureEXT regionScene;
+layout(set = 0, binding = AMRSTREAM_LOCATE_BINDING) uniform accelerationStructureEXT regionScene;
 layout(location = 0) rayPayloadEXT int locatedRegion;
 
 // With the region hint (sampler.glsl), the ray is traced at every sample, with an empty cull

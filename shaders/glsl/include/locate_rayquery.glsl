@@ -2,7 +2,7 @@
 #extension GL_EXT_ray_query : require
 #include "region_containment.glsl"
 
-layout(set = 0, binding = 11) uniform accelerationStructureEXT regionScene;
+layout(set = 0, binding = AMRSTREAM_LOCATE_BINDING) uniform accelerationStructureEXT regionScene;
 
 int locateInRegions(vec3 p) {
   rayQueryEXT query;

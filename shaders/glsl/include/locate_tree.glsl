@@ -1,9 +1,10 @@
 // Point location for the `compute` backend: descent of the regions' kd-tree, built on the host
 // (src/bricks/region_builder.hpp). Stackless: every point takes exactly one path.
 
-// The tracer binds the tree at 11; other kernels may define AMRSTREAM_TREE_BINDING first.
+// The tracer binds the tree at AMRSTREAM_LOCATE_BINDING; other kernels may define
+// AMRSTREAM_TREE_BINDING first.
 #ifndef AMRSTREAM_TREE_BINDING
-#define AMRSTREAM_TREE_BINDING 11
+#define AMRSTREAM_TREE_BINDING AMRSTREAM_LOCATE_BINDING
 #endif
 layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
 

@@ -1,4 +1,5 @@
-// Basis-function reconstruction (DESIGN.md section 5); twin of src/flow/sampler.cpp.
+// Basis-function reconstruction (docs/architecture.md, "Sampling"); twin of
+// src/flow/sampler.cpp.
 // Needs: the buffers of amr_buffers.glsl, params, and `int locateInRegions(vec3 p)` from the
 // backend's locate_*.glsl, included before this file.
 
@@ -17,7 +18,23 @@ struct VectorSample {
   bool valid;
   vec3 value;
   float cellWidth;
+  int region;  // AMRSTREAM_NO_REGION_ID unless located
 };
+
+// p moved by whole periods into the domain along the periodic axes; twin of wrapPeriodic().
+vec3 wrapPeriodic(vec3 p) {
+  precise vec3 q = p;
+  for (int a = 0; a < 3; ++a) {
+    if ((params.periodicAxes & (1u << a)) == 0u) continue;
+    const float lower = float(params.domainLower[a]), upper = float(params.domainUpper[a]);
+    if (q[a] >= upper)
+      q[a] -= params.period[a];
+    else if (q[a] < lower)
+      q[a] += params.period[a];
+    if (q[a] >= upper) q[a] = lower;  // a point just below the lower face rounded onto the upper
+  }
+  return q;
+}
 
 bool insideDomain(vec3 p) {
   return all(greaterThanEqual(p, vec3(params.domainLower))) &&
@@ -36,7 +53,7 @@ int cachedRegionId = -1;
 Region cachedRegion;
 
 VectorSample sampleVector(vec3 p) {
-  VectorSample s = VectorSample(false, false, vec3(0.0), 0.0);
+  VectorSample s = VectorSample(false, false, vec3(0.0), 0.0, AMRSTREAM_NO_REGION_ID);
   if (!insideDomain(p)) return s;
   const bool hinted = kUseRegionHint && cachedRegionId >= 0 &&
                       all(greaterThanEqual(p, cachedRegion.lower)) &&
@@ -58,6 +75,7 @@ VectorSample sampleVector(vec3 p) {
 #endif
   const Region region = cachedRegion;
   s.located = true;
+  s.region = cachedRegionId;
   s.cellWidth = region.finestCellWidth;
 
   precise vec3 weighted;

@@ -11,6 +11,7 @@ namespace amrstream::shared {
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 using ivec3 = glm::ivec3;
 using uint = std::uint32_t;
 }  // namespace amrstream::shared

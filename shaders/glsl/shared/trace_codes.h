@@ -1,5 +1,6 @@
 // Termination reasons and step modes, shared by the CPU reference and the GLSL kernels.
-// Reasons use VTK's vtkStreamTracer::ReasonForTermination values so ParaView users know them.
+// Reasons use VTK's vtkStreamTracer::ReasonForTermination values so ParaView users know them;
+// VTK leaves the codes from 7 on to custom terminations.
 #ifndef AMRSTREAM_SHARED_TRACE_CODES_H
 #define AMRSTREAM_SHARED_TRACE_CODES_H
 
@@ -9,6 +10,8 @@
 #define AMRSTREAM_REASON_MAX_LENGTH 4        // the next step would pass the length limit
 #define AMRSTREAM_REASON_MAX_STEPS 5         // the step limit was reached
 #define AMRSTREAM_REASON_STAGNATION 6        // speed below the terminal speed
+#define AMRSTREAM_REASON_MAX_TIME 7          // |IntegrationTime| reached the time limit
+#define AMRSTREAM_REASON_PERIODIC_WRAP 8     // written only: a polyline piece ends at a periodic face
 
 #define AMRSTREAM_STEP_CELL 0  // RK4 on dx/ds = w(x) v(x): step h in finest cell widths of the region
 #define AMRSTREAM_STEP_TIME 1  // RK4 on dx/dt = v(x) with a fixed physical dt = h

@@ -1,6 +1,6 @@
-// Parameters of one tracing dispatch, shared by the host and the GLSL kernels (scalar layout).
+// Parameters of one tracing round, shared by the host and the GLSL kernels (scalar layout).
 // Positions are in finest-cell units; velocities and cell widths physical (see
-// src/flow/integrator.cpp, the CPU twin of include/integrator.glsl).
+// src/flow/line_tracer.cpp, the CPU twin of include/line_round.glsl).
 #ifndef AMRSTREAM_SHARED_TRACE_PARAMS_H
 #define AMRSTREAM_SHARED_TRACE_PARAMS_H
 
@@ -10,24 +10,28 @@ namespace amrstream::shared {
 #endif
 
 struct TraceParams {
-  ivec3 domainLower;      // the cells' bounding box [domainLower, domainUpper)
-  uint seedCount;
+  ivec3 domainLower;        // the cells' bounding box [domainLower, domainUpper)
+  uint lineCount;           // lines advanced by this round (one thread each)
   ivec3 domainUpper;
-  uint capacity;          // points stored per trace: max steps + 1, or 1 without history
-  vec3 cellsPerPhysical;  // 1 / spacing
+  uint roundSteps;          // steps a line may take in this round before it pauses
+  vec3 cellsPerPhysical;    // 1 / spacing
   float physicalCellWidth;  // smallest spacing: physical width of a finest cell
   vec3 spacing;
-  int stepMode;           // AMRSTREAM_STEP_*
+  int stepMode;             // AMRSTREAM_STEP_*
+  vec3 period;              // domainUpper - domainLower: the period of periodic axes
+  uint periodicAxes;        // bit a set: axis a is periodic (positions wrap into the domain)
   float stepSize;
   uint maxSteps;
   float terminalSpeed;
-  float maxLength;        // 0: no limit
-  uint keepHistory;       // 0: store only each trace's last point (endpoints-only)
+  float maxLength;          // physical arc length limit; 0: none
+  float maxTime;            // |IntegrationTime| limit; 0: none
+  uint keepHistory;         // 0: emit only each line's last point, when it ends
+  uint pointsPerLine;       // output slots per line in this round: roundSteps + 1, or 1
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 84 && offsetof(TraceParams, spacing) == 48 &&
-              offsetof(TraceParams, maxLength) == 76);
+static_assert(sizeof(TraceParams) == 108 && offsetof(TraceParams, period) == 64 &&
+              offsetof(TraceParams, maxTime) == 96);
 }  // namespace amrstream::shared
 #endif
 

@@ -1,0 +1,62 @@
+#include "line_plan.hpp"
+
+#include <algorithm>
+
+namespace amrstream::flow {
+
+LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                   Direction direction) {
+  std::vector<float> signs;
+  if (direction != Direction::Backward) signs.push_back(1.0f);
+  if (direction != Direction::Forward) signs.push_back(-1.0f);
+  LinePlan plan;
+  for (const float sign : signs)
+    for (std::size_t seed = 0; seed < seeds.size(); ++seed) {
+      const auto line = static_cast<std::uint32_t>(plan.states.size());
+      const glm::vec3 cell(volume.transform.toCellUnits(seeds[seed]));
+      plan.states.push_back({cell, 0.0f, 0.0f, 0u, line, sign});
+      plan.layout.seedIds.push_back(static_cast<std::uint32_t>(seed));
+      plan.layout.directions.push_back(sign);
+    }
+  return plan;
+}
+
+TraceSet traceShape(const VectorVolume& volume, const TraceOptions& options) {
+  TraceSet shape;
+  shape.vectorName = volume.vectorName;
+  shape.channelNames = volume.channelNames;
+  shape.withVorticity = options.vorticity;
+  shape.periodic = {volume.periodic, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
+                    volume.transform.toPhysical(glm::dvec3(volume.domain.upper))};
+  return shape;
+}
+
+std::size_t linesPerBatch(const TraceOptions& options, const RoundCosts& costs, std::size_t lines) {
+  const std::uint64_t perLine =
+      costs.bytesPerLine + costs.bytesPerPointSlot * (options.keepHistory ? 2 : 1);
+  const std::uint64_t fit = options.memoryBudget / std::max<std::uint64_t>(1, perLine);
+  return std::max<std::size_t>(1, std::min<std::uint64_t>(lines, fit));
+}
+
+std::uint64_t pointSlots(const TraceOptions& options, const RoundCosts& costs,
+                         std::size_t batchLines) {
+  const std::uint64_t lineBytes = costs.bytesPerLine * batchLines;
+  const std::uint64_t left = options.memoryBudget > lineBytes ? options.memoryBudget - lineBytes : 0;
+  const std::uint64_t smallest = std::uint64_t(batchLines) * (options.keepHistory ? 2 : 1);
+  const std::uint64_t largest =
+      std::uint64_t(batchLines) * (options.keepHistory ? std::uint64_t(options.maxSteps) + 1 : 1);
+  const std::uint64_t fit = left / std::max<std::uint64_t>(1, costs.bytesPerPointSlot);
+  return std::max(smallest, std::min(fit, largest));
+}
+
+std::uint32_t stepsPerRound(const TraceOptions& options, std::uint64_t slots,
+                            std::size_t liveLines) {
+  if (!options.keepHistory || liveLines == 0)
+    return options.roundSteps > 0 ? std::min(options.roundSteps, options.maxSteps)
+                                  : options.maxSteps;
+  const std::uint64_t fit = std::max<std::uint64_t>(slots / liveLines, 2) - 1;
+  const std::uint64_t wanted = options.roundSteps > 0 ? options.roundSteps : options.maxSteps;
+  return static_cast<std::uint32_t>(std::max<std::uint64_t>(1, std::min(fit, wanted)));
+}
+
+}  // namespace amrstream::flow

@@ -1,0 +1,23 @@
+#pragma once
+// What one tracing round hands over: for each line it advanced (in the order the round took
+// them) its LineRound, and the points it emitted, line after line in that order.
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "../../shaders/glsl/shared/line_state.h"
+
+namespace amrstream::flow {
+
+struct RoundBlock {
+  std::vector<shared::LineRound> lines;
+  std::vector<glm::vec3> positions;  // physical coordinates
+  std::vector<float> times;
+  std::vector<glm::vec3> vectors;
+  std::vector<float> channels;       // channelCount values per point
+  std::vector<glm::vec3> vorticity;  // empty without vorticity
+
+  std::size_t pointCount() const { return times.size(); }
+};
+
+}  // namespace amrstream::flow

@@ -1,0 +1,81 @@
+#pragma once
+// One batch of lines traced in rounds on a GPU backend. A round is one submission: the tracing
+// kernel advances every live line by up to `steps` steps, writing its points point-major; then
+// the compaction kernels pack each line's points into one dense run (a prefix sum over the
+// lines' point counts, thread order kept) and the running lines' states for the next round;
+// then the point data kernel samples the channels and vorticity at the packed points. Only the
+// round's real points and reports are copied back.
+//
+// runToEnd() overlaps the work: while round r's points are copied to the host and unpacked
+// there, round r + 1 already runs on the device (the reports alternate between two buffers, and
+// the compaction of r + 1 waits for the copy of r before it overwrites the dense arrays).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+
+#include "../../shaders/glsl/shared/round_params.h"
+#include "flow/round_tracer.hpp"
+#include "round_buffers.hpp"
+#include "round_kernels.hpp"
+#include "trace_kernel.hpp"
+#include "volume_buffers.hpp"
+#include "vk/descriptor_pool.hpp"
+#include "vk/gpu_timer.hpp"
+#include "vk/submission.hpp"
+
+namespace amrstream::gpu {
+
+// Device time of the rounds run so far (when the device has timestamps and timing is on).
+struct RoundTimes {
+  std::optional<double> traceSeconds;       // the tracing kernel
+  std::optional<double> compactionSeconds;  // compaction and point data
+  std::size_t rounds = 0;
+};
+
+class GpuRounds final : public flow::RoundTracer {
+ public:
+  // Everything referenced must outlive the rounds. `pointSlots` output slots are shared by the
+  // lines of a round. With `timeKernels`, timestamps bracket the kernels of every round (they may
+  // keep the device from overlapping a round with the previous copy).
+  GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
+            const VolumeBuffers& device, const flow::VectorVolume& volume,
+            std::span<const shared::LineState> lines, const flow::TraceOptions& options,
+            std::uint64_t pointSlots, bool timeKernels);
+
+  std::size_t liveLines() const override { return live_; }
+  flow::RoundBlock advance(std::uint32_t steps) override;
+
+  // Runs rounds until every line has ended, handing each round's block to `consume` (on this
+  // thread) while the next round runs on the device. `stepsFor(live)` gives each round's steps.
+  void runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+                const std::function<void(flow::RoundBlock&&)>& consume);
+
+  const RoundTimes& times() const { return times_; }
+  std::uint64_t deviceBytes() const;
+
+ private:
+  vk::Submission submitRound(std::uint32_t steps);
+  shared::RoundSummary finishRound(vk::Submission& round);
+  vk::Submission submitCopy(const shared::RoundSummary& summary);
+  flow::RoundBlock unpack(const shared::RoundSummary& summary, std::size_t lines) const;
+
+  const vk::Context* ctx_;
+  const TraceKernel* trace_;
+  const RoundKernels* kernels_;
+  const VolumeBuffers* device_;
+  const flow::VectorVolume* volume_;
+  flow::TraceOptions options_;
+  shared::TraceParams params_;
+  RoundBuffers buffers_;
+  vk::DescriptorPool pool_;
+  VkDescriptorSet traceSets_[2]{}, compactionSets_[2]{}, pointDataSet_ = VK_NULL_HANDLE;
+  std::optional<vk::GpuTimer> traceTimer_, compactionTimer_;
+  std::size_t live_;
+  std::size_t roundLines_ = 0;  // lines of the round submitted last
+  int parity_ = 0;              // which line-round buffer the next round writes
+  RoundTimes times_;
+};
+
+}  // namespace amrstream::gpu

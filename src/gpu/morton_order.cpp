@@ -1,0 +1,44 @@
+#include "morton_order.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <limits>
+#include <utility>
+
+namespace amrstream::gpu {
+
+namespace {
+
+// Interleaves the low 10 bits of x with two zero bits after each.
+std::uint32_t spreadBits(std::uint32_t x) {
+  x &= 0x3ff;
+  x = (x | (x << 16)) & 0x030000ff;
+  x = (x | (x << 8)) & 0x0300f00f;
+  x = (x | (x << 4)) & 0x030c30c3;
+  x = (x | (x << 2)) & 0x09249249;
+  return x;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> mortonOrder(std::span<const glm::vec3> points) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const glm::vec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 scale = 1023.0f / glm::max(hi - lo, glm::vec3(1e-20f));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    const glm::uvec3 q(glm::clamp((points[i] - lo) * scale, glm::vec3(0.0f), glm::vec3(1023.0f)));
+    keyed[i] = {spreadBits(q.x) | (spreadBits(q.y) << 1) | (spreadBits(q.z) << 2),
+                static_cast<std::uint32_t>(i)};
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  return order;
+}
+
+}  // namespace amrstream::gpu

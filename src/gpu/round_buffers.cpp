@@ -1,0 +1,74 @@
+#include "round_buffers.hpp"
+
+#include <glm/glm.hpp>
+
+#include "../../shaders/glsl/shared/round_params.h"
+#include "../../shaders/glsl/shared/trace_params.h"
+#include "vk/buffer_transfer.hpp"
+
+namespace amrstream::gpu {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+constexpr VkBufferUsageFlags kCopied = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+vk::Buffer device(const vk::Context& ctx, std::uint64_t bytes, const char* name,
+                  VkBufferUsageFlags usage = kStorage) {
+  return vk::Buffer::deviceLocal(ctx, bytes, usage, name);
+}
+
+vk::Buffer host(const vk::Context& ctx, std::uint64_t bytes, const char* name) {
+  return vk::Buffer::readback(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
+}
+
+std::uint64_t blocksOf(std::size_t lines) {
+  return (lines + AMRSTREAM_COMPACTION_GROUP - 1) / AMRSTREAM_COMPACTION_GROUP;
+}
+
+}  // namespace
+
+flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
+  const std::uint64_t pointData = channelCount * sizeof(float) + (vorticity ? sizeof(glm::vec3) : 0);
+  const std::uint64_t emitted = 2 * sizeof(glm::vec3) + sizeof(float) + sizeof(std::int32_t);
+  const std::uint64_t copied = 2 * sizeof(glm::vec3) + sizeof(float) + pointData;
+  return {2 * sizeof(shared::LineState) + 3 * sizeof(shared::LineRound) + sizeof(glm::uvec2),
+          2 * emitted + pointData + copied};
+}
+
+RoundBuffers::RoundBuffers(const vk::Context& ctx, std::span<const shared::LineState> lines,
+                           std::uint64_t pointSlots, std::size_t channelCount, bool withVorticity)
+    : lineCapacity(lines.size()), pointCapacity(pointSlots) {
+  const std::uint64_t n = lineCapacity, p = pointCapacity;
+  params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                              "round params");
+  states = vk::uploadToDeviceLocal(ctx, lines, kStorage, "line states");
+  roundStates = device(ctx, n * sizeof(shared::LineState), "round states");
+  lineRounds[0] = device(ctx, n * sizeof(shared::LineRound), "line rounds (even)", kCopied);
+  lineRounds[1] = device(ctx, n * sizeof(shared::LineRound), "line rounds (odd)", kCopied);
+  prefix = device(ctx, n * sizeof(glm::uvec2), "line prefix");
+  blockSums = device(ctx, blocksOf(n) * sizeof(glm::uvec2), "block sums");
+  summary = device(ctx, sizeof(shared::RoundSummary), "round summary",
+                   kCopied | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+
+  positions = device(ctx, p * sizeof(glm::vec3), "round positions");
+  times = device(ctx, p * sizeof(float), "round times");
+  vectors = device(ctx, p * sizeof(glm::vec3), "round vectors");
+  regionIds = device(ctx, p * sizeof(std::int32_t), "round region ids", kCopied);
+  densePositions = device(ctx, p * sizeof(glm::vec3), "dense positions", kCopied);
+  denseTimes = device(ctx, p * sizeof(float), "dense times", kCopied);
+  denseVectors = device(ctx, p * sizeof(glm::vec3), "dense vectors", kCopied);
+  denseRegionIds = device(ctx, p * sizeof(std::int32_t), "dense region ids");
+  channels = device(ctx, p * channelCount * sizeof(float), "dense channels", kCopied);
+  vorticity = device(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "dense vorticity", kCopied);
+
+  summaryOut = host(ctx, sizeof(shared::RoundSummary), "round summary (host)");
+  lineRoundsOut = host(ctx, n * sizeof(shared::LineRound), "line rounds (host)");
+  positionsOut = host(ctx, p * sizeof(glm::vec3), "positions (host)");
+  timesOut = host(ctx, p * sizeof(float), "times (host)");
+  vectorsOut = host(ctx, p * sizeof(glm::vec3), "vectors (host)");
+  channelsOut = host(ctx, p * channelCount * sizeof(float), "channels (host)");
+  vorticityOut = host(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "vorticity (host)");
+}
+
+}  // namespace amrstream::gpu

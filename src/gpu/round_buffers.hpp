@@ -1,0 +1,55 @@
+#pragma once
+// The device buffers of one batch of lines traced in rounds, and the host-visible copies a round's
+// output is read back into. Sized once per batch: `lines` line slots and `pointSlots` output
+// slots shared by a round's lines (a round of n live lines and k slots each needs n * k).
+//
+// Per line: the states the next round starts from (compacted after each round), the states the
+// round ends with (one per thread), the round reports (two, alternating between rounds, so that
+// a round may run while the previous one's reports are still being copied), the compaction's
+// prefix, and the host copy of the reports.
+// Per output slot: the round's point-major output (position, time, vector, region id), its dense
+// copy with the point data, and the host copies.
+
+#include <cstdint>
+#include <span>
+
+#include "../../shaders/glsl/shared/line_state.h"
+#include "flow/line_plan.hpp"
+#include "vk/buffer.hpp"
+
+namespace amrstream::vk {
+class Context;
+}
+
+namespace amrstream::gpu {
+
+struct RoundBuffers {
+  RoundBuffers(const vk::Context& ctx, std::span<const shared::LineState> lines,
+               std::uint64_t pointSlots, std::size_t channelCount, bool vorticity);
+
+  // The bytes the fields below take per line and per output slot, for budgeting.
+  static flow::RoundCosts costs(std::size_t channelCount, bool vorticity);
+
+  std::size_t lineCapacity;
+  std::uint64_t pointCapacity;
+
+  vk::Buffer params;  // shared::TraceParams, host-written before each round
+  vk::Buffer states;
+  vk::Buffer roundStates;
+  vk::Buffer lineRounds[2];
+  vk::Buffer prefix;
+  vk::Buffer blockSums;
+  vk::Buffer summary;  // shared::RoundSummary; also the point data's indirect dispatch
+
+  // Point-major output of the tracing kernel.
+  vk::Buffer positions, times, vectors, regionIds;
+  // Dense output of the compaction and the point data kernel.
+  vk::Buffer densePositions, denseTimes, denseVectors, denseRegionIds, channels, vorticity;
+
+  // Host-visible copies.
+  vk::Buffer summaryOut;
+  vk::Buffer lineRoundsOut;
+  vk::Buffer positionsOut, timesOut, vectorsOut, channelsOut, vorticityOut;
+};
+
+}  // namespace amrstream::gpu

@@ -1,0 +1,54 @@
+#include "volume_buffers.hpp"
+
+#include "util/stopwatch.hpp"
+#include "vk/buffer_transfer.hpp"
+
+namespace amrstream::gpu {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+std::vector<VkAabbPositionsKHR> regionBoxes(const bricks::RegionSet& regions) {
+  std::vector<VkAabbPositionsKHR> boxes(regions.regions.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const shared::Region& r = regions.regions[i];
+    boxes[i] = {r.lower.x, r.lower.y, r.lower.z, r.upper.x, r.upper.y, r.upper.z};
+  }
+  return boxes;
+}
+
+}  // namespace
+
+VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
+                             const flow::VectorVolume& volume, TracerSetup& setup) {
+  Stopwatch clock;
+  bricks = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
+  values = vk::uploadToDeviceLocal(ctx, volume.values, kStorage, "vector values");
+  channelValues = vk::uploadToDeviceLocal(ctx, volume.channelValues, kStorage, "channel values");
+  regions = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
+  regionBricks =
+      vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
+  setup.uploadSeconds = clock.seconds();
+  setup.volumeBytes =
+      bricks.size() + values.size() + channelValues.size() + regions.size() + regionBricks.size();
+
+  clock.restart();
+  if (backend == Backend::Compute) {
+    tree = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
+    setup.structureBytes = tree.size();
+  } else {
+    scene = vk::buildAabbScene(ctx, regionBoxes(volume.regions), "regions");
+    setup.structureBytes = scene->tlas.size();
+    for (const vk::AabbBlas& blas : scene->blases) setup.structureBytes += blas.structure.size();
+  }
+  setup.structureSeconds = clock.seconds();
+}
+
+vk::DescriptorTarget VolumeBuffers::locateTarget() const {
+  if (scene)
+    return {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_NULL_HANDLE, scene->tlas.handle()};
+  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tree.handle()};
+}
+
+}  // namespace amrstream::gpu
