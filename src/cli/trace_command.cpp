@@ -7,6 +7,7 @@
 #include "output/vtp_writer.hpp"
 #include "trace_job.hpp"
 #include "trace_settings.hpp"
+#include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
@@ -32,6 +33,8 @@ void runTrace(const TraceCommandOptions& o) {
   const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
+  fmt::print("memory     {:.2f} GiB peak resident on the host\n",
+             double(peakResidentBytes()) / 0x1p30);
 }
 
 }  // namespace

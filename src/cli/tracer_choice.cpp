@@ -111,6 +111,11 @@ flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::Vecto
   flow::TraceSet traces = tracer.trace(seeds, options, progress);
   t.traceSeconds = clock.seconds();
   checkValidation(ctx);
+  const gpu::TraceRunStats& run = tracer.lastRun();
+  fmt::print("rounds     {} in {} batch{}: buffers {:.3f} s, waiting for rounds {:.3f} s and "
+             "copies {:.3f} s, unpacking {:.3f} s, assembling lines {:.3f} s\n",
+             run.rounds, run.batches, run.batches == 1 ? "" : "es", run.buffersSeconds,
+             run.roundWaitSeconds, run.copyWaitSeconds, run.unpackSeconds, run.assembleSeconds);
   return traces;
 }
 

@@ -5,17 +5,19 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "column.hpp"
+
 #include "../../shaders/glsl/shared/line_state.h"
 
 namespace amrstream::flow {
 
 struct RoundBlock {
   std::vector<shared::LineRound> lines;
-  std::vector<glm::vec3> positions;  // physical coordinates
-  std::vector<float> times;
-  std::vector<glm::vec3> vectors;
-  std::vector<float> channels;       // channelCount values per point
-  std::vector<glm::vec3> vorticity;  // empty without vorticity
+  Column<glm::vec3> positions;  // physical coordinates
+  Column<float> times;
+  Column<glm::vec3> vectors;
+  Column<float> channels;       // channelCount values per point
+  Column<glm::vec3> vorticity;  // empty without vorticity
 
   std::size_t pointCount() const { return times.size(); }
 };

@@ -19,8 +19,8 @@ namespace {
 // Copies one array of every stored round into `target` at the rounds' destinations (in units of
 // `width` elements per point); with `release`, frees each round's array once it is copied.
 template <typename T, typename Rounds>
-void gather(std::vector<T>& target, std::uint64_t points, std::size_t width, Rounds& rounds,
-            std::vector<T> RoundBlock::*array, const std::vector<std::uint64_t>& offsets,
+void gather(Column<T>& target, std::uint64_t points, std::size_t width, Rounds& rounds,
+            Column<T> RoundBlock::*array, const std::vector<std::uint64_t>& offsets,
             bool release) {
   target.resize(points * width);
   if (width == 0) return;
@@ -36,7 +36,7 @@ void gather(std::vector<T>& target, std::uint64_t points, std::size_t width, Rou
                   std::size_t(lines[i].points) * width * sizeof(T));
     });
     if constexpr (!std::is_const_v<std::remove_reference_t<decltype(source)>>)
-      if (release) std::vector<T>().swap(source);
+      if (release) Column<T>().swap(source);
   }
 }
 

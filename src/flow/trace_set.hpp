@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "column.hpp"
+
 namespace amrstream::flow {
 
 // The box positions were wrapped into along its periodic axes (physical coordinates); a line
@@ -45,11 +47,11 @@ struct TraceSet {
   std::vector<std::uint64_t> offsets{0};  // lineCount() + 1 entries, offsets[0] == 0
 
   // Per point.
-  std::vector<glm::vec3> positions;  // physical coordinates
-  std::vector<float> times;          // IntegrationTime: negative along backward lines
-  std::vector<glm::vec3> vectors;    // the traced vector sampled at the point
-  std::vector<float> channels;       // channelNames.size() values per point
-  std::vector<glm::vec3> vorticity;  // one per point with withVorticity, else empty
+  Column<glm::vec3> positions;  // physical coordinates
+  Column<float> times;          // IntegrationTime: negative along backward lines
+  Column<glm::vec3> vectors;    // the traced vector sampled at the point
+  Column<float> channels;       // channelNames.size() values per point
+  Column<glm::vec3> vorticity;  // one per point with withVorticity, else empty
   bool withVorticity = false;
 
   std::size_t lineCount() const { return seedIds.size(); }

@@ -7,6 +7,7 @@
 
 #include "../../shaders/glsl/shared/round_params.h"
 #include "vk/commands.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 
 namespace amrstream::gpu {
@@ -26,11 +27,12 @@ std::uint32_t groups(std::size_t threads, std::uint32_t groupSize) {
   return static_cast<std::uint32_t>((threads + groupSize - 1) / groupSize);
 }
 
-// Copies `count` elements of T from a host-visible buffer into a vector, in parallel.
-template <typename T>
-std::vector<T> copyOut(const vk::Buffer& buffer, std::size_t count) {
+// Copies `count` elements from a host-visible buffer into a new container, in parallel.
+template <typename Container>
+Container copyOut(const vk::Buffer& buffer, std::size_t count) {
+  using T = typename Container::value_type;
   buffer.invalidateMapped();
-  std::vector<T> out(count);
+  Container out(count);
   const T* source = reinterpret_cast<const T*>(buffer.mapped().data());
   constexpr std::size_t kGrain = std::size_t(1) << 16;
   tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
@@ -179,7 +181,9 @@ vk::Submission GpuRounds::submitRound(std::uint32_t steps) {
 }
 
 shared::RoundSummary GpuRounds::finishRound(vk::Submission& round) {
+  Stopwatch clock;
   round.wait();
+  times_.roundWaitSeconds += clock.seconds();
   buffers_.summaryOut.invalidateMapped();
   shared::RoundSummary summary;
   std::memcpy(&summary, buffers_.summaryOut.mapped().data(), sizeof(summary));
@@ -218,11 +222,12 @@ flow::RoundBlock GpuRounds::unpack(const shared::RoundSummary& summary, std::siz
   const RoundBuffers& b = buffers_;
   const std::size_t points = summary.points, channels = volume_->channelCount();
   flow::RoundBlock block;
-  block.lines = copyOut<shared::LineRound>(b.lineRoundsOut, lines);
-  block.times = copyOut<float>(b.timesOut, points);
-  block.vectors = copyOut<glm::vec3>(b.vectorsOut, points);
-  block.channels = copyOut<float>(b.channelsOut, points * channels);
-  if (options_.vorticity) block.vorticity = copyOut<glm::vec3>(b.vorticityOut, points);
+  block.lines = copyOut<std::vector<shared::LineRound>>(b.lineRoundsOut, lines);
+  block.times = copyOut<flow::Column<float>>(b.timesOut, points);
+  block.vectors = copyOut<flow::Column<glm::vec3>>(b.vectorsOut, points);
+  block.channels = copyOut<flow::Column<float>>(b.channelsOut, points * channels);
+  if (options_.vorticity)
+    block.vorticity = copyOut<flow::Column<glm::vec3>>(b.vorticityOut, points);
   // Kernels work in cell units; convert in double precision like the CPU path.
   b.positionsOut.invalidateMapped();
   const glm::vec3* cells = reinterpret_cast<const glm::vec3*>(b.positionsOut.mapped().data());
@@ -254,8 +259,13 @@ void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& s
     vk::Submission copy = submitCopy(summary);
     live_ = summary.liveLines;
     if (live_ > 0) round = submitRound(stepsFor(live_));
+    Stopwatch clock;
     copy.wait();
-    consume(unpack(summary, lines));
+    times_.copyWaitSeconds += clock.seconds();
+    clock.restart();
+    flow::RoundBlock block = unpack(summary, lines);
+    times_.unpackSeconds += clock.seconds();
+    consume(std::move(block));
     if (live_ == 0) break;
   }
 }

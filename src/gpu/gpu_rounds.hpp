@@ -32,6 +32,8 @@ struct RoundTimes {
   std::optional<double> traceSeconds;       // the tracing kernel
   std::optional<double> compactionSeconds;  // compaction and point data
   std::size_t rounds = 0;
+  // Host wall time: waiting for rounds, waiting for their copies, unpacking the copies.
+  double roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0;
 };
 
 class GpuRounds final : public flow::RoundTracer {

@@ -86,11 +86,13 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
   const std::size_t batch = linesPerBatch(options, lines);
   for (std::size_t first = 0; first < lines; first += batch) {
     const std::size_t count = std::min(batch, lines - first);
+    Stopwatch clock;
     const std::vector<shared::LineState> ordered =
         threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
     const std::uint64_t slots = pointSlots(options, count);
     GpuRounds rounds(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered, options, slots,
                      timeKernels_);
+    lastRun_.buffersSeconds += clock.seconds();
     rounds.runToEnd(
         [&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
         [&](flow::RoundBlock&& block) {
@@ -108,8 +110,14 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
     ++lastRun_.batches;
     lastRun_.rounds += t.rounds;
     lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
+    lastRun_.roundWaitSeconds += t.roundWaitSeconds;
+    lastRun_.copyWaitSeconds += t.copyWaitSeconds;
+    lastRun_.unpackSeconds += t.unpackSeconds;
   }
-  return accumulator.assemble();
+  Stopwatch clock;
+  flow::TraceSet traces = accumulator.assemble();
+  lastRun_.assembleSeconds = clock.seconds();
+  return traces;
 }
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,

@@ -36,6 +36,10 @@ struct TraceRunStats {
   std::size_t batches = 0;
   std::size_t rounds = 0;
   std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
+  // Host wall time of trace()'s parts: making the batches' buffers, waiting for the rounds and for
+  // their copies, unpacking the copies, and assembling the lines.
+  double buffersSeconds = 0.0, roundWaitSeconds = 0.0, copyWaitSeconds = 0.0,
+         unpackSeconds = 0.0, assembleSeconds = 0.0;
 };
 
 class GpuTracer {

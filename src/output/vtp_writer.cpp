@@ -79,9 +79,10 @@ std::vector<Piece> piecesOf(const flow::TraceSet& traces, PeriodicLines periodic
 std::uint64_t writtenPoints(const Piece& piece) { return piece.count == 1 ? 2 : piece.count; }
 
 // Point values of every piece, `width` values per point; a 1-point piece's values twice.
-template <class T>
-void writePerPoint(BufferedWriter& out, const std::vector<Piece>& pieces,
-                   const std::vector<T>& values, std::size_t width = 1) {
+template <class Values>
+void writePerPoint(BufferedWriter& out, const std::vector<Piece>& pieces, const Values& values,
+                   std::size_t width = 1) {
+  using T = typename Values::value_type;
   for (const Piece& piece : pieces) {
     const std::span<const T> valid(values.data() + piece.first * width, piece.count * width);
     out.write(std::as_bytes(valid));
@@ -120,8 +121,8 @@ float angularVelocityAt(const flow::TraceSet& traces, std::uint64_t i) {
 
 // vtkStreamTracer's Rotation: the angular velocity integrated along each line with the trapezoid
 // rule over IntegrationTime, from 0 at the seed.
-std::vector<float> rotationOf(const flow::TraceSet& traces) {
-  std::vector<float> rotation(traces.pointCount(), 0.0f);
+flow::Column<float> rotationOf(const flow::TraceSet& traces) {
+  flow::Column<float> rotation(traces.pointCount(), 0.0f);
   for (std::size_t line = 0; line < traces.lineCount(); ++line) {
     double total = 0.0;
     for (std::uint64_t i = traces.offsets[line] + 1; i < traces.offsets[line + 1]; ++i) {
@@ -134,8 +135,8 @@ std::vector<float> rotationOf(const flow::TraceSet& traces) {
 }
 
 // Positions continued across periodic faces: each wrap adds or removes one period.
-std::vector<glm::vec3> unwrappedPositions(const flow::TraceSet& traces) {
-  std::vector<glm::vec3> positions = traces.positions;
+flow::Column<glm::vec3> unwrappedPositions(const flow::TraceSet& traces) {
+  flow::Column<glm::vec3> positions = traces.positions;
   const glm::dvec3 period = traces.periodic.upper - traces.periodic.lower;
   for (std::size_t line = 0; line < traces.lineCount(); ++line) {
     glm::dvec3 shift(0.0);
@@ -171,9 +172,11 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& trac
   for (const Piece& piece : pieces) pointCount += writtenPoints(piece);
   const std::uint64_t lineCount = pieces.size();
   const bool unwrap = options.periodicLines == PeriodicLines::Unwrapped && traces.periodic.any();
-  const std::vector<glm::vec3> unwrapped = unwrap ? unwrappedPositions(traces) : std::vector<glm::vec3>{};
-  const std::vector<glm::vec3>& positions = unwrap ? unwrapped : traces.positions;
-  const std::vector<float> rotation = traces.withVorticity ? rotationOf(traces) : std::vector<float>{};
+  const flow::Column<glm::vec3> unwrapped =
+      unwrap ? unwrappedPositions(traces) : flow::Column<glm::vec3>{};
+  const flow::Column<glm::vec3>& positions = unwrap ? unwrapped : traces.positions;
+  const flow::Column<float> rotation =
+      traces.withVorticity ? rotationOf(traces) : flow::Column<float>{};
 
   using Out = BufferedWriter&;
   const std::uint64_t floats = pointCount * sizeof(float), vec3s = pointCount * sizeof(glm::vec3);

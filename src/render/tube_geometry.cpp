@@ -22,7 +22,7 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
     return colour;
   }
   if (name == "time") {
-    colour.values = traces.times;
+    colour.values.assign(traces.times.begin(), traces.times.end());
     return colour;
   }
   if (!field.findChannel(name)) {
