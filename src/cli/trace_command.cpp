@@ -16,6 +16,7 @@ namespace {
 struct TraceCommandOptions {
   TraceJobOptions job;
   std::string out = "traces.vtp";
+  std::string compression = "zlib";
   bool endpointsOnly = false;
 };
 
@@ -26,7 +27,9 @@ void runTrace(const TraceCommandOptions& o) {
   const flow::TraceSet traces = runTraces(o.job, input);
 
   Stopwatch clock;
-  const output::VtpCounts written = output::writeVtp(o.out, traces);
+  output::VtpWriteOptions write;
+  write.compression = *output::compressionNamed(o.compression);  // checked by CLI11
+  const output::VtpCounts written = output::writeVtp(o.out, traces, write);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
 }
@@ -38,6 +41,12 @@ void addTraceCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
   addTraceJobOptions(*command, options->job);
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
+  command
+      ->add_option("--compression", options->compression,
+                   "compression of the .vtp's arrays: zlib (as VTK and ParaView write), lz4 "
+                   "(faster, larger) or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "zlib", "lz4"}));
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each trace's last point (no history: for very long runs)");
   command->callback([options] {

@@ -17,8 +17,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "../flow/trace_set.hpp"
+#include "output/vtk_compression.hpp"
+#include "output/vtk_field_data.hpp"
 
 namespace amrstream::output {
 
@@ -29,8 +32,15 @@ struct VtpCounts {
   std::uint64_t points = 0;
 };
 
-// Throws std::invalid_argument before creating the file when the TraceSet is inconsistent;
-// std::runtime_error naming the path when the file cannot be written.
-VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces);
+struct VtpWriteOptions {
+  Compression compression = Compression::ZLib;
+  std::vector<FieldDataArray> fieldData;  // dataset-level arrays, e.g. provenance
+};
+
+// Throws std::invalid_argument before creating the file when the TraceSet is inconsistent or a
+// field data array cannot be written; std::runtime_error naming the path when the file cannot be
+// written.
+VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
+                   const VtpWriteOptions& options = {});
 
 }  // namespace amrstream::output
