@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <span>
@@ -159,17 +160,11 @@ bool decodeBase64(std::string_view text, std::vector<std::byte>& out) {
   return true;
 }
 
-std::string joined(const std::vector<std::string_view>& parts) {
-  std::string out;
-  for (const std::string_view part : parts) out += part;
-  return out;
-}
-
 }  // namespace
 
 VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
     : source_(path.string()), bytes_(readFileBytes(path)) {
-  ScannedXml scanned = scanXml(bytes_, source_);
+  XmlHeader scanned = parseXmlHeader(bytes_, source_);
   root_ = std::move(scanned.root);
   if (root_.name != "VTKFile") {
     fail(fmt::format("not a VTK XML file: the root element is <{}>, not <VTKFile>", root_.name));
@@ -267,7 +262,7 @@ void VtkXmlFile::checkCount(std::uint64_t values, std::optional<std::uint64_t> t
 
 std::span<const std::byte> VtkXmlFile::inlineBlock(const XmlElement& array, const std::string& what,
                                                    std::vector<std::byte>& decoded) const {
-  if (!decodeBase64(joined(array.text), decoded)) {
+  if (!decodeBase64(array.text, decoded)) {
     fail(fmt::format("array {} is not valid base64", what));
   }
   if (decoded.size() < headerBytes_) fail(fmt::format("array {} has no byte count", what));
@@ -331,11 +326,8 @@ VtkXmlFile::CompressedArray VtkXmlFile::compressedArray(const XmlElement& array,
   if (*format == "binary") {
     // Inline text may be wrapped; the character counts below need it without whitespace.
     std::string text;
-    for (const std::string_view part : array.text) {
-      for (const char c : part) {
-        if (!isXmlSpace(c)) text += c;
-      }
-    }
+    std::copy_if(array.text.begin(), array.text.end(), std::back_inserter(text),
+                 [](char c) { return !isXmlSpace(c); });
     return compressedFromBase64(text, what, decoded);
   }
   if (!appended_) {
@@ -469,20 +461,19 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
       }
       out.push_back(convertOne(value, out.size()));
     };
-    for (const std::string_view part : array.text) {
-      for (std::size_t i = 0; i < part.size();) {
-        while (i < part.size() && isXmlSpace(part[i])) ++i;
-        const std::size_t begin = i;
-        while (i < part.size() && !isXmlSpace(part[i])) ++i;
-        if (begin == i) break;
-        const std::string_view token = part.substr(begin, i - begin);
-        if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
-          parse(token, double{});
-        } else if (*scalar == Scalar::UInt64) {
-          parse(token, std::uint64_t{});
-        } else {
-          parse(token, std::int64_t{});
-        }
+    const std::string_view text = array.text;
+    for (std::size_t i = 0; i < text.size();) {
+      while (i < text.size() && isXmlSpace(text[i])) ++i;
+      const std::size_t begin = i;
+      while (i < text.size() && !isXmlSpace(text[i])) ++i;
+      if (begin == i) break;
+      const std::string_view token = text.substr(begin, i - begin);
+      if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
+        parse(token, double{});
+      } else if (*scalar == Scalar::UInt64) {
+        parse(token, std::uint64_t{});
+      } else {
+        parse(token, std::int64_t{});
       }
     }
     checkCount(out.size(), tuples, expectedComponents, what);

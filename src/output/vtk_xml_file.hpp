@@ -1,6 +1,6 @@
 #pragma once
 // Reading side of VTK's XML file formats, independent of the dataset type: the <VTKFile>
-// header (xml_scan.hpp gives its element tree) and the values of its DataArrays. The
+// header (xml_header.hpp gives its element tree) and the values of its DataArrays. The
 // counterpart of vtk_xml_appended.hpp.
 //
 // DataArray formats read: format="appended" with <AppendedData encoding="raw"> or "base64",
@@ -32,12 +32,12 @@
 #include <vector>
 
 #include "output/vtk_compression.hpp"
-#include "output/xml_scan.hpp"
+#include "output/xml_header.hpp"
 
 namespace amrstream::output {
 
-// A whole VTK XML file held in memory (the raw appended blocks are read in place). Owns the bytes
-// that its elements' text views point into, so it is neither copied nor moved.
+// A whole VTK XML file held in memory (the raw appended blocks are read in place, so it is
+// neither copied nor moved).
 class VtkXmlFile {
  public:
   // Reads and scans the file and checks the <VTKFile> attributes this reader depends on.

@@ -349,17 +349,28 @@ TEST_F(VtpReader, RejectsMalformedXml) {
   const std::string text = vtpText(twoLinePiece(), {TestEncoding::Ascii});
   EXPECT_THAT(errorFor(text.substr(0, text.size() / 2)), HasSubstr("truncated"));
   EXPECT_THAT(errorFor(text.substr(0, text.find("Name=\"offsets\"") + 7)),
-              HasSubstr("unterminated attribute"));
+              HasSubstr("the file ends inside <Lines> (truncated?)"));
   std::string mismatched = text;
   mismatched.replace(mismatched.find("</Lines>"), 8, "</Points>");
-  EXPECT_THAT(errorFor(mismatched), HasSubstr("</Points> closes <Lines>"));
+  EXPECT_THAT(errorFor(mismatched), HasSubstr("mismatched tag (the open element is <Lines>)"));
   std::string entity = text;
   entity.replace(entity.find("Name=\"velocity\""), 15, "Name=\"vel&oops;\"");
-  EXPECT_THAT(errorFor(entity), HasSubstr("unknown entity"));
+  EXPECT_THAT(errorFor(entity), HasSubstr("undefined entity"));
+  std::string unquoted = text;
+  unquoted.replace(unquoted.find("Name=\"velocity\""), 15, "Name=velocity");
+  EXPECT_THAT(errorFor(unquoted), HasSubstr("malformed XML at line"));
   EXPECT_THAT(errorFor("<a><b>"), HasSubstr("the file ends inside <b>"));
   std::string deep;
   for (int i = 0; i < 100; ++i) deep += "<VTKFile>";
   EXPECT_THAT(errorFor(deep), HasSubstr("nested deeper than 64"));
+}
+
+// Entities could expand a small header into a huge one (the "billion laughs"); VTK uses none.
+TEST_F(VtpReader, RefusesEntityDeclarations) {
+  std::string text = vtpText(twoLinePiece());
+  text.insert(text.find("<VTKFile"), "<!DOCTYPE VTKFile [<!ENTITY a \"aaaaaaaaaa\">]>\n");
+  text.replace(text.find("Name=\"velocity\""), 15, "Name=\"&a;\"");
+  EXPECT_THAT(errorFor(text), HasSubstr("the file declares an entity (a)"));
 }
 
 TEST_F(VtpReader, RejectsSeveralPiecesSayingSo) {
