@@ -1,7 +1,8 @@
 #pragma once
 // Writes traces as VTK XML PolyData (.vtp), readable by VTK 9 and ParaView: one polyline per
 // seed; point arrays IntegrationTime, Speed and the traced vector; cell arrays SeedIds and
-// ReasonForTermination.
+// ReasonForTermination; optional FieldData. Compressed as VTK does (zlib by default; see
+// vtk_compression.hpp).
 //
 // Every polyline has at least 2 points. VTK rejects shorter lines when it builds its cell map
 // ("Invalid cell size for lines") and VTK 9.1 then crashes in vtkPolyData::GetCellPoints, so a
