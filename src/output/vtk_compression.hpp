@@ -47,9 +47,9 @@ struct ZLibSettings {
 };
 
 // What the writer uses for an array of VTK type `vtkType`: level 1, where VTK's default 5 is 1.1
-// (floats) to 3 times (integers) slower for files 0.4 % smaller; and for Float32 and Float64,
-// run-length matches only, which compress float data as well and 2.3 times faster (their bytes
-// seldom repeat at a distance, so searching for such matches is wasted). Measured with
+// (floats) to 3.8 times (integers) slower for files 0.3 % of the raw size smaller; and for Float32
+// and Float64, run-length matches only, which compress float data as well and 2.6 times faster
+// (their bytes seldom repeat at a distance, so searching for such matches is wasted). Measured with
 // bench/compression (docs/formats.md).
 ZLibSettings zlibSettingsFor(std::string_view vtkType);
 

@@ -164,8 +164,8 @@ bool decodeBase64(std::string_view text, std::vector<std::byte>& out) {
 
 VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
     : source_(path.string()), bytes_(readFileBytes(path)) {
-  XmlHeader scanned = parseXmlHeader(bytes_, source_);
-  root_ = std::move(scanned.root);
+  XmlHeader parsed = parseXmlHeader(bytes_, source_);
+  root_ = std::move(parsed.root);
   if (root_.name != "VTKFile") {
     fail(fmt::format("not a VTK XML file: the root element is <{}>, not <VTKFile>", root_.name));
   }
@@ -201,7 +201,7 @@ VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
     }
     compression_ = *compression;
   }
-  if (scanned.appendedStart) {
+  if (parsed.appendedStart) {
     const XmlElement* appended = root_.child("AppendedData");
     const std::string* encoding = appended ? appended->attribute("encoding") : nullptr;
     if (appended == nullptr) fail("<AppendedData> is not a child of <VTKFile>");
@@ -209,7 +209,7 @@ VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
       fail(fmt::format("<AppendedData> has encoding \"{}\"; raw and base64 are supported",
                        encoding ? *encoding : ""));
     }
-    appended_ = Appended{*scanned.appendedStart, *encoding == "base64"};
+    appended_ = Appended{*parsed.appendedStart, *encoding == "base64"};
   }
 }
 
