@@ -17,6 +17,7 @@ namespace {
 struct TraceCommandOptions {
   TraceJobOptions job;
   std::string out = "traces.vtp";
+  std::string compression = "zlib";
   bool endpointsOnly = false;
   std::string periodicLines = "split";
 };
@@ -28,8 +29,9 @@ void runTrace(const TraceCommandOptions& o) {
 
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;
-  writeOptions.periodicLines =
-      o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped : output::PeriodicLines::Split;
+  writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
+                                                              : output::PeriodicLines::Split;
+  writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
   const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
@@ -44,6 +46,12 @@ void addTraceCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
   addTraceJobOptions(*command, options->job);
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
+  command
+      ->add_option("--compression", options->compression,
+                   "compression of the .vtp's arrays: zlib (as VTK and ParaView write), lz4 "
+                   "(faster, larger) or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "zlib", "lz4"}));
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each line's last point (no history)");
   command

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <stdexcept>
 #include <system_error>
 #include <utility>
 
@@ -47,6 +48,23 @@ void AtomicFile::write(std::span<const std::byte> bytes) {
       fail(errno);
     }
     bytes = bytes.subspan(static_cast<std::size_t>(written));
+    size_ += static_cast<std::uint64_t>(written);
+  }
+}
+
+void AtomicFile::writeAt(std::uint64_t position, std::span<const std::byte> bytes) {
+  if (position > size_ || bytes.size() > size_ - position) {
+    throw std::logic_error(fmt::format("AtomicFile::writeAt past the {} bytes written to '{}'",
+                                       size_, target_.string()));
+  }
+  while (!bytes.empty()) {
+    const ssize_t written = ::pwrite(fd_, bytes.data(), bytes.size(), static_cast<off_t>(position));
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      fail(errno);
+    }
+    bytes = bytes.subspan(static_cast<std::size_t>(written));
+    position += static_cast<std::uint64_t>(written);
   }
 }
 

@@ -2,8 +2,8 @@
 
 namespace amrstream::output {
 
-BufferedWriter::BufferedWriter(AtomicFile& file, std::size_t capacity)
-    : file_(file), buffer_(capacity) {}
+BufferedWriter::BufferedWriter(ByteSink& sink, std::size_t capacity)
+    : sink_(sink), buffer_(capacity) {}
 
 void BufferedWriter::write(std::span<const std::byte> bytes) {
   if (bytes.empty()) return;  // an empty vector's data() may be null, which memcpy rejects
@@ -15,7 +15,7 @@ void BufferedWriter::write(std::span<const std::byte> bytes) {
   }
   flush();
   if (bytes.size() >= buffer_.size()) {
-    file_.write(bytes);
+    sink_.write(bytes);
   } else {
     std::memcpy(buffer_.data(), bytes.data(), bytes.size());
     used_ = bytes.size();
@@ -23,7 +23,7 @@ void BufferedWriter::write(std::span<const std::byte> bytes) {
 }
 
 void BufferedWriter::flush() {
-  file_.write(std::span(buffer_.data(), used_));
+  sink_.write(std::span(buffer_.data(), used_));
   used_ = 0;
 }
 

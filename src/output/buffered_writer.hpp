@@ -1,6 +1,7 @@
 #pragma once
 // Collects small writes (one float at a time) into large ones, so streaming an array value by
-// value costs a memcpy, not a system call. Counts every byte it accepts.
+// value costs a memcpy, not a system call (or a call into the compressor). Counts every byte it
+// accepts.
 
 #include <cstddef>
 #include <cstdint>
@@ -10,13 +11,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "output/atomic_file.hpp"
+#include "output/byte_sink.hpp"
 
 namespace amrstream::output {
 
 class BufferedWriter {
  public:
-  explicit BufferedWriter(AtomicFile& file, std::size_t capacity = std::size_t(1) << 20);
+  explicit BufferedWriter(ByteSink& sink, std::size_t capacity = std::size_t(1) << 20);
   BufferedWriter(const BufferedWriter&) = delete;
   BufferedWriter& operator=(const BufferedWriter&) = delete;
 
@@ -37,7 +38,7 @@ class BufferedWriter {
   std::uint64_t bytesWritten() const { return total_; }
 
  private:
-  AtomicFile& file_;
+  ByteSink& sink_;
   std::vector<std::byte> buffer_;
   std::size_t used_ = 0;
   std::uint64_t total_ = 0;

@@ -2,9 +2,65 @@
 
 #include <fmt/format.h>
 
+#include <bit>
+#include <span>
 #include <stdexcept>
 
+#include "output/atomic_file.hpp"
+#include "output/block_compressing_sink.hpp"
+
 namespace amrstream::output {
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "the file declares byte_order=\"LittleEndian\" and headers are written as in memory");
+
+// `"offset"` and the spaces after it: room for the quotes and any 64-bit value.
+constexpr std::size_t kOffsetWidth = 22;
+
+std::string quotedOffset(std::uint64_t offset) {
+  return fmt::format("{:<{}}", fmt::format("\"{}\"", offset), kOffsetWidth);
+}
+
+void checkWritten(const AppendedArray& array, std::uint64_t written) {
+  if (written != array.byteCount) {
+    throw std::logic_error(fmt::format("VTK array '{}' declared {} bytes but wrote {}", array.name,
+                                       array.byteCount, written));
+  }
+}
+
+void writeRawBlock(BufferedWriter& out, const AppendedArray& array) {
+  out.put<std::uint64_t>(array.byteCount);
+  const std::uint64_t start = out.bytesWritten();
+  array.writeValues(out);
+  checkWritten(array, out.bytesWritten() - start);
+}
+
+// The block header goes first as zeros (its size follows from byteCount) and is written over
+// once the compressed sizes are known.
+void writeCompressedBlock(AtomicFile& file, BufferedWriter& out, const AppendedArray& array,
+                          Compression compression) {
+  const BlockHeader layout = BlockHeader::forBytes(array.byteCount);
+  std::vector<std::uint64_t> header(3 + layout.blockCount, 0);
+  const std::uint64_t headerAt = out.bytesWritten();
+  out.write(std::as_bytes(std::span(header)));
+
+  BlockCompressingSink compressor(compression, out, zlibSettingsFor(array.type));
+  BufferedWriter values(compressor);
+  array.writeValues(values);
+  values.flush();
+  checkWritten(array, values.bytesWritten());
+  const std::vector<std::uint64_t> sizes = compressor.finish();
+
+  header[0] = layout.blockCount;
+  header[1] = layout.blockBytes;
+  header[2] = layout.lastBlockBytes;
+  std::copy(sizes.begin(), sizes.end(), header.begin() + 3);
+  out.flush();
+  file.writeAt(headerAt, std::as_bytes(std::span(header)));
+}
+
+}  // namespace
 
 std::string xmlAttribute(std::string_view text) {
   std::string escaped;
@@ -43,36 +99,70 @@ std::string xmlAttribute(std::string_view text) {
   return escaped;
 }
 
-std::vector<std::uint64_t> appendedOffsets(const std::vector<const AppendedArray*>& arrays) {
-  std::vector<std::uint64_t> offsets;
-  std::uint64_t offset = 0;
-  for (const AppendedArray* array : arrays) {
-    offsets.push_back(offset);
-    offset += sizeof(std::uint64_t) + array->byteCount;
+AppendedFileWriter::AppendedFileWriter(std::string_view datasetType, Compression compression)
+    : compression_(compression) {
+  const std::string_view compressor = vtkCompressorName(compression);
+  markup_ = fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\"{}>\n",
+      xmlAttribute(datasetType),
+      compressor.empty() ? "" : fmt::format(" compressor=\"{}\"", compressor));
+}
+
+void AppendedFileWriter::markup(std::string_view xml) { markup_ += xml; }
+
+void AppendedFileWriter::arrayTag(std::string_view element, const AppendedArray& array,
+                                  std::string_view sizeKey, std::uint64_t size, int indent) {
+  markup_ +=
+      fmt::format("{:{}}<{} type=\"{}\" Name=\"{}\" {}=\"{}\" format=\"appended\" offset=", "",
+                  indent, element, array.type, xmlAttribute(array.name), sizeKey, size);
+  slots_.push_back({&array, markup_.size()});
+  markup_ += quotedOffset(0);
+  markup_ += "/>\n";
+}
+
+void AppendedFileWriter::dataArray(const AppendedArray& array, int indent) {
+  arrayTag("DataArray", array, "NumberOfComponents", std::uint64_t(array.components), indent);
+}
+
+void AppendedFileWriter::fieldData(const std::vector<FieldDataArray>& arrays, int indent) {
+  if (arrays.empty()) return;
+  for (const FieldDataArray& array : arrays) checkWritable(array);
+  markup_ += fmt::format("{:{}}<FieldData>\n", "", indent);
+  for (const FieldDataArray& array : arrays) {
+    auto owned = std::make_unique<OwnedFieldArray>();
+    owned->values = array;
+    const FieldDataArray& values = owned->values;
+    owned->appended = {values.name, vtkTypeName(values), 1, byteCount(values),
+                       [&values](BufferedWriter& out) { writeValues(out, values); }};
+    const bool strings = vtkTypeName(values) == "String";
+    arrayTag(strings ? "Array" : "DataArray", owned->appended, "NumberOfTuples", tupleCount(values),
+             indent + 2);
+    fieldArrays_.push_back(std::move(owned));
   }
-  return offsets;
+  markup_ += fmt::format("{:{}}</FieldData>\n", "", indent);
 }
 
-std::string dataArrayTag(const AppendedArray& array, std::uint64_t offset, int indent) {
-  return fmt::format(
-      "{:{}}<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
-      "offset=\"{}\"/>\n",
-      "", indent, array.type, xmlAttribute(array.name), array.components, offset);
-}
-
-void writeAppendedData(BufferedWriter& out, const std::vector<const AppendedArray*>& arrays) {
+void AppendedFileWriter::write(const std::filesystem::path& path) const {
+  AtomicFile file(path);
+  BufferedWriter out(file);
+  out.write(markup_);
   out.write("  <AppendedData encoding=\"raw\">\n   _");
-  for (const AppendedArray* array : arrays) {
-    out.put<std::uint64_t>(array->byteCount);
-    const std::uint64_t start = out.bytesWritten();
-    array->writeValues(out);
-    const std::uint64_t written = out.bytesWritten() - start;
-    if (written != array->byteCount) {
-      throw std::logic_error(fmt::format("VTK array '{}' declared {} bytes but wrote {}",
-                                         array->name, array->byteCount, written));
+  const std::uint64_t base = out.bytesWritten();
+  std::string markup = markup_;
+  for (const Slot& slot : slots_) {
+    markup.replace(slot.offsetAt, kOffsetWidth, quotedOffset(out.bytesWritten() - base));
+    if (compression_ == Compression::None) {
+      writeRawBlock(out, *slot.array);
+    } else {
+      writeCompressedBlock(file, out, *slot.array, compression_);
     }
   }
-  out.write("\n  </AppendedData>\n");
+  out.write("\n  </AppendedData>\n</VTKFile>\n");
+  out.flush();
+  file.writeAt(0, std::as_bytes(std::span(markup)));
+  file.commit();
 }
 
 }  // namespace amrstream::output

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <span>
@@ -159,18 +160,12 @@ bool decodeBase64(std::string_view text, std::vector<std::byte>& out) {
   return true;
 }
 
-std::string joined(const std::vector<std::string_view>& parts) {
-  std::string out;
-  for (const std::string_view part : parts) out += part;
-  return out;
-}
-
 }  // namespace
 
 VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
     : source_(path.string()), bytes_(readFileBytes(path)) {
-  ScannedXml scanned = scanXml(bytes_, source_);
-  root_ = std::move(scanned.root);
+  XmlHeader parsed = parseXmlHeader(bytes_, source_);
+  root_ = std::move(parsed.root);
   if (root_.name != "VTKFile") {
     fail(fmt::format("not a VTK XML file: the root element is <{}>, not <VTKFile>", root_.name));
   }
@@ -193,14 +188,20 @@ VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
     fail(fmt::format("unknown header_type \"{}\" (VTK writes UInt32 or UInt64)", *headerType));
   }
   const std::string* compressor = root_.attribute("compressor");
-  if (compressor != nullptr && !trimmedXmlSpace(*compressor).empty()) {
-    fail(
-        fmt::format("the file is compressed ({}), which is not supported: write it "
-                    "uncompressed (vtkXMLWriter::SetCompressorTypeToNone(), or Compressor Type "
-                    "None in ParaView's Save Data options)",
-                    *compressor));
+  const std::string_view compressorName = compressor ? trimmedXmlSpace(*compressor) : "";
+  if (!compressorName.empty()) {
+    const std::optional<Compression> compression = compressionOfVtkCompressor(compressorName);
+    if (!compression) {
+      fail(
+          fmt::format("the file is compressed with {}, which is not read: compressed files are "
+                      "read when written with vtkZLibDataCompressor or vtkLZ4DataCompressor "
+                      "(rewrite it with SetCompressorTypeToZLib(), or choose ZLib or LZ4 in "
+                      "ParaView's Save Data options)",
+                      excerpt(compressorName)));
+    }
+    compression_ = *compression;
   }
-  if (scanned.appendedStart) {
+  if (parsed.appendedStart) {
     const XmlElement* appended = root_.child("AppendedData");
     const std::string* encoding = appended ? appended->attribute("encoding") : nullptr;
     if (appended == nullptr) fail("<AppendedData> is not a child of <VTKFile>");
@@ -208,7 +209,7 @@ VtkXmlFile::VtkXmlFile(const std::filesystem::path& path)
       fail(fmt::format("<AppendedData> has encoding \"{}\"; raw and base64 are supported",
                        encoding ? *encoding : ""));
     }
-    appended_ = Appended{*scanned.appendedStart, *encoding == "base64"};
+    appended_ = Appended{*parsed.appendedStart, *encoding == "base64"};
   }
 }
 
@@ -261,11 +262,11 @@ void VtkXmlFile::checkCount(std::uint64_t values, std::optional<std::uint64_t> t
 
 std::span<const std::byte> VtkXmlFile::inlineBlock(const XmlElement& array, const std::string& what,
                                                    std::vector<std::byte>& decoded) const {
-  if (!decodeBase64(joined(array.text), decoded)) {
+  if (!decodeBase64(array.text, decoded)) {
     fail(fmt::format("array {} is not valid base64", what));
   }
   if (decoded.size() < headerBytes_) fail(fmt::format("array {} has no byte count", what));
-  const std::uint64_t size = blockSize(decoded.data());
+  const std::uint64_t size = headerValue(decoded.data());
   if (size != decoded.size() - headerBytes_) {
     fail(fmt::format("array {} declares {} bytes but holds {}", what, size,
                      decoded.size() - headerBytes_));
@@ -297,7 +298,7 @@ std::span<const std::byte> VtkXmlFile::appendedBlock(const XmlElement& array,
 
   if (!appended_->base64) {
     const auto* data = reinterpret_cast<const std::byte*>(bytes_.data()) + appended_->base;
-    const std::uint64_t size = blockSize(data + offset);
+    const std::uint64_t size = headerValue(data + offset);
     if (size > available - offset - headerBytes_) truncated(size);
     return {data + offset + headerBytes_, static_cast<std::size_t>(size)};
   }
@@ -309,7 +310,7 @@ std::span<const std::byte> VtkXmlFile::appendedBlock(const XmlElement& array,
     }
   };
   decode(countChars, headerBytes_);
-  const std::uint64_t size = blockSize(decoded.data());
+  const std::uint64_t size = headerValue(decoded.data());
   // Base64 takes more characters than bytes: a block larger than the file cannot be in it.
   if (size > available) truncated(size);
   const std::uint64_t chars = (headerBytes_ + size + 2) / 3 * 4;
@@ -318,7 +319,106 @@ std::span<const std::byte> VtkXmlFile::appendedBlock(const XmlElement& array,
   return std::span(decoded).subspan(headerBytes_, static_cast<std::size_t>(size));
 }
 
-std::uint64_t VtkXmlFile::blockSize(const std::byte* header) const {
+VtkXmlFile::CompressedArray VtkXmlFile::compressedArray(const XmlElement& array,
+                                                        const std::string& what,
+                                                        std::vector<std::byte>& decoded) const {
+  const std::string* format = array.attribute("format");
+  if (*format == "binary") {
+    // Inline text may be wrapped; the character counts below need it without whitespace.
+    std::string text;
+    std::copy_if(array.text.begin(), array.text.end(), std::back_inserter(text),
+                 [](char c) { return !isXmlSpace(c); });
+    return compressedFromBase64(text, what, decoded);
+  }
+  if (!appended_) {
+    fail(fmt::format("array {} is appended, but the file has no <AppendedData>", what));
+  }
+  const std::uint64_t offset = count(array, "offset");
+  const std::size_t available = bytes_.size() - appended_->base;
+  if (offset > available) {
+    fail(fmt::format("array {} has offset {}, outside the appended data ({} bytes)", what, offset,
+                     available));
+  }
+  const std::size_t start = appended_->base + static_cast<std::size_t>(offset);
+  if (appended_->base64) {
+    return compressedFromBase64(std::string_view(bytes_).substr(start), what, decoded);
+  }
+  return compressedFromRaw(std::as_bytes(std::span(bytes_)).subspan(start), what);
+}
+
+// Reads the block count first: it says how long the header is, and must fit in what is left.
+VtkXmlFile::CompressedArray VtkXmlFile::compressedFromRaw(std::span<const std::byte> bytes,
+                                                          const std::string& what) const {
+  const auto truncated = [&] {
+    fail(fmt::format("array {}: the file ends inside its compressed block header (truncated?)",
+                     what));
+  };
+  if (bytes.size() < 3 * headerBytes_) truncated();
+  CompressedArray out;
+  BlockHeader& header = out.header;
+  header.blockCount = headerValue(bytes.data());
+  if (header.blockCount > bytes.size() / headerBytes_ - 3) {
+    fail(
+        fmt::format("array {}: its block header declares {} compressed blocks, more than the {} "
+                    "bytes left in the file can hold",
+                    what, header.blockCount, bytes.size()));
+  }
+  header.blockBytes = headerValue(bytes.data() + headerBytes_);
+  header.lastBlockBytes = headerValue(bytes.data() + 2 * headerBytes_);
+  header.compressedSizes.resize(static_cast<std::size_t>(header.blockCount));
+  for (std::size_t block = 0; block < header.compressedSizes.size(); ++block) {
+    header.compressedSizes[block] = headerValue(bytes.data() + (3 + block) * headerBytes_);
+  }
+  out.blocks = bytes.subspan((3 + header.compressedSizes.size()) * headerBytes_);
+  return out;
+}
+
+// VTK encodes the header on its own and then the blocks, each run padded to whole groups of 4
+// characters for 3 bytes.
+VtkXmlFile::CompressedArray VtkXmlFile::compressedFromBase64(
+    std::string_view text, const std::string& what, std::vector<std::byte>& decoded) const {
+  const auto charsFor = [](std::uint64_t bytes) { return (bytes + 2) / 3 * 4; };
+  const auto decode = [&](std::string_view chars) {
+    decoded.clear();
+    if (!decodeBase64(chars, decoded)) {
+      fail(fmt::format("array {}: its compressed data is not valid base64", what));
+    }
+  };
+  const auto truncated = [&] {
+    fail(fmt::format("array {}: the file ends inside its compressed block header (truncated?)",
+                     what));
+  };
+  const std::size_t firstChars = charsFor(headerBytes_);
+  if (text.size() < firstChars) truncated();
+  decode(text.substr(0, firstChars));
+  const std::uint64_t blockCount = headerValue(decoded.data());
+  // Every block takes at least one header integer, which takes more than one character.
+  if (blockCount > text.size() / headerBytes_) {
+    fail(
+        fmt::format("array {}: its block header declares {} compressed blocks, more than the {} "
+                    "characters left in the file can hold",
+                    what, blockCount, text.size()));
+  }
+  const std::size_t headerChars = charsFor((3 + blockCount) * headerBytes_);
+  if (text.size() < headerChars) truncated();
+  decode(text.substr(0, headerChars));
+  CompressedArray out = compressedFromRaw(decoded, what);
+  out.blocks = {};
+  // The compressed sizes are checked against what is left before anything is sized by them.
+  const std::uint64_t compressed = out.header.compressedBytes();
+  const std::string_view rest = text.substr(headerChars);
+  if (compressed > rest.size() || charsFor(compressed) > rest.size()) {
+    fail(
+        fmt::format("array {}: the compressed blocks need {} bytes, the file ends first "
+                    "(truncated?)",
+                    what, compressed));
+  }
+  decode(rest.substr(0, static_cast<std::size_t>(charsFor(compressed))));
+  out.blocks = decoded;
+  return out;
+}
+
+std::uint64_t VtkXmlFile::headerValue(const std::byte* header) const {
   return headerBytes_ == 8 ? loadElement<std::uint64_t>(header, swapBytes_)
                            : loadElement<std::uint32_t>(header, swapBytes_);
 }
@@ -361,50 +461,88 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
       }
       out.push_back(convertOne(value, out.size()));
     };
-    for (const std::string_view part : array.text) {
-      for (std::size_t i = 0; i < part.size();) {
-        while (i < part.size() && isXmlSpace(part[i])) ++i;
-        const std::size_t begin = i;
-        while (i < part.size() && !isXmlSpace(part[i])) ++i;
-        if (begin == i) break;
-        const std::string_view token = part.substr(begin, i - begin);
-        if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
-          parse(token, double{});
-        } else if (*scalar == Scalar::UInt64) {
-          parse(token, std::uint64_t{});
-        } else {
-          parse(token, std::int64_t{});
-        }
+    const std::string_view text = array.text;
+    for (std::size_t i = 0; i < text.size();) {
+      while (i < text.size() && isXmlSpace(text[i])) ++i;
+      const std::size_t begin = i;
+      while (i < text.size() && !isXmlSpace(text[i])) ++i;
+      if (begin == i) break;
+      const std::string_view token = text.substr(begin, i - begin);
+      if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
+        parse(token, double{});
+      } else if (*scalar == Scalar::UInt64) {
+        parse(token, std::uint64_t{});
+      } else {
+        parse(token, std::int64_t{});
       }
     }
     checkCount(out.size(), tuples, expectedComponents, what);
     return out;
   }
 
-  std::vector<std::byte> decoded;
-  std::span<const std::byte> block;
-  if (*format == "binary") {
-    block = inlineBlock(array, what, decoded);
-  } else if (*format == "appended") {
-    block = appendedBlock(array, what, decoded);
-  } else {
+  if (*format != "binary" && *format != "appended") {
     fail(fmt::format("array {} has format \"{}\"; appended, binary and ascii are supported", what,
                      excerpt(*format)));
   }
   const std::size_t elementBytes = scalarBytes(*scalar);
-  if (block.size() % elementBytes != 0) {
-    fail(fmt::format("array {} holds {} bytes, not a whole number of {} values", what, block.size(),
-                     *typeName));
-  }
-  checkCount(block.size() / elementBytes, tuples, expectedComponents, what);
-  std::vector<T> out(block.size() / elementBytes);
-  withType(*scalar, [&](auto type) {
-    using From = decltype(type);
-    for (std::size_t i = 0; i < out.size(); ++i) {
-      out[i] = convertOne(loadElement<From>(block.data() + i * sizeof(From), swapBytes_), i);
+  const auto checkBytes = [&](std::uint64_t bytes) {
+    if (bytes % elementBytes != 0) {
+      fail(fmt::format("array {} holds {} bytes, not a whole number of {} values", what, bytes,
+                       *typeName));
     }
-  });
-  return out;
+    checkCount(bytes / elementBytes, tuples, expectedComponents, what);
+  };
+  // Converts whole elements from `bytes` into out, from element `first` on.
+  const auto convertInto = [&](std::vector<T>& out, std::size_t first,
+                               std::span<const std::byte> bytes) {
+    withType(*scalar, [&](auto type) {
+      using From = decltype(type);
+      for (std::size_t i = 0; i < bytes.size() / sizeof(From); ++i) {
+        out[first + i] =
+            convertOne(loadElement<From>(bytes.data() + i * sizeof(From), swapBytes_), first + i);
+      }
+    });
+  };
+
+  std::vector<std::byte> decoded;
+  if (compression_ == Compression::None) {
+    const std::span<const std::byte> block = *format == "binary"
+                                                 ? inlineBlock(array, what, decoded)
+                                                 : appendedBlock(array, what, decoded);
+    checkBytes(block.size());
+    std::vector<T> out(block.size() / elementBytes);
+    convertInto(out, 0, block);
+    return out;
+  }
+
+  try {
+    const CompressedArray compressed = compressedArray(array, what, decoded);
+    const BlockReader reader(compression_, compressed.header, compressed.blocks);
+    // Sized by the header, which the reader checked against the compressed bytes in the file.
+    checkBytes(reader.uncompressedBytes());
+    std::vector<T> out(static_cast<std::size_t>(reader.uncompressedBytes() / elementBytes));
+    // A value may straddle two batches when blocks are not a whole number of values long.
+    std::vector<std::byte> straddling;
+    std::size_t converted = 0;
+    reader.forEachBatch([&](std::span<const std::byte> batch) {
+      if (!straddling.empty()) {
+        const std::size_t missing = elementBytes - straddling.size();
+        const std::size_t take = std::min(missing, batch.size());
+        straddling.insert(straddling.end(), batch.begin(), batch.begin() + take);
+        batch = batch.subspan(take);
+        if (straddling.size() < elementBytes) return;
+        convertInto(out, converted++, straddling);
+        straddling.clear();
+      }
+      const std::size_t whole = batch.size() / elementBytes * elementBytes;
+      convertInto(out, converted, batch.first(whole));
+      converted += whole / elementBytes;
+      straddling.assign(batch.begin() + whole, batch.end());
+    });
+    return out;
+  } catch (const CompressedDataError& error) {
+    fail(fmt::format("array {}: {}", what, error.what()));
+  }
 }
 
 std::vector<float> VtkXmlFile::floats(const XmlElement& dataArray,

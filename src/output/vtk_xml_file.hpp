@@ -1,15 +1,27 @@
 #pragma once
 // Reading side of VTK's XML file formats, independent of the dataset type: the <VTKFile>
-// header (xml_scan.hpp gives its element tree) and the values of its DataArrays. The
+// header (xml_header.hpp gives its element tree) and the values of its DataArrays. The
 // counterpart of vtk_xml_appended.hpp.
 //
 // DataArray formats read: format="appended" with <AppendedData encoding="raw"> or "base64",
 // format="binary" (inline base64) and format="ascii"; header_type UInt32 or UInt64; byte_order
-// LittleEndian or BigEndian; types Int8 .. UInt64, Float32 and Float64. Compressed files (the
-// VTKFile attribute compressor="...") are refused with a message saying how to write them.
+// LittleEndian or BigEndian; types Int8 .. UInt64, Float32 and Float64; uncompressed, or
+// compressed by vtkZLibDataCompressor or vtkLZ4DataCompressor (compressor="..." on <VTKFile>;
+// the block layout is in vtk_compression.hpp). Other compressors (vtkLZMADataCompressor) are
+// refused with a message naming the ones read.
 //
-// Every problem throws amrstream::InputError naming the file; nothing is read past the file's
-// end and no allocation is sized by an attribute before the data to fill it has been found.
+// In base64, VTK encodes an uncompressed array's byte count together with its bytes, but a
+// compressed array's block header on its own (padded with '=') and then all its compressed
+// blocks as one more base64 run; both are read that way.
+//
+// Every problem throws amrstream::InputError naming the file (and the array, for its data);
+// nothing is read past the file's end and no allocation is sized by an attribute before the
+// data to fill it has been found. For compressed arrays: the block count and the compressed
+// sizes must fit in the bytes left in the file, a block may not claim more bytes than its
+// compressor can inflate its compressed bytes to, the total must equal NumberOfTuples x
+// components (where the caller knows it) before anything is decompressed, and every block must
+// inflate to exactly the size its header declares. Blocks are decompressed a batch at a time
+// (vtk_compression.hpp) straight into the converted values.
 
 #include <cstddef>
 #include <cstdint>
@@ -19,12 +31,13 @@
 #include <string>
 #include <vector>
 
-#include "output/xml_scan.hpp"
+#include "output/vtk_compression.hpp"
+#include "output/xml_header.hpp"
 
 namespace amrstream::output {
 
-// A whole VTK XML file held in memory (the raw appended blocks are read in place). Owns the bytes
-// that its elements' text views point into, so it is neither copied nor moved.
+// A whole VTK XML file held in memory (the raw appended blocks are read in place, so it is
+// neither copied nor moved).
 class VtkXmlFile {
  public:
   // Reads and scans the file and checks the <VTKFile> attributes this reader depends on.
@@ -73,8 +86,22 @@ class VtkXmlFile {
                                          std::vector<std::byte>& decoded) const;
   std::span<const std::byte> appendedBlock(const XmlElement& dataArray, const std::string& what,
                                            std::vector<std::byte>& decoded) const;
-  // The byte count a block starts with.
-  std::uint64_t blockSize(const std::byte* header) const;
+  // An integer of a block header (a byte count, a block count or size) at `header`.
+  std::uint64_t headerValue(const std::byte* header) const;
+
+  // A compressed array's block header and the bytes after it (its blocks and whatever follows).
+  struct CompressedArray {
+    BlockHeader header;
+    std::span<const std::byte> blocks;
+  };
+  // Of a compressed format="binary" or format="appended" array; `decoded` holds the blocks when
+  // they had to be decoded from base64.
+  CompressedArray compressedArray(const XmlElement& dataArray, const std::string& what,
+                                  std::vector<std::byte>& decoded) const;
+  CompressedArray compressedFromRaw(std::span<const std::byte> bytes,
+                                    const std::string& what) const;
+  CompressedArray compressedFromBase64(std::string_view text, const std::string& what,
+                                       std::vector<std::byte>& decoded) const;
 
   std::string source_;
   std::string bytes_;
@@ -82,6 +109,7 @@ class VtkXmlFile {
   std::optional<Appended> appended_;
   bool swapBytes_ = false;       // the file's byte_order differs from this machine's
   std::size_t headerBytes_ = 4;  // size of a block's byte count: header_type UInt32 or UInt64
+  Compression compression_ = Compression::None;
 };
 
 }  // namespace amrstream::output

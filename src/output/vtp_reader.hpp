@@ -1,6 +1,7 @@
 #pragma once
 // Reads traces back from VTK XML PolyData (.vtp): the files vtp_writer.hpp writes, and the same
-// layout written by other tools (VTK's vtkXMLPolyDataWriter, ParaView) when uncompressed.
+// layout written by other tools (VTK's vtkXMLPolyDataWriter, ParaView), uncompressed or
+// compressed with zlib or LZ4.
 //
 // Mapping (one polyline of the file's <Lines> = one line of the TraceSet, in file order):
 // - positions from <Points>, gathered through the lines' connectivity;
@@ -21,7 +22,7 @@
 // IntegrationTime, the same position alone decides.
 //
 // Formats: see vtk_xml_file.hpp (appended raw or base64, inline binary, ascii; UInt32/UInt64
-// headers; either byte order; any numeric type; not compressed). Only single-piece files.
+// headers; either byte order; any numeric type; zlib, LZ4 or none). Only single-piece files.
 
 #include <filesystem>
 
@@ -30,9 +31,10 @@
 namespace amrstream::output {
 
 // Throws amrstream::InputError naming `path` and the problem on a missing or unreadable file,
-// one that is not VTK XML PolyData, has several pieces, is compressed or truncated, has an array
-// offset outside the appended data, connectivity ids out of range, decreasing offsets,
-// non-finite positions, or traces that would not fit in this machine's memory.
+// one that is not VTK XML PolyData, has several pieces, is LZMA-compressed, corrupt or
+// truncated, has an array offset outside the appended data, connectivity ids out of range,
+// decreasing offsets, non-finite positions, or traces that would not fit in this machine's
+// memory.
 flow::TraceSet readVtpTraces(const std::filesystem::path& path);
 
 }  // namespace amrstream::output

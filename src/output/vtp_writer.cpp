@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "output/atomic_file.hpp"
 #include "output/buffered_writer.hpp"
 #include "output/vtk_xml_appended.hpp"
 
@@ -256,35 +255,20 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& trac
       {"<Points>", "</Points>", {&points}},
       {"<Lines>", "</Lines>", {&connectivity, &offsets}},
   };
-  std::vector<const AppendedArray*> order;
-  for (const Section& section : sections)
-    order.insert(order.end(), section.arrays.begin(), section.arrays.end());
-  const std::vector<std::uint64_t> offsetOf = appendedOffsets(order);
-
-  std::string header = fmt::format(
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <PolyData>\n"
-      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
-      "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-      pointCount, lineCount);
-  std::size_t index = 0;
+  AppendedFileWriter file("PolyData", options.compression);
+  file.markup("  <PolyData>\n");
+  file.fieldData(options.fieldData, 4);
+  file.markup(
+      fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
+                  "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+                  pointCount, lineCount));
   for (const Section& section : sections) {
-    header += fmt::format("      {}\n", section.open);
-    for (const AppendedArray* array : section.arrays)
-      header += dataArrayTag(*array, offsetOf[index++], 8);
-    header += fmt::format("      {}\n", section.close);
+    file.markup(fmt::format("      {}\n", section.open));
+    for (const AppendedArray* array : section.arrays) file.dataArray(*array, 8);
+    file.markup(fmt::format("      {}\n", section.close));
   }
-  header += "    </Piece>\n  </PolyData>\n";
-
-  AtomicFile file(path);
-  BufferedWriter out(file);
-  out.write(header);
-  writeAppendedData(out, order);
-  out.write("</VTKFile>\n");
-  out.flush();
-  file.commit();
+  file.markup("    </Piece>\n  </PolyData>\n");
+  file.write(path);
   return {lineCount, pointCount};
 }
 

@@ -12,6 +12,9 @@
 // PeriodicLines::Unwrapped, each line is one polyline in unwrapped coordinates (continuing past
 // the faces), so lengths and tangents along it are plain differences.
 //
+// Compressed as VTK does (zlib by default; see vtk_compression.hpp), with optional FieldData
+// (provenance).
+//
 // Every polyline has at least 2 points. VTK rejects shorter lines when it builds its cell map
 // ("Invalid cell size for lines") and VTK 9.1 then crashes in vtkPolyData::GetCellPoints, so a
 // piece of one point (a line that ends at its seed) is written as a degenerate 2-point line that
@@ -20,8 +23,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "../flow/trace_set.hpp"
+#include "output/vtk_compression.hpp"
+#include "output/vtk_field_data.hpp"
 
 namespace amrstream::output {
 
@@ -29,6 +35,8 @@ enum class PeriodicLines { Split, Unwrapped };
 
 struct VtpWriteOptions {
   PeriodicLines periodicLines = PeriodicLines::Split;
+  Compression compression = Compression::ZLib;
+  std::vector<FieldDataArray> fieldData;  // dataset-level arrays, e.g. provenance
 };
 
 // What a file holds: its polylines and points (more points than the TraceSet's when pieces of
@@ -38,8 +46,9 @@ struct VtpCounts {
   std::uint64_t points = 0;
 };
 
-// Throws std::invalid_argument before creating the file when the TraceSet is inconsistent;
-// std::runtime_error naming the path when the file cannot be written.
+// Throws std::invalid_argument before creating the file when the TraceSet is inconsistent or a
+// field data array cannot be written; std::runtime_error naming the path when the file cannot be
+// written.
 VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
                    const VtpWriteOptions& options = {});
 

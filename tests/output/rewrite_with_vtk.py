@@ -13,7 +13,11 @@ Reads IN.vtp with vtkXMLPolyDataReader and writes, uncompressed unless said othe
   ascii.vtp                 format="ascii"
   big_endian.vtp            appended raw, byte_order BigEndian
   float64_int32.vtp         appended raw; Points and point arrays Float64, Lines Int32
-  compressed.vtp            appended raw, zlib compressed (the reader must refuse it)
+  zlib_default.vtp          VTK's defaults: zlib, appended base64, header_type UInt32
+  zlib_raw.vtp              zlib, appended raw
+  zlib_binary.vtp           zlib, inline base64
+  lz4_raw.vtp               LZ4, appended raw
+  lzma.vtp                  LZMA, appended raw (the reader must refuse it)
 """
 
 import os
@@ -51,7 +55,7 @@ def widened(source):
 
 
 def write(data, path, mode="appended", encode=False, header64=True, big_endian=False,
-          compress=False):
+          compressor="None"):
     writer = vtk.vtkXMLPolyDataWriter()
     writer.SetInputData(data)
     writer.SetFileName(path)
@@ -60,7 +64,7 @@ def write(data, path, mode="appended", encode=False, header64=True, big_endian=F
     writer.SetEncodeAppendedData(encode)
     (writer.SetHeaderTypeToUInt64 if header64 else writer.SetHeaderTypeToUInt32)()
     (writer.SetByteOrderToBigEndian if big_endian else writer.SetByteOrderToLittleEndian)()
-    (writer.SetCompressorTypeToZLib if compress else writer.SetCompressorTypeToNone)()
+    getattr(writer, f"SetCompressorTypeTo{compressor}")()
     if writer.Write() != 1:
         sys.exit(f"rewrite_with_vtk: vtkXMLPolyDataWriter failed on {path}")
 
@@ -84,8 +88,12 @@ def main():
     write(data, out("ascii.vtp"), mode="ascii")
     write(data, out("big_endian.vtp"), big_endian=True)
     write(widened(data), out("float64_int32.vtp"))
-    write(data, out("compressed.vtp"), compress=True)
-    print(f"rewrite_with_vtk: VTK {vtk.vtkVersion.GetVTKVersion()} wrote 8 files in {out_dir}")
+    write(data, out("zlib_default.vtp"), encode=True, header64=False, compressor="ZLib")
+    write(data, out("zlib_raw.vtp"), compressor="ZLib")
+    write(data, out("zlib_binary.vtp"), mode="binary", compressor="ZLib")
+    write(data, out("lz4_raw.vtp"), compressor="LZ4")
+    write(data, out("lzma.vtp"), compressor="LZMA")
+    print(f"rewrite_with_vtk: VTK {vtk.vtkVersion.GetVTKVersion()} wrote 12 files in {out_dir}")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,8 @@
 #include "vtp_test_reader.hpp"
 
+#include <lz4.h>
+#include <zlib.h>
+
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -81,6 +84,54 @@ std::uint64_t number(const XmlAttributes& attributes, const std::string& key) {
   return value;
 }
 
+std::uint64_t uint64At(const std::string& file, std::uint64_t at) {
+  std::uint64_t value = 0;
+  if (at + sizeof(value) > file.size()) fail("block header past end of file");
+  std::memcpy(&value, file.data() + at, sizeof(value));
+  return value;
+}
+
+std::vector<std::byte> inflated(const std::string& compressor, const char* data, std::uint64_t size,
+                                std::uint64_t expected) {
+  std::vector<std::byte> out(expected);
+  if (compressor == "vtkZLibDataCompressor") {
+    uLongf length = expected;
+    Bytef dummy = 0;
+    const int status = uncompress(out.empty() ? &dummy : reinterpret_cast<Bytef*>(out.data()),
+                                  &length, reinterpret_cast<const Bytef*>(data), size);
+    if (status != Z_OK || length != expected) fail("a zlib block does not inflate as declared");
+  } else if (compressor == "vtkLZ4DataCompressor") {
+    const int length = LZ4_decompress_safe(data, reinterpret_cast<char*>(out.data()),
+                                           static_cast<int>(size), static_cast<int>(expected));
+    if (length < 0 || std::uint64_t(length) != expected) fail("an LZ4 block does not inflate");
+  } else {
+    fail("unknown compressor " + compressor);
+  }
+  return out;
+}
+
+// Reads a compressed block (UInt64 header) starting at `begin`; returns where it ends.
+std::uint64_t readCompressed(const std::string& file, std::uint64_t begin,
+                             const std::string& compressor, VtpArray& array) {
+  const std::uint64_t count = uint64At(file, begin);
+  if (count > file.size()) fail("block count of " + array.name() + " larger than the file");
+  for (std::uint64_t i = 0; i < 3 + count; ++i) {
+    array.blockHeader.push_back(uint64At(file, begin + 8 * i));
+  }
+  const std::uint64_t blockSize = array.blockHeader[1];
+  const std::uint64_t last = array.blockHeader[2];
+  std::uint64_t at = begin + 8 * (3 + count);
+  for (std::uint64_t block = 0; block < count; ++block) {
+    const std::uint64_t size = array.blockHeader[3 + block];
+    if (at + size > file.size()) fail("block of " + array.name() + " past end of file");
+    const std::uint64_t expected = block + 1 == count && last != 0 ? last : blockSize;
+    const std::vector<std::byte> bytes = inflated(compressor, file.data() + at, size, expected);
+    array.bytes.insert(array.bytes.end(), bytes.begin(), bytes.end());
+    at += size;
+  }
+  return at;
+}
+
 }  // namespace
 
 int VtpArray::components() const {
@@ -129,12 +180,12 @@ VtpFile readVtp(const std::filesystem::path& path) {
     if (tag.name == "VTKFile") vtp.vtkFile = tag.attributes;
     if (tag.name == "Piece") vtp.piece = tag.attributes;
     if (tag.name == "PointData") vtp.pointData = tag.attributes;
-    if (tag.name == "DataArray") {
+    if (tag.name == "DataArray" || tag.name == "Array") {
       if (open.empty()) fail("DataArray outside a section");
       if (tag.attributes.count("format") == 0 || tag.attributes.at("format") != "appended") {
         fail("DataArray not in appended format");
       }
-      VtpArray array{open.back(), tag.attributes, {}};
+      VtpArray array{open.back(), tag.attributes, {}, {}};
       pending.emplace_back(std::move(array), number(tag.attributes, "offset"));
     }
     if (!tag.selfClosing) open.push_back(tag.name);
@@ -144,16 +195,21 @@ VtpFile readVtp(const std::filesystem::path& path) {
   std::sort(pending.begin(), pending.end(),
             [](const auto& a, const auto& b) { return a.second < b.second; });
   std::uint64_t blocksEnd = base;
+  const auto compressor = vtp.vtkFile.find("compressor");
   for (auto& [array, offset] : pending) {
     if (base + offset < blocksEnd) fail("block of " + array.name() + " overlaps the previous one");
-    std::uint64_t size = 0;
-    if (base + offset + sizeof(size) > file.size()) fail("block header past end of file");
-    std::memcpy(&size, file.data() + base + offset, sizeof(size));
-    const std::uint64_t begin = base + offset + sizeof(size);
-    if (begin + size > file.size()) fail("block of " + array.name() + " past end of file");
-    const auto* data = reinterpret_cast<const std::byte*>(file.data()) + begin;
-    array.bytes.assign(data, data + size);
-    blocksEnd = std::max(blocksEnd, begin + size);
+    std::uint64_t end = 0;
+    if (compressor != vtp.vtkFile.end()) {
+      end = readCompressed(file, base + offset, compressor->second, array);
+    } else {
+      const std::uint64_t size = uint64At(file, base + offset);
+      const std::uint64_t begin = base + offset + sizeof(size);
+      if (begin + size > file.size()) fail("block of " + array.name() + " past end of file");
+      const auto* data = reinterpret_cast<const std::byte*>(file.data()) + begin;
+      array.bytes.assign(data, data + size);
+      end = begin + size;
+    }
+    blocksEnd = std::max(blocksEnd, end);
     vtp.arrays.push_back(std::move(array));
   }
   const std::size_t close = file.find_first_not_of(" \n\t\r", blocksEnd);

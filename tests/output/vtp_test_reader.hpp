@@ -3,6 +3,9 @@
 // code, it parses the XML tags before the appended section (a tolerant scan of tag names and
 // attributes, not a general XML parser) and slices the raw appended blocks with the UInt64
 // byte counts, checking that every block lies inside the section and the section is closed.
+// Compressed files (compressor="vtkZLibDataCompressor" or "vtkLZ4DataCompressor") are read by
+// VTK's block layout with zlib's uncompress and LZ4_decompress_safe, each block checked to
+// inflate to the size the header gives.
 
 #include <cstddef>
 #include <cstdint>
@@ -18,9 +21,13 @@ namespace amrstream::testing {
 using XmlAttributes = std::map<std::string, std::string>;
 
 struct VtpArray {
-  std::string section;  // enclosing element: "PointData", "CellData", "Points" or "Lines"
+  // Enclosing element: "FieldData", "PointData", "CellData", "Points" or "Lines".
+  std::string section;
   XmlAttributes attributes;
-  std::vector<std::byte> bytes;  // the block's payload
+  std::vector<std::byte> bytes;  // the block's payload, decompressed
+  // Compressed files: the block header as written (block count, block size, last block size,
+  // compressed sizes).
+  std::vector<std::uint64_t> blockHeader;
 
   std::string name() const { return attributes.at("Name"); }
   std::string type() const { return attributes.at("type"); }

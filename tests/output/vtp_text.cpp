@@ -1,5 +1,8 @@
 #include "vtp_text.hpp"
 
+#include <lz4.h>
+#include <zlib.h>
+
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -54,6 +57,57 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
+void appendHeaderValue(std::string& out, std::uint64_t value, const TestFileOptions& options) {
+  if (options.uint32Header) {
+    appendValue(out, static_cast<std::uint32_t>(value), options.bigEndian);
+  } else {
+    appendValue(out, value, options.bigEndian);
+  }
+}
+
+std::string compressed(const std::string& bytes, const std::string& compressor) {
+  std::string out;
+  if (compressor == "zlib") {
+    uLongf size = compressBound(bytes.size());
+    out.resize(size);
+    if (compress2(reinterpret_cast<Bytef*>(out.data()), &size,
+                  reinterpret_cast<const Bytef*>(bytes.data()), bytes.size(), 6) != Z_OK) {
+      throw std::runtime_error("vtpText: compress2 failed");
+    }
+    out.resize(size);
+  } else if (compressor == "lz4") {
+    out.resize(static_cast<std::size_t>(LZ4_compressBound(static_cast<int>(bytes.size()))));
+    const int size = LZ4_compress_default(bytes.data(), out.data(), static_cast<int>(bytes.size()),
+                                          static_cast<int>(out.size()));
+    if (size <= 0) throw std::runtime_error("vtpText: LZ4_compress_default failed");
+    out.resize(static_cast<std::size_t>(size));
+  } else {
+    throw std::invalid_argument("vtpText: unknown compressor " + compressor);
+  }
+  return out;
+}
+
+// The array's data as it goes into the file before any base64: VTK's block header and blocks.
+struct CompressedData {
+  std::string header;
+  std::string blocks;
+};
+CompressedData compressedData(const std::string& bytes, const TestFileOptions& options) {
+  const std::uint64_t size = bytes.size();
+  const std::uint64_t count = (size + options.blockBytes - 1) / options.blockBytes;
+  CompressedData out;
+  appendHeaderValue(out.header, count, options);
+  appendHeaderValue(out.header, options.blockBytes, options);
+  appendHeaderValue(out.header, size % options.blockBytes, options);
+  for (std::uint64_t block = 0; block < count; ++block) {
+    const std::string part = compressed(
+        bytes.substr(block * options.blockBytes, options.blockBytes), options.compressor);
+    appendHeaderValue(out.header, part.size(), options);
+    out.blocks += part;
+  }
+  return out;
+}
+
 std::string asciiValues(const TestArray& array) {
   std::ostringstream out;
   out.precision(std::numeric_limits<double>::max_digits10);
@@ -89,23 +143,27 @@ std::string vtpText(const TestPiece& piece, const TestFileOptions& options) {
       for (const TestArray& a : piece.arrays) {
         if (a.section != section) continue;
         const std::string bytes = packed(a, options.bigEndian);
-        std::string block;
-        if (options.uint32Header) {
-          appendValue(block, static_cast<std::uint32_t>(bytes.size()), options.bigEndian);
+        // Raw and base64 forms of the array's data.
+        std::string block, encoded;
+        if (options.compressor.empty()) {
+          appendHeaderValue(block, bytes.size(), options);
+          block += bytes;
+          encoded = base64(block);
         } else {
-          appendValue(block, static_cast<std::uint64_t>(bytes.size()), options.bigEndian);
+          const CompressedData data = compressedData(bytes, options);
+          block = data.header + data.blocks;
+          encoded = base64(data.header) + base64(data.blocks);
         }
-        block += bytes;
         xml += "        <DataArray type=\"" + a.type + "\" Name=\"" + a.name +
                "\" NumberOfComponents=\"" + std::to_string(a.components) + "\" format=\"";
         switch (options.encoding) {
           case TestEncoding::AppendedRaw:
           case TestEncoding::AppendedBase64:
             xml += "appended\" offset=\"" + std::to_string(blocks.size()) + "\"/>\n";
-            blocks += options.encoding == TestEncoding::AppendedRaw ? block : base64(block);
+            blocks += options.encoding == TestEncoding::AppendedRaw ? block : encoded;
             break;
           case TestEncoding::Binary:
-            xml += "binary\">\n          " + base64(block) + "\n        </DataArray>\n";
+            xml += "binary\">\n          " + encoded + "\n        </DataArray>\n";
             break;
           case TestEncoding::Ascii:
             xml += "ascii\">" + asciiValues(a) + "</DataArray>\n";
@@ -121,6 +179,8 @@ std::string vtpText(const TestPiece& piece, const TestFileOptions& options) {
   text += options.bigEndian ? "BigEndian" : "LittleEndian";
   text += "\" header_type=\"";
   text += options.uint32Header ? "UInt32" : "UInt64";
+  if (options.compressor == "zlib") text += "\" compressor=\"vtkZLibDataCompressor";
+  if (options.compressor == "lz4") text += "\" compressor=\"vtkLZ4DataCompressor";
   text += "\">\n  <PolyData>\n" + xml + "  </PolyData>\n";
   if (appended) {
     text += "  <AppendedData encoding=\"";
@@ -128,6 +188,16 @@ std::string vtpText(const TestPiece& piece, const TestFileOptions& options) {
     text += "\">\n   _" + blocks + "\n  </AppendedData>\n";
   }
   return text + "</VTKFile>\n";
+}
+
+std::size_t appendedBlockStart(const std::string& text, const std::string& name) {
+  const std::size_t tag = text.find("Name=\"" + name + "\"");
+  const std::size_t value = text.find("offset=\"", tag) + 8;
+  const std::size_t base = text.find('_', text.find("<AppendedData")) + 1;
+  if (tag == std::string::npos || value < 8 || base == 0) {
+    throw std::invalid_argument("appendedBlockStart: no appended array " + name);
+  }
+  return base + std::stoull(text.substr(value, text.find('"', value) - value));
 }
 
 TestPiece twoLinePiece() {

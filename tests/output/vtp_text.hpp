@@ -3,6 +3,7 @@
 // with the production writer or reader: any array, type, encoding, header type and byte order,
 // and, since nothing is checked, broken files too (wrong counts, bad ids, several pieces).
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,9 +33,18 @@ struct TestFileOptions {
   bool uint32Header = false;  // header_type="UInt32" instead of UInt64
   bool bigEndian = false;
   int pieces = 1;  // the piece repeated
+  // "zlib" or "lz4": binary and appended arrays compressed as VTK does, with zlib's compress2
+  // and LZ4_compress_default, in blocks of blockBytes; the VTKFile compressor attribute says so.
+  // In base64, the block header and the blocks are encoded separately, as VTK does.
+  std::string compressor = "";
+  std::uint64_t blockBytes = 32768;
 };
 
 std::string vtpText(const TestPiece& piece, const TestFileOptions& options = {});
+
+// Where the data of the appended array `name` starts in `text` (the byte after "_" plus its
+// offset), for tests that corrupt it.
+std::size_t appendedBlockStart(const std::string& text, const std::string& name);
 
 // A valid piece: 5 points, 2 lines (points 0 1 2 and 3 4), IntegrationTime, a Float32 vector
 // "velocity" named by Vectors=, and ReasonForTermination 3 and 7.

@@ -30,7 +30,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class VtpWriter : public ::testing::Test {
+// Every test runs for each compression: the test reader decompresses on its own (zlib, LZ4).
+class VtpWriter : public ::testing::TestWithParam<output::Compression> {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -50,9 +51,18 @@ class VtpWriter : public ::testing::Test {
     return names;
   }
 
-  VtpFile writeAndRead(const flow::TraceSet& traces) {
+  output::VtpWriteOptions options() const {
+    output::VtpWriteOptions options;
+    options.compression = GetParam();
+    return options;
+  }
+
+  VtpFile writeAndRead(const flow::TraceSet& traces,
+                       const std::vector<output::FieldDataArray>& fieldData = {}) {
     const fs::path path = dir_ / "traces.vtp";
-    output::writeVtp(path, traces);
+    output::VtpWriteOptions withFieldData = options();
+    withFieldData.fieldData = fieldData;
+    output::writeVtp(path, traces, withFieldData);
     EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
     return readVtp(path);
   }
@@ -65,13 +75,16 @@ std::string readText(const fs::path& path) {
   return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
 }
 
-TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
+TEST_P(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
 
-  EXPECT_EQ(vtp.vtkFile, (XmlAttributes{{"type", "PolyData"},
-                                        {"version", "1.0"},
-                                        {"byte_order", "LittleEndian"},
-                                        {"header_type", "UInt64"}}));
+  XmlAttributes vtkFile{{"type", "PolyData"},
+                        {"version", "1.0"},
+                        {"byte_order", "LittleEndian"},
+                        {"header_type", "UInt64"}};
+  if (GetParam() == output::Compression::ZLib) vtkFile["compressor"] = "vtkZLibDataCompressor";
+  if (GetParam() == output::Compression::LZ4) vtkFile["compressor"] = "vtkLZ4DataCompressor";
+  EXPECT_EQ(vtp.vtkFile, vtkFile);
   // 3 + 1 + 5 + 2 trace points; the 1-point trace is written as its point twice.
   EXPECT_EQ(vtp.piece, (XmlAttributes{{"NumberOfPoints", "12"},
                                       {"NumberOfVerts", "0"},
@@ -114,7 +127,7 @@ TEST_F(VtpWriter, DeclaresPolyDataWithAppendedArraysInTheirSections) {
 // Points the file holds for a trace of `count` points: a 1-point trace's point twice.
 std::uint32_t writtenPoints(std::uint32_t count) { return count == 1 ? 2 : count; }
 
-TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
+TEST_P(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   const auto points = vtp.array("Points", "Points").values<glm::vec3>();
   const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
@@ -136,7 +149,7 @@ TEST_F(VtpWriter, WritesOnlyTheValidPointsOfEachTrace) {
   }
 }
 
-TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
+TEST_P(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   EXPECT_EQ(vtp.array("Lines", "connectivity").values<std::int64_t>(),
             (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
@@ -145,7 +158,7 @@ TEST_F(VtpWriter, MakesOnePolylinePerTraceThroughItsPointsInOrder) {
             (std::vector<std::int64_t>{3, 5, 10, 12}));
 }
 
-TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
+TEST_P(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   const auto speeds = vtp.array("PointData", "Speed").values<float>();
   const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
@@ -159,7 +172,7 @@ TEST_F(VtpWriter, SpeedIsTheMagnitudeOfTheVector) {
   EXPECT_EQ(speeds[4], 0.0f);
 }
 
-TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
+TEST_P(VtpWriter, CellsCarryTheirSeedIdAndReason) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts));
   EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
             (std::vector<std::int32_t>{0, 1, 2, 3}));
@@ -168,13 +181,13 @@ TEST_F(VtpWriter, CellsCarryTheirSeedIdAndReason) {
                                        sampleReason(3)}));
 }
 
-TEST_F(VtpWriter, NamesTheVectorVectorsWhenTheTraceSetHasNoName) {
+TEST_P(VtpWriter, NamesTheVectorVectorsWhenTheTraceSetHasNoName) {
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, ""));
   EXPECT_EQ(vtp.pointData.at("Vectors"), "Vectors");
   EXPECT_EQ(vtp.array("PointData", "Vectors").components(), 3);
 }
 
-TEST_F(VtpWriter, EscapesTheVectorNameInXml) {
+TEST_P(VtpWriter, EscapesTheVectorNameInXml) {
   const char* name = "u<v> & \"w\"";
   const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, name));
   EXPECT_EQ(vtp.pointData.at("Vectors"), name);
@@ -183,7 +196,7 @@ TEST_F(VtpWriter, EscapesTheVectorNameInXml) {
             std::string::npos);
 }
 
-TEST_F(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
+TEST_P(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
   for (const std::string name : {"Speed", "IntegrationTime"}) {
     const VtpFile vtp =
         writeAndRead(sampleTraces(kSamplePointCounts, name.c_str()));
@@ -193,7 +206,7 @@ TEST_F(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
   }
 }
 
-TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
+TEST_P(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
   const VtpFile vtp = writeAndRead(sampleTraces({}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
@@ -202,7 +215,7 @@ TEST_F(VtpWriter, AnEmptyTraceSetIsAValidFileWithNoPointsOrLines) {
 }
 
 // VTK cannot use a line of fewer than 2 points (VTK 9.1 crashes in GetCellPoints on one).
-TEST_F(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
+TEST_P(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
   const VtpFile vtp = writeAndRead(sampleTraces({2, 1, 1}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "6");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "3");
@@ -227,7 +240,7 @@ TEST_F(VtpWriter, ATraceThatEndsAtItsSeedIsItsPointTwiceInOneLine) {
   }
 }
 
-TEST_F(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
+TEST_P(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
   const VtpFile vtp = writeAndRead(sampleTraces({1, 1, 1, 1}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "8");
   EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
@@ -237,7 +250,7 @@ TEST_F(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
 }
 
 // A trace without points has nothing to draw and no point to repeat; SeedIds names the others.
-TEST_F(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
+TEST_P(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
   const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 3}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "5");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "2");
@@ -250,14 +263,14 @@ TEST_F(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
   EXPECT_EQ(vtp.array("Points", "Points").values<glm::vec3>()[2], samplePosition(2, 0));
 }
 
-TEST_F(VtpWriter, TracesWithoutPointsAloneMakeAFileWithoutLines) {
+TEST_P(VtpWriter, TracesWithoutPointsAloneMakeAFileWithoutLines) {
   const VtpFile vtp = writeAndRead(sampleTraces({0, 0}));
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), "0");
   EXPECT_EQ(vtp.piece.at("NumberOfLines"), "0");
   for (const VtpArray& array : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << array.name();
 }
 
-TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
+TEST_P(VtpWriter, StreamsArraysLargerThanItsBuffer) {
   // 3000 traces of 1 to 100 points: ~150k points, several MiB per array group.
   std::vector<std::uint32_t> counts;
   for (std::uint32_t seed = 0; seed < 3000; ++seed) counts.push_back(1 + (seed * 37) % 100);
@@ -281,21 +294,78 @@ TEST_F(VtpWriter, StreamsArraysLargerThanItsBuffer) {
   }
   EXPECT_EQ(points.size(), i);
   EXPECT_EQ(vtp.piece.at("NumberOfPoints"), std::to_string(i));
+
+  // Compressed, VTK's blocks: 32768 bytes each, the last one partial unless it is full.
+  if (GetParam() == output::Compression::None) return;
+  for (const VtpArray& array : vtp.arrays) {
+    SCOPED_TRACE(array.name());
+    const std::uint64_t bytes = array.bytes.size();
+    ASSERT_EQ(array.blockHeader.size(), 3 + (bytes + 32767) / 32768);
+    EXPECT_EQ(array.blockHeader[1], 32768u);
+    EXPECT_EQ(array.blockHeader[2], bytes % 32768);
+  }
 }
 
-TEST_F(VtpWriter, ReplacesAnExistingFile) {
+TEST_P(VtpWriter, WritesFieldDataBeforeThePiece) {
+  const std::vector<output::FieldDataArray> fieldData{
+      output::textField("Input", "cloud <1> & \"2\".exa"),
+      {"Names", std::vector<std::string>{"a", "", "b\xC3\xA9"}},
+      output::numberField("StepSize", 0.25),
+      {"Counts", std::vector<std::int64_t>{-1, 1LL << 40}},
+  };
+  const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts), fieldData);
+  ASSERT_GE(vtp.arrays.size(), 4u);
+  const auto text = [](const VtpArray& array) {
+    return std::string(reinterpret_cast<const char*>(array.bytes.data()), array.bytes.size());
+  };
+  const VtpArray& input = vtp.arrays[0];
+  EXPECT_EQ(input.section, "FieldData");
+  EXPECT_EQ(input.attributes, (XmlAttributes{{"type", "String"},
+                                             {"Name", "Input"},
+                                             {"NumberOfTuples", "1"},
+                                             {"format", "appended"},
+                                             {"offset", input.attributes.at("offset")}}));
+  EXPECT_EQ(text(input), std::string("cloud <1> & \"2\".exa\0", 20));
+  EXPECT_EQ(text(vtp.array("FieldData", "Names")), std::string("a\0\0b\xC3\xA9\0", 7));
+  EXPECT_EQ(vtp.array("FieldData", "Names").attributes.at("NumberOfTuples"), "3");
+  EXPECT_EQ(vtp.array("FieldData", "StepSize").type(), "Float64");
+  EXPECT_EQ(vtp.array("FieldData", "StepSize").values<double>(), std::vector<double>{0.25});
+  EXPECT_EQ(vtp.array("FieldData", "Counts").type(), "Int64");
+  EXPECT_EQ(vtp.array("FieldData", "Counts").values<std::int64_t>(),
+            (std::vector<std::int64_t>{-1, 1LL << 40}));
+  // The trace arrays follow, unchanged.
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{3, 5, 10, 12}));
+  const std::string file = readText(dir_ / "traces.vtp");
+  EXPECT_LT(file.find("<FieldData>"), file.find("<Piece"));
+}
+
+TEST_P(VtpWriter, RefusesFieldDataItCannotWriteBeforeCreatingAFile) {
+  const fs::path path = dir_ / "traces.vtp";
+  output::VtpWriteOptions withNul = options();
+  withNul.fieldData = {output::textField("Input", std::string("a\0b", 3))};
+  EXPECT_THROW(output::writeVtp(path, sampleTraces(kSamplePointCounts), withNul),
+               std::invalid_argument);
+  output::VtpWriteOptions unnamed = options();
+  unnamed.fieldData = {output::numberField("", 1.0)};
+  EXPECT_THROW(output::writeVtp(path, sampleTraces(kSamplePointCounts), unnamed),
+               std::invalid_argument);
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_P(VtpWriter, ReplacesAnExistingFile) {
   const fs::path path = dir_ / "traces.vtp";
   std::ofstream(path) << "previous run";
-  output::writeVtp(path, sampleTraces(kSamplePointCounts));
+  output::writeVtp(path, sampleTraces(kSamplePointCounts), options());
   EXPECT_EQ(readVtp(path).piece.at("NumberOfLines"), "4");
   EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
 }
 
-TEST_F(VtpWriter, CreatesTheFileWithTheUsualPermissions) {
+TEST_P(VtpWriter, CreatesTheFileWithTheUsualPermissions) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   const fs::path path = dir_ / "traces.vtp";
-  output::writeVtp(path, sampleTraces(kSamplePointCounts));
+  output::writeVtp(path, sampleTraces(kSamplePointCounts), options());
   struct stat status {};
   ASSERT_EQ(::stat(path.c_str(), &status), 0);
   EXPECT_EQ(status.st_mode & 0777, 0666 & ~mask);
@@ -307,10 +377,10 @@ void expectErrorNames(const std::runtime_error& error, const fs::path& path, int
   EXPECT_NE(what.find(std::strerror(osError)), std::string::npos) << what;
 }
 
-TEST_F(VtpWriter, AMissingDirectoryThrowsNamingThePathAndReason) {
+TEST_P(VtpWriter, AMissingDirectoryThrowsNamingThePathAndReason) {
   const fs::path path = dir_ / "no-such-directory" / "traces.vtp";
   try {
-    output::writeVtp(path, sampleTraces(kSamplePointCounts));
+    output::writeVtp(path, sampleTraces(kSamplePointCounts), options());
     FAIL() << "no exception";
   } catch (const std::runtime_error& error) {
     expectErrorNames(error, path, ENOENT);
@@ -318,11 +388,11 @@ TEST_F(VtpWriter, AMissingDirectoryThrowsNamingThePathAndReason) {
   EXPECT_TRUE(entries().empty());
 }
 
-TEST_F(VtpWriter, ATargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
+TEST_P(VtpWriter, ATargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
   const fs::path path = dir_ / "traces.vtp";
   fs::create_directory(path);
   try {
-    output::writeVtp(path, sampleTraces(kSamplePointCounts));
+    output::writeVtp(path, sampleTraces(kSamplePointCounts), options());
     FAIL() << "no exception";
   } catch (const std::runtime_error& error) {
     expectErrorNames(error, path, EISDIR);
@@ -331,7 +401,7 @@ TEST_F(VtpWriter, ATargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
   EXPECT_TRUE(fs::is_directory(path));
 }
 
-TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
+TEST_P(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
   const fs::path path = dir_ / "traces.vtp";
   std::ofstream(path) << "previous run";
   // A file size limit makes write() fail part way (EFBIG), as a full disk would (ENOSPC).
@@ -343,7 +413,7 @@ TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
   const auto savedHandler = ::signal(SIGXFSZ, SIG_IGN);
   ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
   try {
-    output::writeVtp(path, traces);
+    output::writeVtp(path, traces, options());
     ADD_FAILURE() << "no exception";
   } catch (const std::runtime_error& error) {
     expectErrorNames(error, path, EFBIG);
@@ -354,7 +424,7 @@ TEST_F(VtpWriter, AFailedWriteKeepsThePreviousFileAndLeavesNoTemporary) {
   EXPECT_EQ(entries(), std::set<std::string>{"traces.vtp"});
 }
 
-TEST_F(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
+TEST_P(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
   const fs::path path = dir_ / "traces.vtp";
   flow::TraceSet tooLong = sampleTraces(kSamplePointCounts);
   tooLong.offsets.back() += 1;  // one point more than the arrays hold
@@ -373,6 +443,13 @@ TEST_F(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
   EXPECT_THROW(output::writeVtp(path, missingReason), std::invalid_argument);
   EXPECT_TRUE(entries().empty());
 }
+
+INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpWriter,
+                         ::testing::Values(output::Compression::None, output::Compression::ZLib,
+                                           output::Compression::LZ4),
+                         [](const auto& info) {
+                           return std::string(output::compressionName(info.param));
+                         });
 
 }  // namespace
 }  // namespace amrstream::testing
