@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "output/vtp_writer.hpp"
+#include "provenance.hpp"
 #include "trace_job.hpp"
 #include "trace_settings.hpp"
 #include "util/peak_memory.hpp"
@@ -32,6 +33,7 @@ void runTrace(const TraceCommandOptions& o) {
   writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
                                                               : output::PeriodicLines::Split;
   writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
+  writeOptions.fieldData = traceProvenance(o.job, input);
   const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());

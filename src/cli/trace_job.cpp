@@ -171,7 +171,7 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   if (o.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
   fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
-  std::string seedDescription;
+  std::string& seedDescription = input.seedDescription;
   input.seeds = chooseSeeds(o, field, volume, seedDescription);
   flow::SeedList& seeds = input.seeds;
   flow::closeUpperFaces(volume, seeds);
@@ -202,10 +202,10 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   return input;
 }
 
-flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input) {
+flow::TraceSet runTraces(const TraceJobOptions& o, PreparedInput& input) {
   const flow::SeedList& seeds = input.seeds;
   flow::TraceSet traces;
-  TraceTimes times;
+  TraceReport& times = input.report;
   {
     Progress progress("tracing", seeds.points.size());
     traces = traceWithBackend(o.backend, input.volume, seeds.points, input.options,

@@ -53,7 +53,9 @@ struct PreparedInput {
   bricks::AmrField field;
   flow::VectorVolume volume;
   flow::SeedList seeds;
+  std::string seedDescription;
   flow::TraceOptions options;  // keepHistory set; the caller may change it
+  TraceReport report;          // filled by runTraces
 };
 
 // Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,
@@ -61,9 +63,9 @@ struct PreparedInput {
 // structure (for traces read from a file).
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 
-// Traces with the requested backend (with a progress line) and prints the steps, reasons and
-// time lines.
-flow::TraceSet runTraces(const TraceJobOptions& o, const PreparedInput& input);
+// Traces with the requested backend (with a progress line), prints the steps, reasons and time
+// lines, and records what ran in input.report.
+flow::TraceSet runTraces(const TraceJobOptions& o, PreparedInput& input);
 
 // The seeds of the chosen strategy; `description` says which, for the summary.
 flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,

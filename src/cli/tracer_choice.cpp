@@ -87,14 +87,16 @@ void checkValidation(const vk::Context& ctx) {
 flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
-                                const flow::TraceProgress& progress, TraceTimes* times) {
-  TraceTimes local;
-  TraceTimes& t = times ? *times : local;
+                                const flow::TraceProgress& progress, TraceReport* report) {
+  TraceReport local;
+  TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace);
   const gpu::Backend backend = choice.backend;
   Stopwatch clock;
   if (backend == gpu::Backend::Cpu) {
     fmt::print("tracing    on the CPU reference ({} threads)\n", tbb::info::default_concurrency());
+    t.backend = "cpu";
+    t.device = fmt::format("{} threads", tbb::info::default_concurrency());
     flow::TraceSet traces = flow::traceStreamlines(volume, seeds, options, progress);
     t.traceSeconds = clock.seconds();
     return traces;
@@ -102,6 +104,8 @@ flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::Vecto
   const vk::Context ctx = createContext(request, choice);
   gpu::GpuTracer tracer(ctx, backend, volume);
   t.setupSeconds = clock.seconds();
+  t.backend = gpu::backendName(backend);
+  t.device = ctx.deviceName();
   fmt::print("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
              "{:.2f} s, kernels {:.2f} s]\n",
              gpu::backendName(backend), ctx.deviceName(), t.setupSeconds,

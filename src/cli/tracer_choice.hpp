@@ -42,9 +42,11 @@ vk::Context createContext(const BackendRequest& request, const BackendChoice& ch
 // Throws when the context's validation layer reported errors.
 void checkValidation(const vk::Context& ctx);
 
-// Where a trace's time went: creating the device context, uploading the volume and building its
-// point-location structure and kernels (0 on the CPU), then tracing proper.
-struct TraceTimes {
+// What ran a trace and where its time went: creating the device context, uploading the volume
+// and building its point-location structure and kernels (0 on the CPU), then tracing proper.
+struct TraceReport {
+  std::string backend;  // "compute", "cpu", ...
+  std::string device;   // the Vulkan device's name, or the CPU's thread count
   double setupSeconds = 0.0;
   double traceSeconds = 0.0;
 };
@@ -54,6 +56,7 @@ struct TraceTimes {
 flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
-                                const flow::TraceProgress& progress, TraceTimes* times = nullptr);
+                                const flow::TraceProgress& progress,
+                                TraceReport* report = nullptr);
 
 }  // namespace amrstream::cli
