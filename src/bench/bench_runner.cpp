@@ -93,8 +93,9 @@ void runCpu(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
       std::optional<BenchRow> best;
       for (std::uint32_t r = 0; r < config.repeats; ++r) {
         Stopwatch clock;
-        const flow::TraceSet traces =
-            flow::traceStreamlines(volume, seeds.first(n), optionsFor(config, history));
+        const flow::StoredTraces stored =
+            flow::traceToRounds(volume, seeds.first(n), optionsFor(config, history));
+        const flow::TraceSet& traces = stored.lines();
         keepFaster(best, measuredRow("cpu", device, history, n, traces, config, clock.seconds()));
       }
       report.rows.push_back(*best);
@@ -147,7 +148,9 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
       std::optional<BenchRow> best;
       for (std::uint32_t r = 0; r < config.repeats; ++r) {
         clock.restart();
-        const flow::TraceSet traces = tracer.trace(seeds.first(n), optionsFor(config, history));
+        const flow::StoredTraces stored =
+            tracer.traceToRounds(seeds.first(n), optionsFor(config, history));
+        const flow::TraceSet& traces = stored.lines();
         BenchRow row =
             measuredRow(name, setup.device, history, n, traces, config, clock.seconds());
         row.kernelSeconds = tracer.lastRun().kernelSeconds;

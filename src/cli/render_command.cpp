@@ -54,7 +54,7 @@ void runRender(const RenderCommandOptions& o) {
   PreparedInput input = prepareInput(o.job, o.traces.empty());
   flow::TraceSet traces;
   if (o.traces.empty()) {
-    traces = runTraces(o.job, input);
+    traces = runTraces(o.job, input).assemble();
   } else {
     traces = output::readVtpTraces(o.traces);
     checkTracesInDomain(o.traces, traces, input.volume);

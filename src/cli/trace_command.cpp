@@ -26,7 +26,8 @@ struct TraceCommandOptions {
 void runTrace(const TraceCommandOptions& o) {
   PreparedInput input = prepareInput(o.job);
   input.options.keepHistory = !o.endpointsOnly;
-  const flow::TraceSet traces = runTraces(o.job, input);
+  const bool stagePeak = resetStagePeak();
+  const flow::StoredTraces traces = runTraces(o.job, input);
 
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;
@@ -37,8 +38,11 @@ void runTrace(const TraceCommandOptions& o) {
   const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
-  fmt::print("memory     {:.2f} GiB peak resident on the host\n",
-             double(peakResidentBytes()) / 0x1p30);
+  fmt::print("memory     {:.2f} GiB peak resident on the host{}\n",
+             double(peakResidentBytes()) / 0x1p30,
+             stagePeak ? fmt::format(", {:.2f} GiB while tracing and writing",
+                                     double(stagePeakResidentBytes()) / 0x1p30)
+                       : std::string());
 }
 
 }  // namespace

@@ -202,19 +202,21 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   return input;
 }
 
-flow::TraceSet runTraces(const TraceJobOptions& o, PreparedInput& input) {
+flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input) {
   const flow::SeedList& seeds = input.seeds;
-  flow::TraceSet traces;
-  TraceReport& times = input.report;
-  {
+  TraceReport& report = input.report;
+  flow::StoredTraces stored = [&] {
+    // Progress counts seeds: lines finished, scaled by the lines per seed.
     Progress progress("tracing", seeds.points.size());
-    traces = traceWithBackend(o.backend, input.volume, seeds.points, input.options,
-                              [&](std::size_t done, std::size_t lines) {
-                                progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
-                              },
-                              &times);
-  }
-  const double traceSeconds = times.traceSeconds;
+    return traceWithBackend(
+        o.backend, input.volume, seeds.points, input.options,
+        [&](std::size_t done, std::size_t lines) {
+          progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
+        },
+        &report);
+  }();
+  const double traceSeconds = report.traceSeconds;
+  const flow::TraceSet& traces = stored.lines();
 
   std::size_t steps = 0;
   std::map<int, std::size_t> reasons;
@@ -232,11 +234,10 @@ flow::TraceSet runTraces(const TraceJobOptions& o, PreparedInput& input) {
   fmt::print("reasons    {}\n", histogram);
   fmt::print("time       {:.3f} s tracing, {:.3g} particle-steps/s{}\n", traceSeconds,
              double(steps) / std::max(traceSeconds, 1e-9),
-             times.setupSeconds > 0.0
-                 ? fmt::format(" (device setup {:.2f} s before it)", times.setupSeconds)
+             report.setupSeconds > 0.0
+                 ? fmt::format(" (device setup {:.2f} s before it)", report.setupSeconds)
                  : std::string());
-
-  return traces;
+  return stored;
 }
 
 void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t defaultCount) {
@@ -341,7 +342,7 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
   command
       ->add_option("--memory-budget", options->memoryBudget,
                    "bytes the tracing rounds may use on the device and for the host copies, "
-                   "e.g. 512M or 2G (the collected traces come on top)")
+                   "e.g. 512M or 2G (the collected traces come on top); 0: automatic, 256M to 2G")
       ->transform(CLI::AsSizeValue(false))
       ->capture_default_str();
   command

@@ -41,7 +41,7 @@ struct TraceJobOptions {
   float terminalSpeed = 1e-12f;
   float maxLength = 0.0f;
   float maxTime = 0.0f;
-  std::uint64_t memoryBudget = flow::kDefaultMemoryBudget;
+  std::uint64_t memoryBudget = 0;  // 0: automatic
   BackendRequest backend;
 };
 
@@ -64,8 +64,9 @@ struct PreparedInput {
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 
 // Traces with the requested backend (with a progress line), prints the steps, reasons and time
-// lines, and records what ran in input.report.
-flow::TraceSet runTraces(const TraceJobOptions& o, PreparedInput& input);
+// lines, and records what ran in input.report. The points stay in the rounds that made them
+// (StoredTraces::assemble() gives a TraceSet).
+flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input);
 
 // The seeds of the chosen strategy; `description` says which, for the summary.
 flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,

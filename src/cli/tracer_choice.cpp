@@ -84,7 +84,7 @@ void checkValidation(const vk::Context& ctx) {
         fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
 }
 
-flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
+flow::StoredTraces traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
                                 const flow::TraceProgress& progress, TraceReport* report) {
@@ -97,7 +97,7 @@ flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::Vecto
     fmt::print("tracing    on the CPU reference ({} threads)\n", tbb::info::default_concurrency());
     t.backend = "cpu";
     t.device = fmt::format("{} threads", tbb::info::default_concurrency());
-    flow::TraceSet traces = flow::traceStreamlines(volume, seeds, options, progress);
+    flow::StoredTraces traces = flow::traceToRounds(volume, seeds, options, progress);
     t.traceSeconds = clock.seconds();
     return traces;
   }
@@ -112,14 +112,14 @@ flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::Vecto
              tracer.setup().uploadSeconds, tracer.setup().structureSeconds,
              tracer.setup().pipelineSeconds);
   clock.restart();
-  flow::TraceSet traces = tracer.trace(seeds, options, progress);
+  flow::StoredTraces traces = tracer.traceToRounds(seeds, options, progress);
   t.traceSeconds = clock.seconds();
   checkValidation(ctx);
   const gpu::TraceRunStats& run = tracer.lastRun();
   fmt::print("rounds     {} in {} batch{}: buffers {:.3f} s, waiting for rounds {:.3f} s and "
-             "copies {:.3f} s, unpacking {:.3f} s, assembling lines {:.3f} s\n",
+             "copies {:.3f} s, unpacking {:.3f} s\n",
              run.rounds, run.batches, run.batches == 1 ? "" : "es", run.buffersSeconds,
-             run.roundWaitSeconds, run.copyWaitSeconds, run.unpackSeconds, run.assembleSeconds);
+             run.roundWaitSeconds, run.copyWaitSeconds, run.unpackSeconds);
   return traces;
 }
 

@@ -53,7 +53,7 @@ struct TraceReport {
 
 // Traces with the requested backend, printing the choice (and for `auto` why). Throws
 // vk::ContextError naming the missing extension when a forced backend is not available.
-flow::TraceSet traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
+flow::StoredTraces traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
                                 std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
                                 const flow::TraceProgress& progress,

@@ -127,6 +127,11 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
 
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
                           const TraceOptions& options, const TraceProgress& progress) {
+  return traceToRounds(volume, seeds, options, progress).assemble();
+}
+
+StoredTraces traceToRounds(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                           const TraceOptions& options, const TraceProgress& progress) {
   LinePlan plan = planLines(volume, seeds, options.direction);
   const std::size_t lines = plan.states.size();
   TraceAccumulator accumulator(std::move(plan.layout), traceShape(volume, options));
@@ -145,7 +150,7 @@ TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3
     while (rounds.liveLines() > 0)
       accumulator.add(rounds.advance(stepsPerRound(options, slots, rounds.liveLines())));
   }
-  return accumulator.assemble();
+  return accumulator.store();
 }
 
 }  // namespace amrstream::flow

@@ -10,6 +10,7 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "../../shaders/glsl/shared/trace_params.h"
+#include "stored_traces.hpp"
 #include "trace_set.hpp"
 #include "vector_volume.hpp"
 
@@ -24,7 +25,6 @@ enum class StepMode : int {
 // vtkStreamTracer's IntegrationDirection: Both traces each seed forward and backward, two lines.
 enum class Direction { Forward, Backward, Both };
 
-inline constexpr std::uint64_t kDefaultMemoryBudget = std::uint64_t(1) << 30;
 
 struct TraceOptions {
   StepMode stepMode = StepMode::Cell;
@@ -37,9 +37,10 @@ struct TraceOptions {
   bool keepHistory = true;  // false: store only each line's last point
   bool vorticity = false;   // sample the curl of the vector at every point
   // Bytes the rounds' working buffers may take (device and host staging; the collected result
-  // is not counted). Sets the steps per round and the lines traced at once.
-  std::uint64_t memoryBudget = kDefaultMemoryBudget;
-  std::uint32_t roundSteps = 0;  // steps per round; 0: as many as memoryBudget allows
+  // is not counted). Sets the steps per round and the lines traced at once. 0: automatic, room
+  // for rounds of 64 steps within 256 MiB .. 2 GiB (line_plan.hpp).
+  std::uint64_t memoryBudget = 0;
+  std::uint32_t roundSteps = 0;  // steps per round; 0: as many as the budget allows
   // The collected traces may take at most this many bytes (0: no limit): tracing stops with an
   // InputError once they grow past it, rather than exhausting the machine's memory.
   std::uint64_t maxResultBytes = 0;
@@ -54,5 +55,9 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
 using TraceProgress = std::function<void(std::size_t finished, std::size_t lines)>;
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
                           const TraceOptions& options, const TraceProgress& progress = {});
+// The same, the points left in the rounds that made them (read line by line; assemble() gives the
+// TraceSet): what writers of large results want.
+StoredTraces traceToRounds(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                           const TraceOptions& options, const TraceProgress& progress = {});
 
 }  // namespace amrstream::flow

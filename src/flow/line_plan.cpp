@@ -31,17 +31,28 @@ TraceSet traceShape(const VectorVolume& volume, const TraceOptions& options) {
   return shape;
 }
 
+std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
+                           std::size_t lines) {
+  if (options.memoryBudget > 0) return options.memoryBudget;
+  constexpr std::uint64_t kLeast = std::uint64_t(256) << 20, kMost = std::uint64_t(2) << 30;
+  const std::uint64_t slotsPerLine = options.keepHistory ? 65 : 1;
+  const std::uint64_t wanted = lines * (costs.bytesPerLine + slotsPerLine * costs.bytesPerPointSlot);
+  return std::clamp(wanted, kLeast, kMost);
+}
+
 std::size_t linesPerBatch(const TraceOptions& options, const RoundCosts& costs, std::size_t lines) {
   const std::uint64_t perLine =
       costs.bytesPerLine + costs.bytesPerPointSlot * (options.keepHistory ? 2 : 1);
-  const std::uint64_t fit = options.memoryBudget / std::max<std::uint64_t>(1, perLine);
+  const std::uint64_t fit =
+      memoryBudget(options, costs, lines) / std::max<std::uint64_t>(1, perLine);
   return std::max<std::size_t>(1, std::min<std::uint64_t>(lines, fit));
 }
 
 std::uint64_t pointSlots(const TraceOptions& options, const RoundCosts& costs,
                          std::size_t batchLines) {
+  const std::uint64_t budget = memoryBudget(options, costs, batchLines);
   const std::uint64_t lineBytes = costs.bytesPerLine * batchLines;
-  const std::uint64_t left = options.memoryBudget > lineBytes ? options.memoryBudget - lineBytes : 0;
+  const std::uint64_t left = budget > lineBytes ? budget - lineBytes : 0;
   const std::uint64_t smallest = std::uint64_t(batchLines) * (options.keepHistory ? 2 : 1);
   const std::uint64_t largest =
       std::uint64_t(batchLines) * (options.keepHistory ? std::uint64_t(options.maxSteps) + 1 : 1);

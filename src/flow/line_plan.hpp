@@ -32,6 +32,13 @@ struct RoundCosts {
   std::uint64_t bytesPerPointSlot = 0;
 };
 
+// The working memory of rounds: options.memoryBudget, or when it is 0 room for every line to take
+// 64 steps per round, but no less than 256 MiB and no more than 2 GiB. Allocating pinned host
+// memory for the copies costs about 0.1 s per GiB, so a budget far beyond what the rounds use
+// only slows the start.
+std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
+                           std::size_t lines);
+
 // Lines traced together: as many as fit the budget with the smallest round (2 output slots per
 // line with history, 1 without), at least 1.
 std::size_t linesPerBatch(const TraceOptions& options, const RoundCosts& costs, std::size_t lines);

@@ -1,14 +1,14 @@
 #pragma once
-// Collects the rounds of a trace into one TraceSet. Rounds arrive as they finish; each holds a
-// few points of many lines, so a line's points are spread over the rounds. assemble() gathers
-// them line by line, one array at a time, releasing each round's copy of that array as it goes:
-// the peak is the result plus its largest array, not twice the result.
+// Collects the rounds of a trace. Rounds arrive as they finish; each holds a few points of many
+// lines, so a line's points are spread over the rounds. store() hands them over as they are
+// (StoredTraces: read line by line, or assembled into one TraceSet).
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "round_block.hpp"
+#include "stored_traces.hpp"
 #include "trace_set.hpp"
 
 namespace amrstream::flow {
@@ -36,23 +36,17 @@ class TraceAccumulator {
 
   // The TraceSet of all rounds so far; the accumulator is left empty.
   TraceSet assemble();
+  // The rounds so far as they are, read line by line (for writers: no assembled copy); the
+  // accumulator is left empty.
+  StoredTraces store();
   // The same, leaving the accumulator as it is (for traces that go on growing).
   TraceSet snapshot() const;
 
  private:
-  struct StoredRound {
-    RoundBlock block;
-    std::vector<std::uint64_t> destinations;  // per line of the round: points of it before
-  };
-
-  // Rounds is std::vector<StoredRound>, const for a snapshot; `release` frees what is copied.
-  template <typename Rounds>
-  static TraceSet gatherAll(const TraceAccumulator& from, Rounds& rounds, bool release);
-
   LineLayout layout_;
   TraceSet result_;  // names, periodic box, steps and reasons so far
   std::vector<std::uint64_t> pointsPerLine_;
-  std::vector<StoredRound> rounds_;
+  std::vector<RoundBlock> rounds_;
   std::size_t finished_ = 0;
   std::uint64_t points_ = 0;
   std::uint64_t maxBytes_ = 0;

@@ -78,6 +78,16 @@ std::uint64_t GpuTracer::pointSlots(const flow::TraceOptions& options,
 flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
                                 const flow::TraceOptions& options,
                                 const flow::TraceProgress& progress) {
+  flow::StoredTraces rounds = traceToRounds(seeds, options, progress);
+  Stopwatch clock;
+  flow::TraceSet traces = std::move(rounds).assemble();
+  lastRun_.assembleSeconds = clock.seconds();
+  return traces;
+}
+
+flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
+                                            const flow::TraceOptions& options,
+                                            const flow::TraceProgress& progress) {
   flow::LinePlan plan = flow::planLines(*volume_, seeds, options.direction);
   const std::size_t lines = plan.states.size();
   flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
@@ -114,10 +124,7 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
     lastRun_.copyWaitSeconds += t.copyWaitSeconds;
     lastRun_.unpackSeconds += t.unpackSeconds;
   }
-  Stopwatch clock;
-  flow::TraceSet traces = accumulator.assemble();
-  lastRun_.assembleSeconds = clock.seconds();
-  return traces;
+  return accumulator.store();
 }
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,

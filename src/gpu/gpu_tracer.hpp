@@ -37,7 +37,7 @@ struct TraceRunStats {
   std::size_t rounds = 0;
   std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
   // Host wall time of trace()'s parts: making the batches' buffers, waiting for the rounds and for
-  // their copies, unpacking the copies, and assembling the lines.
+  // their copies, unpacking the copies, and assembling the lines (0 for traceToRounds).
   double buffersSeconds = 0.0, roundWaitSeconds = 0.0, copyWaitSeconds = 0.0,
          unpackSeconds = 0.0, assembleSeconds = 0.0;
 };
@@ -53,6 +53,10 @@ class GpuTracer {
   // Seeds in physical coordinates, as flow::traceStreamlines, with the same result layout.
   flow::TraceSet trace(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                        const flow::TraceProgress& progress = {});
+  // The same, the points left in the rounds that made them (see flow::traceToRounds).
+  flow::StoredTraces traceToRounds(std::span<const glm::dvec3> seeds,
+                                   const flow::TraceOptions& options,
+                                   const flow::TraceProgress& progress = {});
 
   // Lines (flow::planLines) that advance one round per call, for progressive tracing; all in
   // one batch. The tracer must outlive the result.

@@ -18,138 +18,193 @@
 namespace amrstream::output {
 namespace {
 
+using flow::PointColumn;
+
 static_assert(std::endian::native == std::endian::little,
               "the file declares byte_order=\"LittleEndian\" and its values are written as in "
               "memory");
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are written as packed Float32");
 
-void checkConsistent(const std::filesystem::path& path, const flow::TraceSet& traces) {
-  const auto fail = [&](const std::string& what) {
-    throw std::invalid_argument(
-        fmt::format("cannot write '{}': inconsistent traces: {}", path.string(), what));
-  };
+[[noreturn]] void inconsistent(const std::filesystem::path& path, const std::string& what) {
+  throw std::invalid_argument(
+      fmt::format("cannot write '{}': inconsistent traces: {}", path.string(), what));
+}
+
+void checkLines(const std::filesystem::path& path, const flow::TraceSet& traces) {
   const std::size_t lines = traces.lineCount();
   if (traces.directions.size() != lines || traces.steps.size() != lines ||
       traces.reasons.size() != lines || traces.offsets.size() != lines + 1)
-    fail(fmt::format("{} lines but {} directions, {} steps, {} reasons and {} offsets", lines,
-                     traces.directions.size(), traces.steps.size(), traces.reasons.size(),
-                     traces.offsets.size()));
-  if (traces.offsets.front() != 0) fail("the first line does not start at point 0");
+    inconsistent(path, fmt::format("{} lines but {} directions, {} steps, {} reasons and {} "
+                                   "offsets",
+                                   lines, traces.directions.size(), traces.steps.size(),
+                                   traces.reasons.size(), traces.offsets.size()));
+  if (traces.offsets.front() != 0) inconsistent(path, "the first line does not start at point 0");
   for (std::size_t i = 0; i < lines; ++i)
-    if (traces.offsets[i + 1] < traces.offsets[i]) fail(fmt::format("line {} ends before it starts", i));
+    if (traces.offsets[i + 1] < traces.offsets[i])
+      inconsistent(path, fmt::format("line {} ends before it starts", i));
+}
+
+void checkPoints(const std::filesystem::path& path, const flow::TraceSet& traces) {
   const std::uint64_t points = traces.pointCount();
   if (traces.positions.size() != points || traces.times.size() != points ||
       traces.vectors.size() != points ||
       traces.channels.size() != points * traces.channelCount() ||
       traces.vorticity.size() != (traces.withVorticity ? points : 0))
-    fail(fmt::format("{} points but {} positions, {} times, {} vectors, {} channel values, {} "
-                     "vorticity values",
-                     points, traces.positions.size(), traces.times.size(), traces.vectors.size(),
-                     traces.channels.size(), traces.vorticity.size()));
+    inconsistent(path, fmt::format("{} points but {} positions, {} times, {} vectors, {} channel "
+                                   "values, {} vorticity values",
+                                   points, traces.positions.size(), traces.times.size(),
+                                   traces.vectors.size(), traces.channels.size(),
+                                   traces.vorticity.size()));
 }
 
-// One polyline of the file: points [first, first + count) of the TraceSet, of line `line`.
+// One polyline of the file: points [first, first + count) of line `line` (counted along it).
 struct Piece {
+  std::uint32_t line = 0;
   std::uint64_t first = 0;
   std::uint64_t count = 0;
-  std::uint32_t line = 0;
   bool last = true;  // the line's last piece
 };
 
+std::uint64_t writtenPoints(const Piece& piece) { return piece.count == 1 ? 2 : piece.count; }
+
 // The file's polylines: one per line with points, split where periodic lines wrap.
-std::vector<Piece> piecesOf(const flow::TraceSet& traces, PeriodicLines periodicLines) {
+std::vector<Piece> piecesOf(const flow::TraceView& traces, PeriodicLines periodicLines) {
+  const flow::TraceSet& lines = traces.lines();
+  const bool split = periodicLines == PeriodicLines::Split && lines.periodic.any();
   std::vector<Piece> pieces;
-  const bool split = periodicLines == PeriodicLines::Split && traces.periodic.any();
-  for (std::size_t line = 0; line < traces.lineCount(); ++line) {
-    const std::uint64_t begin = traces.offsets[line], end = traces.offsets[line + 1];
-    if (begin == end) continue;
-    std::uint64_t first = begin;
-    if (split)
-      for (std::uint64_t p = begin + 1; p < end; ++p)
-        if (traces.periodic.wraps(traces.positions[p - 1], traces.positions[p])) {
-          pieces.push_back({first, p - first, std::uint32_t(line), false});
-          first = p;
+  std::vector<float> scratch;
+  for (std::uint32_t line = 0; line < lines.lineCount(); ++line) {
+    const std::uint64_t count = lines.pointCount(line);
+    if (count == 0) continue;
+    std::uint64_t first = 0;
+    if (split) {
+      const std::span<const float> p = traces.column(PointColumn::Positions, line, scratch);
+      const auto at = [&](std::uint64_t k) { return glm::vec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]); };
+      for (std::uint64_t k = 1; k < count; ++k)
+        if (lines.periodic.wraps(at(k - 1), at(k))) {
+          pieces.push_back({line, first, k - first, false});
+          first = k;
         }
-    pieces.push_back({first, end - first, std::uint32_t(line), true});
+    }
+    pieces.push_back({line, first, count - first, true});
   }
   return pieces;
 }
 
-std::uint64_t writtenPoints(const Piece& piece) { return piece.count == 1 ? 2 : piece.count; }
-
-// Point values of every piece, `width` values per point; a 1-point piece's values twice.
-template <class Values>
-void writePerPoint(BufferedWriter& out, const std::vector<Piece>& pieces, const Values& values,
-                   std::size_t width = 1) {
-  using T = typename Values::value_type;
+// A point array of the file, made line by line: `lineValues(line, scratch)` gives the whole
+// line's values, `width` per point; each piece writes its part (a 1-point piece's values twice).
+template <typename LineValues>
+void writePieces(BufferedWriter& out, const std::vector<Piece>& pieces, std::size_t width,
+                 LineValues&& lineValues) {
+  std::vector<float> scratch;
+  std::span<const float> values;
+  std::uint32_t cached = 0;
+  bool any = false;
   for (const Piece& piece : pieces) {
-    const std::span<const T> valid(values.data() + piece.first * width, piece.count * width);
-    out.write(std::as_bytes(valid));
-    if (piece.count == 1) out.write(std::as_bytes(valid));
+    if (!any || piece.line != cached) {
+      values = lineValues(piece.line, scratch);
+      cached = piece.line;
+      any = true;
+    }
+    const std::span<const float> part = values.subspan(piece.first * width, piece.count * width);
+    out.write(std::as_bytes(part));
+    if (piece.count == 1) out.write(std::as_bytes(part));
   }
 }
 
+// A column as it is stored.
+auto storedColumn(const flow::TraceView& traces, PointColumn column) {
+  return [&traces, column](std::uint32_t line, std::vector<float>& scratch) {
+    return traces.column(column, line, scratch);
+  };
+}
+
 // One channel of the interleaved channel values.
-void writeChannel(BufferedWriter& out, const std::vector<Piece>& pieces,
-                  const flow::TraceSet& traces, std::size_t channel) {
-  const std::size_t width = traces.channelCount();
-  for (const Piece& piece : pieces)
-    for (std::uint64_t k = 0; k < writtenPoints(piece); ++k)
-      out.put(traces.channels[(piece.first + std::min(k, piece.count - 1)) * width + channel]);
+auto channelColumn(const flow::TraceView& traces, std::size_t channel) {
+  return [&traces, channel](std::uint32_t line, std::vector<float>& scratch) {
+    const std::size_t width = traces.lines().channelCount();
+    std::vector<float> all;
+    const std::span<const float> values = traces.column(PointColumn::Channels, line, all);
+    scratch.resize(values.size() / width);
+    for (std::size_t k = 0; k < scratch.size(); ++k) scratch[k] = values[k * width + channel];
+    return std::span<const float>(scratch);
+  };
 }
 
-// A value computed from each point index, for every written point.
-template <class Value>
-void writeDerived(BufferedWriter& out, const std::vector<Piece>& pieces, Value&& value) {
-  for (const Piece& piece : pieces)
-    for (std::uint64_t k = 0; k < writtenPoints(piece); ++k)
-      out.put(value(piece.first + std::min(k, piece.count - 1)));
+float speedOf(const float* v) {
+  const double x = v[0], y = v[1], z = v[2];
+  return static_cast<float>(std::sqrt(x * x + y * y + z * z));
 }
 
-float speedAt(const flow::TraceSet& traces, std::uint64_t i) {
-  const glm::dvec3 v(traces.vectors[i]);
-  return static_cast<float>(glm::length(v));
+auto speedColumn(const flow::TraceView& traces) {
+  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
+    std::vector<float> vectors;
+    const std::span<const float> v = traces.column(PointColumn::Vectors, line, vectors);
+    scratch.resize(v.size() / 3);
+    for (std::size_t k = 0; k < scratch.size(); ++k) scratch[k] = speedOf(&v[3 * k]);
+    return std::span<const float>(scratch);
+  };
 }
 
 // vtkStreamTracer's AngularVelocity: the vorticity's component along the unit tangent.
-float angularVelocityAt(const flow::TraceSet& traces, std::uint64_t i) {
-  const glm::dvec3 v(traces.vectors[i]), w(traces.vorticity[i]);
-  const double speed = glm::length(v);
-  return speed > 0.0 ? static_cast<float>(glm::dot(w, v) / speed) : 0.0f;
+void angularVelocities(const flow::TraceView& traces, std::uint32_t line,
+                       std::vector<float>& out) {
+  std::vector<float> vectorScratch, vorticityScratch;
+  const std::span<const float> v = traces.column(PointColumn::Vectors, line, vectorScratch);
+  const std::span<const float> w = traces.column(PointColumn::Vorticity, line, vorticityScratch);
+  out.resize(v.size() / 3);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const glm::dvec3 velocity(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
+    const glm::dvec3 vorticity(w[3 * k], w[3 * k + 1], w[3 * k + 2]);
+    const double speed = glm::length(velocity);
+    out[k] = speed > 0.0 ? static_cast<float>(glm::dot(vorticity, velocity) / speed) : 0.0f;
+  }
+}
+
+auto angularVelocityColumn(const flow::TraceView& traces) {
+  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
+    angularVelocities(traces, line, scratch);
+    return std::span<const float>(scratch);
+  };
 }
 
 // vtkStreamTracer's Rotation: the angular velocity integrated along each line with the trapezoid
 // rule over IntegrationTime, from 0 at the seed.
-flow::Column<float> rotationOf(const flow::TraceSet& traces) {
-  flow::Column<float> rotation(traces.pointCount(), 0.0f);
-  for (std::size_t line = 0; line < traces.lineCount(); ++line) {
+auto rotationColumn(const flow::TraceView& traces) {
+  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
+    std::vector<float> omega, timeScratch;
+    angularVelocities(traces, line, omega);
+    const std::span<const float> t = traces.column(PointColumn::Times, line, timeScratch);
+    scratch.assign(omega.size(), 0.0f);
     double total = 0.0;
-    for (std::uint64_t i = traces.offsets[line] + 1; i < traces.offsets[line + 1]; ++i) {
-      total += 0.5 * (double(angularVelocityAt(traces, i - 1)) + angularVelocityAt(traces, i)) *
-               (double(traces.times[i]) - traces.times[i - 1]);
-      rotation[i] = static_cast<float>(total);
+    for (std::size_t k = 1; k < omega.size(); ++k) {
+      total += 0.5 * (double(omega[k - 1]) + omega[k]) * (double(t[k]) - t[k - 1]);
+      scratch[k] = static_cast<float>(total);
     }
-  }
-  return rotation;
+    return std::span<const float>(scratch);
+  };
 }
 
 // Positions continued across periodic faces: each wrap adds or removes one period.
-flow::Column<glm::vec3> unwrappedPositions(const flow::TraceSet& traces) {
-  flow::Column<glm::vec3> positions = traces.positions;
-  const glm::dvec3 period = traces.periodic.upper - traces.periodic.lower;
-  for (std::size_t line = 0; line < traces.lineCount(); ++line) {
+auto unwrappedPositionColumn(const flow::TraceView& traces) {
+  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
+    const flow::PeriodicBox& box = traces.lines().periodic;
+    std::vector<float> stored;
+    const std::span<const float> p = traces.column(PointColumn::Positions, line, stored);
+    scratch.assign(p.begin(), p.end());
+    const glm::dvec3 period = box.upper - box.lower;
     glm::dvec3 shift(0.0);
-    for (std::uint64_t i = traces.offsets[line] + 1; i < traces.offsets[line + 1]; ++i) {
+    for (std::size_t k = 1; k < p.size() / 3; ++k) {
       for (int a = 0; a < 3; ++a) {
-        if (!traces.periodic.axes[a]) continue;
-        const double jump = double(traces.positions[i][a]) - traces.positions[i - 1][a];
+        if (!box.axes[a]) continue;
+        const double jump = double(p[3 * k + a]) - p[3 * (k - 1) + a];
         if (jump > 0.5 * period[a]) shift[a] -= period[a];
         if (jump < -0.5 * period[a]) shift[a] += period[a];
+        scratch[3 * k + a] = static_cast<float>(double(p[3 * k + a]) + shift[a]);
       }
-      positions[i] = glm::vec3(glm::dvec3(traces.positions[i]) + shift);
     }
-  }
-  return positions;
+    return std::span<const float>(scratch);
+  };
 }
 
 // Array names must differ; a traced vector or channel named like one of ours gets a suffix.
@@ -161,21 +216,25 @@ std::string distinctName(std::string name, const std::vector<std::string>& taken
 
 }  // namespace
 
-// An empty TraceSet (no lines) is written as a valid file with 0 points and 0 lines whose arrays
-// are all present and empty.
 VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
                    const VtpWriteOptions& options) {
-  checkConsistent(path, traces);
+  checkLines(path, traces);
+  checkPoints(path, traces);
+  return writeVtp(path, flow::TraceSetView(traces), options);
+}
+
+// An empty trace (no lines) is written as a valid file with 0 points and 0 lines whose arrays
+// are all present and empty.
+VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& traces,
+                   const VtpWriteOptions& options) {
+  const flow::TraceSet& lines = traces.lines();
+  checkLines(path, lines);
   const std::vector<Piece> pieces = piecesOf(traces, options.periodicLines);
   std::uint64_t pointCount = 0;
   for (const Piece& piece : pieces) pointCount += writtenPoints(piece);
   const std::uint64_t lineCount = pieces.size();
-  const bool unwrap = options.periodicLines == PeriodicLines::Unwrapped && traces.periodic.any();
-  const flow::Column<glm::vec3> unwrapped =
-      unwrap ? unwrappedPositions(traces) : flow::Column<glm::vec3>{};
-  const flow::Column<glm::vec3>& positions = unwrap ? unwrapped : traces.positions;
-  const flow::Column<float> rotation =
-      traces.withVorticity ? rotationOf(traces) : flow::Column<float>{};
+  const bool unwrap =
+      options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
 
   using Out = BufferedWriter&;
   const std::uint64_t floats = pointCount * sizeof(float), vec3s = pointCount * sizeof(glm::vec3);
@@ -183,47 +242,53 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& trac
                                 "AngularVelocity"};
   std::vector<AppendedArray> pointArrays;
   const std::string vectorName =
-      distinctName(traces.vectorName.empty() ? "Vectors" : traces.vectorName, ours, "_vector");
-  pointArrays.push_back({vectorName, "Float32", 3, vec3s,
-                         [&](Out out) { writePerPoint(out, pieces, traces.vectors); }});
+      distinctName(lines.vectorName.empty() ? "Vectors" : lines.vectorName, ours, "_vector");
   ours.push_back(vectorName);
-  for (std::size_t c = 0; c < traces.channelCount(); ++c) {
-    const std::string name = distinctName(traces.channelNames[c], ours, "_channel");
+  pointArrays.push_back({vectorName, "Float32", 3, vec3s, [&](Out out) {
+                           writePieces(out, pieces, 3, storedColumn(traces, PointColumn::Vectors));
+                         }});
+  for (std::size_t c = 0; c < lines.channelCount(); ++c) {
+    const std::string name = distinctName(lines.channelNames[c], ours, "_channel");
     ours.push_back(name);
-    pointArrays.push_back(
-        {name, "Float32", 1, floats, [&, c](Out out) { writeChannel(out, pieces, traces, c); }});
-  }
-  pointArrays.push_back({"IntegrationTime", "Float32", 1, floats,
-                         [&](Out out) { writePerPoint(out, pieces, traces.times); }});
-  if (traces.withVorticity) {
-    pointArrays.push_back({"Vorticity", "Float32", 3, vec3s,
-                           [&](Out out) { writePerPoint(out, pieces, traces.vorticity); }});
-    pointArrays.push_back({"Rotation", "Float32", 1, floats,
-                           [&](Out out) { writePerPoint(out, pieces, rotation); }});
-    pointArrays.push_back({"AngularVelocity", "Float32", 1, floats, [&](Out out) {
-                             writeDerived(out, pieces, [&](std::uint64_t i) {
-                               return angularVelocityAt(traces, i);
-                             });
+    pointArrays.push_back({name, "Float32", 1, floats, [&, c](Out out) {
+                             writePieces(out, pieces, 1, channelColumn(traces, c));
                            }});
   }
-  pointArrays.push_back({"Speed", "Float32", 1, floats, [&](Out out) {
-                           writeDerived(out, pieces,
-                                        [&](std::uint64_t i) { return speedAt(traces, i); });
+  pointArrays.push_back({"IntegrationTime", "Float32", 1, floats, [&](Out out) {
+                           writePieces(out, pieces, 1, storedColumn(traces, PointColumn::Times));
                          }});
+  if (lines.withVorticity) {
+    pointArrays.push_back({"Vorticity", "Float32", 3, vec3s, [&](Out out) {
+                             writePieces(out, pieces, 3,
+                                         storedColumn(traces, PointColumn::Vorticity));
+                           }});
+    pointArrays.push_back({"Rotation", "Float32", 1, floats,
+                           [&](Out out) { writePieces(out, pieces, 1, rotationColumn(traces)); }});
+    pointArrays.push_back({"AngularVelocity", "Float32", 1, floats, [&](Out out) {
+                             writePieces(out, pieces, 1, angularVelocityColumn(traces));
+                           }});
+  }
+  pointArrays.push_back({"Speed", "Float32", 1, floats,
+                         [&](Out out) { writePieces(out, pieces, 1, speedColumn(traces)); }});
 
   const AppendedArray reasons{"ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
                               [&](Out out) {
                                 for (const Piece& piece : pieces)
-                                  out.put(piece.last ? traces.reasons[piece.line]
+                                  out.put(piece.last ? lines.reasons[piece.line]
                                                      : std::int32_t(AMRSTREAM_REASON_PERIODIC_WRAP));
                               }};
   const AppendedArray seedIds{"SeedIds", "Int32", 1, lineCount * sizeof(std::int32_t),
                               [&](Out out) {
                                 for (const Piece& piece : pieces)
-                                  out.put(static_cast<std::int32_t>(traces.seedIds[piece.line]));
+                                  out.put(static_cast<std::int32_t>(lines.seedIds[piece.line]));
                               }};
-  const AppendedArray points{"Points", "Float32", 3, vec3s,
-                             [&](Out out) { writePerPoint(out, pieces, positions); }};
+  const AppendedArray points{"Points", "Float32", 3, vec3s, [&](Out out) {
+                               if (unwrap)
+                                 writePieces(out, pieces, 3, unwrappedPositionColumn(traces));
+                               else
+                                 writePieces(out, pieces, 3,
+                                             storedColumn(traces, PointColumn::Positions));
+                             }};
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
   const AppendedArray connectivity{"connectivity", "Int64", 1, pointCount * sizeof(std::int64_t),

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "../flow/trace_set.hpp"
+#include "../flow/trace_view.hpp"
 #include "output/vtk_compression.hpp"
 #include "output/vtk_field_data.hpp"
 
@@ -50,6 +51,10 @@ struct VtpCounts {
 // field data array cannot be written; std::runtime_error naming the path when the file cannot be
 // written.
 VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
+                   const VtpWriteOptions& options = {});
+// The same from any TraceView (e.g. the rounds of a tracer as they were left: no assembled copy);
+// only the lines' data are checked beforehand.
+VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& traces,
                    const VtpWriteOptions& options = {});
 
 }  // namespace amrstream::output

@@ -1,17 +1,36 @@
 #pragma once
-// The process's peak resident memory so far, for the summaries of long runs.
+// The process's peak resident memory, for the summaries of long runs. Linux keeps the peak in
+// /proc/self/status (VmHWM) and lets a process reset it (writing 5 to /proc/self/clear_refs), so
+// the peak of one stage can be told from the peak of the whole run.
 
 #include <sys/resource.h>
 
 #include <cstdint>
+#include <fstream>
+#include <string>
 
 namespace amrstream {
 
-// Bytes; 0 when the system does not say.
+// Peak since the process started; bytes, 0 when the system does not say.
 inline std::uint64_t peakResidentBytes() {
   rusage usage{};
   if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
   return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+// Peak since the last resetStagePeak(); bytes, 0 when the system does not say.
+inline std::uint64_t stagePeakResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stoull(line.substr(6)) * 1024;
+  return 0;
+}
+
+// Starts a new stage peak at the current resident size; false where the system does not allow it.
+inline bool resetStagePeak() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  return static_cast<bool>(clear.flush());
 }
 
 }  // namespace amrstream

@@ -1,0 +1,40 @@
+#pragma once
+// Traces as the rounds of a tracer left them: each round's points in one block, line after line
+// in the round's thread order, so a line's points are spread over the rounds. Reading a line's
+// column gathers its runs (or, for a line that one round holds whole, points into that round).
+
+#include <cstdint>
+#include <vector>
+
+#include "round_block.hpp"
+#include "trace_view.hpp"
+
+namespace amrstream::flow {
+
+class StoredTraces final : public TraceView {
+ public:
+  // `lines` holds every line's seed id, direction, steps, reason and offsets (its point columns
+  // are ignored); the rounds' LineRounds name the lines their points belong to.
+  StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds);
+
+  const TraceSet& lines() const override { return lines_; }
+  // The points gathered line after line, one column at a time, each round's copy of a column
+  // released once it is gathered: the peak is the result plus one column, not twice the result.
+  TraceSet assemble() &&;
+  std::span<const float> column(PointColumn column, std::size_t line,
+                                std::vector<float>& scratch) const override;
+
+ private:
+  struct Run {
+    std::uint32_t round;
+    std::uint32_t count;  // points
+    std::uint64_t first;  // the run's first point in its round
+  };
+
+  TraceSet lines_;
+  std::vector<RoundBlock> rounds_;
+  std::vector<std::uint64_t> runOffsets_;  // the runs of line i: runs_[runOffsets_[i] ..]
+  std::vector<Run> runs_;
+};
+
+}  // namespace amrstream::flow
