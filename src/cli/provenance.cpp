@@ -13,7 +13,7 @@ std::vector<output::FieldDataArray> traceProvenance(const TraceJobOptions& o,
   using output::textField;
   const flow::VectorVolume& volume = input.volume;
   const flow::TraceOptions& options = input.options;
-  const bricks::DatasetInfo& info = input.field.info();
+  const bricks::DatasetInfo& info = input.info;
   std::string pointData;
   for (const std::string& name : volume.channelNames)
     pointData += (pointData.empty() ? "" : ",") + name;
@@ -26,7 +26,7 @@ std::vector<output::FieldDataArray> traceProvenance(const TraceJobOptions& o,
 
   std::vector<output::FieldDataArray> fields{
       textField("amrstream", "amrstream " AMRSTREAM_VERSION),
-      textField("Input", input.field.source()),
+      textField("Input", input.source),
       textField("InputFormat", info.format),
       textField("Vector", volume.vectorName),
       textField("PointDataChannels", pointData.empty() ? "none" : pointData),

@@ -70,7 +70,7 @@ void setTubeRadius(render::RenderSettings& settings, float radius) {
 void updateTubes(RenderScene& scene, const RenderOptions& o, const PreparedInput& input,
                  const flow::TraceSet& traces) {
   const render::ColourField colour =
-      render::colourFieldOf(traces, o.colourBy, input.field, input.volume, scene.colourChannel);
+      render::colourFieldOf(traces, o.colourBy, input.field(), input.volume, scene.colourChannel);
   scene.segments = render::buildTubeSegments(traces, colour, input.volume.transform);
   scene.settings.colourRange =
       o.range.empty() ? render::rangeOf(colour.values) : parseRange(o.range, "--range");
@@ -94,13 +94,13 @@ RenderScene prepareScene(const RenderOptions& o, const PreparedInput& input,
   updateTubes(scene, o, input, traces);
 
   if (!o.volume.empty()) {
-    if (!input.field.findChannel(o.volume)) {
+    if (!input.field().findChannel(o.volume)) {
       std::string choices;
-      for (const bricks::Channel& c : input.field.channels())
+      for (const bricks::Channel& c : input.field().channels())
         choices += (choices.empty() ? "" : ", ") + c.name;
       throw InputError("--volume", fmt::format("no channel '{}'; the input has: {}", o.volume, choices));
     }
-    scene.contextScalars = flow::gatherScalar(input.field, input.volume, o.volume);
+    scene.contextScalars = flow::gatherScalar(input.field(), input.volume, o.volume);
     s.volume = true;
     s.logVolume = !o.linearVolume;
     s.volumeRange = o.volumeRange.empty()

@@ -25,6 +25,7 @@ struct TraceCommandOptions {
 
 void runTrace(const TraceCommandOptions& o) {
   PreparedInput input = prepareInput(o.job);
+  input.releaseField();  // the volume holds the vector and the point data
   input.options.keepHistory = !o.endpointsOnly;
   const bool stagePeak = resetStagePeak();
   const flow::StoredTraces traces = runTraces(o.job, input);

@@ -140,8 +140,11 @@ flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& fie
 
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   Stopwatch clock;
-  PreparedInput input{formats::loadInput(o.dataset.input, o.dataset.generator), {}, {}, {}};
-  const bricks::AmrField& field = input.field;
+  PreparedInput input;
+  input.cells.emplace(formats::loadInput(o.dataset.input, o.dataset.generator));
+  const bricks::AmrField& field = input.field();
+  input.info = field.info();
+  input.source = field.source();
   const double loadSeconds = clock.seconds();
   const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",

@@ -50,12 +50,23 @@ void addTraceJobOptions(CLI::App& command, TraceJobOptions& options, std::size_t
 
 // The input loaded and prepared for tracing.
 struct PreparedInput {
-  bricks::AmrField field;
+  // The cells; released by `trace` once the volume holds what it needs (see releaseField).
+  std::optional<bricks::AmrField> cells;
+  bricks::DatasetInfo info;  // what the input says of itself, kept when the cells go
+  std::string source;        // the input's name
   flow::VectorVolume volume;
   flow::SeedList seeds;
   std::string seedDescription;
   flow::TraceOptions options;  // keepHistory set; the caller may change it
   TraceReport report;          // filled by runTraces
+
+  const bricks::AmrField& field() const { return *cells; }
+  // Frees the cells (the largest part of a big input) and the volume's map from value slots to
+  // cells when nothing after needs them: tracing reads the volume alone.
+  void releaseField() {
+    cells.reset();
+    std::vector<std::uint32_t>().swap(volume.cellIds);
+  }
 };
 
 // Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,

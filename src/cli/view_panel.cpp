@@ -56,7 +56,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
   if (ImGui::CollapsingHeader("Seeding and stepping", ImGuiTreeNodeFlags_DefaultOpen)) {
     bool dense = !o.job.seedDensity.empty();
     if (ImGui::Checkbox("densest cells (paper)", &dense))
-      o.job.seedDensity = dense && session.input().field.findChannel("dens") ? "dens" : "";
+      o.job.seedDensity = dense && session.input().field().findChannel("dens") ? "dens" : "";
     int count = int(o.job.count);
     if (ImGui::SliderInt("seeds", &count, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic))
       o.job.count = std::size_t(std::max(1, count));
@@ -91,7 +91,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
 
   if (ImGui::CollapsingHeader("Look", ImGuiTreeNodeFlags_DefaultOpen)) {
     std::vector<std::string> fields{"speed", "time"};
-    for (const bricks::Channel& c : session.input().field.channels()) fields.push_back(c.name);
+    for (const bricks::Channel& c : session.input().field().channels()) fields.push_back(c.name);
     if (ImGui::BeginCombo("colour by", o.look.colourBy.c_str())) {
       for (const std::string& f : fields)
         if (ImGui::Selectable(f.c_str(), f == o.look.colourBy)) {
@@ -127,7 +127,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
       ImGui::Checkbox(fmt::format("volume ({})", o.look.volume).c_str(), &scene.settings.volume);
       ImGui::SliderFloat("opacity", &scene.settings.volumeOpacity, 0.0f, 1.0f, "%.3f",
                          ImGuiSliderFlags_Logarithmic);
-    } else if (session.input().field.findChannel("dens") && ImGui::Button("show dens as a volume")) {
+    } else if (session.input().field().findChannel("dens") && ImGui::Button("show dens as a volume")) {
       o.look.volume = "dens";
       session.reloadVolume();
     }
