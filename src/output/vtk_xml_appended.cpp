@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <bit>
 #include <span>
 #include <stdexcept>
@@ -29,10 +32,31 @@ void checkWritten(const AppendedArray& array, std::uint64_t written) {
   }
 }
 
+// Values made by fillValues arrive a batch of blocks at a time, the blocks of a batch filled in
+// parallel; `consume` takes each batch in order.
+constexpr std::uint64_t kFillBatchBytes = 256 * kBlockBytes;
+
+template <typename Consume>
+void forEachFilledBatch(const AppendedArray& array, Consume&& consume) {
+  std::vector<std::byte> batch;
+  for (std::uint64_t first = 0; first < array.byteCount; first += kFillBatchBytes) {
+    batch.resize(std::min(kFillBatchBytes, array.byteCount - first));
+    const std::size_t blocks = (batch.size() + kBlockBytes - 1) / kBlockBytes;
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+      const std::size_t begin = b * kBlockBytes, size = std::min(kBlockBytes, batch.size() - begin);
+      array.fillValues(first + begin, std::span(batch).subspan(begin, size));
+    });
+    consume(std::span<const std::byte>(batch));
+  }
+}
+
 void writeRawBlock(BufferedWriter& out, const AppendedArray& array) {
   out.put<std::uint64_t>(array.byteCount);
   const std::uint64_t start = out.bytesWritten();
-  array.writeValues(out);
+  if (array.fillValues)
+    forEachFilledBatch(array, [&](std::span<const std::byte> batch) { out.write(batch); });
+  else
+    array.writeValues(out);
   checkWritten(array, out.bytesWritten() - start);
 }
 
@@ -45,12 +69,21 @@ void writeCompressedBlock(AtomicFile& file, BufferedWriter& out, const AppendedA
   const std::uint64_t headerAt = out.bytesWritten();
   out.write(std::as_bytes(std::span(header)));
 
-  BlockCompressingSink compressor(compression, out, zlibSettingsFor(array.type));
-  BufferedWriter values(compressor);
-  array.writeValues(values);
-  values.flush();
-  checkWritten(array, values.bytesWritten());
-  const std::vector<std::uint64_t> sizes = compressor.finish();
+  std::vector<std::uint64_t> sizes;
+  if (array.fillValues) {
+    forEachFilledBatch(array, [&](std::span<const std::byte> batch) {
+      const CompressedBlocks blocks = compressBlocks(compression, batch, zlibSettingsFor(array.type));
+      out.write(blocks.bytes);
+      sizes.insert(sizes.end(), blocks.sizes.begin(), blocks.sizes.end());
+    });
+  } else {
+    BlockCompressingSink compressor(compression, out, zlibSettingsFor(array.type));
+    BufferedWriter values(compressor);
+    array.writeValues(values);
+    values.flush();
+    checkWritten(array, values.bytesWritten());
+    sizes = compressor.finish();
+  }
 
   header[0] = layout.blockCount;
   header[1] = layout.blockBytes;

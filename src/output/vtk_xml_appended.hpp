@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,7 +35,11 @@ struct AppendedArray {
   std::uint64_t byteCount = 0;  // size of the values before any compression
   // Streams exactly byteCount bytes of raw little-endian values into the writer, in any number of
   // writes; where they go (file or compressor) is not the producer's concern.
-  std::function<void(BufferedWriter&)> writeValues;
+  std::function<void(BufferedWriter&)> writeValues = {};
+  // Or: puts the values' bytes [first, first + out.size()) into `out`. Called from several
+  // threads at once for disjoint ranges, so the writer can make and compress a batch of blocks in
+  // parallel; when set, writeValues is not used.
+  std::function<void(std::uint64_t first, std::span<std::byte> out)> fillValues = {};
 };
 
 // Escapes text for use inside a double-quoted XML attribute.

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
+#include <numeric>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -91,25 +93,55 @@ std::vector<Piece> piecesOf(const flow::TraceView& traces, PeriodicLines periodi
   return pieces;
 }
 
-// A point array of the file, made line by line: `lineValues(line, scratch)` gives the whole
-// line's values, `width` per point; each piece writes its part (a 1-point piece's values twice).
+// The file's polylines and where each starts among the written points.
+struct PieceTable {
+  std::vector<Piece> pieces;
+  std::vector<std::uint64_t> firstWritten;  // per piece, then the total
+  std::uint64_t points() const { return firstWritten.back(); }
+};
+
+PieceTable pieceTable(std::vector<Piece> pieces) {
+  PieceTable table{std::move(pieces), {0}};
+  for (const Piece& piece : table.pieces)
+    table.firstWritten.push_back(table.firstWritten.back() + writtenPoints(piece));
+  return table;
+}
+
+// Bytes [first, first + out.size()) of a point array, `width` floats per written point, whose
+// values along a line `lineValues(line, scratch)` gives; each piece takes its part of its line
+// (a 1-point piece its values twice). Thread-safe when lineValues is.
 template <typename LineValues>
-void writePieces(BufferedWriter& out, const std::vector<Piece>& pieces, std::size_t width,
-                 LineValues&& lineValues) {
-  std::vector<float> scratch;
-  std::span<const float> values;
-  std::uint32_t cached = 0;
-  bool any = false;
-  for (const Piece& piece : pieces) {
-    if (!any || piece.line != cached) {
-      values = lineValues(piece.line, scratch);
-      cached = piece.line;
-      any = true;
+void fillPoints(const PieceTable& table, std::size_t width, const LineValues& lineValues,
+                std::uint64_t first, std::span<std::byte> out) {
+  const std::uint64_t pointBytes = width * sizeof(float);
+  const std::uint64_t begin = first / pointBytes;
+  const std::uint64_t end = (first + out.size() + pointBytes - 1) / pointBytes;
+  std::vector<float> values((end - begin) * width), scratch;
+  std::size_t k = std::upper_bound(table.firstWritten.begin(), table.firstWritten.end(), begin) -
+                  table.firstWritten.begin() - 1;
+  float* to = values.data();
+  for (std::uint64_t w = begin; w < end; ++k) {
+    const Piece& piece = table.pieces[k];
+    const std::span<const float> line = lineValues(piece.line, scratch);
+    const std::uint64_t stop = std::min(end, table.firstWritten[k + 1]);
+    for (; w < stop; ++w) {
+      const std::uint64_t point = piece.first + std::min(w - table.firstWritten[k], piece.count - 1);
+      to = std::copy_n(line.data() + point * width, width, to);
     }
-    const std::span<const float> part = values.subspan(piece.first * width, piece.count * width);
-    out.write(std::as_bytes(part));
-    if (piece.count == 1) out.write(std::as_bytes(part));
   }
+  std::memcpy(out.data(), reinterpret_cast<const std::byte*>(values.data()) + (first - begin * pointBytes),
+              out.size());
+}
+
+// A Float32 point array of `components` values per point, made in parallel by fillPoints.
+template <typename LineValues>
+AppendedArray pointArray(std::string name, int components, const PieceTable& table,
+                         LineValues lineValues) {
+  const std::size_t width = static_cast<std::size_t>(components);
+  return {std::move(name), "Float32", components, table.points() * width * sizeof(float), {},
+          [&table, width, lineValues](std::uint64_t first, std::span<std::byte> out) {
+            fillPoints(table, width, lineValues, first, out);
+          }};
 }
 
 // A column as it is stored.
@@ -229,47 +261,36 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
                    const VtpWriteOptions& options) {
   const flow::TraceSet& lines = traces.lines();
   checkLines(path, lines);
-  const std::vector<Piece> pieces = piecesOf(traces, options.periodicLines);
-  std::uint64_t pointCount = 0;
-  for (const Piece& piece : pieces) pointCount += writtenPoints(piece);
+  const PieceTable table = pieceTable(piecesOf(traces, options.periodicLines));
+  const std::vector<Piece>& pieces = table.pieces;
+  const std::uint64_t pointCount = table.points();
   const std::uint64_t lineCount = pieces.size();
   const bool unwrap =
       options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
 
   using Out = BufferedWriter&;
-  const std::uint64_t floats = pointCount * sizeof(float), vec3s = pointCount * sizeof(glm::vec3);
   std::vector<std::string> ours{"IntegrationTime", "Speed", "Vorticity", "Rotation",
                                 "AngularVelocity"};
   std::vector<AppendedArray> pointArrays;
   const std::string vectorName =
       distinctName(lines.vectorName.empty() ? "Vectors" : lines.vectorName, ours, "_vector");
   ours.push_back(vectorName);
-  pointArrays.push_back({vectorName, "Float32", 3, vec3s, [&](Out out) {
-                           writePieces(out, pieces, 3, storedColumn(traces, PointColumn::Vectors));
-                         }});
+  pointArrays.push_back(
+      pointArray(vectorName, 3, table, storedColumn(traces, PointColumn::Vectors)));
   for (std::size_t c = 0; c < lines.channelCount(); ++c) {
     const std::string name = distinctName(lines.channelNames[c], ours, "_channel");
     ours.push_back(name);
-    pointArrays.push_back({name, "Float32", 1, floats, [&, c](Out out) {
-                             writePieces(out, pieces, 1, channelColumn(traces, c));
-                           }});
+    pointArrays.push_back(pointArray(name, 1, table, channelColumn(traces, c)));
   }
-  pointArrays.push_back({"IntegrationTime", "Float32", 1, floats, [&](Out out) {
-                           writePieces(out, pieces, 1, storedColumn(traces, PointColumn::Times));
-                         }});
+  pointArrays.push_back(
+      pointArray("IntegrationTime", 1, table, storedColumn(traces, PointColumn::Times)));
   if (lines.withVorticity) {
-    pointArrays.push_back({"Vorticity", "Float32", 3, vec3s, [&](Out out) {
-                             writePieces(out, pieces, 3,
-                                         storedColumn(traces, PointColumn::Vorticity));
-                           }});
-    pointArrays.push_back({"Rotation", "Float32", 1, floats,
-                           [&](Out out) { writePieces(out, pieces, 1, rotationColumn(traces)); }});
-    pointArrays.push_back({"AngularVelocity", "Float32", 1, floats, [&](Out out) {
-                             writePieces(out, pieces, 1, angularVelocityColumn(traces));
-                           }});
+    pointArrays.push_back(
+        pointArray("Vorticity", 3, table, storedColumn(traces, PointColumn::Vorticity)));
+    pointArrays.push_back(pointArray("Rotation", 1, table, rotationColumn(traces)));
+    pointArrays.push_back(pointArray("AngularVelocity", 1, table, angularVelocityColumn(traces)));
   }
-  pointArrays.push_back({"Speed", "Float32", 1, floats,
-                         [&](Out out) { writePieces(out, pieces, 1, speedColumn(traces)); }});
+  pointArrays.push_back(pointArray("Speed", 1, table, speedColumn(traces)));
 
   const AppendedArray reasons{"ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
                               [&](Out out) {
@@ -282,20 +303,21 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
                                 for (const Piece& piece : pieces)
                                   out.put(static_cast<std::int32_t>(lines.seedIds[piece.line]));
                               }};
-  const AppendedArray points{"Points", "Float32", 3, vec3s, [&](Out out) {
-                               if (unwrap)
-                                 writePieces(out, pieces, 3, unwrappedPositionColumn(traces));
-                               else
-                                 writePieces(out, pieces, 3,
-                                             storedColumn(traces, PointColumn::Positions));
-                             }};
+  const AppendedArray points =
+      unwrap ? pointArray("Points", 3, table, unwrappedPositionColumn(traces))
+             : pointArray("Points", 3, table, storedColumn(traces, PointColumn::Positions));
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
-  const AppendedArray connectivity{"connectivity", "Int64", 1, pointCount * sizeof(std::int64_t),
-                                   [&](Out out) {
-                                     for (std::uint64_t id = 0; id < pointCount; ++id)
-                                       out.put(static_cast<std::int64_t>(id));
-                                   }};
+  const AppendedArray connectivity{
+      "connectivity", "Int64", 1, pointCount * sizeof(std::int64_t), {},
+      [](std::uint64_t first, std::span<std::byte> out) {
+        // Point ids 0, 1, 2, ...: the ids whose bytes the range covers, then the range.
+        const std::uint64_t begin = first / sizeof(std::int64_t);
+        std::vector<std::int64_t> ids((first + out.size() + 7) / 8 - begin);
+        std::iota(ids.begin(), ids.end(), static_cast<std::int64_t>(begin));
+        std::memcpy(out.data(), reinterpret_cast<const std::byte*>(ids.data()) + first % 8,
+                    out.size());
+      }};
   const AppendedArray offsets{"offsets", "Int64", 1, lineCount * sizeof(std::int64_t),
                               [&](Out out) {
                                 std::int64_t end = 0;
