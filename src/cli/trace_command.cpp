@@ -28,7 +28,8 @@ void runTrace(const TraceCommandOptions& o) {
   input.releaseField();  // the volume holds the vector and the point data
   input.options.keepHistory = !o.endpointsOnly;
   const bool stagePeak = resetStagePeak();
-  const flow::StoredTraces traces = runTraces(o.job, input);
+  // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
+  const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
 
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;

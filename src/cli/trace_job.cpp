@@ -205,7 +205,8 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   return input;
 }
 
-flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input) {
+flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
+                             HostValues hostValues) {
   const flow::SeedList& seeds = input.seeds;
   TraceReport& report = input.report;
   flow::StoredTraces stored = [&] {
@@ -216,7 +217,7 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input) {
         [&](std::size_t done, std::size_t lines) {
           progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
         },
-        &report);
+        &report, hostValues);
   }();
   const double traceSeconds = report.traceSeconds;
   const flow::TraceSet& traces = stored.lines();

@@ -77,7 +77,8 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 // Traces with the requested backend (with a progress line), prints the steps, reasons and time
 // lines, and records what ran in input.report. The points stay in the rounds that made them
 // (StoredTraces::assemble() gives a TraceSet).
-flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input);
+flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
+                             HostValues hostValues = HostValues::Keep);
 
 // The seeds of the chosen strategy; `description` says which, for the summary.
 flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,

@@ -84,10 +84,11 @@ void checkValidation(const vk::Context& ctx) {
         fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
 }
 
-flow::StoredTraces traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
-                                std::span<const glm::dvec3> seeds,
-                                const flow::TraceOptions& options,
-                                const flow::TraceProgress& progress, TraceReport* report) {
+flow::StoredTraces traceWithBackend(const BackendRequest& request, flow::VectorVolume& volume,
+                                    std::span<const glm::dvec3> seeds,
+                                    const flow::TraceOptions& options,
+                                    const flow::TraceProgress& progress, TraceReport* report,
+                                    HostValues hostValues) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace);
@@ -103,6 +104,11 @@ flow::StoredTraces traceWithBackend(const BackendRequest& request, const flow::V
   }
   const vk::Context ctx = createContext(request, choice);
   gpu::GpuTracer tracer(ctx, backend, volume);
+  if (hostValues == HostValues::Release) {
+    decltype(volume.values)().swap(volume.values);
+    decltype(volume.channelValues)().swap(volume.channelValues);
+    decltype(volume.cellIds)().swap(volume.cellIds);
+  }
   t.setupSeconds = clock.seconds();
   t.backend = gpu::backendName(backend);
   t.device = ctx.deviceName();

@@ -51,12 +51,18 @@ struct TraceReport {
   double traceSeconds = 0.0;
 };
 
-// Traces with the requested backend, printing the choice (and for `auto` why). Throws
-// vk::ContextError naming the missing extension when a forced backend is not available.
-flow::StoredTraces traceWithBackend(const BackendRequest& request, const flow::VectorVolume& volume,
-                                std::span<const glm::dvec3> seeds,
-                                const flow::TraceOptions& options,
-                                const flow::TraceProgress& progress,
-                                TraceReport* report = nullptr);
+// What happens to the volume's host copy of its values once a GPU backend has uploaded them.
+enum class HostValues { Keep, Release };
+
+// Traces with the requested backend, printing the choice (and for `auto` why). With
+// HostValues::Release and a GPU backend, the volume's values, channel values and cell map are
+// freed once on the device (the CPU path keeps them). Throws vk::ContextError naming the missing
+// extension when a forced backend is not available.
+flow::StoredTraces traceWithBackend(const BackendRequest& request, flow::VectorVolume& volume,
+                                    std::span<const glm::dvec3> seeds,
+                                    const flow::TraceOptions& options,
+                                    const flow::TraceProgress& progress,
+                                    TraceReport* report = nullptr,
+                                    HostValues hostValues = HostValues::Keep);
 
 }  // namespace amrstream::cli

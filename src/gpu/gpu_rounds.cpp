@@ -54,11 +54,21 @@ void copyRange(VkCommandBuffer cmd, const vk::Buffer& from, const vk::Buffer& to
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
                      const VolumeBuffers& device, const flow::VectorVolume& volume,
                      std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-                     std::uint64_t pointSlots, bool timeKernels)
+                     std::unique_ptr<RoundBuffers> buffers, bool timeKernels)
+    : GpuRounds(ctx, trace, kernels, device, volume, lines, options, *buffers, timeKernels) {
+  ownBuffers_ = std::move(buffers);
+}
+
+GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
+                     const VolumeBuffers& device, const flow::VectorVolume& volume,
+                     std::span<const shared::LineState> lines, const flow::TraceOptions& options,
+                     RoundBuffers& buffers, bool timeKernels)
     : ctx_(&ctx), trace_(&trace), kernels_(&kernels), device_(&device), volume_(&volume),
-      options_(options), params_(flow::makeTraceParams(volume, options)),
-      buffers_(ctx, lines, pointSlots, volume.channelCount(), options.vorticity),
+      options_(options), params_(flow::makeTraceParams(volume, options)), buffers_(buffers),
       pool_(ctx, 5, kPerSet), live_(lines.size()) {
+  if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity))
+    throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
+  buffers.setStates(ctx, lines);
   const RoundBuffers& b = buffers_;
   for (int parity = 0; parity < 2; ++parity) {
     traceSets_[parity] = pool_.allocate(trace.setLayout.get());

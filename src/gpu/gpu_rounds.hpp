@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 
@@ -38,13 +39,18 @@ struct RoundTimes {
 
 class GpuRounds final : public flow::RoundTracer {
  public:
-  // Everything referenced must outlive the rounds. `pointSlots` output slots are shared by the
-  // lines of a round. With `timeKernels`, timestamps bracket the kernels of every round (they may
-  // keep the device from overlapping a round with the previous copy).
+  // Everything referenced must outlive the rounds; `buffers` must fit the lines and hold no other
+  // rounds' work while these run. With `timeKernels`, timestamps bracket the kernels of every
+  // round (they may keep the device from overlapping a round with the previous copy).
   GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
             const VolumeBuffers& device, const flow::VectorVolume& volume,
             std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-            std::uint64_t pointSlots, bool timeKernels);
+            RoundBuffers& buffers, bool timeKernels);
+  // The same with buffers of its own.
+  GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
+            const VolumeBuffers& device, const flow::VectorVolume& volume,
+            std::span<const shared::LineState> lines, const flow::TraceOptions& options,
+            std::unique_ptr<RoundBuffers> buffers, bool timeKernels);
 
   std::size_t liveLines() const override { return live_; }
   flow::RoundBlock advance(std::uint32_t steps) override;
@@ -70,7 +76,8 @@ class GpuRounds final : public flow::RoundTracer {
   const flow::VectorVolume* volume_;
   flow::TraceOptions options_;
   shared::TraceParams params_;
-  RoundBuffers buffers_;
+  std::unique_ptr<RoundBuffers> ownBuffers_;  // when not the tracer's
+  RoundBuffers& buffers_;
   vk::DescriptorPool pool_;
   VkDescriptorSet traceSets_[2]{}, compactionSets_[2]{}, pointDataSet_ = VK_NULL_HANDLE;
   std::optional<vk::GpuTimer> traceTimer_, compactionTimer_;

@@ -100,8 +100,14 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     const std::vector<shared::LineState> ordered =
         threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
     const std::uint64_t slots = pointSlots(options, count);
-    GpuRounds rounds(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered, options, slots,
-                     timeKernels_);
+    const std::size_t channels = volume_->channelCount();
+    if (!roundBuffers_ || !roundBuffers_->fits(count, slots, channels, options.vorticity)) {
+      roundBuffers_.reset();
+      roundBuffers_ =
+          std::make_unique<RoundBuffers>(*ctx_, count, slots, channels, options.vorticity);
+    }
+    GpuRounds rounds(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered, options,
+                     *roundBuffers_, timeKernels_);
     lastRun_.buffersSeconds += clock.seconds();
     rounds.runToEnd(
         [&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
@@ -130,8 +136,11 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,
                                                           const flow::TraceOptions& options) {
   const std::vector<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
+  auto buffers =
+      std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
+                                     volume_->channelCount(), options.vorticity);
   return std::make_unique<GpuRounds>(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered,
-                                     options, pointSlots(options, lines.size()), timeKernels_);
+                                     options, std::move(buffers), timeKernels_);
 }
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
@@ -140,7 +149,8 @@ std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoint
   for (std::size_t i = 0; i < points.size(); ++i) points[i].position = cellPoints[i];
   flow::TraceOptions options;
   options.keepHistory = false;
-  RoundBuffers buffers(*ctx_, points, points.size(), 0, false);
+  RoundBuffers buffers(*ctx_, points.size(), points.size(), 0, false);
+  buffers.setStates(*ctx_, points);
   shared::TraceParams params = flow::makeTraceParams(*volume_, options);
   params.lineCount = static_cast<std::uint32_t>(points.size());
   std::memcpy(buffers.params.mapped().data(), &params, sizeof(params));

@@ -23,6 +23,7 @@
 #include "flow/round_tracer.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "round_buffers.hpp"
 #include "round_kernels.hpp"
 #include "trace_kernel.hpp"
 #include "volume_buffers.hpp"
@@ -91,6 +92,7 @@ class GpuTracer {
   TraceKernel kernel_;
   RoundKernels roundKernels_;
   std::optional<TraceKernel> probe_;  // created by the first locate()
+  std::unique_ptr<RoundBuffers> roundBuffers_;  // kept for the next batch or trace that fits
   std::size_t batchLimit_ = 0;
   bool spatialOrder_ = true;
   bool timeKernels_ = false;

@@ -4,7 +4,11 @@
 
 #include "../../shaders/glsl/shared/round_params.h"
 #include "../../shaders/glsl/shared/trace_params.h"
+#include <cstring>
+#include <stdexcept>
+
 #include "vk/buffer_transfer.hpp"
+#include "vk/commands.hpp"
 
 namespace amrstream::gpu {
 
@@ -36,13 +40,15 @@ flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
           2 * emitted + pointData + copied};
 }
 
-RoundBuffers::RoundBuffers(const vk::Context& ctx, std::span<const shared::LineState> lines,
-                           std::uint64_t pointSlots, std::size_t channelCount, bool withVorticity)
-    : lineCapacity(lines.size()), pointCapacity(pointSlots) {
+RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
+                           std::size_t channelsPerPoint, bool vorticityToo)
+    : lineCapacity(lines), pointCapacity(pointSlots), channelCount(channelsPerPoint),
+      withVorticity(vorticityToo) {
   const std::uint64_t n = lineCapacity, p = pointCapacity;
   params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                               "round params");
-  states = vk::uploadToDeviceLocal(ctx, lines, kStorage, "line states");
+  states = device(ctx, n * sizeof(shared::LineState), "line states",
+                  kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   roundStates = device(ctx, n * sizeof(shared::LineState), "round states");
   lineRounds[0] = device(ctx, n * sizeof(shared::LineRound), "line rounds (even)", kCopied);
   lineRounds[1] = device(ctx, n * sizeof(shared::LineRound), "line rounds (odd)", kCopied);
@@ -69,6 +75,26 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::span<const shared::LineS
   vectorsOut = host(ctx, p * sizeof(glm::vec3), "vectors (host)");
   channelsOut = host(ctx, p * channelCount * sizeof(float), "channels (host)");
   vorticityOut = host(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "vorticity (host)");
+}
+
+bool RoundBuffers::fits(std::size_t lines, std::uint64_t pointSlots, std::size_t channelsPerPoint,
+                        bool vorticityToo) const {
+  return lines <= lineCapacity && pointSlots <= pointCapacity && channelsPerPoint == channelCount &&
+         vorticityToo == withVorticity;
+}
+
+void RoundBuffers::setStates(const vk::Context& ctx, std::span<const shared::LineState> lines) {
+  if (lines.size() > lineCapacity) throw std::logic_error("RoundBuffers: too many lines");
+  if (lines.empty()) return;
+  vk::Buffer staging = vk::Buffer::upload(ctx, lines.size_bytes(),
+                                                VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "line states (staging)");
+  std::memcpy(staging.mapped().data(), lines.data(), lines.size_bytes());
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    // The previous batch's rounds are done (their submissions were waited for).
+    const VkBufferCopy region{0, 0, lines.size_bytes()};
+    vkCmdCopyBuffer(cmd, staging.handle(), states.handle(), 1, &region);
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+  });
 }
 
 }  // namespace amrstream::gpu

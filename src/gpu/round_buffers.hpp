@@ -1,7 +1,8 @@
 #pragma once
-// The device buffers of one batch of lines traced in rounds, and the host-visible copies a round's
-// output is read back into. Sized once per batch: `lines` line slots and `pointSlots` output
-// slots shared by a round's lines (a round of n live lines and k slots each needs n * k).
+// The device buffers of a batch of lines traced in rounds, and the host-visible copies a round's
+// output is read back into: `lines` line slots and `pointSlots` output slots shared by a round's
+// lines (a round of n live lines and k slots each needs n * k). A tracer keeps them for the next
+// batch or trace that fits, since making pinned host memory is slow.
 //
 // Per line: the states the next round starts from (compacted after each round), the states the
 // round ends with (one per thread), the round reports (two, alternating between rounds, so that
@@ -24,14 +25,22 @@ class Context;
 namespace amrstream::gpu {
 
 struct RoundBuffers {
-  RoundBuffers(const vk::Context& ctx, std::span<const shared::LineState> lines,
-               std::uint64_t pointSlots, std::size_t channelCount, bool vorticity);
+  RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
+               std::size_t channelsPerPoint, bool vorticity);
+
+  // Whether these buffers serve a batch of this size and point data.
+  bool fits(std::size_t lines, std::uint64_t pointSlots, std::size_t channelsPerPoint,
+            bool vorticity) const;
+  // The batch's starting states, copied into `states` (and the submission waited for).
+  void setStates(const vk::Context& ctx, std::span<const shared::LineState> lines);
 
   // The bytes the fields below take per line and per output slot, for budgeting.
   static flow::RoundCosts costs(std::size_t channelCount, bool vorticity);
 
   std::size_t lineCapacity;
   std::uint64_t pointCapacity;
+  std::size_t channelCount;
+  bool withVorticity;
 
   vk::Buffer params;  // shared::TraceParams, host-written before each round
   vk::Buffer states;

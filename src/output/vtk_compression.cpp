@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <memory>
 #include <climits>
 #include <cstring>
 #include <limits>
@@ -34,25 +35,50 @@ const Names& namesOf(Compression compression) {
 // block is larger.
 constexpr std::uint64_t kReadBatchBytes = 256 * kBlockBytes;
 
-// compress2() with a choice of strategy: one zlib stream of the whole block.
+// One zlib deflate stream, reset for every block: setting a stream up allocates and clears about
+// 256 KiB, more work than compressing a 32 KiB block, so each thread keeps one per setting.
+class Deflater {
+ public:
+  explicit Deflater(ZLibSettings settings) : settings_(settings) {
+    // 15 and 8: compress2's window and memory level.
+    if (deflateInit2(&stream_, settings.level, Z_DEFLATED, 15, 8,
+                     settings.runLengthOnly ? Z_RLE : Z_DEFAULT_STRATEGY) != Z_OK)
+      throw std::runtime_error("zlib deflateInit2 failed");
+  }
+  ~Deflater() { deflateEnd(&stream_); }
+  Deflater(const Deflater&) = delete;
+  Deflater& operator=(const Deflater&) = delete;
+
+  bool serves(ZLibSettings settings) const {
+    return settings.level == settings_.level && settings.runLengthOnly == settings_.runLengthOnly;
+  }
+
+  // One zlib stream of the whole block, as compress2() writes it.
+  std::size_t compress(std::span<const std::byte> in, std::span<std::byte> out) {
+    if (deflateReset(&stream_) != Z_OK) throw std::runtime_error("zlib deflateReset failed");
+    stream_.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(in.data()));
+    stream_.avail_in = static_cast<uInt>(in.size());
+    stream_.next_out = reinterpret_cast<Bytef*>(out.data());
+    stream_.avail_out = static_cast<uInt>(out.size());
+    // With room for compressBound() bytes, one call finishes the stream.
+    if (deflate(&stream_, Z_FINISH) != Z_STREAM_END)
+      throw std::runtime_error("zlib deflate did not finish a block");
+    return stream_.total_out;
+  }
+
+ private:
+  ZLibSettings settings_;
+  z_stream stream_{};
+};
+
 std::size_t deflateBlock(std::span<const std::byte> in, std::span<std::byte> out,
                          ZLibSettings settings) {
-  z_stream stream{};
-  // 15 and 8: compress2's window and memory level.
-  if (deflateInit2(&stream, settings.level, Z_DEFLATED, 15, 8,
-                   settings.runLengthOnly ? Z_RLE : Z_DEFAULT_STRATEGY) != Z_OK) {
-    throw std::runtime_error("zlib deflateInit2 failed");
-  }
-  stream.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(in.data()));
-  stream.avail_in = static_cast<uInt>(in.size());
-  stream.next_out = reinterpret_cast<Bytef*>(out.data());
-  stream.avail_out = static_cast<uInt>(out.size());
-  const int status = deflate(&stream, Z_FINISH);
-  const std::size_t size = stream.total_out;
-  deflateEnd(&stream);
-  // With room for compressBound() bytes, one call finishes the stream.
-  if (status != Z_STREAM_END) throw std::runtime_error("zlib deflate did not finish a block");
-  return size;
+  thread_local std::vector<std::unique_ptr<Deflater>> deflaters;
+  auto found = std::find_if(deflaters.begin(), deflaters.end(),
+                            [&](const auto& d) { return d->serves(settings); });
+  if (found == deflaters.end())
+    found = deflaters.insert(deflaters.end(), std::make_unique<Deflater>(settings));
+  return (*found)->compress(in, out);
 }
 
 std::size_t compressBlock(Compression compression, std::span<const std::byte> in,
