@@ -10,7 +10,7 @@ packages=(
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   python3 python3-vtk9 python3-numpy
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
-  libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libexpat1-dev
+  libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
   libglfw3-dev libimgui-dev xvfb xauth
 )
 backports_packages=(mesa-vulkan-drivers)

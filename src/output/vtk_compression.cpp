@@ -1,6 +1,7 @@
 #include "output/vtk_compression.hpp"
 
 #include <fmt/format.h>
+#include <libdeflate.h>
 #include <lz4.h>
 #include <tbb/parallel_for.h>
 #include <zlib.h>
@@ -35,50 +36,30 @@ const Names& namesOf(Compression compression) {
 // block is larger.
 constexpr std::uint64_t kReadBatchBytes = 256 * kBlockBytes;
 
-// One zlib deflate stream, reset for every block: setting a stream up allocates and clears about
-// 256 KiB, more work than compressing a 32 KiB block, so each thread keeps one per setting.
-class Deflater {
- public:
-  explicit Deflater(ZLibSettings settings) : settings_(settings) {
-    // 15 and 8: compress2's window and memory level.
-    if (deflateInit2(&stream_, settings.level, Z_DEFLATED, 15, 8,
-                     settings.runLengthOnly ? Z_RLE : Z_DEFAULT_STRATEGY) != Z_OK)
-      throw std::runtime_error("zlib deflateInit2 failed");
-  }
-  ~Deflater() { deflateEnd(&stream_); }
-  Deflater(const Deflater&) = delete;
-  Deflater& operator=(const Deflater&) = delete;
-
-  bool serves(ZLibSettings settings) const {
-    return settings.level == settings_.level && settings.runLengthOnly == settings_.runLengthOnly;
-  }
-
-  // One zlib stream of the whole block, as compress2() writes it.
-  std::size_t compress(std::span<const std::byte> in, std::span<std::byte> out) {
-    if (deflateReset(&stream_) != Z_OK) throw std::runtime_error("zlib deflateReset failed");
-    stream_.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(in.data()));
-    stream_.avail_in = static_cast<uInt>(in.size());
-    stream_.next_out = reinterpret_cast<Bytef*>(out.data());
-    stream_.avail_out = static_cast<uInt>(out.size());
-    // With room for compressBound() bytes, one call finishes the stream.
-    if (deflate(&stream_, Z_FINISH) != Z_STREAM_END)
-      throw std::runtime_error("zlib deflate did not finish a block");
-    return stream_.total_out;
-  }
-
- private:
-  ZLibSettings settings_;
-  z_stream stream_{};
-};
+// libdeflate writes the zlib format (what vtkZLibDataCompressor reads with zlib) two to three
+// times faster than zlib itself at the same ratio on float data; a compressor is made once per
+// thread and level, since setting one up costs more than compressing a block.
+libdeflate_compressor& deflaterFor(int level) {
+  struct Owned {
+    int level;
+    std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor;
+  };
+  thread_local std::vector<Owned> compressors;
+  for (Owned& owned : compressors)
+    if (owned.level == level) return *owned.compressor;
+  libdeflate_compressor* made = libdeflate_alloc_compressor(level);
+  if (!made) throw std::runtime_error(fmt::format("libdeflate: no compressor of level {}", level));
+  compressors.push_back({level, {made, &libdeflate_free_compressor}});
+  return *made;
+}
 
 std::size_t deflateBlock(std::span<const std::byte> in, std::span<std::byte> out,
                          ZLibSettings settings) {
-  thread_local std::vector<std::unique_ptr<Deflater>> deflaters;
-  auto found = std::find_if(deflaters.begin(), deflaters.end(),
-                            [&](const auto& d) { return d->serves(settings); });
-  if (found == deflaters.end())
-    found = deflaters.insert(deflaters.end(), std::make_unique<Deflater>(settings));
-  return (*found)->compress(in, out);
+  const std::size_t size = libdeflate_zlib_compress(&deflaterFor(settings.level), in.data(),
+                                                    in.size(), out.data(), out.size());
+  // The slot holds libdeflate_zlib_compress_bound() bytes, so 0 (did not fit) cannot happen.
+  if (size == 0) throw std::runtime_error("libdeflate: a block did not fit its bound");
+  return size;
 }
 
 std::size_t compressBlock(Compression compression, std::span<const std::byte> in,
@@ -140,10 +121,6 @@ std::optional<Compression> compressionOfVtkCompressor(std::string_view className
   return std::nullopt;
 }
 
-ZLibSettings zlibSettingsFor(std::string_view vtkType) {
-  return {1, vtkType == "Float32" || vtkType == "Float64"};
-}
-
 std::uint64_t maxInflationRatio(Compression compression) {
   switch (compression) {
     case Compression::ZLib:
@@ -190,7 +167,8 @@ std::uint64_t BlockHeader::compressedBytes() const {
 }
 
 std::size_t maxCompressedBytes(Compression compression, std::size_t uncompressedBytes) {
-  if (compression == Compression::ZLib) return compressBound(uncompressedBytes);
+  if (compression == Compression::ZLib)
+    return libdeflate_zlib_compress_bound(&deflaterFor(ZLibSettings{}.level), uncompressedBytes);
   if (compression == Compression::LZ4) {
     return static_cast<std::size_t>(LZ4_compressBound(static_cast<int>(uncompressedBytes)));
   }

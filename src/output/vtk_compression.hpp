@@ -40,18 +40,12 @@ std::optional<Compression> compressionOfVtkCompressor(std::string_view className
 
 inline constexpr std::uint64_t kBlockBytes = 32768;
 
-// How zlib compresses a block (LZ4 has no settings).
+// How a block is deflated into the zlib format (LZ4 has no settings). Level 1 of libdeflate: on
+// trace data (bench/compression, docs/formats.md) higher levels are slower for files at most a
+// few per cent smaller.
 struct ZLibSettings {
   int level = 1;
-  bool runLengthOnly = false;  // deflate's Z_RLE strategy: matches at distance 1 only
 };
-
-// What the writer uses for an array of VTK type `vtkType`: level 1, where VTK's default 5 is 1.1
-// (floats) to 3.8 times (integers) slower for files 0.3 % of the raw size smaller; and for Float32
-// and Float64, run-length matches only, which compress float data as well and 2.6 times faster
-// (their bytes seldom repeat at a distance, so searching for such matches is wasted). Measured with
-// bench/compression (docs/formats.md).
-ZLibSettings zlibSettingsFor(std::string_view vtkType);
 
 // The most output one compressed byte can inflate to: deflate's limit is 1032:1 (zlib's technical
 // notes), LZ4's is below 255:1 (each extra byte of a match length adds at most 255). Reading uses

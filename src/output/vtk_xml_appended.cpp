@@ -72,12 +72,12 @@ void writeCompressedBlock(AtomicFile& file, BufferedWriter& out, const AppendedA
   std::vector<std::uint64_t> sizes;
   if (array.fillValues) {
     forEachFilledBatch(array, [&](std::span<const std::byte> batch) {
-      const CompressedBlocks blocks = compressBlocks(compression, batch, zlibSettingsFor(array.type));
+      const CompressedBlocks blocks = compressBlocks(compression, batch);
       out.write(blocks.bytes);
       sizes.insert(sizes.end(), blocks.sizes.begin(), blocks.sizes.end());
     });
   } else {
-    BlockCompressingSink compressor(compression, out, zlibSettingsFor(array.type));
+    BlockCompressingSink compressor(compression, out);
     BufferedWriter values(compressor);
     array.writeValues(values);
     values.flush();
