@@ -2,6 +2,7 @@
 // What one tracing round hands over: for each line it advanced (in the order the round took
 // them) its LineRound, and the points it emitted, line after line in that order.
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -10,6 +11,12 @@
 #include "../../shaders/glsl/shared/line_state.h"
 
 namespace amrstream::flow {
+
+// A line's points in a round: they follow the points of the lines before it in the round.
+struct LinePoints {
+  std::uint32_t line;
+  std::uint32_t points;
+};
 
 struct RoundBlock {
   std::vector<shared::LineRound> lines;

@@ -37,24 +37,29 @@ void release(Column<T>& column) {
 
 }  // namespace
 
-StoredTraces::StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds)
+StoredTraces::StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds,
+                           std::vector<std::vector<LinePoints>> runs)
     : lines_(std::move(lines)), rounds_(std::move(rounds)) {
+  if (runs.size() != rounds_.size())
+    throw std::invalid_argument("StoredTraces: one list of runs per round");
   const std::size_t lineCount = lines_.lineCount();
   std::vector<std::uint64_t> counts(lineCount + 1, 0);
-  for (const RoundBlock& round : rounds_)
-    for (const shared::LineRound& r : round.lines) {
+  for (const std::vector<LinePoints>& round : runs)
+    for (const LinePoints& r : round) {
       if (r.line >= lineCount) throw std::invalid_argument("StoredTraces: no such line");
       ++counts[r.line + 1];
     }
   for (std::size_t i = 0; i < lineCount; ++i) counts[i + 1] += counts[i];
   runOffsets_ = counts;
   runs_.resize(counts.back());
+  // Each round's list is released once placed: the peak holds the lists and the runs once.
   for (std::uint32_t round = 0; round < rounds_.size(); ++round) {
-    std::uint64_t first = 0;
-    for (const shared::LineRound& r : rounds_[round].lines) {
+    std::uint32_t first = 0;
+    for (const LinePoints& r : runs[round]) {
       runs_[counts[r.line]++] = {round, r.points, first};
       first += r.points;
     }
+    std::vector<LinePoints>().swap(runs[round]);
   }
 }
 

@@ -14,8 +14,10 @@ namespace amrstream::flow {
 class StoredTraces final : public TraceView {
  public:
   // `lines` holds every line's seed id, direction, steps, reason and offsets (its point columns
-  // are ignored); the rounds' LineRounds name the lines their points belong to.
-  StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds);
+  // are ignored); runs[r] names, in order, the lines that round r's points belong to (the rounds'
+  // own LineRounds are not read, and may have been dropped).
+  StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds,
+               std::vector<std::vector<LinePoints>> runs);
 
   const TraceSet& lines() const override { return lines_; }
   // The points gathered line after line, one column at a time, each round's copy of a column
@@ -28,7 +30,7 @@ class StoredTraces final : public TraceView {
   struct Run {
     std::uint32_t round;
     std::uint32_t count;  // points
-    std::uint64_t first;  // the run's first point in its round
+    std::uint32_t first;  // the run's first point in its round (a round holds < 2^32 points)
   };
 
   TraceSet lines_;

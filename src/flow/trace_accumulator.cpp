@@ -44,8 +44,11 @@ void TraceAccumulator::add(RoundBlock&& round) {
                                            "seeds or steps, or use --endpoints-only",
                                            double(maxBytes_) / 0x1p30, finished_, lineCount()));
 
+  std::vector<LinePoints> runs;
+  runs.reserve(round.lines.size());
   for (const shared::LineRound& r : round.lines) {
     if (r.line >= lineCount()) throw std::invalid_argument("TraceAccumulator: no such line");
+    runs.push_back({r.line, r.points});
     pointsPerLine_[r.line] += r.points;
     result_.steps[r.line] = r.steps;
     if (r.reason != AMRSTREAM_REASON_RUNNING) {
@@ -54,7 +57,9 @@ void TraceAccumulator::add(RoundBlock&& round) {
     }
   }
   points_ += points;
+  std::vector<shared::LineRound>().swap(round.lines);  // 16 bytes a line a round: keep 8
   rounds_.push_back(std::move(round));
+  runs_.push_back(std::move(runs));
 }
 
 TraceSet TraceAccumulator::snapshot() const {
@@ -70,10 +75,11 @@ StoredTraces TraceAccumulator::store() {
   for (std::size_t line = 0; line < pointsPerLine_.size(); ++line)
     lines.offsets[line + 1] = lines.offsets[line] + pointsPerLine_[line];
   std::vector<RoundBlock> blocks = std::move(rounds_);
+  std::vector<std::vector<LinePoints>> runs = std::move(runs_);
   const std::uint64_t limit = maxBytes_;
   *this = TraceAccumulator(LineLayout{}, lines);
   maxBytes_ = limit;
-  return {std::move(lines), std::move(blocks)};
+  return {std::move(lines), std::move(blocks), std::move(runs)};
 }
 
 TraceSet TraceAccumulator::assemble() { return store().assemble(); }
