@@ -25,7 +25,12 @@ void runDevices() {
                    fmt::join(d.missingFor(need), ", "));
     }
     std::string why;
-    fmt::print("   auto      -> {}\n", gpu::backendName(gpu::chooseBackend(&d, why)));
+    const gpu::Backend best = gpu::chooseBackend(&d, why);
+    // Tracing on a software device is slower than the CPU reference (tracer_choice.hpp).
+    const bool software = d.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    fmt::print("   auto      -> {} for render and view, {} for trace{}\n", gpu::backendName(best),
+               software ? "cpu" : gpu::backendName(best),
+               software ? " (a software device: the CPU reference is faster)" : "");
   }
 }
 

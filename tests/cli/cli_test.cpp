@@ -287,3 +287,62 @@ TEST_F(Cli, ViewWithoutADisplaySaysWhatToDo) {
 }
 
 }  // namespace
+
+namespace {
+
+// The seed grid sets the number of seeds; a --count beside it would be ignored, so it is refused.
+TEST_F(Cli, SeedGridRefusesCount) {
+  const Outcome r = run("trace builtin:rotation" + kSmall + " --seed-grid 2,2,2 --count 10 --out " +
+                        path("t.vtp"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("--seed-grid excludes --count"));
+  EXPECT_FALSE(fs::exists(path("t.vtp")));
+}
+
+// A rake between the domain's corners: its last seed lies on the open upper faces and is moved
+// just inside.
+TEST_F(Cli, SeedLineMayEndAtTheDomainsUpperCorner) {
+  const Outcome r = run("trace builtin:rotation" + kSmall +
+                        " --backend cpu --seed-line 0,0,0,1,1,1 --count 5 --steps 10 --out " +
+                        path("t.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("seeds      5 from a rake"));
+}
+
+// `auto` traces with the fastest: the CPU reference where the only Vulkan devices are software
+// ones (lavapipe), a GPU backend otherwise; `devices` says the same.
+TEST_F(Cli, AutoTracesOnTheCpuWhenTheOnlyDeviceIsASoftwareOne) {
+  const Outcome devices = run("devices");
+  ASSERT_EQ(devices.status, 0) << devices.output;
+  const bool gpu = devices.output.find("discrete GPU") != std::string::npos ||
+                   devices.output.find("integrated GPU") != std::string::npos;
+  const Outcome r = run("trace builtin:rotation" + kSmall + " --count 8 --steps 10 --out " +
+                        path("t.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  if (gpu) {
+    EXPECT_THAT(r.output, Not(HasSubstr("backend    auto: cpu")));
+  } else {
+    EXPECT_THAT(r.output, HasSubstr("backend    auto: cpu ("));
+    EXPECT_THAT(devices.output, HasSubstr("cpu for trace"));
+  }
+}
+
+TEST_F(Cli, EnzoIsPeriodicAsItsParameterFileSays) {
+  const fs::path real(AMRSTREAM_REAL_DATA_DIR);
+  if (!fs::exists(real)) GTEST_SKIP() << "real datasets not found at " << real;
+  const std::string enzo = (real / "enzo-moving7/DD0010/moving7_0010").string();
+  Outcome r = run("trace " + enzo + " --backend cpu --steps 2000 --count 64 --out " +
+                  path("enzo.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("periodic images (x,y,z)"));
+  EXPECT_THAT(r.output, Not(HasSubstr("out of domain")));  // nothing leaves a periodic box
+  r = run("trace " + enzo + " --periodic none --backend cpu --steps 2000 --count 64 --out " +
+          path("enzo.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("out of domain"));
+  r = run("trace " + enzo + " --periodic xq --out " + path("enzo.vtp"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--periodic"));
+}
+
+}  // namespace

@@ -6,7 +6,7 @@ Run with Debian's /usr/bin/python3 (python3-vtk9):
   check_vtp_with_vtk.py FILE --points N --lines M \
       [--point-array NAME:COMPONENTS]... [--cell-array NAME:COMPONENTS]... \
       [--line-lengths 3,2,5,2] [--repeated-lines 1,...] [--scalars NAME] [--vectors NAME] \
-      [--speed-of NAME] [--seed-ids] [--both-directions SEEDS]
+      [--speed-of NAME] [--seed-ids] [--both-directions SEEDS] [--field-text NAME=VALUE]...
 
 Fails (exit 1, one line per problem) when vtkXMLPolyDataReader reports an error or warning,
 when the counts differ, when an array is missing or has other components, when a line has fewer
@@ -16,7 +16,8 @@ every point array equal); with --speed-of, when the point array "Speed" is not t
 that vector array, with --seed-ids, when the cell array SeedIds is not 0 .. lines-1, and with
 --both-directions SEEDS, when the lines are not vtkStreamTracer's BOTH layout: SeedIds 0 .. SEEDS-1
 for the forward lines (IntegrationTime >= 0), then again for the backward ones (<= 0), each line
-starting at IntegrationTime 0.
+starting at IntegrationTime 0; with --field-text, when the FieldData string array NAME does not
+hold VALUE.
 
 Lines of 0 or 1 point are reported without asking VTK for their points: vtkPolyData refuses to
 build its cell map for them ("Invalid cell size for lines") and VTK 9.1 then crashes in
@@ -57,6 +58,8 @@ def parse_arguments():
     parser.add_argument("--speed-of", help="vector array whose magnitude Speed must be")
     parser.add_argument("--seed-ids", action="store_true",
                         help="cell array SeedIds must be 0, 1, ... lines-1")
+    parser.add_argument("--field-text", action="append", default=[], metavar="NAME=VALUE",
+                        help="a FieldData string array and its value")
     parser.add_argument("--both-directions", type=int, metavar="SEEDS",
                         help="lines are SEEDS forward lines, then SEEDS backward ones")
     return parser.parse_args()
@@ -221,6 +224,12 @@ def check(args):
             problems.append(f"SeedIds {values[:20]}, expected 0 .. {args.lines - 1}")
     if args.both_directions is not None:
         problems += check_both_directions(output, args.both_directions)
+    for spec in args.field_text:
+        name, _, value = spec.partition("=")
+        field = output.GetFieldData().GetAbstractArray(name)
+        found = field.GetValue(0) if field is not None and field.IsA("vtkStringArray") else None
+        if found != value:
+            problems.append(f"FieldData {name!r} is {found!r}, expected {value!r}")
     # Last, so that errors VTK reports while building its cell map are included.
     return problems + [f"VTK reported: {m}" for m in messages.all()]
 
