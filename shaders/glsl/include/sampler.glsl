@@ -23,6 +23,7 @@ struct VectorSample {
 
 // p moved by whole periods into the domain along the periodic axes; twin of wrapPeriodic().
 vec3 wrapPeriodic(vec3 p) {
+  if (params.periodicAxes == 0u) return p;
   precise vec3 q = p;
   for (int a = 0; a < 3; ++a) {
     if ((params.periodicAxes & (1u << a)) == 0u) continue;
