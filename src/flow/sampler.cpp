@@ -131,6 +131,7 @@ std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const fl
 void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p,
                     std::span<float> out) {
   const std::size_t channels = out.size();
+  if (channels == 0) return;
   std::fill(out.begin(), out.end(), 0.0f);
   float weightSum = 0.0f;
   if (region >= 0)
@@ -138,7 +139,7 @@ void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p
                           [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float) {
                             const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
                             weightSum += weight;
-                            const float* values = &volume.channelValues[slot * channels];
+                            const float* values = volume.channelValues.data() + slot * channels;
                             for (std::size_t c = 0; c < channels; ++c) out[c] += weight * values[c];
                           });
   for (float& value : out) value = weightSum > kMinWeightSum ? value / weightSum : kNaN;
