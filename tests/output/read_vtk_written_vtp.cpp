@@ -24,12 +24,13 @@ std::string difference(const TraceSet& read, const TraceSet& expected) {
     return std::to_string(read.lineCount()) + " traces, expected " +
            std::to_string(expected.lineCount());
   }
-  if (pointCountsOf(read) != pointCountsOf(expected)) return "point counts differ";
+  const std::vector<std::uint32_t> counts = pointCountsOf(read);
+  if (counts != pointCountsOf(expected)) return "point counts differ";
   if (read.reasons != expected.reasons) return "reasons differ";
   if (read.vectorName != expected.vectorName) return "vector name '" + read.vectorName + "'";
   for (std::uint32_t seed = 0; seed < read.lineCount(); ++seed) {
-    if (read.steps[seed] != pointCountsOf(read)[seed] - 1) return "steps differ";
-    for (std::uint32_t p = 0; p < pointCountsOf(read)[seed]; ++p) {
+    if (read.steps[seed] != counts[seed] - 1) return "steps differ";
+    for (std::uint32_t p = 0; p < counts[seed]; ++p) {
       const std::size_t r = at(read, seed, p), e = at(expected, seed, p);  // NOLINT
       const std::string where = " at trace " + std::to_string(seed) + " point " + std::to_string(p);
       if (read.positions[r] != expected.positions[e]) return "position" + where;

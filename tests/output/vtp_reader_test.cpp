@@ -39,14 +39,17 @@ void expectSameTraces(const flow::TraceSet& read, const flow::TraceSet& written)
   ASSERT_EQ(read.times.size(), read.positions.size());
   ASSERT_EQ(read.vectors.size(), read.positions.size());
   ASSERT_EQ(read.steps.size(), read.lineCount());
+  const std::vector<std::uint32_t> readCounts = pointCountsOf(read);
+  const std::vector<std::uint32_t> writtenCounts = pointCountsOf(written);
   for (std::uint32_t seed = 0; seed < read.lineCount(); ++seed) {
-    EXPECT_EQ(read.steps[seed], pointCountsOf(read)[seed] - 1) << "seed " << seed;
-    for (std::uint32_t p = 0; p < std::min(pointCountsOf(read)[seed], pointCountsOf(written)[seed]);
-         ++p) {
-      SCOPED_TRACE(::testing::Message() << "seed " << seed << " point " << p);
-      ASSERT_EQ(read.positions[at(read, seed, p)], written.positions[at(written, seed, p)]);
-      ASSERT_EQ(read.times[at(read, seed, p)], written.times[at(written, seed, p)]);
-      ASSERT_EQ(read.vectors[at(read, seed, p)], written.vectors[at(written, seed, p)]);
+    EXPECT_EQ(read.steps[seed], readCounts[seed] - 1) << "seed " << seed;
+    for (std::uint32_t p = 0; p < std::min(readCounts[seed], writtenCounts[seed]); ++p) {
+      ASSERT_EQ(read.positions[at(read, seed, p)], written.positions[at(written, seed, p)])
+          << "seed " << seed << " point " << p;
+      ASSERT_EQ(read.times[at(read, seed, p)], written.times[at(written, seed, p)])
+          << "seed " << seed << " point " << p;
+      ASSERT_EQ(read.vectors[at(read, seed, p)], written.vectors[at(written, seed, p)])
+          << "seed " << seed << " point " << p;
     }
   }
 }

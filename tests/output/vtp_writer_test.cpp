@@ -35,8 +35,9 @@ class VtpWriter : public ::testing::TestWithParam<output::Compression> {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("amrstream-vtp-" + std::to_string(::getpid()) + "-" + info->name());
+    std::string name = info->name();  // "Test/zlib": one directory, not a parent and a child
+    std::replace(name.begin(), name.end(), '/', '-');
+    dir_ = fs::temp_directory_path() / ("amrstream-vtp-" + std::to_string(::getpid()) + "-" + name);
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
