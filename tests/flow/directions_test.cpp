@@ -82,7 +82,9 @@ TEST(Directions, BothIsForwardLinesThenBackwardLinesAsVtkStreamTracer) {
     for (std::uint64_t k = 0; k < part.pointCount(i); ++k) {
       ASSERT_EQ(both.positions[first + k], part.positions[part.firstPoint(i) + k]);
       ASSERT_EQ(both.times[first + k], part.times[part.firstPoint(i) + k]);
-      if (k > 0) EXPECT_TRUE(line < n ? both.times[first + k] > 0.0f : both.times[first + k] < 0.0f);
+      if (k > 0) {
+        EXPECT_TRUE(line < n ? both.times[first + k] > 0.0f : both.times[first + k] < 0.0f);
+      }
     }
   }
 }

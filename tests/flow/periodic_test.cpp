@@ -12,6 +12,7 @@
 #include "flow_test_support.hpp"
 #include "synth/abc_field.hpp"
 #include "synth/generators.hpp"
+#include "volume_options.hpp"
 
 namespace amrstream::flow {
 namespace {
@@ -46,7 +47,7 @@ TEST(Periodic, TheSamplerMatchesThePeriodicBruteForceNearEveryFace) {
     const bricks::AmrField field = testing::randomAmr(seed, layout);
     const PeriodicAxes periodic{true, seed % 2 == 0, true};
     const VectorVolume volume =
-        buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, VolumeOptions{.periodic = periodic});
+        buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, testing::periodicVolume(periodic));
     EXPECT_GT(volume.bricks.size(), volume.originalBrickCount) << "no periodic images";
     const glm::vec3 lo(field.bounds().lower), hi(field.bounds().upper);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -72,7 +73,7 @@ TEST(Periodic, WrapMovesPointsByWholePeriodsOntoTheHalfOpenDomain) {
   layout.rootCells = glm::ivec3(8, 4, 4);
   const VectorVolume volume =
       buildVectorVolume(testing::randomAmr(1, layout), {{"vx", "vy", "vz"}, "v"},
-                        VolumeOptions{.periodic = {true, false, false}});
+                        testing::periodicVolume(flow::PeriodicAxes{true, false, false}));
   EXPECT_EQ(wrapPeriodic(volume, {8.25f, 1.0f, 1.0f}), glm::vec3(0.25f, 1.0f, 1.0f));
   EXPECT_EQ(wrapPeriodic(volume, {-0.5f, 1.0f, 1.0f}), glm::vec3(7.5f, 1.0f, 1.0f));
   EXPECT_EQ(wrapPeriodic(volume, {8.0f, 5.0f, -1.0f}), glm::vec3(0.0f, 5.0f, -1.0f));
@@ -92,7 +93,7 @@ TEST(Periodic, AbcTracesCrossEveryFaceAndFollowTheAnalyticStreamline) {
   const bricks::AmrField field =
       synth::generate("abc", {.levels = 3, .rootBlocks = 4, .targetCells = 400000});
   const VectorVolume volume = buildVectorVolume(field, chooseVectorChannels(field, ""),
-                                                VolumeOptions{.periodic = {true, true, true}});
+                                                testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
   constexpr std::uint64_t kCompared = 200;
   TraceOptions options;
   options.stepMode = StepMode::Time;

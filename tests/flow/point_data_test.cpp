@@ -9,6 +9,7 @@
 #include "flow/integrator.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
+#include "volume_options.hpp"
 
 namespace amrstream::flow {
 namespace {
@@ -39,7 +40,7 @@ TEST(PointData, ChannelsUseTheVectorsWeights) {
     return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05);
   }));
   const VectorVolume volume = buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
-                                                VolumeOptions{.pointData = {"ones", "vx"}});
+                                                testing::withPointData({"ones", "vx"}));
   TraceOptions options;
   options.maxSteps = 200;
   std::vector<glm::dvec3> seeds;
@@ -61,7 +62,7 @@ TEST(PointData, ALinearChannelIsExactInsideOneLevel) {
   const bricks::AmrField field = withScalars(
       testing::randomAmr(0, layout, [](auto) { return glm::vec3(0.3f, 0.2f, 0.1f); }));
   const VectorVolume volume = buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
-                                                VolumeOptions{.pointData = {"lin"}});
+                                                testing::withPointData({"lin"}));
   TraceOptions options;
   options.maxSteps = 40;
   const std::vector<glm::dvec3> seeds{{4.0, 5.0, 6.0}, {8.2, 7.1, 5.5}};

@@ -11,6 +11,7 @@
 #include "flow/seeds.hpp"
 #include "flow_test_support.hpp"
 #include "synth/generators.hpp"
+#include "volume_options.hpp"
 
 namespace amrstream::flow {
 namespace {
@@ -34,7 +35,7 @@ class RoundsTest : public ::testing::Test {
   RoundsTest()
       : field_(synth::generate("cloud", {.levels = 3, .rootBlocks = 2, .targetCells = 30000})),
         volume_(buildVectorVolume(field_, chooseVectorChannels(field_, ""),
-                                  VolumeOptions{.pointData = {"dens"}})),
+                                  testing::withPointData({"dens"}))),
         seeds_(randomSeedsInBox(domainLower(volume_), 0.999 * domainUpper(volume_), 40, 3)) {}
 
   bricks::AmrField field_;

@@ -18,6 +18,7 @@
 #include "gpu_test.hpp"
 #include "random_amr.hpp"
 #include "synth/generators.hpp"
+#include "volume_options.hpp"
 
 namespace amrstream::gpu {
 namespace {
@@ -239,7 +240,7 @@ TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
                                {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
   const flow::VectorVolume volume = flow::buildVectorVolume(
       field, {{"vx", "vy", "vz"}, "v"},
-      flow::VolumeOptions{.pointData = {"s0", "vy", "s1", "vx", "s2"}});
+      testing::withPointData({"s0", "vy", "s1", "vx", "s2"}));
   flow::TraceOptions options;
   options.maxSteps = 150;
   options.vorticity = true;
@@ -258,7 +259,7 @@ TEST_P(GpuTracerTest, PeriodicFlowMatchesCpuAcrossEveryFace) {
     return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0), 0.4 * std::cos(2.0 * pi * p.y / 12.0) + 0.3);
   });
   const flow::VectorVolume volume = flow::buildVectorVolume(
-      field, {{"vx", "vy", "vz"}, "v"}, flow::VolumeOptions{.periodic = {true, true, true}});
+      field, {{"vx", "vy", "vz"}, "v"}, testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
   flow::TraceOptions options;
   options.maxSteps = 400;
   const flow::SeedList seeds = seedsIn(volume, 32);

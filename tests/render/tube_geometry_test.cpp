@@ -10,6 +10,7 @@
 #include "flow/integrator.hpp"
 #include "flow/seeds.hpp"
 #include "synth/generators.hpp"
+#include "volume_options.hpp"
 
 namespace amrstream::render {
 namespace {
@@ -19,7 +20,7 @@ TEST(TubeGeometry, TheColourRangeIsTheRangeOverRealPoints) {
   // slots (and a zero among the colours).
   const bricks::AmrField field = synth::generate("cloud", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = flow::buildVectorVolume(
-      field, flow::chooseVectorChannels(field, ""), flow::VolumeOptions{.pointData = {"dens"}});
+      field, flow::chooseVectorChannels(field, ""), testing::withPointData({"dens"}));
   const flow::SeedList seeds = flow::randomSeedsInBox(flow::domainLower(volume),
                                                       0.99 * flow::domainUpper(volume), 64, 2);
   flow::TraceOptions options;
