@@ -56,9 +56,10 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use) {
     const vk::DeviceReport* device = autoDevice(devices, request.device);
     if (use == BackendUse::Trace && request.device.empty() && device &&
         device->type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
-      fmt::print("backend    auto: cpu ({} is a software Vulkan device, slower than the CPU "
-                 "reference; name --backend rayquery, pipeline or compute to trace on it)\n",
-                 device->name);
+      fmt::print(
+          "backend    auto: cpu ({} is a software Vulkan device, slower than the CPU "
+          "reference; name --backend rayquery, pipeline or compute to trace on it)\n",
+          device->name);
       return choice;
     }
     choice.backend = gpu::chooseBackend(device, why);
@@ -73,7 +74,9 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use) {
 vk::Context createContext(const BackendRequest& request, const BackendChoice& choice,
                           vk::CapabilitySet extra) {
   vk::ContextBuilder builder;
-  builder.require(gpu::requiredCapabilities(choice.backend)).require(extra).validation(request.validation);
+  builder.require(gpu::requiredCapabilities(choice.backend))
+      .require(extra)
+      .validation(request.validation);
   if (!choice.deviceFilter.empty()) builder.deviceName(choice.deviceFilter);
   return builder.build();
 }
@@ -112,20 +115,24 @@ flow::StoredTraces traceWithBackend(const BackendRequest& request, flow::VectorV
   t.setupSeconds = clock.seconds();
   t.backend = gpu::backendName(backend);
   t.device = ctx.deviceName();
-  fmt::print("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
-             "{:.2f} s, kernels {:.2f} s]\n",
-             gpu::backendName(backend), ctx.deviceName(), t.setupSeconds,
-             tracer.setup().uploadSeconds, tracer.setup().structureSeconds,
-             tracer.setup().pipelineSeconds);
+  fmt::print(
+      "tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
+      "{:.2f} s, kernels {:.2f} s]\n",
+      gpu::backendName(backend), ctx.deviceName(), t.setupSeconds, tracer.setup().uploadSeconds,
+      tracer.setup().structureSeconds, tracer.setup().pipelineSeconds);
   clock.restart();
   flow::StoredTraces traces = tracer.traceToRounds(seeds, options, progress);
   t.traceSeconds = clock.seconds();
   checkValidation(ctx);
   const gpu::TraceRunStats& run = tracer.lastRun();
-  fmt::print("rounds     {} in {} batch{}: buffers {:.3f} s, waiting for rounds {:.3f} s and "
-             "copies {:.3f} s, unpacking {:.3f} s\n",
-             run.rounds, run.batches, run.batches == 1 ? "" : "es", run.buffersSeconds,
-             run.roundWaitSeconds, run.copyWaitSeconds, run.unpackSeconds);
+  fmt::print(
+      "rounds     {} in {} batch{}: plan {:.3f} s, buffers {:.3f} s, lines {:.3f} s, submitting "
+      "{:.3f} s, "
+      "waiting for rounds {:.3f} s and copies {:.3f} s, unpacking {:.3f} s, collecting "
+      "{:.3f} s, storing {:.3f} s\n",
+      run.rounds, run.batches, run.batches == 1 ? "" : "es", run.planSeconds, run.buffersSeconds,
+      run.linesSeconds, run.submitSeconds, run.roundWaitSeconds, run.copyWaitSeconds,
+      run.unpackSeconds, run.collectSeconds, run.storeSeconds);
   return traces;
 }
 

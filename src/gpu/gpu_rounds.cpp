@@ -6,8 +6,8 @@
 #include <cstring>
 
 #include "../../shaders/glsl/shared/round_params.h"
-#include "vk/commands.hpp"
 #include "util/stopwatch.hpp"
+#include "vk/commands.hpp"
 #include "vk/context.hpp"
 
 namespace amrstream::gpu {
@@ -65,7 +65,7 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
                      RoundBuffers& buffers, bool timeKernels)
     : ctx_(&ctx), trace_(&trace), kernels_(&kernels), device_(&device), volume_(&volume),
       options_(options), params_(flow::makeTraceParams(volume, options)), buffers_(buffers),
-      pool_(ctx, 5, kPerSet), live_(lines.size()) {
+      pool_(ctx, 5, kPerSet), live_(lines.size()), round_(ctx), copy_(ctx) {
   if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity))
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
   buffers.setStates(ctx, lines);
@@ -112,7 +112,7 @@ std::uint64_t GpuRounds::deviceBytes() const {
   return bytes;
 }
 
-vk::Submission GpuRounds::submitRound(std::uint32_t steps) {
+void GpuRounds::submitRound(std::uint32_t steps) {
   const std::size_t lines = live_;
   params_.lineCount = static_cast<std::uint32_t>(lines);
   params_.roundSteps = std::max(steps, 1u);
@@ -134,7 +134,7 @@ vk::Submission GpuRounds::submitRound(std::uint32_t steps) {
   const shared::PointDataParams pointData{params_.cellsPerPhysical,
                                           static_cast<std::uint32_t>(volume_->channelCount()),
                                           options_.vorticity ? 1u : 0u};
-  return vk::Submission::submit(*ctx_, [&](VkCommandBuffer cmd) {
+  round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.
     vk::memoryBarrier(cmd, compute, {traceAccess.stages | compute.stages, traceAccess.access});
@@ -190,9 +190,9 @@ vk::Submission GpuRounds::submitRound(std::uint32_t steps) {
   });
 }
 
-shared::RoundSummary GpuRounds::finishRound(vk::Submission& round) {
+shared::RoundSummary GpuRounds::finishRound() {
   Stopwatch clock;
-  round.wait();
+  round_.wait();
   times_.roundWaitSeconds += clock.seconds();
   buffers_.summaryOut.invalidateMapped();
   shared::RoundSummary summary;
@@ -211,11 +211,11 @@ shared::RoundSummary GpuRounds::finishRound(vk::Submission& round) {
   return summary;
 }
 
-vk::Submission GpuRounds::submitCopy(const shared::RoundSummary& summary) {
+void GpuRounds::submitCopy(const shared::RoundSummary& summary) {
   const int parity = parity_ ^ 1;  // the round submitted last
   const RoundBuffers& b = buffers_;
   const VkDeviceSize points = summary.points, channels = volume_->channelCount();
-  return vk::Submission::submit(*ctx_, [&](VkCommandBuffer cmd) {
+  copy_.submit([&](VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
                       vk::access::kTransferRead);
     copyRange(cmd, b.lineRounds[parity], b.lineRoundsOut, roundLines_ * sizeof(shared::LineRound));
@@ -228,7 +228,11 @@ vk::Submission GpuRounds::submitCopy(const shared::RoundSummary& summary) {
   });
 }
 
-flow::RoundBlock GpuRounds::unpack(const shared::RoundSummary& summary, std::size_t lines) const {
+flow::RoundBlock GpuRounds::finishCopy(const shared::RoundSummary& summary, std::size_t lines) {
+  Stopwatch clock;
+  copy_.wait();
+  times_.copyWaitSeconds += clock.seconds();
+  clock.restart();
   const RoundBuffers& b = buffers_;
   const std::size_t points = summary.points, channels = volume_->channelCount();
   flow::RoundBlock block;
@@ -236,8 +240,7 @@ flow::RoundBlock GpuRounds::unpack(const shared::RoundSummary& summary, std::siz
   block.times = copyOut<flow::Column<float>>(b.timesOut, points);
   block.vectors = copyOut<flow::Column<glm::vec3>>(b.vectorsOut, points);
   block.channels = copyOut<flow::Column<float>>(b.channelsOut, points * channels);
-  if (options_.vorticity)
-    block.vorticity = copyOut<flow::Column<glm::vec3>>(b.vorticityOut, points);
+  if (options_.vorticity) block.vorticity = copyOut<flow::Column<glm::vec3>>(b.vorticityOut, points);
   // Kernels work in cell units; convert in double precision like the CPU path.
   b.positionsOut.invalidateMapped();
   const glm::vec3* cells = reinterpret_cast<const glm::vec3*>(b.positionsOut.mapped().data());
@@ -246,36 +249,39 @@ flow::RoundBlock GpuRounds::unpack(const shared::RoundSummary& summary, std::siz
   tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
     block.positions[i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
   });
+  times_.unpackSeconds += clock.seconds();
   return block;
 }
 
 flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {
-  vk::Submission round = submitRound(steps);
-  const shared::RoundSummary summary = finishRound(round);
-  vk::Submission copy = submitCopy(summary);
-  copy.wait();
-  const std::size_t lines = roundLines_;
+  submitRound(steps);
+  const shared::RoundSummary summary = finishRound();
+  submitCopy(summary);
   live_ = summary.liveLines;
-  return unpack(summary, lines);
+  return finishCopy(summary, roundLines_);
 }
 
+// The device traces round k+1 while the host waits for round k's copy and unpacks it. (Two host
+// copies, so that round k's copy could overlap unpacking round k-1, measured slower on the H200:
+// twice the pinned memory to make, and the copy competing with the unpacking for memory.)
 void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
                          const std::function<void(flow::RoundBlock&&)>& consume) {
   if (live_ == 0) return;
-  vk::Submission round = submitRound(stepsFor(live_));
+  Stopwatch clock;
+  submitRound(stepsFor(live_));
+  times_.submitSeconds += clock.seconds();
   while (true) {
-    const shared::RoundSummary summary = finishRound(round);
+    const shared::RoundSummary summary = finishRound();
     const std::size_t lines = roundLines_;
-    vk::Submission copy = submitCopy(summary);
-    live_ = summary.liveLines;
-    if (live_ > 0) round = submitRound(stepsFor(live_));
-    Stopwatch clock;
-    copy.wait();
-    times_.copyWaitSeconds += clock.seconds();
     clock.restart();
-    flow::RoundBlock block = unpack(summary, lines);
-    times_.unpackSeconds += clock.seconds();
+    submitCopy(summary);
+    live_ = summary.liveLines;
+    if (live_ > 0) submitRound(stepsFor(live_));
+    times_.submitSeconds += clock.seconds();
+    flow::RoundBlock block = finishCopy(summary, lines);
+    clock.restart();
     consume(std::move(block));
+    times_.consumeSeconds += clock.seconds();
     if (live_ == 0) break;
   }
 }

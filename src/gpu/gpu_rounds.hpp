@@ -21,10 +21,10 @@
 #include "round_buffers.hpp"
 #include "round_kernels.hpp"
 #include "trace_kernel.hpp"
-#include "volume_buffers.hpp"
 #include "vk/descriptor_pool.hpp"
 #include "vk/gpu_timer.hpp"
 #include "vk/submission.hpp"
+#include "volume_buffers.hpp"
 
 namespace amrstream::gpu {
 
@@ -33,8 +33,10 @@ struct RoundTimes {
   std::optional<double> traceSeconds;       // the tracing kernel
   std::optional<double> compactionSeconds;  // compaction and point data
   std::size_t rounds = 0;
-  // Host wall time: waiting for rounds, waiting for their copies, unpacking the copies.
-  double roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0;
+  // Host wall time: recording and submitting rounds and copies, waiting for rounds, waiting for
+  // their copies, unpacking the copies, and the consumer's share.
+  double submitSeconds = 0.0, roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0,
+         consumeSeconds = 0.0;
 };
 
 class GpuRounds final : public flow::RoundTracer {
@@ -64,10 +66,11 @@ class GpuRounds final : public flow::RoundTracer {
   std::uint64_t deviceBytes() const;
 
  private:
-  vk::Submission submitRound(std::uint32_t steps);
-  shared::RoundSummary finishRound(vk::Submission& round);
-  vk::Submission submitCopy(const shared::RoundSummary& summary);
-  flow::RoundBlock unpack(const shared::RoundSummary& summary, std::size_t lines) const;
+  void submitRound(std::uint32_t steps);
+  shared::RoundSummary finishRound();
+  void submitCopy(const shared::RoundSummary& summary);
+  // Waits for the copy and reads it into a block of `lines` lines.
+  flow::RoundBlock finishCopy(const shared::RoundSummary& summary, std::size_t lines);
 
   const vk::Context* ctx_;
   const TraceKernel* trace_;
@@ -85,6 +88,8 @@ class GpuRounds final : public flow::RoundTracer {
   std::size_t roundLines_ = 0;  // lines of the round submitted last
   int parity_ = 0;              // which line-round buffer the next round writes
   RoundTimes times_;
+  // Declared last, so that destruction waits for the device before the buffers go.
+  vk::Submission round_, copy_;
 };
 
 }  // namespace amrstream::gpu

@@ -20,8 +20,7 @@ namespace amrstream::gpu {
 namespace {
 
 // The lines in the order threads take them: Morton order of their positions, or as given.
-std::vector<shared::LineState> threadOrder(std::span<const shared::LineState> lines,
-                                           bool spatial) {
+std::vector<shared::LineState> threadOrder(std::span<const shared::LineState> lines, bool spatial) {
   std::vector<shared::LineState> ordered(lines.begin(), lines.end());
   if (!spatial) return ordered;
   std::vector<glm::vec3> positions(lines.size());
@@ -88,17 +87,17 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
 flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
                                             const flow::TraceOptions& options,
                                             const flow::TraceProgress& progress) {
+  lastRun_ = {};
+  Stopwatch planClock;
   flow::LinePlan plan = flow::planLines(*volume_, seeds, options.direction);
   const std::size_t lines = plan.states.size();
   flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
   accumulator.setMemoryLimit(options.maxResultBytes);
-  lastRun_ = {};
+  lastRun_.planSeconds = planClock.seconds();
   const std::size_t batch = linesPerBatch(options, lines);
   for (std::size_t first = 0; first < lines; first += batch) {
     const std::size_t count = std::min(batch, lines - first);
     Stopwatch clock;
-    const std::vector<shared::LineState> ordered =
-        threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
     const std::uint64_t slots = pointSlots(options, count);
     const std::size_t channels = volume_->channelCount();
     if (!roundBuffers_ || !roundBuffers_->fits(count, slots, channels, options.vorticity)) {
@@ -106,31 +105,39 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
       roundBuffers_ =
           std::make_unique<RoundBuffers>(*ctx_, count, slots, channels, options.vorticity);
     }
+    lastRun_.buffersSeconds += clock.seconds();
+    clock.restart();
+    const std::vector<shared::LineState> ordered =
+        threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
     GpuRounds rounds(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered, options,
                      *roundBuffers_, timeKernels_);
-    lastRun_.buffersSeconds += clock.seconds();
-    rounds.runToEnd(
-        [&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
-        [&](flow::RoundBlock&& block) {
-          accumulator.add(std::move(block));
-          if (progress) progress(accumulator.finishedLines(), lines);
-        });
+    lastRun_.linesSeconds += clock.seconds();
+    rounds.runToEnd([&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
+                    [&](flow::RoundBlock&& block) {
+                      accumulator.add(std::move(block));
+                      if (progress) progress(accumulator.finishedLines(), lines);
+                    });
     const RoundTimes& t = rounds.times();
     const auto add = [](std::optional<double>& total, const std::optional<double>& part,
                         bool firstBatch) {
-      total = part && (firstBatch || total) ? std::optional(total.value_or(0.0) + *part)
-                                            : std::nullopt;
+      total =
+          part && (firstBatch || total) ? std::optional(total.value_or(0.0) + *part) : std::nullopt;
     };
     add(lastRun_.kernelSeconds, t.traceSeconds, first == 0);
     add(lastRun_.compactionSeconds, t.compactionSeconds, first == 0);
     ++lastRun_.batches;
     lastRun_.rounds += t.rounds;
     lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
+    lastRun_.submitSeconds += t.submitSeconds;
     lastRun_.roundWaitSeconds += t.roundWaitSeconds;
     lastRun_.copyWaitSeconds += t.copyWaitSeconds;
     lastRun_.unpackSeconds += t.unpackSeconds;
+    lastRun_.collectSeconds += t.consumeSeconds;
   }
-  return accumulator.store();
+  Stopwatch storeClock;
+  flow::StoredTraces stored = accumulator.store();
+  lastRun_.storeSeconds = storeClock.seconds();
+  return stored;
 }
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,
@@ -166,10 +173,18 @@ std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoint
   };
   const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
       vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers.params.handle()},
-      storage(device_.bricks), storage(device_.values), storage(device_.regions),
-      storage(device_.regionBricks), storage(buffers.states), storage(buffers.roundStates),
-      storage(buffers.lineRounds[0]), storage(buffers.positions), storage(buffers.times),
-      storage(buffers.vectors), storage(buffers.regionIds), device_.locateTarget()};
+      storage(device_.bricks),
+      storage(device_.values),
+      storage(device_.regions),
+      storage(device_.regionBricks),
+      storage(buffers.states),
+      storage(buffers.roundStates),
+      storage(buffers.lineRounds[0]),
+      storage(buffers.positions),
+      storage(buffers.times),
+      storage(buffers.vectors),
+      storage(buffers.regionIds),
+      device_.locateTarget()};
   vk::writeDescriptors(*ctx_, set, targets);
   vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, probe_->bindPoint, probe_->pipeline.get());

@@ -37,10 +37,13 @@ struct TraceRunStats {
   std::size_t batches = 0;
   std::size_t rounds = 0;
   std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
-  // Host wall time of trace()'s parts: making the batches' buffers, waiting for the rounds and for
-  // their copies, unpacking the copies, and assembling the lines (0 for traceToRounds).
-  double buffersSeconds = 0.0, roundWaitSeconds = 0.0, copyWaitSeconds = 0.0,
-         unpackSeconds = 0.0, assembleSeconds = 0.0;
+  // Host wall time of trace()'s parts: planning the lines, making the batches' buffers, ordering
+  // and uploading their lines, submitting rounds and copies, waiting for the rounds and for their
+  // copies, unpacking the copies, collecting them, storing the result and assembling the lines
+  // (0 for traceToRounds).
+  double planSeconds = 0.0, buffersSeconds = 0.0, linesSeconds = 0.0, submitSeconds = 0.0,
+         roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0, collectSeconds = 0.0,
+         storeSeconds = 0.0, assembleSeconds = 0.0;
 };
 
 class GpuTracer {
@@ -91,7 +94,7 @@ class GpuTracer {
   VolumeBuffers device_;
   TraceKernel kernel_;
   RoundKernels roundKernels_;
-  std::optional<TraceKernel> probe_;  // created by the first locate()
+  std::optional<TraceKernel> probe_;            // created by the first locate()
   std::unique_ptr<RoundBuffers> roundBuffers_;  // kept for the next batch or trace that fits
   std::size_t batchLimit_ = 0;
   bool spatialOrder_ = true;

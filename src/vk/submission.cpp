@@ -18,10 +18,16 @@ Submission::Submission(const Context& ctx) : device_(ctx.device()), queue_(ctx.q
   VkFence fence = VK_NULL_HANDLE;
   AMRSTREAM_VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &fence));
   fence_ = UniqueHandle<VkFence>(device_, fence);
+}
 
+void Submission::begin() {
+  wait();
+  const VkFence fence = fence_.get();
+  AMRSTREAM_VK_CHECK(vkResetFences(device_, 1, &fence));
+  // The pool lets each buffer be reset on its own; beginning a one-time buffer resets it.
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  AMRSTREAM_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  AMRSTREAM_VK_CHECK(vkBeginCommandBuffer(commandBuffer_.get(), &begin));
 }
 
 void Submission::submitRecorded() {

@@ -1,15 +1,18 @@
 #pragma once
-// Submission: commands recorded into a fresh primary command buffer and submitted to the
-// context's queue with their own fence, without waiting: the host goes on while the device
-// works, and wait() blocks until it is done. Submissions on the queue run in submission order
-// only where barriers say so; a barrier's first scope includes every earlier submission.
+// Submission: a primary command buffer and its fence, recorded and submitted to the context's
+// queue without waiting: the host goes on while the device works, and wait() blocks until it is
+// done. Submissions on the queue run in submission order only where barriers say so; a barrier's
+// first scope includes every earlier submission.
 //
-//   vk::Submission copy = vk::Submission::submit(ctx, [&](VkCommandBuffer cmd) { ... });
+//   vk::Submission copy(ctx);
+//   copy.submit([&](VkCommandBuffer cmd) { ... });
 //   ... host work ...
 //   copy.wait();
+//   copy.submit(...);  // the next batch of work reuses the command buffer and fence
 //
-// The destructor waits for a pending submission (the command buffer must outlive the device's
-// use of it). The context must outlive the submission.
+// A repeated submit() waits for the previous one first. The destructor waits for a pending
+// submission (the command buffer must outlive the device's use of it). The context must outlive
+// the submission.
 
 #include <vulkan/vulkan.h>
 
@@ -23,24 +26,24 @@ class Context;
 
 class Submission {
  public:
-  template <typename Record>
-  static Submission submit(const Context& ctx, Record&& record) {
-    Submission s(ctx);
-    std::forward<Record>(record)(s.commandBuffer_.get());
-    s.submitRecorded();
-    return s;
-  }
-
+  explicit Submission(const Context& ctx);
   Submission(Submission&& other) noexcept;
   Submission& operator=(Submission&& other) noexcept;
   ~Submission();
+
+  template <typename Record>
+  void submit(Record&& record) {
+    begin();
+    std::forward<Record>(record)(commandBuffer_.get());
+    submitRecorded();
+  }
 
   // Blocks until the device has finished the commands; throws VulkanError on a lost device.
   void wait();
   bool pending() const { return pending_; }
 
  private:
-  explicit Submission(const Context& ctx);
+  void begin();
   void submitRecorded();
   void waitQuietly() noexcept;
 
