@@ -1,6 +1,6 @@
 #pragma once
 // Groups the leaf cells of an AmrField into bricks: boxes of same-level cells with no holes
-// (DESIGN.md section 3). Every cell lies in exactly one brick.
+// (docs/architecture.md, "Bricks"). Every cell lies in exactly one brick.
 
 #include <cstdint>
 #include <vector>

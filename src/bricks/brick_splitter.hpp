@@ -1,6 +1,6 @@
 #pragma once
 // Private to the brick builder: the recursive kd split of one level's cells into boxes of cells
-// with no holes (DESIGN.md section 3).
+// with no holes (docs/architecture.md, "Bricks").
 
 #include <cstdint>
 #include <glm/glm.hpp>

@@ -1,7 +1,7 @@
 #pragma once
-// Active brick regions (ABRs, DESIGN.md section 3): disjoint half-open boxes that tile the union
-// of the brick domains, each listing the bricks whose domain covers it and its finest cell
-// width, plus the kd-tree that produced them, used for point location.
+// Active brick regions (ABRs; docs/architecture.md, "Active brick regions"): disjoint half-open
+// boxes that tile the union of the brick domains, each listing the bricks whose domain covers it
+// and its finest cell width, plus the kd-tree that produced them, used for point location.
 
 #include <cstdint>
 #include <glm/glm.hpp>

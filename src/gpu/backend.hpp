@@ -1,5 +1,5 @@
 #pragma once
-// The tracing backends (DESIGN.md section 4) and how `auto` chooses among them.
+// The tracing backends (docs/backends.md) and how `auto` chooses among them.
 
 #include <optional>
 #include <string>

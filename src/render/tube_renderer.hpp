@@ -1,5 +1,5 @@
 #pragma once
-// The tube renderer on a Vulkan device (DESIGN.md section 7): tubes around traces, shaded with
+// The tube renderer on a Vulkan device (docs/rendering.md): tubes around traces, shaded with
 // local lighting and ambient occlusion and coloured through a colour map, optionally in front of
 // a scalar field ray-marched as a volume. Each frame adds one jittered sample per pixel (with its
 // ambient-occlusion rays) to a running mean, so a still camera converges; changing the camera,

@@ -1,6 +1,6 @@
 #pragma once
 // Acceleration structures over axis-aligned boxes (AABB procedural geometry), as the point
-// location of DESIGN.md section 4 needs them.
+// location of docs/backends.md needs them.
 //
 // Global box ids. Box i of the input is primitive (i - firstBox) of the one geometry of the BLAS
 // whose range [firstBox, firstBox + boxCount) holds i. The TLAS has one instance per BLAS, in

@@ -1,5 +1,5 @@
 #pragma once
-// What a context can do, as the backends of DESIGN.md section 4 need it. A CapabilitySet is what
+// What a context can do, as the backends of docs/backends.md need it. A CapabilitySet is what
 // a caller asks ContextBuilder for; requirementsOf() says which Vulkan extensions and features
 // each capability stands for, so device probing, the device report and device creation all read
 // one list.

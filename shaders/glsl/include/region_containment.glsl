@@ -6,6 +6,6 @@ bool regionContains(uint regionId, vec3 p) {
 }
 
 // A zero-length ray: tMin 0 and a tiny positive tMax, because lavapipe (Mesa 25.0) reports no
-// candidate for a point on a box's lower face when tMax == 0 (DESIGN.md section 4).
+// candidate for a point on a box's lower face when tMax == 0 (docs/backends.md).
 const vec3 kProbeDirection = vec3(1.0);
 const float kProbeTMax = 2e-10;

@@ -1,4 +1,4 @@
-// One frame of the tube renderer (DESIGN.md section 7): a jittered camera ray per pixel, the
+// One frame of the tube renderer (docs/rendering.md): a jittered camera ray per pixel, the
 // context volume ray-marched up to the nearest tube, the tube shaded with local lighting and
 // ambient occlusion, the result added to the pixel's running mean.
 // Needs render_buffers.glsl, locate_tree.glsl and one tubes_*.glsl included before it.

@@ -1,4 +1,4 @@
-// The tent basis-function sum over one region's bricks (DESIGN.md section 5), for any value type.
+// The tent basis-function sum over one region's bricks (docs/architecture.md, "Sampling"), for any value type.
 // Include with TENT_TYPE (float or vec3), TENT_VALUE(slot) (the brick-ordered value at a slot)
 // and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers.
 // TENT_FUNCTION(region, p, weighted) returns the sum of the weights and sets `weighted` to the

@@ -34,7 +34,7 @@ void main() {
   int found = -1;
   rayQueryEXT q;
   // A zero-length ray does not report candidates on a box's lower face on lavapipe: use a tiny
-  // positive tMax (DESIGN.md section 4).
+  // positive tMax (docs/backends.md).
   rayQueryInitializeEXT(q, accelerationStructureEXT(push.tlas), gl_RayFlagsNoneEXT, 0xFF, p, 0.0,
                         vec3(1.0), 2e-10);
   while (rayQueryProceedEXT(q)) {
