@@ -2,14 +2,24 @@
 // What a trace's .vtp records about how it was made (its FieldData): the input and what the file
 // says of itself, the vector and point data, the seeding, the stepping, and what ran it.
 
+#include <string>
 #include <vector>
 
+#include "amrstream/tracing.hpp"
+#include "bricks/dataset_info.hpp"
 #include "output/vtk_field_data.hpp"
-#include "trace_job.hpp"
 
-namespace amrstream::cli {
+namespace amrstream {
 
-std::vector<output::FieldDataArray> traceProvenance(const TraceJobOptions& options,
-                                                    const PreparedInput& input);
+struct TraceProvenance {
+  std::string source;        // the input's name
+  bricks::DatasetInfo info;  // what it says of itself
+  std::string seeds;         // e.g. "256 from random (seed 1) in a box"
+  flow::TraceOptions options;
+  TraceReport report;
+};
 
-}  // namespace amrstream::cli
+std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& provenance,
+                                                     const flow::VectorVolume& volume);
+
+}  // namespace amrstream

@@ -1,24 +1,43 @@
 #pragma once
-// Settings that `trace` and `bench` read the same way.
+// The stepping settings as users give them (names as on the command line), checked and turned
+// into the tracer's TraceOptions.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 #include "flow/integrator.hpp"
 #include "flow/vector_volume.hpp"
 
-namespace amrstream::cli {
+namespace amrstream {
 
-// "cell", "time" or "arc" (the CLI checks membership).
+struct TraceSettings {
+  std::uint32_t steps = 1000;      // at most this many steps per line
+  std::optional<float> stepSize;   // default: see chooseStepSize
+  std::string stepMode = "cell";   // cell, time or arc
+  std::string direction = "both";  // forward, backward or both (two lines per seed)
+  float terminalSpeed = 1e-12f;
+  float maxLength = 0.0f;  // 0: no limit
+  float maxTime = 0.0f;    // 0: no limit
+  bool vorticity = false;
+  bool keepHistory = true;         // false: only each line's last point
+  std::uint64_t memoryBudget = 0;  // 0: automatic
+};
+
+// The settings checked (InputError naming the setting) against the volume. The collected traces
+// may take at most a share of the machine's memory (kTraceMemoryShare).
+flow::TraceOptions traceOptions(const TraceSettings& settings, const flow::VectorVolume& volume);
+
+// "cell", "time" or "arc"; InputError otherwise.
 flow::StepMode parseStepMode(const std::string& name);
+std::string stepModeName(flow::StepMode mode);  // "cell", "time", "arc"
+// "forward", "backward" or "both"; InputError otherwise.
+flow::Direction parseDirection(const std::string& name);
+std::string directionName(flow::Direction direction);  // "forward", "backward", "both"
 
 // The step size the user gave, else the default of the mode: 0.25 cell widths, or for `time`
 // 1/4 of the finest cell crossed at the volume's maximum speed. Throws InputError unless > 0.
 float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
                      const flow::VectorVolume& volume);
 
-// Validation layers: always in debug builds unless AMRSTREAM_VALIDATION=0, and in release builds
-// only with AMRSTREAM_VALIDATION=1.
-bool validationRequested();
-
-}  // namespace amrstream::cli
+}  // namespace amrstream

@@ -1,45 +1,38 @@
-#include "provenance.hpp"
+#include "amrstream/provenance.hpp"
 
-#include <fmt/format.h>
+#include "amrstream/field.hpp"
+#include "amrstream/trace_settings.hpp"
 
-#include "bricks/dataset_info.hpp"
+namespace amrstream {
 
-namespace amrstream::cli {
-
-std::vector<output::FieldDataArray> traceProvenance(const TraceJobOptions& o,
-                                                    const PreparedInput& input) {
+std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
+                                                     const flow::VectorVolume& volume) {
   using output::integerField;
   using output::numberField;
   using output::textField;
-  const flow::VectorVolume& volume = input.volume;
-  const flow::TraceOptions& options = input.options;
-  const bricks::DatasetInfo& info = input.info;
+  const flow::TraceOptions& options = p.options;
+  const bricks::DatasetInfo& info = p.info;
   std::string pointData;
   for (const std::string& name : volume.channelNames)
     pointData += (pointData.empty() ? "" : ",") + name;
-  std::string periodic;
-  for (int a = 0; a < 3; ++a)
-    if (volume.periodic[a]) periodic += (periodic.empty() ? "" : ",") + std::string(1, "xyz"[a]);
-  const char* direction = options.direction == flow::Direction::Forward    ? "forward"
-                          : options.direction == flow::Direction::Backward ? "backward"
-                                                                           : "both";
+  const std::string periodic = axesText(volume.periodic);
 
   std::vector<output::FieldDataArray> fields{
       textField("amrstream", "amrstream " AMRSTREAM_VERSION),
-      textField("Input", input.source),
+      textField("Input", p.source),
       textField("InputFormat", info.format),
       textField("Vector", volume.vectorName),
       textField("PointDataChannels", pointData.empty() ? "none" : pointData),
       textField("Periodic", periodic.empty() ? "none" : periodic),
-      textField("Seeds", fmt::format("{} from {}", input.seeds.points.size(), input.seedDescription)),
-      textField("StepMode", o.stepMode),
+      textField("Seeds", p.seeds),
+      textField("StepMode", stepModeName(options.stepMode)),
       numberField("StepSize", options.stepSize),
       integerField("MaxSteps", options.maxSteps),
-      textField("IntegrationDirection", direction),
+      textField("IntegrationDirection", directionName(options.direction)),
       numberField("MaxLength", options.maxLength),
       numberField("MaxTime", options.maxTime),
       numberField("TerminalSpeed", options.terminalSpeed),
-      textField("Backend", fmt::format("{} on {}", input.report.backend, input.report.device)),
+      textField("Backend", p.report.backend + " on " + p.report.device),
   };
   if (info.time) fields.push_back(numberField("SimulationTime", *info.time));
   if (!info.timeUnit.empty()) fields.push_back(textField("TimeUnit", info.timeUnit));
@@ -47,4 +40,4 @@ std::vector<output::FieldDataArray> traceProvenance(const TraceJobOptions& o,
   return fields;
 }
 
-}  // namespace amrstream::cli
+}  // namespace amrstream

@@ -1,16 +1,48 @@
-#include "trace_settings.hpp"
+#include "amrstream/trace_settings.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 
-namespace amrstream::cli {
+namespace amrstream {
 
 flow::StepMode parseStepMode(const std::string& name) {
+  if (name == "cell") return flow::StepMode::Cell;
   if (name == "time") return flow::StepMode::Time;
   if (name == "arc") return flow::StepMode::Arc;
-  return flow::StepMode::Cell;
+  throw InputError("step mode", "'" + name + "' is not cell, time or arc");
+}
+
+std::string stepModeName(flow::StepMode mode) {
+  switch (mode) {
+    case flow::StepMode::Time:
+      return "time";
+    case flow::StepMode::Arc:
+      return "arc";
+    case flow::StepMode::Cell:
+      break;
+  }
+  return "cell";
+}
+
+flow::Direction parseDirection(const std::string& name) {
+  if (name == "forward") return flow::Direction::Forward;
+  if (name == "backward") return flow::Direction::Backward;
+  if (name == "both") return flow::Direction::Both;
+  throw InputError("direction", "'" + name + "' is not forward, backward or both");
+}
+
+std::string directionName(flow::Direction direction) {
+  switch (direction) {
+    case flow::Direction::Forward:
+      return "forward";
+    case flow::Direction::Backward:
+      return "backward";
+    case flow::Direction::Both:
+      break;
+  }
+  return "both";
 }
 
 float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
@@ -29,13 +61,24 @@ float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
   return step;
 }
 
-bool validationRequested() {
-  const char* setting = std::getenv("AMRSTREAM_VALIDATION");
-#ifdef NDEBUG
-  return setting && std::string(setting) == "1";
-#else
-  return !(setting && std::string(setting) == "0");
-#endif
+flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume& volume) {
+  flow::TraceOptions options;
+  options.stepMode = parseStepMode(s.stepMode);
+  options.stepSize = chooseStepSize(options.stepMode, s.stepSize, volume);
+  options.maxSteps = s.steps;
+  options.keepHistory = s.keepHistory;
+  if (!(s.terminalSpeed >= 0.0f))
+    throw InputError("--terminal-speed", "must be 0 or positive");
+  if (!(s.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");
+  if (!(s.maxTime >= 0.0f)) throw InputError("--max-time", "must be 0 (no limit) or positive");
+  options.terminalSpeed = s.terminalSpeed;
+  options.maxLength = s.maxLength;
+  options.maxTime = s.maxTime;
+  options.direction = parseDirection(s.direction);
+  options.vorticity = s.vorticity;
+  options.memoryBudget = s.memoryBudget;
+  options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
+  return options;
 }
 
-}  // namespace amrstream::cli
+}  // namespace amrstream

@@ -12,7 +12,8 @@
 #include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "formats/load_input.hpp"
-#include "trace_settings.hpp"
+#include "amrstream/backend.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 

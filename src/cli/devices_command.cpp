@@ -26,7 +26,7 @@ void runDevices() {
     }
     std::string why;
     const gpu::Backend best = gpu::chooseBackend(&d, why);
-    // Tracing on a software device is slower than the CPU reference (tracer_choice.hpp).
+    // Tracing on a software device is slower than the CPU reference (amrstream/backend.hpp).
     const bool software = d.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
     fmt::print("   auto      -> {} for render and view, {} for trace{}\n", gpu::backendName(best),
                software ? "cpu" : gpu::backendName(best),

@@ -11,7 +11,7 @@
 #include "render/image/png_io.hpp"
 #include "render/tube_renderer.hpp"
 #include "render_options.hpp"
-#include "trace_settings.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -61,7 +61,7 @@ void runRender(const RenderCommandOptions& o) {
   }
   const RenderScene scene = prepareScene(o.look, input, traces);
 
-  const BackendChoice choice = chooseBackend(o.job.backend);
+  const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, printLine);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("rendering needs a Vulkan device with compute; none was found "
                              "(see `amrstream devices`)");

@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "output/vtp_writer.hpp"
-#include "provenance.hpp"
+#include "amrstream/provenance.hpp"
 #include "trace_job.hpp"
-#include "trace_settings.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
@@ -36,7 +36,11 @@ void runTrace(const TraceCommandOptions& o) {
   writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
                                                               : output::PeriodicLines::Split;
   writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
-  writeOptions.fieldData = traceProvenance(o.job, input);
+  writeOptions.fieldData = provenanceFields(
+      {input.source, input.info,
+       fmt::format("{} from {}", input.seeds.points.size(), input.seedDescription), input.options,
+       input.report},
+      input.volume);
   const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());

@@ -4,161 +4,61 @@
 
 #include <map>
 
-#include "../../shaders/glsl/shared/trace_codes.h"
-#include "flow/line_plan.hpp"
-#include "flow/seed_strategies.hpp"
-#include "formats/load_input.hpp"
+#include "amrstream/dataset.hpp"
+#include "amrstream/field.hpp"
 #include "progress.hpp"
-#include "trace_settings.hpp"
-#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
 
-const char* reasonName(int reason) {
-  switch (reason) {
-    case AMRSTREAM_REASON_OUT_OF_DOMAIN:
-      return "out of domain";
-    case AMRSTREAM_REASON_UNEXPECTED_VALUE:
-      return "invalid sample";
-    case AMRSTREAM_REASON_MAX_LENGTH:
-      return "max length";
-    case AMRSTREAM_REASON_MAX_STEPS:
-      return "max steps";
-    case AMRSTREAM_REASON_STAGNATION:
-      return "stagnation";
-    case AMRSTREAM_REASON_MAX_TIME:
-      return "max time";
-    default:
-      return "unknown";
-  }
+SeedRequest seedRequest(const TraceJobOptions& o) {
+  SeedRequest r;
+  r.file = o.seedsFile;
+  r.line = o.seedLine;
+  r.density = o.seedDensity;
+  r.percentile = o.seedPercentile;
+  r.weighted = o.seedWeighted;
+  r.grid = o.seedGrid;
+  r.box = o.seedBox;
+  r.count = o.count;
+  r.seed = o.seed;
+  return r;
 }
 
-namespace {
-
-glm::dvec3 corner(const std::vector<double>& v, int which) {
-  return glm::dvec3(v[3 * which], v[3 * which + 1], v[3 * which + 2]);
+TraceSettings traceSettings(const TraceJobOptions& o) {
+  TraceSettings t;
+  t.steps = o.steps;
+  t.stepSize = o.stepSize;
+  t.stepMode = o.stepMode;
+  t.direction = o.direction;
+  t.terminalSpeed = o.terminalSpeed;
+  t.maxLength = o.maxLength;
+  t.maxTime = o.maxTime;
+  t.vorticity = o.vorticity;
+  t.memoryBudget = o.memoryBudget;
+  return t;
 }
 
-// The seed box: --seed-box, checked against the domain, or the domain itself.
-std::pair<glm::dvec3, glm::dvec3> seedBox(const TraceJobOptions& o,
-                                          const flow::VectorVolume& volume) {
-  const glm::dvec3 domainLo = flow::domainLower(volume), domainHi = flow::domainUpper(volume);
-  if (o.seedBox.empty()) return {domainLo, domainHi};
-  const glm::dvec3 lo = corner(o.seedBox, 0), hi = corner(o.seedBox, 1);
-  if (glm::any(glm::greaterThan(lo, hi)))
-    throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
-  if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
-    throw InputError(
-        "--seed-box",
-        fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
-                    "{:g}) x [{:g}, {:g})",
-                    domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
-  return {lo, hi};
-}
-
-// The periodic axes the input declares (none when it says nothing).
-flow::PeriodicAxes filePeriodicAxes(const bricks::AmrField& field) {
-  return field.info().periodicKnown ? field.info().periodic : flow::PeriodicAxes{};
-}
-
-flow::Direction parseDirection(const std::string& name) {
-  if (name == "forward") return flow::Direction::Forward;
-  if (name == "backward") return flow::Direction::Backward;
-  return flow::Direction::Both;
-}
-
-// --periodic: "auto" (what the file says), "none", or the periodic axes, e.g. "x,y,z" or "xz".
-flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::AmrField& field) {
-  flow::PeriodicAxes axes{};
-  if (request == "auto") return filePeriodicAxes(field);
-  if (request == "none") return axes;
-  for (const char c : request) {
-    if (c == ',') continue;
-    const auto axis = std::string_view("xyz").find(char(std::tolower(static_cast<unsigned char>(c))));
-    if (axis == std::string_view::npos)
-      throw InputError("--periodic", fmt::format("'{}' is not auto, none or a list of the axes "
-                                                 "x, y and z",
-                                                 request));
-    axes[axis] = true;
-  }
-  return axes;
-}
-
-std::string axesText(const flow::PeriodicAxes& axes) {
-  std::string text;
-  for (int a = 0; a < 3; ++a)
-    if (axes[a]) text += (text.empty() ? "" : ",") + std::string(1, "xyz"[a]);
-  return text;
-}
-
-std::string directionText(flow::Direction direction) {
-  switch (direction) {
-    case flow::Direction::Forward:
-      return "forward";
-    case flow::Direction::Backward:
-      return "backward";
-    case flow::Direction::Both:
-      break;
-  }
-  return "both directions";
-}
-
-}  // namespace
-
-flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,
-                           const flow::VectorVolume& volume, std::string& description) {
-  if (!o.seedsFile.empty()) {
-    description = o.seedsFile;
-    return flow::readSeedFile(o.seedsFile);
-  }
-  if (!o.seedLine.empty()) {
-    description = "a rake (--seed-line)";
-    return flow::seedsAlongLine(corner(o.seedLine, 0), corner(o.seedLine, 1), o.count);
-  }
-  if (!o.seedDensity.empty()) {
-    description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
-                              o.seedDensity, o.seedPercentile,
-                              o.seedWeighted ? ", weighted by it" : "", o.seed);
-    return flow::seedsInDensestCells(
-        field, {o.seedDensity, o.seedPercentile, o.seedWeighted, o.count, o.seed});
-  }
-  auto [lo, hi] = seedBox(o, volume);
-  // Keep seeds off the domain's open upper faces, where rounding to float could put them.
-  hi = glm::min(hi, flow::domainUpper(volume) - 1e-4 * volume.transform.spacing);
-  if (!o.seedGrid.empty()) {
-    const glm::ivec3 counts(o.seedGrid[0], o.seedGrid[1], o.seedGrid[2]);
-    if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
-      throw InputError("--seed-grid", "every count must be at least 1");
-    description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
-    return flow::seedsOnGrid(lo, hi, counts);
-  }
-  description = fmt::format("random (seed {}) in a box", o.seed);
-  return flow::randomSeedsInBox(lo, hi, o.count, o.seed);
-}
+void printLine(const std::string& line) { fmt::print("{}\n", line); }
 
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   Stopwatch clock;
   PreparedInput input;
-  input.cells.emplace(formats::loadInput(o.dataset.input, o.dataset.generator));
-  const bricks::AmrField& field = input.field();
-  input.info = field.info();
-  input.source = field.source();
+  input.cells.emplace(load(o.dataset.input, o.dataset.generator));
+  const bricks::AmrField& cells = input.field();
+  input.info = cells.info();
+  input.source = cells.source();
   const double loadSeconds = clock.seconds();
-  const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
+  const flow::VectorChannels vector = flow::chooseVectorChannels(cells, o.vector);
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",
-             field.source(), withCommas(field.cellCount()),
-             field.info().fileLevel(field.coarsestLevel()),
-             field.info().fileLevel(field.finestLevel()), vector.name, vector.channels[0],
-             vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(field.info()),
+             cells.source(), withCommas(cells.cellCount()),
+             cells.info().fileLevel(cells.coarsestLevel()),
+             cells.info().fileLevel(cells.finestLevel()), vector.name, vector.channels[0],
+             vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(cells.info()),
              loadSeconds);
-
-  flow::VolumeOptions volumeOptions;
-  volumeOptions.periodic = periodicAxes(o.periodic, field);
-  volumeOptions.pointData = flow::choosePointData(field, vector, o.pointData);
-  flow::VolumeBuildTimes times;
-  input.volume = flow::buildVectorVolume(field, vector, volumeOptions, &times);
+  Field field = buildField(cells, {o.vector, o.pointData, o.periodic});
+  input.volume = std::move(field.volume);
   const flow::VectorVolume& volume = input.volume;
   const std::size_t images = volume.bricks.size() - volume.originalBrickCount;
   fmt::print("structure  {} bricks{} [{:.2f} s], {} regions [{:.2f} s]\n",
@@ -166,42 +66,32 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
              images > 0 ? fmt::format(" + {} periodic images ({})", withCommas(images),
                                       axesText(volume.periodic))
                         : std::string(),
-             times.bricks, withCommas(volume.regions.regions.size()), times.regions);
+             field.times.bricks, withCommas(volume.regions.regions.size()), field.times.regions);
   if (!withSeeds) return input;
 
   std::string pointData;
-  for (const std::string& name : volume.channelNames) pointData += (pointData.empty() ? "" : ", ") + name;
+  for (const std::string& name : volume.channelNames)
+    pointData += (pointData.empty() ? "" : ", ") + name;
   if (o.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
   fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
-  std::string& seedDescription = input.seedDescription;
-  input.seeds = chooseSeeds(o, field, volume, seedDescription);
+  input.seeds = chooseSeeds(seedRequest(o), domainOf(volume), &cells, input.seedDescription);
   flow::SeedList& seeds = input.seeds;
-  flow::closeUpperFaces(volume, seeds);
-  flow::checkSeedsInDomain(volume, seeds);
+  placeSeeds(volume, seeds);
   if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
 
-  flow::TraceOptions& options = input.options;
-  options.stepMode = parseStepMode(o.stepMode);
-  options.stepSize = chooseStepSize(options.stepMode, o.stepSize, volume);
-  options.maxSteps = o.steps;
-  options.keepHistory = true;
-  options.terminalSpeed = o.terminalSpeed;
-  if (!(o.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");
-  if (!(o.maxTime >= 0.0f)) throw InputError("--max-time", "must be 0 (no limit) or positive");
-  options.maxLength = o.maxLength;
-  options.maxTime = o.maxTime;
-  options.direction = parseDirection(o.direction);
-  options.vorticity = o.vorticity;
-  options.memoryBudget = o.memoryBudget;
-  options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
-  fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), seedDescription,
+  input.options = traceOptions(traceSettings(o), volume);
+  const flow::TraceOptions& options = input.options;
+  fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), input.seedDescription,
              o.seedsOut.empty() ? "" : ", written to " + o.seedsOut);
   std::string limits;
   if (o.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.maxLength);
   if (o.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.maxTime);
   fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.stepMode,
-             options.stepSize, directionText(options.direction), o.steps, limits);
+             options.stepSize,
+             options.direction == flow::Direction::Both ? "both directions"
+                                                        : directionName(options.direction),
+             o.steps, limits);
   return input;
 }
 
@@ -212,12 +102,12 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
   flow::StoredTraces stored = [&] {
     // Progress counts seeds: lines finished, scaled by the lines per seed.
     Progress progress("tracing", seeds.points.size());
-    return traceWithBackend(
+    return trace(
         o.backend, input.volume, seeds.points, input.options,
         [&](std::size_t done, std::size_t lines) {
           progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
         },
-        &report, hostValues);
+        &report, hostValues, printLine);
   }();
   const double traceSeconds = report.traceSeconds;
   const flow::TraceSet& traces = stored.lines();

@@ -14,7 +14,9 @@
 #include "flow/seeds.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
-#include "tracer_choice.hpp"
+#include "amrstream/seeding.hpp"
+#include "amrstream/trace_settings.hpp"
+#include "amrstream/tracing.hpp"
 
 namespace amrstream::cli {
 
@@ -80,11 +82,11 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
                              HostValues hostValues = HostValues::Keep);
 
-// The seeds of the chosen strategy; `description` says which, for the summary.
-flow::SeedList chooseSeeds(const TraceJobOptions& o, const bricks::AmrField& field,
-                           const flow::VectorVolume& volume, std::string& description);
+// The options' parts in the library's terms.
+SeedRequest seedRequest(const TraceJobOptions& o);
+TraceSettings traceSettings(const TraceJobOptions& o);
 
-// The ReasonForTermination's name, e.g. "out of domain".
-const char* reasonName(int reason);
+// Prints a line of the library's log on stdout.
+void printLine(const std::string& line);
 
 }  // namespace amrstream::cli

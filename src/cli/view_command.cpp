@@ -10,7 +10,7 @@
 #include "app/window.hpp"
 #include "output/vtp_writer.hpp"
 #include "render/image/png_io.hpp"
-#include "trace_settings.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "view_panel.hpp"
@@ -35,7 +35,7 @@ void runView(const ViewOptions& o) {
   // The window first: without a display, say so before loading anything.
   app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   PreparedInput input = prepareInput(o.job);
-  const BackendChoice choice = chooseBackend(o.job.backend);
+  const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, printLine);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
 

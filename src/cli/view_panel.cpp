@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "render/image/colour_map.hpp"
-#include "trace_settings.hpp"
+#include "amrstream/trace_settings.hpp"
 
 namespace amrstream::cli {
 

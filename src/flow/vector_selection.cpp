@@ -13,8 +13,9 @@ namespace amrstream::flow {
 namespace {
 
 // Velocity first, then magnetic field; names as the simulation codes write them.
-const std::array<std::array<const char*, 3>, 10> kKnownTriplets{{
+const std::array<std::array<const char*, 3>, 12> kKnownTriplets{{
     {"velx", "vely", "velz"},
+    {"velocity_x", "velocity_y", "velocity_z"},  // yt's names
     {"x-velocity", "y-velocity", "z-velocity"},
     {"x_velocity", "y_velocity", "z_velocity"},
     {"vx", "vy", "vz"},
@@ -24,6 +25,7 @@ const std::array<std::array<const char*, 3>, 10> kKnownTriplets{{
     {"Bx", "By", "Bz"},
     {"bx", "by", "bz"},
     {"x-magnetic", "y-magnetic", "z-magnetic"},
+    {"magnetic_field_x", "magnetic_field_y", "magnetic_field_z"},
 }};
 
 std::string trimSeparators(std::string s) {

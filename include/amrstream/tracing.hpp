@@ -1,0 +1,41 @@
+#pragma once
+// Tracing on the chosen backend: the CPU reference or a GPU backend on a Vulkan device.
+
+#include <span>
+#include <string>
+
+#include "amrstream/backend.hpp"
+#include "amrstream/log.hpp"
+#include "flow/integrator.hpp"
+#include "flow/stored_traces.hpp"
+#include "flow/vector_volume.hpp"
+
+namespace amrstream {
+
+// What ran a trace and where its time went: creating the device context, uploading the volume
+// and building its point-location structure and kernels (0 on the CPU), then tracing proper.
+struct TraceReport {
+  std::string backend;  // "compute", "cpu", ...
+  std::string device;   // the Vulkan device's name, or the CPU's thread count
+  double setupSeconds = 0.0;
+  double traceSeconds = 0.0;
+};
+
+// What happens to the volume's host copy of its values once a GPU backend has uploaded them.
+enum class HostValues { Keep, Release };
+
+// Traces `seeds` (physical coordinates, inside the domain) with the requested backend, saying on
+// `log` what was chosen, the device setup and where a GPU trace's host time went. With
+// HostValues::Release and a GPU backend, the volume's values, channel values and cell map are
+// freed once on the device (the CPU path keeps them). Throws vk::ContextError naming the missing
+// extension when a named backend is not available. The points stay in the rounds that made them
+// (StoredTraces::assemble() gives a TraceSet).
+flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volume,
+                         std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                         const flow::TraceProgress& progress = {}, TraceReport* report = nullptr,
+                         HostValues hostValues = HostValues::Keep, const Log& log = {});
+
+// The ReasonForTermination's name, e.g. "out of domain".
+const char* reasonName(int reason);
+
+}  // namespace amrstream

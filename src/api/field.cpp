@@ -1,0 +1,48 @@
+#include "amrstream/field.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <string_view>
+
+#include "util/input_error.hpp"
+
+namespace amrstream {
+
+flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::DatasetInfo& info) {
+  flow::PeriodicAxes axes{};
+  if (request == "auto") return info.periodicKnown ? info.periodic : axes;
+  if (request == "none") return axes;
+  for (const char c : request) {
+    if (c == ',') continue;
+    const auto axis =
+        std::string_view("xyz").find(char(std::tolower(static_cast<unsigned char>(c))));
+    if (axis == std::string_view::npos)
+      throw InputError("--periodic",
+                       fmt::format("'{}' is not auto, none or a list of the axes x, y and z",
+                                   request));
+    axes[axis] = true;
+  }
+  return axes;
+}
+
+std::string axesText(const flow::PeriodicAxes& axes) {
+  std::string text;
+  for (int a = 0; a < 3; ++a)
+    if (axes[a]) text += (text.empty() ? "" : ",") + std::string(1, "xyz"[a]);
+  return text;
+}
+
+Field buildField(const Dataset& cells, const FieldOptions& options) {
+  Field field;
+  field.source = cells.source();
+  field.info = cells.info();
+  field.vector = flow::chooseVectorChannels(cells, options.vector);
+  flow::VolumeOptions volumeOptions;
+  volumeOptions.periodic = periodicAxes(options.periodic, cells.info());
+  volumeOptions.pointData = flow::choosePointData(cells, field.vector, options.pointData);
+  field.volume = flow::buildVectorVolume(cells, field.vector, volumeOptions, &field.times);
+  return field;
+}
+
+}  // namespace amrstream

@@ -1,0 +1,93 @@
+#include "amrstream/seeding.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+
+#include "flow/seed_strategies.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream {
+
+namespace {
+
+glm::dvec3 corner(const std::vector<double>& v, int which) {
+  return glm::dvec3(v[3 * which], v[3 * which + 1], v[3 * which + 2]);
+}
+
+void checkSize(const std::vector<double>& values, const char* option) {
+  if (values.size() != 6)
+    throw InputError(option, fmt::format("needs 6 numbers x0,y0,z0,x1,y1,z1, not {}",
+                                         values.size()));
+}
+
+// The seed box: the request's box, checked against the domain, or the domain itself.
+std::pair<glm::dvec3, glm::dvec3> seedBox(const SeedRequest& request, const Domain& domain) {
+  const glm::dvec3 domainLo = domain.lower, domainHi = domain.upper;
+  if (request.box.empty()) return {domainLo, domainHi};
+  checkSize(request.box, "--seed-box");
+  const glm::dvec3 lo = corner(request.box, 0), hi = corner(request.box, 1);
+  if (glm::any(glm::greaterThan(lo, hi)))
+    throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
+  if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
+    throw InputError(
+        "--seed-box",
+        fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
+                    "{:g}) x [{:g}, {:g})",
+                    domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
+  return {lo, hi};
+}
+
+}  // namespace
+
+Domain domainOf(const Dataset& cells) {
+  const bricks::WorldTransform& t = cells.transform();
+  return {t.toPhysical(glm::dvec3(cells.bounds().lower)),
+          t.toPhysical(glm::dvec3(cells.bounds().upper)), t.spacing};
+}
+
+Domain domainOf(const flow::VectorVolume& volume) {
+  return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing};
+}
+
+flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
+                           std::string& description) {
+  if (!request.file.empty()) {
+    description = request.file;
+    return flow::readSeedFile(request.file);
+  }
+  if (!request.line.empty()) {
+    checkSize(request.line, "--seed-line");
+    description = "a rake (--seed-line)";
+    return flow::seedsAlongLine(corner(request.line, 0), corner(request.line, 1), request.count);
+  }
+  if (!request.density.empty()) {
+    if (!cells) throw InputError("--seed-density", "needs the dataset's cells");
+    description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
+                              request.density, request.percentile,
+                              request.weighted ? ", weighted by it" : "", request.seed);
+    return flow::seedsInDensestCells(*cells, {request.density, request.percentile,
+                                              request.weighted, request.count, request.seed});
+  }
+  auto [lo, hi] = seedBox(request, domain);
+  // Keep seeds off the domain's open upper faces, where rounding to float could put them.
+  hi = glm::min(hi, domain.upper - 1e-4 * domain.finestWidth);
+  if (!request.grid.empty()) {
+    if (request.grid.size() != 3)
+      throw InputError("--seed-grid", "needs 3 counts NX,NY,NZ");
+    const glm::ivec3 counts(request.grid[0], request.grid[1], request.grid[2]);
+    if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
+      throw InputError("--seed-grid", "every count must be at least 1");
+    description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
+    return flow::seedsOnGrid(lo, hi, counts);
+  }
+  description = fmt::format("random (seed {}) in a box", request.seed);
+  return flow::randomSeedsInBox(lo, hi, request.count, request.seed);
+}
+
+void placeSeeds(const flow::VectorVolume& volume, flow::SeedList& seeds) {
+  flow::closeUpperFaces(volume, seeds);
+  flow::checkSeedsInDomain(volume, seeds);
+}
+
+}  // namespace amrstream
