@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
-  python3 python3-vtk9 python3-numpy
+  python3 python3-vtk9 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
   libglfw3-dev libimgui-dev xvfb xauth

@@ -1,0 +1,85 @@
+"""amrstream: streamlines through adaptive-mesh-refinement vector fields, on the CPU and on any
+Vulkan GPU, with the data along them.
+
+    import amrstream
+    ds = amrstream.load("DD0010/moving7_0010")          # or amrstream.from_yt(yt_ds)
+    seeds = amrstream.seeds_densest(ds, "Density", 256)
+    lines = amrstream.trace(ds, seeds, steps=2000)       # both directions, every field along them
+    for points in lines: ...                             # (n_i, 3) arrays
+    lines.to_vtp("lines.vtp")
+
+docs/python.md in the amrstream sources is the reference.
+"""
+
+from ._amrstream import (
+    BackendError,
+    Dataset,
+    Field,
+    InputError,
+    Traces,
+    __version__,
+    from_arrays,
+    load,
+    reason_name,
+    seeds_densest,
+    seeds_grid,
+    seeds_line,
+    seeds_random,
+)
+from . import _amrstream
+
+__all__ = [
+    "BackendError", "Dataset", "Field", "InputError", "Traces", "__version__", "from_arrays",
+    "from_yt", "load", "prepare", "reason_name", "seeds_densest", "seeds_grid", "seeds_line",
+    "seeds_random", "trace",
+]
+
+DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
+
+
+def _vector_text(vector):
+    """None, 'a,b,c' or three names -> None or 'a,b,c'."""
+    if vector is None or isinstance(vector, str):
+        return vector
+    names = [name[-1] if isinstance(name, tuple) else name for name in vector]
+    if len(names) != 3 or not all(isinstance(name, str) for name in names):
+        raise ValueError(f"vector must be 'a,b,c' or three field names, not {vector!r}")
+    return ",".join(names)
+
+
+def prepare(dataset, vector=None, point_data="all", periodic="auto"):
+    """A Field ready for tracing: the vector ('a,b,c' or three names; default the velocity,
+    else the magnetic field), the point data ('all', 'none' or names), periodic axes ('auto' as
+    the file says, 'none', or e.g. 'x,y,z'); bricks and regions built once for many traces."""
+    if isinstance(point_data, (list, tuple)):
+        point_data = ",".join(point_data) if point_data else "none"
+    return _amrstream.prepare(dataset, vector=_vector_text(vector), point_data=point_data,
+                              periodic=periodic)
+
+
+def trace(target, seeds, *, vector=None, point_data=None, periodic=None, **settings):
+    """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field.
+
+    Settings, as `amrstream trace` names them: steps=1000, step_size (default 0.25 cell
+    widths), step_mode='cell'|'time'|'arc', direction='both'|'forward'|'backward',
+    vorticity=False, max_length=0, max_time=0, terminal_speed=1e-12, memory_budget=0 (bytes),
+    backend='auto'|'cpu'|'compute'|'pipeline'|'rayquery', device='' (a device name part),
+    progress=callable(done, total), verbose=False. vector, point_data and periodic are those
+    of prepare() (only with a Dataset). Returns Traces.
+    """
+    if isinstance(point_data, (list, tuple)):
+        point_data = ",".join(point_data) if point_data else "none"
+    return _amrstream.trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
+                            periodic=periodic, **settings)
+
+
+def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):
+    """A Dataset of the leaf cells of a grid-based yt dataset (Enzo, FLASH, AMReX/BoxLib,
+    Athena++, Chombo, ...): the vector's three fields first, then `fields`, in code units;
+    positions in code_length. Trace it with vector=<the same three names> unless they are
+    velocity_x/y/z."""
+    from .yt_cells import leaf_cells_from_yt
+
+    cells = leaf_cells_from_yt(ds, vector=vector, fields=fields)
+    cells.pop("field_units", None)
+    return from_arrays(**cells)

@@ -1,0 +1,211 @@
+// amrstream.Dataset, amrstream.Field, load, from_arrays.
+
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include "amrstream/dataset.hpp"
+#include "amrstream/field.hpp"
+#include "flow/seeds.hpp"
+#include "bindings.hpp"
+#include "numpy_views.hpp"
+
+namespace amrstream::python {
+
+namespace {
+
+py::tuple tuple3(glm::dvec3 v) { return py::make_tuple(v.x, v.y, v.z); }
+
+py::object periodicOf(const bricks::DatasetInfo& info) {
+  if (!info.periodicKnown) return py::none();
+  return py::make_tuple(info.periodic[0], info.periodic[1], info.periodic[2]);
+}
+
+std::vector<std::string> channelNames(const Dataset& d) {
+  std::vector<std::string> names;
+  for (const bricks::Channel& c : d.channels()) names.push_back(c.name);
+  return names;
+}
+
+// The file's level of every cell, as the file numbers its levels.
+py::array fileLevels(const Dataset& d) {
+  py::array_t<std::int32_t> levels(py::ssize_t(d.cellCount()));
+  auto out = levels.mutable_unchecked<1>();
+  const std::span<const std::uint8_t> internal = d.levels();
+  for (std::size_t i = 0; i < internal.size(); ++i)
+    out(py::ssize_t(i)) = d.info().fileLevel(internal[i]);
+  return levels;
+}
+
+glm::dvec3 vec3Of(py::handle value, const char* what) {
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!a || a.size() != 3) throw py::value_error(std::string(what) + " must be 3 numbers");
+  return {a.data()[0], a.data()[1], a.data()[2]};
+}
+
+std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::dict fields,
+                                    py::handle origin, py::handle finestWidth,
+                                    std::optional<std::array<bool, 3>> periodic,
+                                    std::optional<double> time, std::string timeUnit,
+                                    std::string lengthUnit, std::string source,
+                                    std::string format) {
+  CellArrays cells;
+  const auto c = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(corners);
+  if (!c || c.ndim() != 2 || c.shape(1) != 3)
+    throw py::value_error("corners must be an (N, 3) array of integer cell indices");
+  const auto l = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(levels);
+  if (!l || l.ndim() != 1 || l.shape(0) != c.shape(0))
+    throw py::value_error(fmt::format("levels must be an (N,) array with one level per corner "
+                                      "({} corners)",
+                                      c.shape(0)));
+  const std::size_t n = std::size_t(c.shape(0));
+  cells.corners.resize(n);
+  cells.levels.resize(n);
+  const std::int64_t* cd = c.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const std::int64_t v = cd[3 * i + a];
+      if (v < -(std::int64_t(1) << 30) || v > (std::int64_t(1) << 30))
+        throw py::value_error(fmt::format("corner {} is out of range: {}", i, v));
+      cells.corners[i][a] = int(v);
+    }
+    const std::int64_t level = l.data()[i];
+    if (level < 0 || level > 64)
+      throw py::value_error(fmt::format("level {} of cell {} is out of range", level, i));
+    cells.levels[i] = int(level);
+  }
+  for (const auto& [key, value] : fields) {
+    const std::string name = py::str(key);
+    const auto v = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(value);
+    if (!v || v.ndim() != 1 || std::size_t(v.shape(0)) != n)
+      throw py::value_error(fmt::format("field '{}' must be an (N,) array of {} values", name, n));
+    cells.channels.push_back({name, std::vector<float>(v.data(), v.data() + n)});
+  }
+  cells.origin = vec3Of(origin, "origin");
+  cells.finestWidth = vec3Of(finestWidth, "finest_width");
+  cells.periodic = periodic;
+  cells.time = time;
+  cells.timeUnit = std::move(timeUnit);
+  cells.lengthUnit = std::move(lengthUnit);
+  cells.source = std::move(source);
+  cells.format = std::move(format);
+  py::gil_scoped_release unlocked;
+  return std::make_shared<Dataset>(fromCells(std::move(cells)));
+}
+
+}  // namespace
+
+void bindDataset(py::module_& m) {
+  py::class_<Dataset, std::shared_ptr<Dataset>>(
+      m, "Dataset", "Leaf cells of an AMR output, their fields, and what the file says of itself.")
+      .def_property_readonly("source", &Dataset::source)
+      .def_property_readonly("format", [](const Dataset& d) { return d.info().format; })
+      .def_property_readonly("cell_count", &Dataset::cellCount)
+      .def_property_readonly("field_names", &channelNames)
+      .def_property_readonly("time", [](const Dataset& d) { return d.info().time; })
+      .def_property_readonly("time_unit", [](const Dataset& d) { return d.info().timeUnit; })
+      .def_property_readonly("length_unit", [](const Dataset& d) { return d.info().lengthUnit; })
+      .def_property_readonly("periodic", [](const Dataset& d) { return periodicOf(d.info()); },
+                             "(x, y, z) periodicity the file declares, or None")
+      .def_property_readonly("origin", [](const Dataset& d) { return tuple3(d.transform().origin); },
+                             "physical position of corner (0, 0, 0)")
+      .def_property_readonly("finest_width",
+                             [](const Dataset& d) { return tuple3(d.transform().spacing); })
+      .def_property_readonly("domain_left_edge",
+                             [](const Dataset& d) {
+                               return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().lower)));
+                             })
+      .def_property_readonly("domain_right_edge",
+                             [](const Dataset& d) {
+                               return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().upper)));
+                             })
+      .def_property_readonly(
+          "corners",
+          [](py::object self) {
+            const Dataset& d = self.cast<const Dataset&>();
+            return view3(d.lowers().data(), d.cellCount(), self);
+          },
+          "(N, 3) int32: each cell's lower corner in finest cells, counted from `origin`")
+      .def_property_readonly("levels", &fileLevels,
+                             "(N,) int32: each cell's level as the file numbers them (level_name)")
+      .def_property_readonly("level_name", [](const Dataset& d) { return d.info().levelName; })
+      .def(
+          "field",
+          [](py::object self, const std::string& name) {
+            const Dataset& d = self.cast<const Dataset&>();
+            const bricks::Channel& c = d.channel(name);
+            return view(c.values.data(), c.values.size(), self);
+          },
+          py::arg("name"), "(N,) float32 values of one field, in cell order (no copy)")
+      .def("__repr__", [](const Dataset& d) {
+        return fmt::format("<amrstream.Dataset {}: {} cells, fields {}>", d.source(),
+                           d.cellCount(), fmt::join(channelNames(d), ", "));
+      });
+
+  py::class_<Field, std::shared_ptr<Field>>(
+      m, "Field", "A dataset made ready for tracing: vector, point data, bricks and regions.")
+      .def_property_readonly("source", [](const Field& f) { return f.source; })
+      .def_property_readonly("vector_name", [](const Field& f) { return f.vector.name; })
+      .def_property_readonly("vector", [](const Field& f) { return f.vector.channels; })
+      .def_property_readonly("point_data", [](const Field& f) { return f.volume.channelNames; })
+      .def_property_readonly("periodic",
+                             [](const Field& f) {
+                               return py::make_tuple(f.volume.periodic[0], f.volume.periodic[1],
+                                                     f.volume.periodic[2]);
+                             })
+      .def_property_readonly("brick_count",
+                             [](const Field& f) { return f.volume.originalBrickCount; })
+      .def_property_readonly("region_count",
+                             [](const Field& f) { return f.volume.regions.regions.size(); })
+      .def_property_readonly("domain_left_edge",
+                             [](const Field& f) { return tuple3(flow::domainLower(f.volume)); })
+      .def_property_readonly("domain_right_edge",
+                             [](const Field& f) { return tuple3(flow::domainUpper(f.volume)); })
+      .def("__repr__", [](const Field& f) {
+        return fmt::format("<amrstream.Field {} of {}: point data [{}], {} bricks, {} regions>",
+                           f.vector.name, f.source, fmt::join(f.volume.channelNames, ", "),
+                           f.volume.originalBrickCount, f.volume.regions.regions.size());
+      });
+
+  m.def(
+      "load",
+      [](const std::string& path, std::optional<int> levels, std::optional<int> rootBlocks,
+         std::optional<std::size_t> targetCells, std::optional<std::uint64_t> genSeed) {
+        synth::GeneratorOptions builtin;
+        if (levels) builtin.levels = *levels;
+        if (rootBlocks) builtin.rootBlocks = *rootBlocks;
+        if (targetCells) builtin.targetCells = *targetCells;
+        if (genSeed) builtin.seed = *genSeed;
+        py::gil_scoped_release unlocked;
+        return std::make_shared<Dataset>(load(path, builtin));
+      },
+      py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
+      py::arg("root_blocks") = py::none(), py::arg("target_cells") = py::none(),
+      py::arg("gen_seed") = py::none(),
+      "Loads a FLASH, Enzo, AMReX, Gerris or ExaBricks file, or builtin:NAME (rotation, abc, "
+      "cloud; sized by levels, root_blocks, target_cells).");
+
+  m.def("from_arrays", &fromArrays, py::arg("corners"), py::arg("levels"), py::arg("fields"),
+        py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
+        py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0),
+        py::arg("periodic") = py::none(), py::arg("time") = py::none(),
+        py::arg("time_unit") = "", py::arg("length_unit") = "", py::arg("source") = "arrays",
+        py::arg("format") = "arrays",
+        "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
+        "with 0 the coarsest, fields {name: (N,) values}.");
+
+  m.def(
+      "prepare",
+      [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector,
+         std::string pointData, std::string periodic) {
+        py::gil_scoped_release unlocked;
+        return std::make_shared<Field>(
+            buildField(*dataset, {vector.value_or(""), pointData, periodic}));
+      },
+      py::arg("dataset"), py::kw_only(), py::arg("vector") = py::none(),
+      py::arg("point_data") = "all", py::arg("periodic") = "auto",
+      "Chooses the vector ('a,b,c'; default: the velocity, else the magnetic field) and the point "
+      "data (all, none or 'a,b'), adds periodic images, builds bricks and regions.");
+}
+
+}  // namespace amrstream::python

@@ -1,0 +1,270 @@
+// amrstream.trace and the Traces it returns: numpy views of the traced lines, and to_vtp.
+
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <mutex>
+
+#include "amrstream/field.hpp"
+#include "amrstream/provenance.hpp"
+#include "amrstream/seeding.hpp"
+#include "amrstream/trace_settings.hpp"
+#include "amrstream/tracing.hpp"
+#include "bindings.hpp"
+#include "numpy_views.hpp"
+#include "output/vtp_writer.hpp"
+
+namespace amrstream::python {
+
+namespace {
+
+struct Traces {
+  flow::TraceSet lines;
+  std::vector<output::FieldDataArray> provenance;
+  TraceReport report;
+};
+
+std::size_t lineIndex(const Traces& t, py::ssize_t i) {
+  const py::ssize_t n = py::ssize_t(t.lines.lineCount());
+  if (i < 0) i += n;
+  if (i < 0 || i >= n) throw py::index_error(fmt::format("line {} of {}", i, n));
+  return std::size_t(i);
+}
+
+// Calls a Python progress(done, total) at most ten times a second and once at the end, from
+// whichever thread reports; its exceptions (KeyboardInterrupt) stop the trace. The tracer copies
+// the function without the GIL, so the Python object sits behind a shared pointer; the caller's
+// copy, destroyed with the GIL held, is the last.
+flow::TraceProgress throttled(py::object callback) {
+  if (callback.is_none()) return {};
+  struct State {
+    py::object callback;
+    std::mutex mutex;
+    std::chrono::steady_clock::time_point last{};
+  };
+  auto state = std::make_shared<State>();
+  state->callback = std::move(callback);
+  return [state](std::size_t done, std::size_t total) {
+    std::lock_guard lock(state->mutex);
+    const auto now = std::chrono::steady_clock::now();
+    if (done < total && now - state->last < std::chrono::milliseconds(100)) return;
+    state->last = now;
+    py::gil_scoped_acquire locked;
+    state->callback(done, total);
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+}
+
+Log pythonLog(bool verbose) {
+  if (!verbose) return {};
+  return [](const std::string& line) {
+    py::gil_scoped_acquire locked;
+    py::print(line);
+  };
+}
+
+flow::SeedList seedListOf(py::handle seeds) {
+  const auto points = points3(seeds, "seeds");
+  flow::SeedList list;
+  const std::size_t n = std::size_t(points.shape(0));
+  list.points.resize(n);
+  std::memcpy(list.points.data(), points.data(), n * sizeof(glm::dvec3));
+  list.origins.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) list.origins.push_back(fmt::format("seeds[{}]", i));
+  return list;
+}
+
+std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
+                                 std::optional<std::string> vector,
+                                 std::optional<std::string> pointData,
+                                 std::optional<std::string> periodic, const TraceSettings& settings,
+                                 const BackendRequest& backend, py::object progress,
+                                 bool verbose) {
+  std::shared_ptr<Field> field;
+  std::shared_ptr<Dataset> cells;
+  if (py::isinstance<Field>(target)) {
+    if (vector || pointData || periodic)
+      throw py::value_error(
+          "vector, point_data and periodic were chosen when the Field was prepared; pass the "
+          "Dataset to choose them here");
+    field = target.cast<std::shared_ptr<Field>>();
+  } else if (py::isinstance<Dataset>(target)) {
+    cells = target.cast<std::shared_ptr<Dataset>>();
+  } else {
+    throw py::type_error("trace() needs an amrstream.Dataset or amrstream.Field, not " +
+                         std::string(py::str(py::type::of(target))));
+  }
+  flow::SeedList seedList = seedListOf(seeds);
+  const flow::TraceProgress onProgress = throttled(progress);
+  const Log log = pythonLog(verbose);
+  auto result = std::make_shared<Traces>();
+  py::gil_scoped_release unlocked;
+  if (!field)
+    field = std::make_shared<Field>(buildField(
+        *cells, {vector.value_or(""), pointData.value_or("all"), periodic.value_or("auto")}));
+  placeSeeds(field->volume, seedList);
+  const flow::TraceOptions options = traceOptions(settings, field->volume);
+  flow::StoredTraces stored = trace(backend, field->volume, seedList.points, options, onProgress,
+                                    &result->report, HostValues::Keep, log);
+  result->provenance = provenanceFields(
+      {field->source, field->info, fmt::format("{} from Python", seedList.points.size()), options,
+       result->report},
+      field->volume);
+  result->lines = std::move(stored).assemble();
+  return result;
+}
+
+void bindTraces(py::module_& m) {
+  py::class_<Traces, std::shared_ptr<Traces>>(
+      m, "Traces",
+      "Traced lines (with both directions: the forward lines of all seeds, then the backward "
+      "ones), as numpy views: line i's points are points[offsets[i]:offsets[i + 1]].")
+      .def("__len__", [](const Traces& t) { return t.lines.lineCount(); })
+      .def(
+          "__getitem__",
+          [](py::object self, py::ssize_t i) {
+            const Traces& t = self.cast<const Traces&>();
+            const std::size_t line = lineIndex(t, i);
+            return view3(t.lines.positions.data() + t.lines.firstPoint(line),
+                         t.lines.pointCount(line), self);
+          },
+          "(n_i, 3) float32 points of line i")
+      .def_property_readonly("points",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view3(t.lines.positions.data(), t.lines.pointCount(), self);
+                             })
+      .def_property_readonly("offsets",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.offsets.data(), t.lines.offsets.size(), self);
+                             })
+      .def_property_readonly("seed_ids",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.seedIds.data(), t.lines.lineCount(), self);
+                             })
+      .def_property_readonly("directions",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.directions.data(), t.lines.lineCount(), self);
+                             })
+      .def_property_readonly("steps",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.steps.data(), t.lines.lineCount(), self);
+                             })
+      .def_property_readonly("reasons",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.reasons.data(), t.lines.lineCount(), self);
+                             })
+      .def_property_readonly("integration_time",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view(t.lines.times.data(), t.lines.pointCount(), self);
+                             })
+      .def_property_readonly("vectors",
+                             [](py::object self) {
+                               const Traces& t = self.cast<const Traces&>();
+                               return view3(t.lines.vectors.data(), t.lines.pointCount(), self);
+                             })
+      .def_property_readonly("vector_name", [](const Traces& t) { return t.lines.vectorName; })
+      .def_property_readonly(
+          "point_data",
+          [](py::object self) {
+            const Traces& t = self.cast<const Traces&>();
+            const std::size_t channels = t.lines.channelCount();
+            py::dict arrays;
+            for (std::size_t c = 0; c < channels; ++c)
+              arrays[py::str(t.lines.channelNames[c])] = py::array_t<float>(
+                  {py::ssize_t(t.lines.pointCount())}, {py::ssize_t(channels * sizeof(float))},
+                  t.lines.channels.data() + c, self);
+            return arrays;
+          },
+          "{name: (M,) float32} sampled at every point")
+      .def_property_readonly("vorticity",
+                             [](py::object self) -> py::object {
+                               const Traces& t = self.cast<const Traces&>();
+                               if (!t.lines.withVorticity) return py::none();
+                               return view3(t.lines.vorticity.data(), t.lines.pointCount(), self);
+                             })
+      .def_property_readonly("backend", [](const Traces& t) { return t.report.backend; })
+      .def_property_readonly("device", [](const Traces& t) { return t.report.device; })
+      .def_property_readonly("trace_seconds", [](const Traces& t) { return t.report.traceSeconds; })
+      .def_property_readonly("setup_seconds", [](const Traces& t) { return t.report.setupSeconds; })
+      .def(
+          "to_vtp",
+          [](const Traces& t, const std::string& path, const std::string& compression,
+             const std::string& periodicLines) {
+            output::VtpWriteOptions options;
+            const auto codec = output::compressionNamed(compression);
+            if (!codec) throw py::value_error("compression must be zlib, lz4 or none");
+            if (periodicLines != "split" && periodicLines != "unwrapped")
+              throw py::value_error("periodic_lines must be split or unwrapped");
+            options.compression = *codec;
+            options.periodicLines = periodicLines == "split" ? output::PeriodicLines::Split
+                                                             : output::PeriodicLines::Unwrapped;
+            options.fieldData = t.provenance;
+            output::VtpCounts counts;
+            {
+              py::gil_scoped_release unlocked;
+              counts = output::writeVtp(path, t.lines, options);
+            }
+            return py::make_tuple(counts.lines, counts.points);
+          },
+          py::arg("path"), py::kw_only(), py::arg("compression") = "zlib",
+          py::arg("periodic_lines") = "split",
+          "Writes the lines as VTK XML PolyData, as the command line does; returns (polylines, "
+          "points) written.")
+      .def("__repr__", [](const Traces& t) {
+        return fmt::format("<amrstream.Traces {} lines, {} points, {} on {}>", t.lines.lineCount(),
+                           t.lines.pointCount(), t.report.backend, t.report.device);
+      });
+}
+
+}  // namespace
+
+void bindTracing(py::module_& m) {
+  bindTraces(m);
+  m.def(
+      "trace",
+      [](py::object target, py::object seeds, std::optional<std::string> vector,
+         std::optional<std::string> pointData, std::optional<std::string> periodic,
+         std::uint32_t steps, std::optional<float> stepSize, std::string stepMode,
+         std::string direction, bool vorticity, float maxLength, float maxTime,
+         float terminalSpeed, std::uint64_t memoryBudget, std::string backend, std::string device,
+         bool validation, py::object progress, bool verbose) {
+        TraceSettings settings;
+        settings.steps = steps;
+        settings.stepSize = stepSize;
+        settings.stepMode = std::move(stepMode);
+        settings.direction = std::move(direction);
+        settings.vorticity = vorticity;
+        settings.maxLength = maxLength;
+        settings.maxTime = maxTime;
+        settings.terminalSpeed = terminalSpeed;
+        settings.memoryBudget = memoryBudget;
+        const BackendRequest request{std::move(backend), std::move(device),
+                                     validation || validationRequested()};
+        return runTrace(target, seeds, vector, pointData, periodic, settings, request, progress,
+                        verbose);
+      },
+      py::arg("target"), py::arg("seeds"), py::kw_only(), py::arg("vector") = py::none(),
+      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
+      py::arg("steps") = 1000, py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
+      py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,
+      py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f,
+      py::arg("memory_budget") = 0, py::arg("backend") = "auto", py::arg("device") = "",
+      py::arg("validation") = false, py::arg("progress") = py::none(),
+      py::arg("verbose") = false,
+      "Traces streamlines from seeds ((N, 3) points) through a Dataset (vector, point_data "
+      "and periodic as for prepare()) or a prepared Field, as `amrstream trace` does.");
+  m.def("reason_name", &reasonName, py::arg("code"),
+        "The name of a ReasonForTermination code, e.g. 'out of domain'.");
+}
+
+}  // namespace amrstream::python
