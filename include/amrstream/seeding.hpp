@@ -15,15 +15,15 @@ namespace amrstream {
 
 // The first strategy set wins, in the order of the members.
 struct SeedRequest {
-  std::string file;            // one "x y z" per line
-  std::vector<double> line;    // x0,y0,z0,x1,y1,z1: `count` seeds from one end to the other
-  std::string density;         // a scalar: random points in cells at or above its percentile
+  std::string file;          // one "x y z" per line
+  std::vector<double> line;  // x0,y0,z0,x1,y1,z1: `count` seeds from one end to the other
+  std::string density;       // a scalar: random points in cells at or above its percentile
   double percentile = 90.0;
-  bool weighted = false;       // density: cells picked with probability proportional to it
-  std::vector<int> grid;       // NX,NY,NZ: a regular grid in the box
-  std::vector<double> box;     // x0,y0,z0,x1,y1,z1; empty: the domain
+  bool weighted = false;    // density: cells picked with probability proportional to it
+  std::vector<int> grid;    // NX,NY,NZ: a regular grid in the box
+  std::vector<double> box;  // x0,y0,z0,x1,y1,z1; empty: the domain
   std::size_t count = 256;
-  std::uint64_t seed = 1;      // random seed
+  std::uint64_t seed = 1;  // random seed
 };
 
 // The box seeds may fill: the cells' bounding box [lower, upper) in physical coordinates.

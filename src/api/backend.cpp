@@ -70,8 +70,8 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use, const
   } else {
     const std::optional<gpu::Backend> named = gpu::parseBackend(request.backend);
     if (!named)
-      throw InputError("backend", "'" + request.backend +
-                                      "' is not auto, rayquery, pipeline, compute or cpu");
+      throw InputError("backend",
+                       "'" + request.backend + "' is not auto, rayquery, pipeline, compute or cpu");
     choice.backend = *named;
   }
   return choice;

@@ -41,10 +41,9 @@ Dataset fromCells(CellArrays cells) {
   info.finestFileLevel = finest;
   info.levelsCountDown = true;
   info.levelName = "level (0 = coarsest)";
-  Dataset dataset(std::move(cells.corners), std::move(levels), std::move(cells.channels),
-                  bricks::WorldTransform{cells.origin, cells.finestWidth}, cells.source);
-  dataset.setInfo(std::move(info));
-  return dataset;
+  return Dataset(std::move(cells.corners), std::move(levels), std::move(cells.channels),
+                 bricks::WorldTransform{cells.origin, cells.finestWidth}, cells.source,
+                 std::move(info));
 }
 
 }  // namespace amrstream

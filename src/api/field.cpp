@@ -18,9 +18,9 @@ flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::Datase
     const auto axis =
         std::string_view("xyz").find(char(std::tolower(static_cast<unsigned char>(c))));
     if (axis == std::string_view::npos)
-      throw InputError("--periodic",
-                       fmt::format("'{}' is not auto, none or a list of the axes x, y and z",
-                                   request));
+      throw InputError(
+          "--periodic",
+          fmt::format("'{}' is not auto, none or a list of the axes x, y and z", request));
     axes[axis] = true;
   }
   return axes;

@@ -17,8 +17,8 @@ glm::dvec3 corner(const std::vector<double>& v, int which) {
 
 void checkSize(const std::vector<double>& values, const char* option) {
   if (values.size() != 6)
-    throw InputError(option, fmt::format("needs 6 numbers x0,y0,z0,x1,y1,z1, not {}",
-                                         values.size()));
+    throw InputError(option,
+                     fmt::format("needs 6 numbers x0,y0,z0,x1,y1,z1, not {}", values.size()));
 }
 
 // The seed box: the request's box, checked against the domain, or the domain itself.
@@ -66,15 +66,14 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
     description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
                               request.density, request.percentile,
                               request.weighted ? ", weighted by it" : "", request.seed);
-    return flow::seedsInDensestCells(*cells, {request.density, request.percentile,
-                                              request.weighted, request.count, request.seed});
+    return flow::seedsInDensestCells(*cells, {request.density, request.percentile, request.weighted,
+                                              request.count, request.seed});
   }
   auto [lo, hi] = seedBox(request, domain);
   // Keep seeds off the domain's open upper faces, where rounding to float could put them.
   hi = glm::min(hi, domain.upper - 1e-4 * domain.finestWidth);
   if (!request.grid.empty()) {
-    if (request.grid.size() != 3)
-      throw InputError("--seed-grid", "needs 3 counts NX,NY,NZ");
+    if (request.grid.size() != 3) throw InputError("--seed-grid", "needs 3 counts NX,NY,NZ");
     const glm::ivec3 counts(request.grid[0], request.grid[1], request.grid[2]);
     if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
       throw InputError("--seed-grid", "every count must be at least 1");

@@ -67,8 +67,7 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.stepSize = chooseStepSize(options.stepMode, s.stepSize, volume);
   options.maxSteps = s.steps;
   options.keepHistory = s.keepHistory;
-  if (!(s.terminalSpeed >= 0.0f))
-    throw InputError("--terminal-speed", "must be 0 or positive");
+  if (!(s.terminalSpeed >= 0.0f)) throw InputError("--terminal-speed", "must be 0 or positive");
   if (!(s.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");
   if (!(s.maxTime >= 0.0f)) throw InputError("--max-time", "must be 0 (no limit) or positive");
   options.terminalSpeed = s.terminalSpeed;

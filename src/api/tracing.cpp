@@ -23,6 +23,8 @@ const char* reasonName(int reason) {
       return "stagnation";
     case AMRSTREAM_REASON_MAX_TIME:
       return "max time";
+    case AMRSTREAM_REASON_PERIODIC_WRAP:
+      return "periodic wrap";
     default:
       return "unknown";
   }
@@ -56,23 +58,25 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
   t.setupSeconds = clock.seconds();
   t.backend = gpu::backendName(backend);
   t.device = ctx.deviceName();
-  say(log, fmt::format(
-      "tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
-      "{:.2f} s, kernels {:.2f} s]",
-      gpu::backendName(backend), ctx.deviceName(), t.setupSeconds, tracer.setup().uploadSeconds,
-      tracer.setup().structureSeconds, tracer.setup().pipelineSeconds));
+  say(log,
+      fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
+                  "{:.2f} s, kernels {:.2f} s]",
+                  gpu::backendName(backend), ctx.deviceName(), t.setupSeconds,
+                  tracer.setup().uploadSeconds, tracer.setup().structureSeconds,
+                  tracer.setup().pipelineSeconds));
   clock.restart();
   flow::StoredTraces traces = tracer.traceToRounds(seeds, options, progress);
   t.traceSeconds = clock.seconds();
   checkValidation(ctx);
   const gpu::TraceRunStats& run = tracer.lastRun();
-  say(log, fmt::format(
-      "rounds     {} in {} batch{}: plan {:.3f} s, buffers {:.3f} s, lines {:.3f} s, submitting "
-      "{:.3f} s, waiting for rounds {:.3f} s and copies {:.3f} s, unpacking {:.3f} s, "
-      "collecting {:.3f} s, storing {:.3f} s",
-      run.rounds, run.batches, run.batches == 1 ? "" : "es", run.planSeconds, run.buffersSeconds,
-      run.linesSeconds, run.submitSeconds, run.roundWaitSeconds, run.copyWaitSeconds,
-      run.unpackSeconds, run.collectSeconds, run.storeSeconds));
+  say(log,
+      fmt::format("rounds     {} in {} batch{}: plan {:.3f} s, buffers {:.3f} s, lines {:.3f} s, "
+                  "submitting "
+                  "{:.3f} s, waiting for rounds {:.3f} s and copies {:.3f} s, unpacking {:.3f} s, "
+                  "collecting {:.3f} s, storing {:.3f} s",
+                  run.rounds, run.batches, run.batches == 1 ? "" : "es", run.planSeconds,
+                  run.buffersSeconds, run.linesSeconds, run.submitSeconds, run.roundWaitSeconds,
+                  run.copyWaitSeconds, run.unpackSeconds, run.collectSeconds, run.storeSeconds));
   return traces;
 }
 

@@ -7,10 +7,9 @@
 #include "flow/seeds.hpp"
 #include "output/vtp_reader.hpp"
 #include "progress.hpp"
-#include "render/image/colour_bar.hpp"
 #include "render/image/png_io.hpp"
-#include "render/tube_renderer.hpp"
 #include "render_options.hpp"
+#include "trace_job.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -48,7 +47,7 @@ void checkTracesInDomain(const std::string& path, const flow::TraceSet& traces,
 }
 
 void runRender(const RenderCommandOptions& o) {
-  if (o.job.backend.backend == "cpu")
+  if (o.job.backend.backend == "cpu")  // before tracing: rendering needs a Vulkan device
     throw InputError("--backend", "rendering needs a Vulkan device: choose auto, rayquery, "
                                   "pipeline or compute");
   PreparedInput input = prepareInput(o.job, o.traces.empty());
@@ -59,42 +58,16 @@ void runRender(const RenderCommandOptions& o) {
     traces = output::readVtpTraces(o.traces);
     checkTracesInDomain(o.traces, traces, input.volume);
   }
-  const RenderScene scene = prepareScene(o.look, input, traces);
-
-  const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, printLine);
-  if (choice.backend == gpu::Backend::Cpu)
-    throw std::runtime_error("rendering needs a Vulkan device with compute; none was found "
-                             "(see `amrstream devices`)");
-  const vk::Context ctx = createContext(o.job.backend, choice);
-  Stopwatch clock;
-  render::TubeRenderer renderer(ctx, choice.backend, input.volume, scene.contextScalars);
-  renderer.setTubes(scene.segments, scene.settings.tubeRadius);
-  renderer.setColourMap(render::colourMapTable(scene.colourMap));
-  renderer.resize(o.look.width, o.look.height);
-  const double setupSeconds = clock.seconds();
-  fmt::print("render     backend {} on {}: {} tube segments (radius {:g} cells), {} x {}, "
-             "{} frames [setup {:.2f} s]\n",
-             gpu::backendName(choice.backend), ctx.deviceName(), withCommas(scene.segments.size()),
-             scene.settings.tubeRadius, o.look.width, o.look.height, o.frames, setupSeconds);
-
-  clock.restart();
-  double kernelSeconds = 0.0;
+  RenderedImage rendered;
   {
     Progress progress("rendering", o.frames);
-    for (std::uint32_t f = 0; f < o.frames; ++f) {
-      renderer.renderFrame(scene.camera, scene.settings);
-      kernelSeconds += renderer.lastFrameSeconds().value_or(0.0);
-      progress.update(f + 1);
-    }
+    rendered = renderImage(
+        o.job.backend, o.look, input.field(), input.volume, traces, o.frames, o.colourBar,
+        [&](std::uint32_t done, std::uint32_t) { progress.update(done); }, printLine);
   }
-  checkValidation(ctx);
-  render::Image image = renderer.readImage();
-  if (o.colourBar)
-    render::drawColourBar(image, {scene.colourMap, scene.settings.colourRange.min,
-                                  scene.settings.colourRange.max, scene.colourLabel});
-  render::writePng(o.out, image);
-  fmt::print("time       {:.2f} s, {:.1f} ms per frame on the device\n", clock.seconds(),
-             1e3 * kernelSeconds / std::max<std::uint32_t>(1, o.frames));
+  render::writePng(o.out, rendered.image);
+  fmt::print("time       {:.2f} s, {:.1f} ms per frame on the device\n", rendered.renderSeconds,
+             1e3 * rendered.kernelSecondsPerFrame);
   fmt::print("output     {}\n", o.out);
 }
 

@@ -13,7 +13,7 @@ ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu
     : options_(options), ctx_(&ctx), backend_(backend), input_(std::move(input)),
       tracer_(ctx, backend, input_.volume) {
   startTraces();
-  scene_ = prepareScene(options_.look, input_, traces_->traces());
+  scene_ = prepareScene(options_.look, input_.field(), input_.volume, traces_->traces());
   renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
   setColourMap(scene_.colourMap);
   rebuildTubes();
@@ -29,7 +29,7 @@ void ViewSession::startTraces() {
 }
 
 void ViewSession::rebuildTubes() {
-  updateTubes(scene_, options_.look, input_, traces_->traces());
+  updateTubes(scene_, options_.look, input_.field(), input_.volume, traces_->traces());
   vkQueueWaitIdle(ctx_->queue());
   renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
 }
@@ -50,7 +50,7 @@ void ViewSession::restartTraces() {
 
 void ViewSession::reloadVolume() {
   const render::OrbitCamera camera = scene_.camera;
-  scene_ = prepareScene(options_.look, input_, traces_->traces());
+  scene_ = prepareScene(options_.look, input_.field(), input_.volume, traces_->traces());
   scene_.camera = camera;
   vkQueueWaitIdle(ctx_->queue());
   renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume, scene_.contextScalars);
