@@ -76,9 +76,10 @@ class ConcurrentKeySet {
   std::size_t mask_ = 0;
 };
 
-std::string describeCell(std::size_t i, glm::ivec3 lower, int level) {
-  return fmt::format("cell {} (level {}, lower corner {},{},{})", i, level, lower.x, lower.y,
-                     lower.z);
+// Levels as the input numbers them.
+std::string describeCell(std::size_t i, glm::ivec3 lower, int level, const DatasetInfo& info) {
+  return fmt::format("cell {} (level {}, lower corner {},{},{})", i, info.fileLevel(level), lower.x,
+                     lower.y, lower.z);
 }
 
 }  // namespace
@@ -92,6 +93,18 @@ AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> lev
       source_(std::move(source)) {
   info_.levelsCountDown = false;
   info_.levelName = "level (0 = finest)";
+  validate();
+}
+
+AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                   std::vector<Channel> channels, WorldTransform transform, std::string source,
+                   DatasetInfo info)
+    : lowers_(std::move(lowers)),
+      levels_(std::move(levels)),
+      channels_(std::move(channels)),
+      transform_(transform),
+      source_(std::move(source)),
+      info_(std::move(info)) {
   validate();
 }
 
@@ -135,24 +148,25 @@ void AmrField::validate() {
   }
 
   if (std::size_t i = firstFailing(n, [&](std::size_t i) { return levels_[i] > kMaxLevel; }); i < n)
-    throw InputError(source_, fmt::format("{} has a level above the supported maximum {}",
-                                          describeCell(i, lowers_[i], levels_[i]), kMaxLevel));
+    throw InputError(source_,
+                     fmt::format("{} has a level above the supported maximum {}",
+                                 describeCell(i, lowers_[i], levels_[i], info_), kMaxLevel));
   const auto misaligned = [&](std::size_t i) {
     const int mask = cellWidth(levels_[i]) - 1;
     return (lowers_[i].x & mask) | (lowers_[i].y & mask) | (lowers_[i].z & mask);
   };
   if (std::size_t i = firstFailing(n, misaligned); i < n)
-    throw InputError(source_,
-                     fmt::format("{} is not aligned to its level's grid (corner "
-                                 "coordinates must be multiples of {})",
-                                 describeCell(i, lowers_[i], levels_[i]), cellWidth(levels_[i])));
+    throw InputError(source_, fmt::format("{} is not aligned to its level's grid (corner "
+                                          "coordinates must be multiples of {})",
+                                          describeCell(i, lowers_[i], levels_[i], info_),
+                                          cellWidth(levels_[i])));
 
   for (const Channel& c : channels_) {
     const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
     if (std::size_t i = firstFailing(n, notFinite); i < n)
       throw InputError(source_,
                        fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name,
-                                   c.values[i], describeCell(i, lowers_[i], levels_[i])));
+                                   c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
   }
 
   CellBox box{glm::ivec3(std::numeric_limits<int>::max()),
@@ -180,8 +194,8 @@ void AmrField::validate() {
   };
   const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(key(lowers_[i])); };
   if (std::size_t i = firstFailing(n, duplicated); i < n)
-    throw InputError(source_,
-                     fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i])));
+    throw InputError(
+        source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
 
   const auto insideCoarser = [&](std::size_t i) -> int {
     for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
@@ -202,8 +216,8 @@ void AmrField::validate() {
     const int mask = ~(cellWidth(level) - 1);
     throw InputError(
         source_, fmt::format("{} overlaps the level-{} cell at {},{},{}",
-                             describeCell(i, lowers_[i], levels_[i]), level, lowers_[i].x & mask,
-                             lowers_[i].y & mask, lowers_[i].z & mask));
+                             describeCell(i, lowers_[i], levels_[i], info_), info_.fileLevel(level),
+                             lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask));
   }
 }
 

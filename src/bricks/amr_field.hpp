@@ -54,6 +54,11 @@ class AmrField {
   // `source` names where the data came from (a path or builtin:NAME); it prefixes every error.
   AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
            std::vector<Channel> channels, WorldTransform transform, std::string source);
+  // The same with what the input says of itself, known before the cells are checked: errors
+  // then name levels as the input numbers them.
+  AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+           std::vector<Channel> channels, WorldTransform transform, std::string source,
+           DatasetInfo info);
 
   std::size_t cellCount() const { return lowers_.size(); }
   std::span<const glm::ivec3> lowers() const { return lowers_; }
