@@ -30,8 +30,8 @@ from . import _amrstream
 
 __all__ = [
     "BackendError", "Dataset", "Field", "InputError", "Traces", "__version__", "from_arrays",
-    "from_yt", "load", "prepare", "reason_name", "seeds_densest", "seeds_grid", "seeds_line",
-    "seeds_random", "trace",
+    "from_yt", "load", "prepare", "reason_name", "render", "seeds_densest", "seeds_grid",
+    "seeds_line", "seeds_random", "trace",
 ]
 
 DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
@@ -71,6 +71,17 @@ def trace(target, seeds, *, vector=None, point_data=None, periodic=None, **setti
         point_data = ",".join(point_data) if point_data else "none"
     return _amrstream.trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
                             periodic=periodic, **settings)
+
+
+def render(traces, **look):
+    """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
+    RGBA image. Options as `amrstream render` names them: width=1024, height=768,
+    camera=(azimuth, elevation[, zoom]), view_box=(x0, y0, z0, x1, y1, z1) the camera frames
+    (default: the domain), tube_radius (finest cells), colour_by='speed'|'time'|a
+    field, colour_map='viridis'|'magma'|'coolwarm', range=(min, max), ao_samples=4,
+    volume=<a field shown behind the tubes>, volume_range, volume_opacity=0.05,
+    linear_volume=False, frames=32, colour_bar=True, backend, device, progress, verbose."""
+    return traces.render(**look)
 
 
 def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):

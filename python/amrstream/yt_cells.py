@@ -11,7 +11,8 @@ Conventions of the returned arrays:
 * ``max_level`` is ``ds.index.max_level``, the finest level yt's index holds. Level 0 is
   yt's root level; a cell of level ``l`` spans ``2 ** (max_level - l)`` finest cells per axis.
 * ``corners`` count finest cells from ``ds.domain_left_edge``.
-* Field values are converted to the dataset's code units (``in_base("code")``); the units
+* Field values are in the dataset's code units: fields on disk as the file writes them, derived
+  fields converted with ``in_base("code")``; the units
   they ended up in are listed in ``field_units`` (a field yt cannot express in code units
   keeps the units yt gives it, and ``field_units`` says which). ``field_units`` is for
   the caller to read; pop it before ``from_arrays(**cells)`` if that does not take it.
@@ -223,10 +224,17 @@ def _on_finest_lattice(grid, position):
 
 
 def _leaf_values_in_code_units(grid, field, mask):
-    """Return (float32 values of the leaf cells, units string)."""
+    """Return (float32 values of the leaf cells, units string).
+
+    A field on disk keeps the units its file writes it in (yt's reader declares them, e.g.
+    code_velocity**2): reducing those to code base units would scale the numbers wherever a
+    code unit is not a product of the base ones (Enzo's comoving velocity unit is not
+    length/time). Derived fields are expressed in code base units where yt can."""
     from unyt.exceptions import UnitConversionError, UnitsNotReducible
 
     values = grid[field][mask]
+    if tuple(field) in grid.ds.field_list:
+        return np.asarray(values.d, dtype=np.float32), str(values.units)
     try:
         values = values.in_base("code")
     except (UnitConversionError, UnitsNotReducible):

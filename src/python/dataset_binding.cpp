@@ -1,14 +1,16 @@
 // amrstream.Dataset, amrstream.Field, load, from_arrays.
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include <fmt/format.h>
+#include <cmath>
 
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
-#include "flow/seeds.hpp"
 #include "bindings.hpp"
+#include "flow/seeds.hpp"
 #include "numpy_views.hpp"
+#include "prepared_field.hpp"
 
 namespace amrstream::python {
 
@@ -50,14 +52,25 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
                                     std::string lengthUnit, std::string source,
                                     std::string format) {
   CellArrays cells;
-  const auto c = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(corners);
+  const py::array given = py::array::ensure(corners);
+  if (given && given.dtype().kind() == 'f') {
+    const auto real = given.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+    for (py::ssize_t i = 0; i < real.size(); ++i)
+      if (real.data()[i] != std::floor(real.data()[i]))
+        throw py::value_error(fmt::format(
+            "corners must be whole numbers of finest cells; element {} is {}", i, real.data()[i]));
+  }
+  const auto c =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(corners);
   if (!c || c.ndim() != 2 || c.shape(1) != 3)
     throw py::value_error("corners must be an (N, 3) array of integer cell indices");
-  const auto l = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(levels);
+  const auto l =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(levels);
   if (!l || l.ndim() != 1 || l.shape(0) != c.shape(0))
-    throw py::value_error(fmt::format("levels must be an (N,) array with one level per corner "
-                                      "({} corners)",
-                                      c.shape(0)));
+    throw py::value_error(
+        fmt::format("levels must be an (N,) array with one level per corner "
+                    "({} corners)",
+                    c.shape(0)));
   const std::size_t n = std::size_t(c.shape(0));
   cells.corners.resize(n);
   cells.levels.resize(n);
@@ -105,20 +118,24 @@ void bindDataset(py::module_& m) {
       .def_property_readonly("time", [](const Dataset& d) { return d.info().time; })
       .def_property_readonly("time_unit", [](const Dataset& d) { return d.info().timeUnit; })
       .def_property_readonly("length_unit", [](const Dataset& d) { return d.info().lengthUnit; })
-      .def_property_readonly("periodic", [](const Dataset& d) { return periodicOf(d.info()); },
-                             "(x, y, z) periodicity the file declares, or None")
-      .def_property_readonly("origin", [](const Dataset& d) { return tuple3(d.transform().origin); },
-                             "physical position of corner (0, 0, 0)")
+      .def_property_readonly(
+          "periodic", [](const Dataset& d) { return periodicOf(d.info()); },
+          "(x, y, z) periodicity the file declares, or None")
+      .def_property_readonly(
+          "origin", [](const Dataset& d) { return tuple3(d.transform().origin); },
+          "physical position of corner (0, 0, 0)")
       .def_property_readonly("finest_width",
                              [](const Dataset& d) { return tuple3(d.transform().spacing); })
-      .def_property_readonly("domain_left_edge",
-                             [](const Dataset& d) {
-                               return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().lower)));
-                             })
-      .def_property_readonly("domain_right_edge",
-                             [](const Dataset& d) {
-                               return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().upper)));
-                             })
+      .def_property_readonly(
+          "domain_left_edge",
+          [](const Dataset& d) {
+            return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().lower)));
+          })
+      .def_property_readonly(
+          "domain_right_edge",
+          [](const Dataset& d) {
+            return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().upper)));
+          })
       .def_property_readonly(
           "corners",
           [](py::object self) {
@@ -138,30 +155,38 @@ void bindDataset(py::module_& m) {
           },
           py::arg("name"), "(N,) float32 values of one field, in cell order (no copy)")
       .def("__repr__", [](const Dataset& d) {
-        return fmt::format("<amrstream.Dataset {}: {} cells, fields {}>", d.source(),
-                           d.cellCount(), fmt::join(channelNames(d), ", "));
+        return fmt::format("<amrstream.Dataset {}: {} cells, fields {}>", d.source(), d.cellCount(),
+                           fmt::join(channelNames(d), ", "));
       });
 
-  py::class_<Field, std::shared_ptr<Field>>(
+  py::class_<PreparedField, std::shared_ptr<PreparedField>>(
       m, "Field", "A dataset made ready for tracing: vector, point data, bricks and regions.")
-      .def_property_readonly("source", [](const Field& f) { return f.source; })
-      .def_property_readonly("vector_name", [](const Field& f) { return f.vector.name; })
-      .def_property_readonly("vector", [](const Field& f) { return f.vector.channels; })
-      .def_property_readonly("point_data", [](const Field& f) { return f.volume.channelNames; })
+      .def_property_readonly("source", [](const PreparedField& p) { return p.field.source; })
+      .def_property_readonly("vector_name",
+                             [](const PreparedField& p) { return p.field.vector.name; })
+      .def_property_readonly("vector",
+                             [](const PreparedField& p) { return p.field.vector.channels; })
+      .def_property_readonly("point_data",
+                             [](const PreparedField& p) { return p.field.volume.channelNames; })
       .def_property_readonly("periodic",
-                             [](const Field& f) {
+                             [](const PreparedField& p) {
+                               const Field& f = p.field;
                                return py::make_tuple(f.volume.periodic[0], f.volume.periodic[1],
                                                      f.volume.periodic[2]);
                              })
-      .def_property_readonly("brick_count",
-                             [](const Field& f) { return f.volume.originalBrickCount; })
-      .def_property_readonly("region_count",
-                             [](const Field& f) { return f.volume.regions.regions.size(); })
-      .def_property_readonly("domain_left_edge",
-                             [](const Field& f) { return tuple3(flow::domainLower(f.volume)); })
-      .def_property_readonly("domain_right_edge",
-                             [](const Field& f) { return tuple3(flow::domainUpper(f.volume)); })
-      .def("__repr__", [](const Field& f) {
+      .def_property_readonly(
+          "brick_count", [](const PreparedField& p) { return p.field.volume.originalBrickCount; })
+      .def_property_readonly(
+          "region_count",
+          [](const PreparedField& p) { return p.field.volume.regions.regions.size(); })
+      .def_property_readonly(
+          "domain_left_edge",
+          [](const PreparedField& p) { return tuple3(flow::domainLower(p.field.volume)); })
+      .def_property_readonly(
+          "domain_right_edge",
+          [](const PreparedField& p) { return tuple3(flow::domainUpper(p.field.volume)); })
+      .def("__repr__", [](const PreparedField& p) {
+        const Field& f = p.field;
         return fmt::format("<amrstream.Field {} of {}: point data [{}], {} bricks, {} regions>",
                            f.vector.name, f.source, fmt::join(f.volume.channelNames, ", "),
                            f.volume.originalBrickCount, f.volume.regions.regions.size());
@@ -187,22 +212,21 @@ void bindDataset(py::module_& m) {
 
   m.def("from_arrays", &fromArrays, py::arg("corners"), py::arg("levels"), py::arg("fields"),
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0),
-        py::arg("periodic") = py::none(), py::arg("time") = py::none(),
-        py::arg("time_unit") = "", py::arg("length_unit") = "", py::arg("source") = "arrays",
-        py::arg("format") = "arrays",
+        py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0), py::arg("periodic") = py::none(),
+        py::arg("time") = py::none(), py::arg("time_unit") = "", py::arg("length_unit") = "",
+        py::arg("source") = "arrays", py::arg("format") = "arrays",
         "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
         "with 0 the coarsest, fields {name: (N,) values}.");
 
   m.def(
       "prepare",
-      [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector,
-         std::string pointData, std::string periodic) {
+      [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector, std::string pointData,
+         std::string periodic) {
         py::gil_scoped_release unlocked;
-        return std::make_shared<Field>(
-            buildField(*dataset, {vector.value_or(""), pointData, periodic}));
+        return std::make_shared<PreparedField>(PreparedField{
+            dataset, buildField(*dataset, {vector.value_or(""), pointData, periodic})});
       },
-      py::arg("dataset"), py::kw_only(), py::arg("vector") = py::none(),
+      py::arg("dataset").none(false), py::kw_only(), py::arg("vector") = py::none(),
       py::arg("point_data") = "all", py::arg("periodic") = "auto",
       "Chooses the vector ('a,b,c'; default: the velocity, else the magnetic field) and the point "
       "data (all, none or 'a,b'), adds periodic images, builds bricks and regions.");

@@ -6,6 +6,7 @@
 #include "amrstream/seeding.hpp"
 #include "bindings.hpp"
 #include "numpy_views.hpp"
+#include "prepared_field.hpp"
 
 namespace amrstream::python {
 
@@ -14,7 +15,8 @@ namespace {
 // The domain of a Dataset or a Field.
 Domain domainOfTarget(py::handle target) {
   if (py::isinstance<Dataset>(target)) return domainOf(target.cast<const Dataset&>());
-  if (py::isinstance<Field>(target)) return domainOf(target.cast<const Field&>().volume);
+  if (py::isinstance<PreparedField>(target))
+    return domainOf(target.cast<const PreparedField&>().field.volume);
   throw py::type_error("expected an amrstream.Dataset or amrstream.Field");
 }
 
@@ -89,7 +91,7 @@ void bindSeeding(py::module_& m) {
         r.seed = seed;
         return seedsFor(r, domainOf(*dataset), dataset.get());
       },
-      py::arg("dataset"), py::arg("field"), py::arg("count") = 256, py::kw_only(),
+      py::arg("dataset").none(false), py::arg("field"), py::arg("count") = 256, py::kw_only(),
       py::arg("percentile") = 90.0, py::arg("weighted") = false, py::arg("seed") = 1,
       "count random points in random cells whose field is at or above its percentile "
       "(weighted: cells picked in proportion to the field).");

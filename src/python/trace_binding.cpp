@@ -1,21 +1,22 @@
 // amrstream.trace and the Traces it returns: numpy views of the traced lines, and to_vtp.
 
+#include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
-
-#include <fmt/format.h>
 
 #include <chrono>
 #include <mutex>
 
 #include "amrstream/field.hpp"
 #include "amrstream/provenance.hpp"
+#include "amrstream/rendering.hpp"
 #include "amrstream/seeding.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "amrstream/tracing.hpp"
 #include "bindings.hpp"
 #include "numpy_views.hpp"
 #include "output/vtp_writer.hpp"
+#include "prepared_field.hpp"
 
 namespace amrstream::python {
 
@@ -25,6 +26,7 @@ struct Traces {
   flow::TraceSet lines;
   std::vector<output::FieldDataArray> provenance;
   TraceReport report;
+  std::shared_ptr<const PreparedField> field;  // what rendering the lines reads
 };
 
 std::size_t lineIndex(const Traces& t, py::ssize_t i) {
@@ -81,16 +83,15 @@ std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
                                  std::optional<std::string> vector,
                                  std::optional<std::string> pointData,
                                  std::optional<std::string> periodic, const TraceSettings& settings,
-                                 const BackendRequest& backend, py::object progress,
-                                 bool verbose) {
-  std::shared_ptr<Field> field;
+                                 const BackendRequest& backend, py::object progress, bool verbose) {
+  std::shared_ptr<PreparedField> field;
   std::shared_ptr<Dataset> cells;
-  if (py::isinstance<Field>(target)) {
+  if (py::isinstance<PreparedField>(target)) {
     if (vector || pointData || periodic)
       throw py::value_error(
           "vector, point_data and periodic were chosen when the Field was prepared; pass the "
           "Dataset to choose them here");
-    field = target.cast<std::shared_ptr<Field>>();
+    field = target.cast<std::shared_ptr<PreparedField>>();
   } else if (py::isinstance<Dataset>(target)) {
     cells = target.cast<std::shared_ptr<Dataset>>();
   } else {
@@ -103,18 +104,69 @@ std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
   auto result = std::make_shared<Traces>();
   py::gil_scoped_release unlocked;
   if (!field)
-    field = std::make_shared<Field>(buildField(
-        *cells, {vector.value_or(""), pointData.value_or("all"), periodic.value_or("auto")}));
-  placeSeeds(field->volume, seedList);
-  const flow::TraceOptions options = traceOptions(settings, field->volume);
-  flow::StoredTraces stored = trace(backend, field->volume, seedList.points, options, onProgress,
+    field = std::make_shared<PreparedField>(
+        PreparedField{cells, buildField(*cells, {vector.value_or(""), pointData.value_or("all"),
+                                                 periodic.value_or("auto")})});
+  Field& f = field->field;
+  placeSeeds(f.volume, seedList);
+  const flow::TraceOptions options = traceOptions(settings, f.volume);
+  flow::StoredTraces stored = trace(backend, f.volume, seedList.points, options, onProgress,
                                     &result->report, HostValues::Keep, log);
-  result->provenance = provenanceFields(
-      {field->source, field->info, fmt::format("{} from Python", seedList.points.size()), options,
-       result->report},
-      field->volume);
+  result->provenance =
+      provenanceFields({f.source, f.info, fmt::format("{} from Python", seedList.points.size()),
+                        options, result->report},
+                       f.volume);
   result->lines = std::move(stored).assemble();
+  result->field = field;
   return result;
+}
+
+py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t height,
+                       std::optional<std::vector<float>> camera,
+                       std::optional<std::vector<double>> viewBox, std::optional<float> tubeRadius,
+                       std::string colourBy, std::string colourMap,
+                       std::optional<std::vector<float>> range, std::uint32_t aoSamples,
+                       std::optional<std::string> volume,
+                       std::optional<std::vector<float>> volumeRange, float volumeOpacity,
+                       bool linearVolume, std::uint32_t frames, bool colourBar, std::string backend,
+                       std::string device, bool validation, py::object progress, bool verbose) {
+  if (width < 16 || height < 16 || width > 16384 || height > 16384)
+    throw py::value_error("width and height must be 16 to 16384 pixels");
+  if (camera && camera->size() != 2 && camera->size() != 3)
+    throw py::value_error("camera must be (azimuth, elevation) or (azimuth, elevation, zoom)");
+  RenderOptions o;
+  o.width = width;
+  o.height = height;
+  o.camera = camera.value_or(std::vector<float>{});
+  o.viewBox = viewBox.value_or(std::vector<double>{});
+  o.tubeRadius = tubeRadius;
+  o.colourBy = std::move(colourBy);
+  o.colourMap = std::move(colourMap);
+  o.range = range.value_or(std::vector<float>{});
+  o.aoSamples = aoSamples;
+  o.volume = volume.value_or("");
+  o.volumeRange = volumeRange.value_or(std::vector<float>{});
+  o.volumeOpacity = volumeOpacity;
+  o.linearVolume = linearVolume;
+  const BackendRequest request{std::move(backend), std::move(device),
+                               validation || validationRequested()};
+  const flow::TraceProgress onProgress = throttled(progress);
+  const Log log = pythonLog(verbose);
+  RenderedImage rendered;
+  {
+    py::gil_scoped_release unlocked;
+    rendered = renderImage(
+        request, o, *t.field->cells, t.field->field.volume, t.lines, frames, colourBar,
+        [&](std::uint32_t done, std::uint32_t all) {
+          if (onProgress) onProgress(done, all);
+        },
+        log);
+  }
+  const render::Image& image = rendered.image;
+  py::array_t<std::uint8_t> rgba(
+      {py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(4)});
+  std::memcpy(rgba.mutable_data(), image.rgba.data(), image.rgba.size());
+  return rgba;
 }
 
 void bindTraces(py::module_& m) {
@@ -180,9 +232,9 @@ void bindTraces(py::module_& m) {
             const std::size_t channels = t.lines.channelCount();
             py::dict arrays;
             for (std::size_t c = 0; c < channels; ++c)
-              arrays[py::str(t.lines.channelNames[c])] = py::array_t<float>(
-                  {py::ssize_t(t.lines.pointCount())}, {py::ssize_t(channels * sizeof(float))},
-                  t.lines.channels.data() + c, self);
+              arrays[py::str(t.lines.channelNames[c])] =
+                  view(t.lines.channels.data() + c, t.lines.pointCount(), self,
+                       channels * sizeof(float));
             return arrays;
           },
           "{name: (M,) float32} sampled at every point")
@@ -220,6 +272,17 @@ void bindTraces(py::module_& m) {
           py::arg("periodic_lines") = "split",
           "Writes the lines as VTK XML PolyData, as the command line does; returns (polylines, "
           "points) written.")
+      .def("render", &renderTraces, py::kw_only(), py::arg("width") = 1024, py::arg("height") = 768,
+           py::arg("camera") = py::none(), py::arg("view_box") = py::none(),
+           py::arg("tube_radius") = py::none(), py::arg("colour_by") = "speed",
+           py::arg("colour_map") = "viridis", py::arg("range") = py::none(),
+           py::arg("ao_samples") = 4, py::arg("volume") = py::none(),
+           py::arg("volume_range") = py::none(), py::arg("volume_opacity") = 0.05f,
+           py::arg("linear_volume") = false, py::arg("frames") = 32, py::arg("colour_bar") = true,
+           py::arg("backend") = "auto", py::arg("device") = "", py::arg("validation") = false,
+           py::arg("progress") = py::none(), py::arg("verbose") = false,
+           "Renders the lines as shaded tubes on a Vulkan device, as `amrstream render` does; "
+           "returns a (height, width, 4) uint8 RGBA image.")
       .def("__repr__", [](const Traces& t) {
         return fmt::format("<amrstream.Traces {} lines, {} points, {} on {}>", t.lines.lineCount(),
                            t.lines.pointCount(), t.report.backend, t.report.device);
@@ -235,9 +298,9 @@ void bindTracing(py::module_& m) {
       [](py::object target, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
          std::uint32_t steps, std::optional<float> stepSize, std::string stepMode,
-         std::string direction, bool vorticity, float maxLength, float maxTime,
-         float terminalSpeed, std::uint64_t memoryBudget, std::string backend, std::string device,
-         bool validation, py::object progress, bool verbose) {
+         std::string direction, bool vorticity, float maxLength, float maxTime, float terminalSpeed,
+         std::uint64_t memoryBudget, std::string backend, std::string device, bool validation,
+         py::object progress, bool verbose) {
         TraceSettings settings;
         settings.steps = steps;
         settings.stepSize = stepSize;
@@ -254,13 +317,12 @@ void bindTracing(py::module_& m) {
                         verbose);
       },
       py::arg("target"), py::arg("seeds"), py::kw_only(), py::arg("vector") = py::none(),
-      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
-      py::arg("steps") = 1000, py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
+      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(), py::arg("steps") = 1000,
+      py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
       py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,
-      py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f,
-      py::arg("memory_budget") = 0, py::arg("backend") = "auto", py::arg("device") = "",
-      py::arg("validation") = false, py::arg("progress") = py::none(),
-      py::arg("verbose") = false,
+      py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f, py::arg("memory_budget") = 0,
+      py::arg("backend") = "auto", py::arg("device") = "", py::arg("validation") = false,
+      py::arg("progress") = py::none(), py::arg("verbose") = false,
       "Traces streamlines from seeds ((N, 3) points) through a Dataset (vector, point_data "
       "and periodic as for prepare()) or a prepared Field, as `amrstream trace` does.");
   m.def("reason_name", &reasonName, py::arg("code"),
