@@ -17,10 +17,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-amrstream = pytest.importorskip("amrstream", reason="the amrstream module is not on PYTHONPATH "
-                                "(build it: cmake --build build --target _amrstream)")
-vtk = pytest.importorskip("vtk", reason="VTK's Python module reads the .vtp files")
+import amrstream  # noqa: E402  (CTest puts build/python on PYTHONPATH)
+import vtk  # noqa: E402  (Debian's python3-vtk9 reads the .vtp files)
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+from shared_data import real_data
 
 # Small builtin data sets: the same sizes on both sides of every CLI comparison.
 SMALL = dict(levels=3, root_blocks=2, target_cells=50000)
@@ -37,16 +38,6 @@ def cli_path():
         pytest.skip("AMRSTREAM_CLI is not set: it names the amrstream executable (CTest sets it)")
     if not Path(path).is_file():
         pytest.skip(f"AMRSTREAM_CLI={path} does not exist: build the amrstream target")
-    return path
-
-
-def real_data(relative):
-    root = os.environ.get("AMRSTREAM_SHARED_DATA")
-    if not root:
-        pytest.skip("AMRSTREAM_SHARED_DATA is not set: it names the folder of the real data sets")
-    path = Path(root) / relative
-    if not path.exists():
-        pytest.skip(f"real data {path} is absent")
     return path
 
 

@@ -11,17 +11,17 @@ amrex-pelelmex-3d/ and flash-2d-nanowire/; CTest sets it), else ../shared/data/r
 repository; tests that need it skip when it is absent. Everything skips when yt is missing.
 """
 
-import os
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-yt = pytest.importorskip("yt", reason="yt is not installed; amrstream.from_yt needs it")
+import yt  # noqa: E402  (Debian's python3-yt; amrstream.from_yt needs it)
 yt.set_log_level(40)
 yt.config.ytcfg["yt", "suppress_stream_logging"] = True
 
-import amrstream  # noqa: E402  (after the yt skip: a missing yt skips rather than errors)
+import amrstream  # noqa: E402
+
+from shared_data import real_data
 
 ENZO = "enzo-moving7/DD0010/moving7_0010"
 AMREX = "amrex-pelelmex-3d/example_plt_3d"
@@ -32,16 +32,6 @@ AMREX_VECTOR = ("x_velocity", "y_velocity", "z_velocity")
 # Every cell field Enzo writes in this file (the README lists them), by their on-disk names.
 ENZO_FIELDS = ("x-velocity", "y-velocity", "z-velocity",
                "Dark_Matter_Density", "Density", "Temperature", "TotalEnergy")
-
-
-def real_data(relative):
-    root = os.environ.get("AMRSTREAM_SHARED_DATA")
-    root = Path(root) if root else Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
-    path = root / relative
-    if not path.exists():
-        pytest.skip(f"real data {path} is absent: set AMRSTREAM_SHARED_DATA to the folder that "
-                    "holds the real data sets (../shared/data/real in a full checkout)")
-    return path
 
 
 # ------------------------------------------------------------------ the two Datasets per file

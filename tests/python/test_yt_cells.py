@@ -5,14 +5,15 @@ enzo-moving7/ and amrex-pelelmex-3d/); tests that need them skip when it is abse
 """
 
 import importlib.util
-import os
 import re
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-yt = pytest.importorskip("yt", reason="yt is not installed; the yt adapter needs it")
+from shared_data import real_data
+
+import yt  # noqa: E402  (Debian's python3-yt; the yt adapter needs it)
 yt.set_log_level(40)
 
 REPO = Path(__file__).resolve().parents[2]
@@ -29,16 +30,6 @@ def _load_adapter():
 yt_cells = _load_adapter()
 
 ENZO_VECTOR = ("x-velocity", "y-velocity", "z-velocity")
-
-
-def real_data(relative):
-    root = os.environ.get("AMRSTREAM_SHARED_DATA")
-    root = Path(root) if root else Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
-    path = root / relative
-    if not path.exists():
-        pytest.skip(f"real data {path} is absent: no ../shared/data/real checkout "
-                    "(or set AMRSTREAM_SHARED_DATA to the folder holding the real data sets)")
-    return path
 
 
 # ---------------------------------------------------------------- checks shared by the tests

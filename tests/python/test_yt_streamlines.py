@@ -14,18 +14,18 @@ Real data come from $AMRSTREAM_SHARED_DATA (CTest sets it), else ../shared/data/
 the repository; the tests skip when it is absent, or when yt is missing.
 """
 
-import os
 import time
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-yt = pytest.importorskip("yt", reason="yt is not installed; these tests compare with yt")
+import yt  # noqa: E402  (Debian's python3-yt; these tests compare with it)
 yt.set_log_level(40)
 yt.config.ytcfg["yt", "suppress_stream_logging"] = True  # no progress bars
 
 import amrstream  # noqa: E402
+
+from shared_data import real_data
 
 ENZO = "enzo-moving7/DD0010/moving7_0010"
 VECTOR = ("x-velocity", "y-velocity", "z-velocity")
@@ -33,16 +33,6 @@ SEEDS = 64
 LENGTH = 0.05        # code_length: about 102 finest cells
 STEP_CELLS = 0.25    # amrstream's step_size, and yt's dx in finest cells
 FINEST = 1.0 / 2048  # the Enzo file's finest cell (16^3 root grid, 7 refinements)
-
-
-def real_data(relative):
-    root = os.environ.get("AMRSTREAM_SHARED_DATA")
-    root = Path(root) if root else Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
-    path = root / relative
-    if not path.exists():
-        pytest.skip(f"real data {path} is absent: set AMRSTREAM_SHARED_DATA to the folder that "
-                    "holds the real data sets (../shared/data/real in a full checkout)")
-    return path
 
 
 def points_taken(line):
