@@ -14,6 +14,7 @@ struct FieldOptions {
   std::string vector;             // "a,b,c"; empty: the velocity, else the magnetic field
   std::string pointData = "all";  // all (every channel but the vector's), none, or NAME,NAME,...
   std::string periodic = "auto";  // auto (as the file says), none, or axes such as "x,y,z"
+  std::string interpolant = "tent";  // tent (the paper's) or linear (exact for linear fields)
 };
 
 struct Field {
@@ -30,5 +31,9 @@ Field buildField(const Dataset& cells, const FieldOptions& options);
 // "auto", "none", or the periodic axes, e.g. "x,y,z" or "xz".
 flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::DatasetInfo& info);
 std::string axesText(const flow::PeriodicAxes& axes);  // "x,z"; empty for none
+
+// "tent" or "linear"; InputError otherwise.
+flow::Interpolant parseInterpolant(const std::string& name);
+std::string interpolantName(flow::Interpolant interpolant);
 
 }  // namespace amrstream

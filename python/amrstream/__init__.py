@@ -47,30 +47,32 @@ def _vector_text(vector):
     return ",".join(names)
 
 
-def prepare(dataset, vector=None, point_data="all", periodic="auto"):
+def prepare(dataset, vector=None, point_data="all", periodic="auto", interpolant="tent"):
     """A Field ready for tracing: the vector ('a,b,c' or three names; default the velocity,
     else the magnetic field), the point data ('all', 'none' or names), periodic axes ('auto' as
-    the file says, 'none', or e.g. 'x,y,z'); bricks and regions built once for many traces."""
+    the file says, 'none', or e.g. 'x,y,z'), the interpolant ('tent', the paper's, or 'linear',
+    exact for linear fields; CPU only so far); bricks and regions built once for many traces."""
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
     return _amrstream.prepare(dataset, vector=_vector_text(vector), point_data=point_data,
-                              periodic=periodic)
+                              periodic=periodic, interpolant=interpolant)
 
 
-def trace(target, seeds, *, vector=None, point_data=None, periodic=None, **settings):
+def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpolant=None,
+          **settings):
     """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field.
 
     Settings, as `amrstream trace` names them: steps=1000, step_size (default 0.25 cell
     widths), step_mode='cell'|'time'|'arc', direction='both'|'forward'|'backward',
     vorticity=False, max_length=0, max_time=0, terminal_speed=1e-12, memory_budget=0 (bytes),
     backend='auto'|'cpu'|'compute'|'pipeline'|'rayquery', device='' (a device name part),
-    progress=callable(done, total), verbose=False. vector, point_data and periodic are those
-    of prepare() (only with a Dataset). Returns Traces.
+    progress=callable(done, total), verbose=False. vector, point_data, periodic and interpolant
+    are those of prepare() (only with a Dataset). Returns Traces.
     """
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
     return _amrstream.trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
-                            periodic=periodic, **settings)
+                            periodic=periodic, interpolant=interpolant, **settings)
 
 
 def render(traces, **look):

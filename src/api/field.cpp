@@ -33,6 +33,16 @@ std::string axesText(const flow::PeriodicAxes& axes) {
   return text;
 }
 
+flow::Interpolant parseInterpolant(const std::string& name) {
+  if (name == "tent") return flow::Interpolant::Tent;
+  if (name == "linear") return flow::Interpolant::Linear;
+  throw InputError("--interpolant", "'" + name + "' is not tent or linear");
+}
+
+std::string interpolantName(flow::Interpolant interpolant) {
+  return interpolant == flow::Interpolant::Linear ? "linear" : "tent";
+}
+
 Field buildField(const Dataset& cells, const FieldOptions& options) {
   Field field;
   field.source = cells.source();
@@ -41,6 +51,7 @@ Field buildField(const Dataset& cells, const FieldOptions& options) {
   flow::VolumeOptions volumeOptions;
   volumeOptions.periodic = periodicAxes(options.periodic, cells.info());
   volumeOptions.pointData = flow::choosePointData(cells, field.vector, options.pointData);
+  volumeOptions.interpolant = parseInterpolant(options.interpolant);
   field.volume = flow::buildVectorVolume(cells, field.vector, volumeOptions, &field.times);
   return field;
 }

@@ -57,16 +57,19 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
              cells.info().fileLevel(cells.finestLevel()), vector.name, vector.channels[0],
              vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(cells.info()),
              loadSeconds);
-  Field field = buildField(cells, {o.vector, o.pointData, o.periodic});
+  Field field = buildField(cells, {o.vector, o.pointData, o.periodic, o.interpolant});
   input.volume = std::move(field.volume);
   const flow::VectorVolume& volume = input.volume;
   const std::size_t images = volume.bricks.size() - volume.originalBrickCount;
-  fmt::print("structure  {} bricks{} [{:.2f} s], {} regions [{:.2f} s]\n",
+  fmt::print("structure  {} bricks{} [{:.2f} s], {} regions [{:.2f} s]{}\n",
              withCommas(volume.originalBrickCount),
              images > 0 ? fmt::format(" + {} periodic images ({})", withCommas(images),
                                       axesText(volume.periodic))
                         : std::string(),
-             field.times.bricks, withCommas(volume.regions.regions.size()), field.times.regions);
+             field.times.bricks, withCommas(volume.regions.regions.size()), field.times.regions,
+             volume.interpolant == flow::Interpolant::Linear
+                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]", field.times.gradients)
+                 : std::string());
   if (!withSeeds) return input;
 
   std::string pointData;
@@ -87,8 +90,7 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   std::string limits;
   if (o.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.maxLength);
   if (o.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.maxTime);
-  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.stepMode,
-             options.stepSize,
+  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.stepMode, options.stepSize,
              options.direction == flow::Direction::Both ? "both directions"
                                                         : directionName(options.direction),
              o.steps, limits);
@@ -220,6 +222,13 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->add_option("--periodic", options->periodic,
                    "periodic axes: auto (as the file says), none, or a list such as x,y,z")
       ->capture_default_str();
+  command
+      ->add_option("--interpolant", options->interpolant,
+                   "tent: the paper's tent basis functions (exact for constants); linear: tent "
+                   "weights over each cell's least-squares linear model (exact for linear fields "
+                   "across level jumps; CPU backend only so far)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tent", "linear"}));
   command
       ->add_option("--terminal-speed", options->terminalSpeed,
                    "stop where the speed falls below this")

@@ -26,6 +26,7 @@ struct TraceJobOptions {
   std::string pointData = "all";
   bool vorticity = false;
   std::string periodic = "auto";
+  std::string interpolant = "tent";
   std::string seedsFile;
   std::vector<double> seedBox;
   std::vector<int> seedGrid;

@@ -14,12 +14,14 @@ bool insideDomain(const VectorVolume& volume, glm::vec3 p) {
 }
 
 bool insideBox(const shared::Region& region, glm::vec3 p) {
-  return glm::all(glm::greaterThanEqual(p, region.lower)) && glm::all(glm::lessThan(p, region.upper));
+  return glm::all(glm::greaterThanEqual(p, region.lower)) &&
+         glm::all(glm::lessThan(p, region.upper));
 }
 
 // The 2x2x2 cells of one brick around p with a non-zero tent weight
-// H_i(p) = prod_d max(0, 1 - |c_i,d - p_d| / w_i): calls visit(slot, axisWeights, offset, width)
-// for each such cell inside the brick, in the order every reconstruction sums them.
+// H_i(p) = prod_d max(0, 1 - |c_i,d - p_d| / w_i): calls
+// visit(slot, axisWeights, offset, width, p - c_i) for each such cell inside the brick, in the
+// order every reconstruction sums them.
 template <typename Visit>
 void forEachTentCell(const shared::Brick& brick, glm::vec3 p, Visit&& visit) {
   const float width = float(1 << brick.level);
@@ -36,7 +38,7 @@ void forEachTentCell(const shared::Brick& brick, glm::vec3 p, Visit&& visit) {
     const glm::vec3 axisWeight = glm::mix(1.0f - frac, frac, glm::vec3(offset));
     const std::uint32_t slot =
         brick.valueOffset + std::uint32_t(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
-    visit(slot, axisWeight, offset, width);
+    visit(slot, axisWeight, offset, width, width * (frac - glm::vec3(offset)));
   }
 }
 
@@ -55,12 +57,31 @@ float reconstruct(const VectorVolume& volume, const shared::Region& region, glm:
                   std::span<const Value> values, Value& weighted) {
   float weightSum = 0.0f;
   weighted = Value(0.0f);
-  forEachRegionTentCell(volume, region, p,
-                        [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float) {
-                          const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
-                          weightSum += weight;
-                          weighted += weight * values[slot];
-                        });
+  forEachRegionTentCell(
+      volume, region, p,
+      [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float, glm::vec3) {
+        const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+        weightSum += weight;
+        weighted += weight * values[slot];
+      });
+  return weightSum;
+}
+
+// The linear interpolant: the same weights over each cell's linear model v_i + G_i (p - c_i).
+float reconstructLinear(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
+                        glm::vec3& weighted) {
+  float weightSum = 0.0f;
+  weighted = glm::vec3(0.0f);
+  forEachRegionTentCell(
+      volume, region, p,
+      [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float, glm::vec3 toP) {
+        const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+        const glm::vec3* g = &volume.vectorGradients[3 * slot];
+        weightSum += weight;
+        weighted +=
+            weight * (volume.values[slot] +
+                      glm::vec3(glm::dot(g[0], toP), glm::dot(g[1], toP), glm::dot(g[2], toP)));
+      });
   return weightSum;
 }
 
@@ -108,7 +129,9 @@ VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* 
 
   glm::vec3 weighted(0.0f);
   const float weightSum =
-      reconstruct(volume, region, p, std::span<const glm::vec3>(volume.values), weighted);
+      volume.interpolant == Interpolant::Linear
+          ? reconstructLinear(volume, region, p, weighted)
+          : reconstruct(volume, region, p, std::span<const glm::vec3>(volume.values), weighted);
   if (!(weightSum > kMinWeightSum)) return sample;
   sample.value = weighted / weightSum;
   sample.valid = !glm::any(glm::isnan(sample.value)) && !glm::any(glm::isinf(sample.value));
@@ -135,28 +158,40 @@ void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p
   std::fill(out.begin(), out.end(), 0.0f);
   float weightSum = 0.0f;
   if (region >= 0)
-    forEachRegionTentCell(volume, volume.regions.regions[region], p,
-                          [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float) {
-                            const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
-                            weightSum += weight;
-                            const float* values = volume.channelValues.data() + slot * channels;
-                            for (std::size_t c = 0; c < channels; ++c) out[c] += weight * values[c];
-                          });
+    forEachRegionTentCell(
+        volume, volume.regions.regions[region], p,
+        [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float, glm::vec3 toP) {
+          const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+          weightSum += weight;
+          const float* values = volume.channelValues.data() + slot * channels;
+          for (std::size_t c = 0; c < channels; ++c) out[c] += weight * values[c];
+          if (volume.interpolant != Interpolant::Linear) return;
+          const glm::vec3* g = volume.channelGradients.data() + slot * channels;
+          for (std::size_t c = 0; c < channels; ++c) out[c] += weight * glm::dot(g[c], toP);
+        });
   for (float& value : out) value = weightSum > kMinWeightSum ? value / weightSum : kNaN;
 }
 
 glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p) {
   if (region < 0) return glm::vec3(kNaN);
+  const bool linear = volume.interpolant == Interpolant::Linear;
   float weightSum = 0.0f;
   glm::vec3 weighted(0.0f), weightGradient(0.0f);
   glm::vec3 weightedGradient[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+  glm::vec3 weightedModelGradient[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
   forEachRegionTentCell(
       volume, volume.regions.regions[region], p,
-      [&](std::uint32_t slot, glm::vec3 a, glm::ivec3 offset, float width) {
+      [&](std::uint32_t slot, glm::vec3 a, glm::ivec3 offset, float width, glm::vec3 toP) {
         const glm::vec3 da = (2.0f * glm::vec3(offset) - 1.0f) / width;
         const float weight = a.x * a.y * a.z;
         const glm::vec3 gradient(da.x * a.y * a.z, a.x * da.y * a.z, a.x * a.y * da.z);
-        const glm::vec3 v = volume.values[slot];
+        glm::vec3 v = volume.values[slot];
+        if (linear) {  // the cell's model v_i + G_i (p - c_i), and its derivative G_i
+          const glm::vec3* g = &volume.vectorGradients[3 * slot];
+          v += glm::vec3(glm::dot(g[0], toP), glm::dot(g[1], toP), glm::dot(g[2], toP));
+          for (int d = 0; d < 3; ++d)
+            weightedModelGradient[d] += weight * glm::vec3(g[0][d], g[1][d], g[2][d]);
+        }
         weightSum += weight;
         weighted += weight * v;
         weightGradient += gradient;
@@ -167,7 +202,8 @@ glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::
   const glm::vec3 cellsPerPhysical(1.0 / volume.transform.spacing);
   glm::vec3 jacobian[3];  // jacobian[d] = dB/dx_d, physical
   for (int d = 0; d < 3; ++d)
-    jacobian[d] = (weightedGradient[d] - value * weightGradient[d]) / weightSum * cellsPerPhysical[d];
+    jacobian[d] = (weightedGradient[d] - value * weightGradient[d] + weightedModelGradient[d]) /
+                  weightSum * cellsPerPhysical[d];
   return {jacobian[1].z - jacobian[2].y, jacobian[2].x - jacobian[0].z,
           jacobian[0].y - jacobian[1].x};
 }

@@ -53,7 +53,8 @@ void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p
 // The curl of the reconstructed vector at p in `region`, in the vector's units per physical
 // length; NaN when region is -1 or the weights vanish. The reconstruction is a quotient of tent
 // sums, B = S_v / S_1, so dB/dp = (dS_v/dp - B dS_1/dp) / S_1 with the tents' piecewise-constant
-// derivatives.
+// derivatives; with the linear interpolant v_i is the cell's model v_i + G_i (p - c_i), whose
+// own derivative G_i adds S_G / S_1.
 glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p);
 
 }  // namespace amrstream::flow

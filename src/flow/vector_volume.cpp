@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "cell_gradients.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -97,6 +98,14 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
   volume.periodic = options.periodic;
   volume.transform = field.transform();
   volume.vectorName = vector.name;
+  if (options.interpolant == Interpolant::Linear) {
+    clock.restart();
+    volume.interpolant = Interpolant::Linear;
+    volume.vectorGradients = cellGradients(
+        volume, std::span<const float>(&volume.values[0].x, 3 * volume.values.size()), 3);
+    volume.channelGradients = cellGradients(volume, volume.channelValues, channelCount);
+    local.gradients = clock.seconds();
+  }
   if (times) *times = local;
   return volume;
 }

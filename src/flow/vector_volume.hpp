@@ -24,6 +24,12 @@ namespace amrstream::flow {
 
 using PeriodicAxes = std::array<bool, 3>;
 
+// How values between cell centres are reconstructed (docs/architecture.md): the paper's tent
+// basis functions (continuous, exact for constants), or tent weights over each cell's linear
+// model v_i + G_i (p - c_i), with G_i its least-squares gradient (continuous, exact for linear
+// fields across any level jump).
+enum class Interpolant { Tent, Linear };
+
 struct VectorVolume {
   std::vector<shared::Brick> bricks;   // originals first, then periodic images
   std::size_t originalBrickCount = 0;  // bricks before the images
@@ -33,6 +39,11 @@ struct VectorVolume {
   // channel c of slot s is channelValues[s * channelNames.size() + c].
   std::vector<std::string> channelNames;
   std::vector<float> channelValues;
+  // Linear interpolant only: per slot, the gradients (per finest cell) of the vector's three
+  // components, then of each channel (channelGradients[s * channelNames.size() + c]).
+  Interpolant interpolant = Interpolant::Tent;
+  std::vector<glm::vec3> vectorGradients;
+  std::vector<glm::vec3> channelGradients;
   bricks::RegionSet regions;
   // Points outside the cells' bounding box [lower, upper) are out of the domain, even where the
   // half-cell padding of the brick domains reaches beyond it.
@@ -49,12 +60,14 @@ struct VolumeOptions {
   bricks::BrickBuildOptions bricks;
   PeriodicAxes periodic{};
   std::vector<std::string> pointData;  // channel names to sample along the traces
+  Interpolant interpolant = Interpolant::Tent;
 };
 
 struct VolumeBuildTimes {
   double bricks = 0.0;  // seconds
   double regions = 0.0;
   double gather = 0.0;
+  double gradients = 0.0;  // linear interpolant only
 };
 
 // Throws InputError (listing the channels) when a point-data channel is absent.

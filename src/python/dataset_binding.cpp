@@ -221,15 +221,17 @@ void bindDataset(py::module_& m) {
   m.def(
       "prepare",
       [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector, std::string pointData,
-         std::string periodic) {
+         std::string periodic, std::string interpolant) {
         py::gil_scoped_release unlocked;
         return std::make_shared<PreparedField>(PreparedField{
-            dataset, buildField(*dataset, {vector.value_or(""), pointData, periodic})});
+            dataset,
+            buildField(*dataset, {vector.value_or(""), pointData, periodic, interpolant})});
       },
       py::arg("dataset").none(false), py::kw_only(), py::arg("vector") = py::none(),
-      py::arg("point_data") = "all", py::arg("periodic") = "auto",
-      "Chooses the vector ('a,b,c'; default: the velocity, else the magnetic field) and the point "
-      "data (all, none or 'a,b'), adds periodic images, builds bricks and regions.");
+      py::arg("point_data") = "all", py::arg("periodic") = "auto", py::arg("interpolant") = "tent",
+      "Chooses the vector ('a,b,c'; default: the velocity, else the magnetic field), the point "
+      "data (all, none or 'a,b') and the interpolant (tent or linear), adds periodic images, "
+      "builds bricks and regions.");
 }
 
 }  // namespace amrstream::python

@@ -82,12 +82,14 @@ flow::SeedList seedListOf(py::handle seeds) {
 std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
                                  std::optional<std::string> vector,
                                  std::optional<std::string> pointData,
-                                 std::optional<std::string> periodic, const TraceSettings& settings,
-                                 const BackendRequest& backend, py::object progress, bool verbose) {
+                                 std::optional<std::string> periodic,
+                                 std::optional<std::string> interpolant,
+                                 const TraceSettings& settings, const BackendRequest& backend,
+                                 py::object progress, bool verbose) {
   std::shared_ptr<PreparedField> field;
   std::shared_ptr<Dataset> cells;
   if (py::isinstance<PreparedField>(target)) {
-    if (vector || pointData || periodic)
+    if (vector || pointData || periodic || interpolant)
       throw py::value_error(
           "vector, point_data and periodic were chosen when the Field was prepared; pass the "
           "Dataset to choose them here");
@@ -104,9 +106,9 @@ std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
   auto result = std::make_shared<Traces>();
   py::gil_scoped_release unlocked;
   if (!field)
-    field = std::make_shared<PreparedField>(
-        PreparedField{cells, buildField(*cells, {vector.value_or(""), pointData.value_or("all"),
-                                                 periodic.value_or("auto")})});
+    field = std::make_shared<PreparedField>(PreparedField{
+        cells, buildField(*cells, {vector.value_or(""), pointData.value_or("all"),
+                                   periodic.value_or("auto"), interpolant.value_or("tent")})});
   Field& f = field->field;
   placeSeeds(f.volume, seedList);
   const flow::TraceOptions options = traceOptions(settings, f.volume);
@@ -297,10 +299,10 @@ void bindTracing(py::module_& m) {
       "trace",
       [](py::object target, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::uint32_t steps, std::optional<float> stepSize, std::string stepMode,
-         std::string direction, bool vorticity, float maxLength, float maxTime, float terminalSpeed,
-         std::uint64_t memoryBudget, std::string backend, std::string device, bool validation,
-         py::object progress, bool verbose) {
+         std::optional<std::string> interpolant, std::uint32_t steps, std::optional<float> stepSize,
+         std::string stepMode, std::string direction, bool vorticity, float maxLength,
+         float maxTime, float terminalSpeed, std::uint64_t memoryBudget, std::string backend,
+         std::string device, bool validation, py::object progress, bool verbose) {
         TraceSettings settings;
         settings.steps = steps;
         settings.stepSize = stepSize;
@@ -313,11 +315,12 @@ void bindTracing(py::module_& m) {
         settings.memoryBudget = memoryBudget;
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
-        return runTrace(target, seeds, vector, pointData, periodic, settings, request, progress,
-                        verbose);
+        return runTrace(target, seeds, vector, pointData, periodic, interpolant, settings, request,
+                        progress, verbose);
       },
       py::arg("target"), py::arg("seeds"), py::kw_only(), py::arg("vector") = py::none(),
-      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(), py::arg("steps") = 1000,
+      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
+      py::arg("interpolant") = py::none(), py::arg("steps") = 1000,
       py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
       py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,
       py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f, py::arg("memory_budget") = 0,
