@@ -20,6 +20,10 @@ layout(scalar, set = 0, binding = 6) readonly buffer PositionBuffer { vec3 posit
 layout(scalar, set = 0, binding = 7) readonly buffer RegionIdBuffer { int regionIds[]; };
 layout(scalar, set = 0, binding = 8) writeonly buffer ChannelBuffer { float channels[]; };
 layout(scalar, set = 0, binding = 9) writeonly buffer VorticityBuffer { vec3 vorticity[]; };
+// The linear interpolant's gradients (per finest cell): three per slot for the vector, one per
+// slot and channel for the channels (one element each, unread, with the tent interpolant).
+layout(scalar, set = 0, binding = 10) readonly buffer VectorGradientBuffer { vec3 vectorGradients[]; };
+layout(scalar, set = 0, binding = 11) readonly buffer ChannelGradientBuffer { vec3 channelGradients[]; };
 
 layout(local_size_x = AMRSTREAM_POINT_DATA_GROUP) in;
 
@@ -78,6 +82,12 @@ void sampleChannels(uint point, int regionId, vec3 p) {
           weightSum += weight;
           for (uint j = 0; j < 4 && first + j < count; ++j)
             sum[j] += weight * channelValues[slot * count + first + j];
+          if (pc.linearInterpolant == 0u) continue;
+          precise const vec3 toP = t.width * (t.frac - offset);
+          for (uint j = 0; j < 4 && first + j < count; ++j) {
+            precise const vec3 g = channelGradients[slot * count + first + j] * toP;
+            sum[j] += weight * (g.x + g.y + g.z);
+          }
         }
       }
     }
@@ -93,6 +103,7 @@ vec3 sampleVorticity(int regionId, vec3 p) {
   precise float weightSum = 0.0;
   precise vec3 weighted = vec3(0.0), weightGradient = vec3(0.0);
   precise vec3 weightedGradient[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  precise vec3 weightedModelGradient[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
   const Region region = regions[regionId];
   for (uint k = 0; k < region.brickCount; ++k) {
     const TentBrick t = tentBrick(regionBricks[region.brickOffset + k], p);
@@ -103,7 +114,15 @@ vec3 sampleVorticity(int regionId, vec3 p) {
       precise const vec3 da = (2.0 * offset - 1.0) / t.width;
       precise const float weight = a.x * a.y * a.z;
       precise const vec3 gradient = vec3(da.x * a.y * a.z, a.x * da.y * a.z, a.x * a.y * da.z);
-      const vec3 v = values[slot];
+      precise vec3 v = values[slot];
+      if (pc.linearInterpolant != 0u) {  // the cell's model v_i + G_i (p - c_i), its derivative G_i
+        precise const vec3 toP = t.width * (t.frac - offset);
+        const vec3 g0 = vectorGradients[3u * slot], g1 = vectorGradients[3u * slot + 1u],
+                   g2 = vectorGradients[3u * slot + 2u];
+        precise const vec3 m0 = g0 * toP, m1 = g1 * toP, m2 = g2 * toP;
+        v += vec3(m0.x + m0.y + m0.z, m1.x + m1.y + m1.z, m2.x + m2.y + m2.z);
+        for (int d = 0; d < 3; ++d) weightedModelGradient[d] += weight * vec3(g0[d], g1[d], g2[d]);
+      }
       weightSum += weight;
       weighted += weight * v;
       weightGradient += gradient;
@@ -114,7 +133,8 @@ vec3 sampleVorticity(int regionId, vec3 p) {
   precise const vec3 value = weighted / weightSum;
   precise vec3 jacobian[3];
   for (int d = 0; d < 3; ++d)
-    jacobian[d] = (weightedGradient[d] - value * weightGradient[d]) / weightSum * pc.cellsPerPhysical[d];
+    jacobian[d] = (weightedGradient[d] - value * weightGradient[d] + weightedModelGradient[d]) /
+                  weightSum * pc.cellsPerPhysical[d];
   precise const vec3 curl = vec3(jacobian[1].z - jacobian[2].y, jacobian[2].x - jacobian[0].z,
                                  jacobian[0].y - jacobian[1].x);
   return curl;

@@ -5,7 +5,6 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "gpu/gpu_tracer.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream {
@@ -38,14 +37,6 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
   TraceReport local;
   TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
-  if (volume.interpolant == flow::Interpolant::Linear && choice.backend != gpu::Backend::Cpu) {
-    if (request.backend != "auto")
-      throw InputError("--interpolant", "linear runs on the CPU reference only so far; trace it "
-                                        "with --backend cpu (or auto)");
-    say(log, "backend    cpu: the linear interpolant runs on the CPU reference only so far");
-    return trace({"cpu", request.device, request.validation}, volume, seeds, options, progress,
-                 report, hostValues, log);
-  }
   const gpu::Backend backend = choice.backend;
   Stopwatch clock;
   if (backend == gpu::Backend::Cpu) {

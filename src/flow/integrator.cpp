@@ -122,6 +122,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.maxLength = options.maxLength;
   params.maxTime = options.maxTime;
   params.keepHistory = options.keepHistory ? 1u : 0u;
+  params.linearInterpolant = volume.interpolant == Interpolant::Linear ? 1u : 0u;
   return params;
 }
 

@@ -77,7 +77,8 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
         storage(device.bricks), storage(device.values), storage(device.regions),
         storage(device.regionBricks), storage(b.states), storage(b.roundStates),
         storage(b.lineRounds[parity]), storage(b.positions), storage(b.times),
-        storage(b.vectors), storage(b.regionIds), device.locateTarget()};
+        storage(b.vectors), storage(b.regionIds), device.locateTarget(),
+        storage(device.vectorGradients)};
     vk::writeDescriptors(ctx, traceSets_[parity], traceTargets);
 
     compactionSets_[parity] = pool_.allocate(kernels.compactionSetLayout.get());
@@ -93,7 +94,7 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
       storage(device.bricks), storage(device.values), storage(device.regions),
       storage(device.regionBricks), storage(device.channelValues), storage(b.summary),
       storage(b.densePositions), storage(b.denseRegionIds), storage(b.channels),
-      storage(b.vorticity)};
+      storage(b.vorticity), storage(device.vectorGradients), storage(device.channelGradients)};
   vk::writeDescriptors(ctx, pointDataSet_, pointDataTargets);
   if (timeKernels) {
     traceTimer_.emplace(ctx);
@@ -133,7 +134,8 @@ void GpuRounds::submitRound(std::uint32_t steps) {
   const shared::CompactionParams compaction{params_.lineCount, params_.pointsPerLine};
   const shared::PointDataParams pointData{params_.cellsPerPhysical,
                                           static_cast<std::uint32_t>(volume_->channelCount()),
-                                          options_.vorticity ? 1u : 0u};
+                                          options_.vorticity ? 1u : 0u,
+                                          params_.linearInterpolant};
   round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.

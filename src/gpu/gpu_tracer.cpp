@@ -9,7 +9,6 @@
 
 #include "gpu_rounds.hpp"
 #include "morton_order.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
@@ -44,9 +43,6 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
 GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
                      const KernelSettings& settings)
     : ctx_(&ctx), volume_(&volume), device_(ctx, gpuBackend(backend), volume, setup_) {
-  if (volume.interpolant != flow::Interpolant::Tent)
-    throw InputError("--interpolant", "the GPU kernels reconstruct with the tent interpolant "
-                                      "only so far; trace with --backend cpu");
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings);
   roundKernels_ = createRoundKernels(ctx);
@@ -188,7 +184,8 @@ std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoint
       storage(buffers.times),
       storage(buffers.vectors),
       storage(buffers.regionIds),
-      device_.locateTarget()};
+      device_.locateTarget(),
+      storage(device_.vectorGradients)};
   vk::writeDescriptors(*ctx_, set, targets);
   vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, probe_->bindPoint, probe_->pipeline.get());

@@ -18,7 +18,7 @@ class Context;
 namespace amrstream::gpu {
 
 inline constexpr std::uint32_t kCompactionBindingCount = 14;
-inline constexpr std::uint32_t kPointDataBindingCount = 10;
+inline constexpr std::uint32_t kPointDataBindingCount = 12;
 
 struct RoundKernels {
   vk::UniqueHandle<VkDescriptorSetLayout> compactionSetLayout;

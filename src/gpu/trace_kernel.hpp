@@ -1,6 +1,6 @@
 #pragma once
 // The tracing-round kernel of one backend: its descriptor set layout (the bindings of
-// shaders/glsl/include/amr_buffers.glsl, the last being the point-location structure), its
+// shaders/glsl/include/amr_buffers.glsl, with the point-location structure at 12), its
 // pipeline layout and pipeline, and for the ray tracing pipeline its shader binding table.
 
 #include <vulkan/vulkan.h>
@@ -18,8 +18,8 @@ class Context;
 
 namespace amrstream::gpu {
 
-inline constexpr std::uint32_t kTraceBindingCount = 13;
-inline constexpr std::uint32_t kLocateBinding = 12;
+inline constexpr std::uint32_t kTraceBindingCount = 14;
+inline constexpr std::uint32_t kLocateBinding = 12;  // then 13: the vector's gradients
 
 using vk::ShaderBindingTable;
 

@@ -26,12 +26,17 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
   bricks = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
   values = vk::uploadToDeviceLocal(ctx, volume.values, kStorage, "vector values");
   channelValues = vk::uploadToDeviceLocal(ctx, volume.channelValues, kStorage, "channel values");
+  vectorGradients =
+      vk::uploadToDeviceLocal(ctx, volume.vectorGradients, kStorage, "vector gradients");
+  channelGradients =
+      vk::uploadToDeviceLocal(ctx, volume.channelGradients, kStorage, "channel gradients");
   regions = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
   setup.uploadSeconds = clock.seconds();
   setup.volumeBytes =
-      bricks.size() + values.size() + channelValues.size() + regions.size() + regionBricks.size();
+      bricks.size() + values.size() + channelValues.size() + vectorGradients.size() +
+      channelGradients.size() + regions.size() + regionBricks.size();
 
   clock.restart();
   if (backend == Backend::Compute) {

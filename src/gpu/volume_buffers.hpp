@@ -33,6 +33,8 @@ struct VolumeBuffers {
   vk::Buffer bricks;
   vk::Buffer values;
   vk::Buffer channelValues;
+  vk::Buffer vectorGradients;   // linear interpolant (empty with tent)
+  vk::Buffer channelGradients;  // linear interpolant (empty with tent)
   vk::Buffer regions;
   vk::Buffer regionBricks;
   vk::Buffer tree;                     // compute backend

@@ -247,6 +247,45 @@ TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
   compare(volume, seedsIn(volume, 40), options);
 }
 
+// The linear interpolant (vector, point data and vorticity) on a random four-level layout, and
+// on a periodic one, equals the CPU's as the tent interpolant does.
+TEST_P(GpuTracerTest, LinearInterpolantMatchesCpu) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 4;
+  const bricks::AmrField cells = testing::randomAmr(12, layout, [](glm::dvec3 p) {
+    return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05 + 0.01 * p.z);
+  });
+  std::vector<bricks::Channel> channels = cells.channels();
+  bricks::Channel extra{"s", {}};
+  for (std::size_t i = 0; i < cells.cellCount(); ++i)
+    extra.values.push_back(float(std::sin(0.1 * double(i))));
+  channels.push_back(extra);
+  const bricks::AmrField field({cells.lowers().begin(), cells.lowers().end()},
+                               {cells.levels().begin(), cells.levels().end()}, channels,
+                               {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
+  flow::VolumeOptions volumeOptions = testing::withPointData({"s", "vy"});
+  volumeOptions.interpolant = flow::Interpolant::Linear;
+  const flow::VectorVolume volume =
+      flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, volumeOptions);
+  flow::TraceOptions options;
+  options.maxSteps = 150;
+  options.vorticity = true;
+  compare(volume, seedsIn(volume, 40), options);
+
+  flow::VolumeOptions periodic = testing::periodicVolume(flow::PeriodicAxes{true, true, true});
+  periodic.interpolant = flow::Interpolant::Linear;
+  testing::RandomAmrOptions small;
+  small.levels = 3;
+  const double pi = std::numbers::pi;
+  const flow::VectorVolume wrapped = flow::buildVectorVolume(
+      testing::randomAmr(4, small, [&](glm::dvec3 p) {
+        return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0), 0.3);
+      }),
+      {{"vx", "vy", "vz"}, "v"}, periodic);
+  options.vorticity = false;
+  compare(wrapped, seedsIn(wrapped, 32), options);
+}
+
 // A periodic flow that crosses every face and is not chaotic (x drives y, y drives z), on a random
 // multi-level layout: the tolerance that grows with the step holds (the chaotic ABC flow's
 // differences outgrow it within 100 steps on an H200).

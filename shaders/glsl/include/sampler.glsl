@@ -9,6 +9,19 @@ const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 #define TENT_VALUE(slot) values[slot]
 #define TENT_FUNCTION reconstructVector
 #include "tent_reconstruction.glsl"
+#undef TENT_FUNCTION
+
+// G_i (p - c_i) for the three components, summed in the order of the CPU's glm::dot.
+precise vec3 linearModelTerm(uint slot, vec3 toP) {
+  precise const vec3 gx = vectorGradients[3u * slot] * toP;
+  precise const vec3 gy = vectorGradients[3u * slot + 1u] * toP;
+  precise const vec3 gz = vectorGradients[3u * slot + 2u] * toP;
+  return vec3(gx.x + gx.y + gx.z, gy.x + gy.y + gy.z, gz.x + gz.y + gz.z);
+}
+#define TENT_MODEL(slot, toP) linearModelTerm(slot, toP)
+#define TENT_FUNCTION reconstructVectorLinear
+#include "tent_reconstruction.glsl"
+#undef TENT_MODEL
 #undef TENT_TYPE
 #undef TENT_VALUE
 #undef TENT_FUNCTION
@@ -80,7 +93,9 @@ VectorSample sampleVector(vec3 p) {
   s.cellWidth = region.finestCellWidth;
 
   precise vec3 weighted;
-  precise const float weightSum = reconstructVector(region, p, weighted);
+  precise const float weightSum = params.linearInterpolant != 0u
+                                      ? reconstructVectorLinear(region, p, weighted)
+                                      : reconstructVector(region, p, weighted);
   if (!(weightSum > kMinWeightSum)) return s;
   precise const vec3 value = weighted / weightSum;
   s.value = value;

@@ -18,6 +18,7 @@ struct PointDataParams {
   vec3 cellsPerPhysical;  // 1 / spacing: derivatives in cell units to physical ones
   uint channelCount;      // scalar channels sampled at every point
   uint computeVorticity;  // 1: the curl of the reconstructed vector as well
+  uint linearInterpolant; // 1: tent weights over the cells' linear models (the gradients)
 };
 
 // The totals of a round's compaction, written by the device for the host and for the indirect
@@ -32,7 +33,7 @@ struct RoundSummary {
 #define AMRSTREAM_POINT_DATA_GROUP 64
 
 #ifdef __cplusplus
-static_assert(sizeof(CompactionParams) == 8 && sizeof(PointDataParams) == 20 &&
+static_assert(sizeof(CompactionParams) == 8 && sizeof(PointDataParams) == 24 &&
               sizeof(RoundSummary) == 20);
 }  // namespace amrstream::shared
 #endif

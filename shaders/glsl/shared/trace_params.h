@@ -27,10 +27,11 @@ struct TraceParams {
   float maxTime;            // |IntegrationTime| limit; 0: none
   uint keepHistory;         // 0: emit only each line's last point, when it ends
   uint pointsPerLine;       // output slots per line in this round: roundSteps + 1, or 1
+  uint linearInterpolant;   // 1: tent weights over the cells' linear models (vectorGradients)
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 108 && offsetof(TraceParams, period) == 64 &&
+static_assert(sizeof(TraceParams) == 112 && offsetof(TraceParams, period) == 64 &&
               offsetof(TraceParams, maxTime) == 96);
 }  // namespace amrstream::shared
 #endif
