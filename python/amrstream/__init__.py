@@ -51,7 +51,8 @@ def prepare(dataset, vector=None, point_data="all", periodic="auto", interpolant
     """A Field ready for tracing: the vector ('a,b,c' or three names; default the velocity,
     else the magnetic field), the point data ('all', 'none' or names), periodic axes ('auto' as
     the file says, 'none', or e.g. 'x,y,z'), the interpolant ('tent', the paper's, or 'linear',
-    exact for linear fields; CPU only so far); bricks and regions built once for many traces."""
+    exact for linear fields across level jumps); bricks and regions built once for many
+    traces."""
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
     return _amrstream.prepare(dataset, vector=_vector_text(vector), point_data=point_data,

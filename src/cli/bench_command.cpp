@@ -13,6 +13,7 @@
 #include "flow/seeds.hpp"
 #include "formats/load_input.hpp"
 #include "amrstream/backend.hpp"
+#include "amrstream/field.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -33,6 +34,7 @@ struct BenchCommandOptions {
   std::uint32_t steps = 1000;
   std::optional<float> stepSize;
   std::string stepMode = "cell";
+  std::string interpolant = "tent";
   std::string seedsFile;
   std::string seedDensity;
   double seedPercentile = 90.0;
@@ -121,7 +123,9 @@ void runBench(const BenchCommandOptions& o) {
   data.loadSeconds = clock.seconds();
   const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
   flow::VolumeBuildTimes times;
-  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, {}, &times);
+  flow::VolumeOptions volumeOptions;
+  volumeOptions.interpolant = parseInterpolant(o.interpolant);
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, volumeOptions, &times);
   data.source = field.source();
   data.cells = field.cellCount();
   data.finestLevel = field.finestLevel();
@@ -141,14 +145,18 @@ void runBench(const BenchCommandOptions& o) {
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} [{:.2f} s]\n", data.source,
              withCommas(data.cells), data.finestLevel, data.coarsestLevel, data.vector,
              data.loadSeconds);
-  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]\n",
+  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]{}\n",
              withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions),
-             data.regionsSeconds, data.gatherSeconds);
+             data.regionsSeconds, data.gatherSeconds,
+             volume.interpolant == flow::Interpolant::Linear
+                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]", times.gradients)
+                 : std::string());
   fmt::print("seeds      {} from {}; GPU threads take them in {} order\n",
              withCommas(seeds.points.size()), data.seeding,
              report.config.spatialSeedOrder ? "Morton (spatial)" : "the given");
-  fmt::print("stepping   mode {}, h = {:g}, at most {} steps; best of {}\n", o.stepMode,
-             report.config.trace.stepSize, o.steps, report.config.repeats);
+  fmt::print("stepping   mode {}, h = {:g}, at most {} steps, {} interpolant; best of {}\n",
+             o.stepMode, report.config.trace.stepSize, o.steps, o.interpolant,
+             report.config.repeats);
   fmt::print("host       {}\n\n", report.host);
 
   bench::BenchCallbacks callbacks;
@@ -209,6 +217,9 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str();
   command->add_option("--step-size", options->stepSize,
                       "h: in cell widths (cell, arc) or physical time (time) [default 0.25]");
+  command->add_option("--interpolant", options->interpolant, "tent (paper) or linear")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tent", "linear"}));
   command->add_option("--step-mode", options->stepMode, "cell (paper), time or arc")
       ->capture_default_str()
       ->check(CLI::IsMember({"cell", "time", "arc"}));
