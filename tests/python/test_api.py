@@ -255,6 +255,25 @@ def test_cloud_traces_equal_cli_vtp(backend, cloud, cloud_seeds, tmp_path):
     assert_traces_match_file(t, cli)
 
 
+@pytest.mark.parametrize("backend", ["cpu", "compute"])
+def test_linear_interpolant_traces_equal_cli_vtp(backend, cloud, cloud_seeds, tmp_path):
+    require_backend(backend)
+    write_seeds(tmp_path / "seeds.txt", cloud_seeds)
+    run_cli("trace", "builtin:cloud", *SMALL_CLI, "--seeds", tmp_path / "seeds.txt",
+            "--steps", 200, "--interpolant", "linear", "--vorticity", "--backend", backend,
+            "--out", tmp_path / "cli.vtp")
+    t = amrstream.trace(cloud, cloud_seeds, steps=200, interpolant="linear", vorticity=True,
+                        backend=backend)
+    t.to_vtp(str(tmp_path / "py.vtp"))
+    cli, py = Vtp(tmp_path / "cli.vtp"), Vtp(tmp_path / "py.vtp")
+    assert cli.field_data["Interpolant"] == ["linear"]
+    assert_same_vtp(cli, py)
+    assert_traces_match_file(t, cli)
+    tent = amrstream.trace(cloud, cloud_seeds, steps=200, vorticity=True, backend=backend)
+    # the interpolant changed the lines
+    assert tent.points.shape != t.points.shape or not np.array_equal(tent.points, t.points)
+
+
 @pytest.mark.parametrize("backend", ["cpu", *GPU_BACKENDS])
 def test_periodic_abc_traces_equal_cli_vtp(backend, abc, abc_seeds, tmp_path):
     require_backend(backend)
