@@ -221,26 +221,31 @@ TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
         << "line " << line;
 }
 
-// Point data: several channels (more than one group of four in the kernel) and the vorticity.
-TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
+// A random four-level layout with a smooth vector and `extra` scalar channels s0, s1, ...,
+// under a transform that is not the identity.
+bricks::AmrField layoutWithChannels(int extra) {
   testing::RandomAmrOptions layout;
   layout.levels = 4;
   const bricks::AmrField cells = testing::randomAmr(12, layout, [](glm::dvec3 p) {
     return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05 + 0.01 * p.z);
   });
   std::vector<bricks::Channel> channels = cells.channels();
-  for (int c = 0; c < 3; ++c) {
-    bricks::Channel extra{"s" + std::to_string(c), {}};
+  for (int c = 0; c < extra; ++c) {
+    bricks::Channel channel{"s" + std::to_string(c), {}};
     for (std::size_t i = 0; i < cells.cellCount(); ++i)
-      extra.values.push_back(float(std::sin(0.1 * double(i) + c)));
-    channels.push_back(extra);
+      channel.values.push_back(float(std::sin(0.1 * double(i) + c)));
+    channels.push_back(channel);
   }
-  const bricks::AmrField field({cells.lowers().begin(), cells.lowers().end()},
-                               {cells.levels().begin(), cells.levels().end()}, channels,
-                               {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
-  const flow::VectorVolume volume = flow::buildVectorVolume(
-      field, {{"vx", "vy", "vz"}, "v"},
-      testing::withPointData({"s0", "vy", "s1", "vx", "s2"}));
+  return bricks::AmrField({cells.lowers().begin(), cells.lowers().end()},
+                          {cells.levels().begin(), cells.levels().end()}, channels,
+                          {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
+}
+
+// Point data: several channels (more than one group of four in the kernel) and the vorticity.
+TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
+  const flow::VectorVolume volume =
+      flow::buildVectorVolume(layoutWithChannels(3), {{"vx", "vy", "vz"}, "v"},
+                              testing::withPointData({"s0", "vy", "s1", "vx", "s2"}));
   flow::TraceOptions options;
   options.maxSteps = 150;
   options.vorticity = true;
@@ -250,23 +255,10 @@ TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
 // The linear interpolant (vector, point data and vorticity) on a random four-level layout, and
 // on a periodic one, equals the CPU's as the tent interpolant does.
 TEST_P(GpuTracerTest, LinearInterpolantMatchesCpu) {
-  testing::RandomAmrOptions layout;
-  layout.levels = 4;
-  const bricks::AmrField cells = testing::randomAmr(12, layout, [](glm::dvec3 p) {
-    return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05 + 0.01 * p.z);
-  });
-  std::vector<bricks::Channel> channels = cells.channels();
-  bricks::Channel extra{"s", {}};
-  for (std::size_t i = 0; i < cells.cellCount(); ++i)
-    extra.values.push_back(float(std::sin(0.1 * double(i))));
-  channels.push_back(extra);
-  const bricks::AmrField field({cells.lowers().begin(), cells.lowers().end()},
-                               {cells.levels().begin(), cells.levels().end()}, channels,
-                               {{1.0, 2.0, 3.0}, {0.5, 0.25, 0.5}}, "with channels");
-  flow::VolumeOptions volumeOptions = testing::withPointData({"s", "vy"});
+  flow::VolumeOptions volumeOptions = testing::withPointData({"s0", "vy"});
   volumeOptions.interpolant = flow::Interpolant::Linear;
   const flow::VectorVolume volume =
-      flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, volumeOptions);
+      flow::buildVectorVolume(layoutWithChannels(1), {{"vx", "vy", "vz"}, "v"}, volumeOptions);
   flow::TraceOptions options;
   options.maxSteps = 150;
   options.vorticity = true;
