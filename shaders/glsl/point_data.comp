@@ -20,9 +20,10 @@ layout(scalar, set = 0, binding = 6) readonly buffer PositionBuffer { vec3 posit
 layout(scalar, set = 0, binding = 7) readonly buffer RegionIdBuffer { int regionIds[]; };
 layout(scalar, set = 0, binding = 8) writeonly buffer ChannelBuffer { float channels[]; };
 layout(scalar, set = 0, binding = 9) writeonly buffer VorticityBuffer { vec3 vorticity[]; };
-// The linear interpolant's gradients (per finest cell): three per slot for the vector, one per
-// slot and channel for the channels (one element each, unread, with the tent interpolant).
-layout(scalar, set = 0, binding = 10) readonly buffer VectorGradientBuffer { vec3 vectorGradients[]; };
+// The linear interpolant's cells (per slot the value, then the gradients of its three
+// components) and channel gradients (per slot and channel), per finest cell; one element each,
+// unread, with the tent interpolant.
+layout(scalar, set = 0, binding = 10) readonly buffer LinearCellBuffer { vec3 linearCells[]; };
 layout(scalar, set = 0, binding = 11) readonly buffer ChannelGradientBuffer { vec3 channelGradients[]; };
 
 layout(local_size_x = AMRSTREAM_POINT_DATA_GROUP) in;
@@ -117,8 +118,8 @@ vec3 sampleVorticity(int regionId, vec3 p) {
       precise vec3 v = values[slot];
       if (pc.linearInterpolant != 0u) {  // the cell's model v_i + G_i (p - c_i), its derivative G_i
         precise const vec3 toP = t.width * (t.frac - offset);
-        const vec3 g0 = vectorGradients[3u * slot], g1 = vectorGradients[3u * slot + 1u],
-                   g2 = vectorGradients[3u * slot + 2u];
+        const vec3 g0 = linearCells[4u * slot + 1u], g1 = linearCells[4u * slot + 2u],
+                   g2 = linearCells[4u * slot + 3u];
         precise const vec3 m0 = g0 * toP, m1 = g1 * toP, m2 = g2 * toP;
         v += vec3(m0.x + m0.y + m0.z, m1.x + m1.y + m1.z, m2.x + m2.y + m2.z);
         for (int d = 0; d < 3; ++d) weightedModelGradient[d] += weight * vec3(g0[d], g1[d], g2[d]);

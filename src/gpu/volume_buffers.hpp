@@ -33,7 +33,7 @@ struct VolumeBuffers {
   vk::Buffer bricks;
   vk::Buffer values;
   vk::Buffer channelValues;
-  vk::Buffer vectorGradients;   // linear interpolant (empty with tent)
+  vk::Buffer vectorGradients;   // linear interpolant: per slot the value, then its 3 gradients
   vk::Buffer channelGradients;  // linear interpolant (empty with tent)
   vk::Buffer regions;
   vk::Buffer regionBricks;

@@ -23,6 +23,6 @@ layout(scalar, set = 0, binding = 10) writeonly buffer VectorBuffer { vec3 outVe
 layout(scalar, set = 0, binding = 11) writeonly buffer RegionIdBuffer { int outRegions[]; };
 // Binding 12 is the backend's point-location structure (region tree or acceleration structure).
 #define AMRSTREAM_LOCATE_BINDING 12
-// The linear interpolant's gradients of the vector's components, three per value slot (one
-// element, unread, with the tent interpolant).
-layout(scalar, set = 0, binding = 13) readonly buffer VectorGradientBuffer { vec3 vectorGradients[]; };
+// The linear interpolant's cells: per value slot the value, then the gradients of its three
+// components (one element, unread, with the tent interpolant).
+layout(scalar, set = 0, binding = 13) readonly buffer LinearCellBuffer { vec3 linearCells[]; };

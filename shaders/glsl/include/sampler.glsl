@@ -10,14 +10,16 @@ const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 #define TENT_FUNCTION reconstructVector
 #include "tent_reconstruction.glsl"
 #undef TENT_FUNCTION
+#undef TENT_VALUE
 
 // G_i (p - c_i) for the three components, summed in the order of the CPU's glm::dot.
 precise vec3 linearModelTerm(uint slot, vec3 toP) {
-  precise const vec3 gx = vectorGradients[3u * slot] * toP;
-  precise const vec3 gy = vectorGradients[3u * slot + 1u] * toP;
-  precise const vec3 gz = vectorGradients[3u * slot + 2u] * toP;
+  precise const vec3 gx = linearCells[4u * slot + 1u] * toP;
+  precise const vec3 gy = linearCells[4u * slot + 2u] * toP;
+  precise const vec3 gz = linearCells[4u * slot + 3u] * toP;
   return vec3(gx.x + gx.y + gx.z, gy.x + gy.y + gy.z, gz.x + gz.y + gz.z);
 }
+#define TENT_VALUE(slot) linearCells[4u * slot]
 #define TENT_MODEL(slot, toP) linearModelTerm(slot, toP)
 #define TENT_FUNCTION reconstructVectorLinear
 #include "tent_reconstruction.glsl"
