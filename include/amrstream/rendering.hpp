@@ -69,6 +69,10 @@ struct RenderedImage {
 };
 using FrameProgress = std::function<void(std::uint32_t done, std::uint32_t frames)>;
 
+// Throws InputError when the request names the CPU backend: rendering needs a Vulkan device.
+// (renderImage checks it too; callers that trace first check it before tracing.)
+void requireRenderBackend(const BackendRequest& request);
+
 // Throws InputError for the CPU backend (rendering needs a Vulkan device) and bad options,
 // vk::ContextError when the device lacks what the backend needs.
 RenderedImage renderImage(const BackendRequest& request, const RenderOptions& options,

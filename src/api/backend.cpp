@@ -1,7 +1,6 @@
 #include "amrstream/backend.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 
 #include <algorithm>
 #include <cctype>
@@ -9,9 +8,7 @@
 #include <optional>
 
 #include "gpu/backend.hpp"
-#include "gpu/gpu_tracer.hpp"
 #include "util/input_error.hpp"
-#include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 #include "vk/context_error.hpp"
 #include "vk/device_report.hpp"

@@ -96,14 +96,17 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   return scene;
 }
 
+void requireRenderBackend(const BackendRequest& request) {
+  if (request.backend == "cpu")
+    throw InputError("--backend",
+                     "rendering needs a Vulkan device: choose auto, rayquery, pipeline or compute");
+}
+
 RenderedImage renderImage(const BackendRequest& request, const RenderOptions& options,
                           const Dataset& cells, const flow::VectorVolume& volume,
                           const flow::TraceSet& traces, std::uint32_t frames, bool colourBar,
                           const FrameProgress& progress, const Log& log) {
-  if (request.backend == "cpu")
-    throw InputError("--backend",
-                     "rendering needs a Vulkan device: choose auto, rayquery, "
-                     "pipeline or compute");
+  requireRenderBackend(request);
   if (frames == 0) throw InputError("--frames", "must be at least 1");
   const RenderScene scene = prepareScene(options, cells, volume, traces);
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);

@@ -54,6 +54,8 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
     decltype(volume.values)().swap(volume.values);
     decltype(volume.channelValues)().swap(volume.channelValues);
     decltype(volume.cellIds)().swap(volume.cellIds);
+    decltype(volume.vectorGradients)().swap(volume.vectorGradients);
+    decltype(volume.channelGradients)().swap(volume.channelGradients);
   }
   t.setupSeconds = clock.seconds();
   t.backend = gpu::backendName(backend);

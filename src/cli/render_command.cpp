@@ -47,9 +47,7 @@ void checkTracesInDomain(const std::string& path, const flow::TraceSet& traces,
 }
 
 void runRender(const RenderCommandOptions& o) {
-  if (o.job.backend.backend == "cpu")  // before tracing: rendering needs a Vulkan device
-    throw InputError("--backend", "rendering needs a Vulkan device: choose auto, rayquery, "
-                                  "pipeline or compute");
+  requireRenderBackend(o.job.backend);  // before tracing
   PreparedInput input = prepareInput(o.job, o.traces.empty());
   flow::TraceSet traces;
   if (o.traces.empty()) {

@@ -12,34 +12,6 @@
 
 namespace amrstream::cli {
 
-SeedRequest seedRequest(const TraceJobOptions& o) {
-  SeedRequest r;
-  r.file = o.seedsFile;
-  r.line = o.seedLine;
-  r.density = o.seedDensity;
-  r.percentile = o.seedPercentile;
-  r.weighted = o.seedWeighted;
-  r.grid = o.seedGrid;
-  r.box = o.seedBox;
-  r.count = o.count;
-  r.seed = o.seed;
-  return r;
-}
-
-TraceSettings traceSettings(const TraceJobOptions& o) {
-  TraceSettings t;
-  t.steps = o.steps;
-  t.stepSize = o.stepSize;
-  t.stepMode = o.stepMode;
-  t.direction = o.direction;
-  t.terminalSpeed = o.terminalSpeed;
-  t.maxLength = o.maxLength;
-  t.maxTime = o.maxTime;
-  t.vorticity = o.vorticity;
-  t.memoryBudget = o.memoryBudget;
-  return t;
-}
-
 void printLine(const std::string& line) { fmt::print("{}\n", line); }
 
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
@@ -50,14 +22,14 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   input.info = cells.info();
   input.source = cells.source();
   const double loadSeconds = clock.seconds();
-  const flow::VectorChannels vector = flow::chooseVectorChannels(cells, o.vector);
+  const flow::VectorChannels vector = flow::chooseVectorChannels(cells, o.field.vector);
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",
              cells.source(), withCommas(cells.cellCount()),
              cells.info().fileLevel(cells.coarsestLevel()),
              cells.info().fileLevel(cells.finestLevel()), vector.name, vector.channels[0],
              vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(cells.info()),
              loadSeconds);
-  Field field = buildField(cells, {o.vector, o.pointData, o.periodic, o.interpolant});
+  Field field = buildField(cells, o.field);
   input.volume = std::move(field.volume);
   const flow::VectorVolume& volume = input.volume;
   const std::size_t images = volume.bricks.size() - volume.originalBrickCount;
@@ -75,25 +47,26 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   std::string pointData;
   for (const std::string& name : volume.channelNames)
     pointData += (pointData.empty() ? "" : ", ") + name;
-  if (o.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
+  if (o.trace.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
   fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
-  input.seeds = chooseSeeds(seedRequest(o), domainOf(volume), &cells, input.seedDescription);
+  input.seeds = chooseSeeds(o.seeds, domainOf(volume), &cells, input.seedDescription);
   flow::SeedList& seeds = input.seeds;
   placeSeeds(volume, seeds);
   if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
 
-  input.options = traceOptions(traceSettings(o), volume);
+  input.options = traceOptions(o.trace, volume);
   const flow::TraceOptions& options = input.options;
   fmt::print("seeds      {} from {}{}\n", withCommas(seeds.points.size()), input.seedDescription,
              o.seedsOut.empty() ? "" : ", written to " + o.seedsOut);
   std::string limits;
-  if (o.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.maxLength);
-  if (o.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.maxTime);
-  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.stepMode, options.stepSize,
+  if (o.trace.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.trace.maxLength);
+  if (o.trace.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.trace.maxTime);
+  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.trace.stepMode,
+             options.stepSize,
              options.direction == flow::Direction::Both ? "both directions"
                                                         : directionName(options.direction),
-             o.steps, limits);
+             o.trace.steps, limits);
   return input;
 }
 
@@ -139,29 +112,29 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
 void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t defaultCount) {
   CLI::App* command = &app;
   TraceJobOptions* options = &job;
-  options->count = defaultCount;
+  options->seeds.count = defaultCount;
   addDatasetOptions(*command, options->dataset, "--gen-seed");
-  command->add_option("--vector", options->vector,
+  command->add_option("--vector", options->field.vector,
                       "three channels forming the vector, e.g. velx,vely,velz "
                       "(default: the velocity, else the magnetic field)");
   auto* seedsFile =
       command
-          ->add_option("--seeds", options->seedsFile, "file of seed points, one 'x y z' per line")
+          ->add_option("--seeds", options->seeds.file, "file of seed points, one 'x y z' per line")
           ->check(CLI::ExistingFile);
   command
-      ->add_option("--seed-box", options->seedBox,
+      ->add_option("--seed-box", options->seeds.box,
                    "random seeds in this box: x0,y0,z0,x1,y1,z1 (default: the domain)")
       ->delimiter(',')
       ->expected(6)
       ->excludes(seedsFile);
   auto* seedLine = command
-                       ->add_option("--seed-line", options->seedLine,
+                       ->add_option("--seed-line", options->seeds.line,
                                     "a rake of --count seeds from x0,y0,z0 to x1,y1,z1")
                        ->delimiter(',')
                        ->expected(6)
                        ->excludes(seedsFile);
   command
-      ->add_option("--seed-grid", options->seedGrid,
+      ->add_option("--seed-grid", options->seeds.grid,
                    "a regular NX,NY,NZ grid in the seed box instead of random seeds (a box of "
                    "zero thickness with count 1 on that axis is a plane)")
       ->delimiter(',')
@@ -171,79 +144,79 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
   auto* seedGrid = command->get_option("--seed-grid");
   auto* seedDensity =
       command
-          ->add_option("--seed-density", options->seedDensity,
+          ->add_option("--seed-density", options->seeds.density,
                        "the paper's seeding: random points in random cells where this scalar is "
                        "at or above --seed-percentile")
           ->excludes(seedsFile)
           ->excludes(seedLine);
-  command->add_option("--seed-percentile", options->seedPercentile, "see --seed-density")
+  command->add_option("--seed-percentile", options->seeds.percentile, "see --seed-density")
       ->capture_default_str()
       ->needs(seedDensity);
   command
-      ->add_flag("--seed-weighted", options->seedWeighted,
+      ->add_flag("--seed-weighted", options->seeds.weighted,
                  "with --seed-density: pick cells with probability proportional to the scalar")
       ->needs(seedDensity);
   command->add_option("--seeds-out", options->seedsOut,
                       "write the seeds used to this file, so the run can be repeated with --seeds");
   command
-      ->add_option("--count", options->count,
+      ->add_option("--count", options->seeds.count,
                    "number of seeds (random, along --seed-line, or of --seed-density)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
       ->excludes(seedsFile)
       ->excludes(seedGrid);
-  command->add_option("--seed", options->seed, "random seed for the seed points")
+  command->add_option("--seed", options->seeds.seed, "random seed for the seed points")
       ->capture_default_str()
       ->excludes(seedsFile);
-  command->add_option("--steps", options->steps, "maximum integration steps per trace")
+  command->add_option("--steps", options->trace.steps, "maximum integration steps per trace")
       ->capture_default_str();
-  command->add_option("--step-size", options->stepSize,
+  command->add_option("--step-size", options->trace.stepSize,
                       "h: in cell widths (cell, arc) or physical time (time; default 1/4 of the "
                       "finest cell crossed at the maximum speed) [default 0.25]");
   command
-      ->add_option("--step-mode", options->stepMode,
+      ->add_option("--step-mode", options->trace.stepMode,
                    "cell: RK4 on w(x)v(x) (paper); time: fixed dt; arc: unit speed")
       ->capture_default_str()
       ->check(CLI::IsMember({"cell", "time", "arc"}));
   command
-      ->add_option("--direction", options->direction,
+      ->add_option("--direction", options->trace.direction,
                    "integration direction: forward, backward, or both (two lines per seed, as "
                    "ParaView's Stream Tracer)")
       ->capture_default_str()
       ->check(CLI::IsMember({"forward", "backward", "both"}));
   command
-      ->add_option("--point-data", options->pointData,
+      ->add_option("--point-data", options->field.pointData,
                    "channels sampled at every trace point: all (every channel but the vector's), "
                    "none, or NAME,NAME,...")
       ->capture_default_str();
-  command->add_flag("--vorticity", options->vorticity,
+  command->add_flag("--vorticity", options->trace.vorticity,
                     "also write Vorticity, Rotation and AngularVelocity (as vtkStreamTracer)");
   command
-      ->add_option("--periodic", options->periodic,
+      ->add_option("--periodic", options->field.periodic,
                    "periodic axes: auto (as the file says), none, or a list such as x,y,z")
       ->capture_default_str();
   command
-      ->add_option("--interpolant", options->interpolant,
+      ->add_option("--interpolant", options->field.interpolant,
                    "tent: the paper's tent basis functions (exact for constants); linear: tent "
                    "weights over each cell's least-squares linear model (exact for linear fields "
                    "across level jumps; CPU backend only so far)")
       ->capture_default_str()
       ->check(CLI::IsMember({"tent", "linear"}));
   command
-      ->add_option("--terminal-speed", options->terminalSpeed,
+      ->add_option("--terminal-speed", options->trace.terminalSpeed,
                    "stop where the speed falls below this")
       ->capture_default_str();
   command
-      ->add_option("--max-length", options->maxLength,
+      ->add_option("--max-length", options->trace.maxLength,
                    "stop before the trace's physical length passes this (0: no limit)")
       ->capture_default_str();
   command
-      ->add_option("--max-time", options->maxTime,
+      ->add_option("--max-time", options->trace.maxTime,
                    "stop where |IntegrationTime| reaches this, the last step shortened to end "
                    "on it (0: no limit)")
       ->capture_default_str();
   command
-      ->add_option("--memory-budget", options->memoryBudget,
+      ->add_option("--memory-budget", options->trace.memoryBudget,
                    "bytes the tracing rounds may use on the device and for the host copies, "
                    "e.g. 512M or 2G (the collected traces come on top); 0: automatic, 256M to 2G")
       ->transform(CLI::AsSizeValue(false))

@@ -14,6 +14,7 @@
 #include "flow/seeds.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "amrstream/tracing.hpp"
@@ -22,29 +23,10 @@ namespace amrstream::cli {
 
 struct TraceJobOptions {
   DatasetOptions dataset;
-  std::string vector;
-  std::string pointData = "all";
-  bool vorticity = false;
-  std::string periodic = "auto";
-  std::string interpolant = "tent";
-  std::string seedsFile;
-  std::vector<double> seedBox;
-  std::vector<int> seedGrid;
-  std::vector<double> seedLine;
-  std::string seedDensity;
-  double seedPercentile = 90.0;
-  bool seedWeighted = false;
+  FieldOptions field;
+  SeedRequest seeds;
   std::string seedsOut;
-  std::size_t count = 256;
-  std::uint64_t seed = 1;
-  std::uint32_t steps = 1000;
-  std::optional<float> stepSize;
-  std::string stepMode = "cell";
-  std::string direction = "both";
-  float terminalSpeed = 1e-12f;
-  float maxLength = 0.0f;
-  float maxTime = 0.0f;
-  std::uint64_t memoryBudget = 0;  // 0: automatic
+  TraceSettings trace;
   BackendRequest backend;
 };
 
@@ -82,10 +64,6 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 // (StoredTraces::assemble() gives a TraceSet).
 flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
                              HostValues hostValues = HostValues::Keep);
-
-// The options' parts in the library's terms.
-SeedRequest seedRequest(const TraceJobOptions& o);
-TraceSettings traceSettings(const TraceJobOptions& o);
 
 // Prints a line of the library's log on stdout.
 void printLine(const std::string& line);

@@ -54,12 +54,12 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
                    session.renderer().framesAccumulated()));
 
   if (ImGui::CollapsingHeader("Seeding and stepping", ImGuiTreeNodeFlags_DefaultOpen)) {
-    bool dense = !o.job.seedDensity.empty();
+    bool dense = !o.job.seeds.density.empty();
     if (ImGui::Checkbox("densest cells (paper)", &dense))
-      o.job.seedDensity = dense && session.input().field().findChannel("dens") ? "dens" : "";
-    int count = int(o.job.count);
+      o.job.seeds.density = dense && session.input().field().findChannel("dens") ? "dens" : "";
+    int count = int(o.job.seeds.count);
     if (ImGui::SliderInt("seeds", &count, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic))
-      o.job.count = std::size_t(std::max(1, count));
+      o.job.seeds.count = std::size_t(std::max(1, count));
     int steps = int(o.stepsPerFrame);
     if (ImGui::SliderInt("steps per frame", &steps, 1, 200)) o.stepsPerFrame = std::uint32_t(steps);
     flow::TraceOptions& trace = session.input().options;
@@ -83,7 +83,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     }
     ImGui::Checkbox("pause tracing", &session.paused);
     if (ImGui::Button("reseed and trace again")) {
-      ++o.job.seed;
+      ++o.job.seeds.seed;
       retrace = true;
     }
     if (retrace) session.restartTraces();

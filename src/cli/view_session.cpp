@@ -41,7 +41,7 @@ void ViewSession::setColourMap(render::ColourMap map) {
 
 void ViewSession::restartTraces() {
   std::string description;
-  input_.seeds = chooseSeeds(seedRequest(options_.job), domainOf(input_.volume), &input_.field(), description);
+  input_.seeds = chooseSeeds(options_.job.seeds, domainOf(input_.volume), &input_.field(), description);
   flow::closeUpperFaces(input_.volume, input_.seeds);
   flow::checkSeedsInDomain(input_.volume, input_.seeds);
   startTraces();

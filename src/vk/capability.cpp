@@ -47,7 +47,8 @@ std::string_view featureName(Feature feature) {
 Requirements requirementsOf(Capability capability) {
   switch (capability) {
     case Capability::Compute:
-      // Host/device structs use layout(scalar) so that glm's layout matches (STYLE.md).
+      // Host/device structs use layout(scalar) so that glm's layout matches
+      // (docs/architecture.md, "GPU kernels").
       return {{}, {Feature::ScalarBlockLayout}};
     case Capability::AccelerationStructure:
       // VK_KHR_acceleration_structure requires VK_KHR_deferred_host_operations even when no
