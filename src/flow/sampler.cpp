@@ -139,12 +139,19 @@ VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* 
 }
 
 std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
-                                  glm::vec3 p, RegionCache* cache) {
+                                  glm::vec3 p, RegionCache* cache,
+                                  std::span<const glm::vec3> gradients) {
   const std::int32_t regionId = findRegion(volume, p, cache);
   if (regionId < 0) return std::nullopt;
-  float weighted = 0.0f;
-  const float weightSum =
-      reconstruct(volume, volume.regions.regions[regionId], p, scalars, weighted);
+  float weightSum = 0.0f, weighted = 0.0f;
+  forEachRegionTentCell(
+      volume, volume.regions.regions[regionId], p,
+      [&](std::uint32_t slot, glm::vec3 axisWeight, glm::ivec3, float, glm::vec3 toP) {
+        const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+        weightSum += weight;
+        weighted += weight * (gradients.empty() ? scalars[slot]
+                                                : scalars[slot] + glm::dot(gradients[slot], toP));
+      });
   if (!(weightSum > kMinWeightSum)) return std::nullopt;
   const float value = weighted / weightSum;
   if (!std::isfinite(value)) return std::nullopt;

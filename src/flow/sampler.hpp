@@ -42,8 +42,11 @@ VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* 
 
 // The same reconstruction for a scalar gathered in brick order (gatherScalar()): the value at p,
 // or none outside the domain and regions, where the weights vanish, or when it is not finite.
+// With `gradients` (cellGradients() of the scalars) each cell contributes its linear model
+// instead of its value: the linear interpolant.
 std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
-                                  glm::vec3 p, RegionCache* cache = nullptr);
+                                  glm::vec3 p, RegionCache* cache = nullptr,
+                                  std::span<const glm::vec3> gradients = {});
 
 // The point-data channels at p in `region` (where p's vector sample was located): one value per
 // channel into `out`, NaN for all when region is -1 or the weights vanish.

@@ -17,7 +17,7 @@ class Context;
 
 namespace amrstream::render {
 
-inline constexpr std::uint32_t kRenderBindingCount = 11;
+inline constexpr std::uint32_t kRenderBindingCount = 12;
 inline constexpr std::uint32_t kRenderParamsBinding = 0;
 inline constexpr std::uint32_t kTubeStructureBinding = 10;
 // Compute kernels run 8x8 pixel workgroups (render_*.comp).

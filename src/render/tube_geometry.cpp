@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "flow/cell_gradients.hpp"
 #include "flow/sampler.hpp"
 #include "util/input_error.hpp"
 
@@ -37,13 +38,17 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
       colour.values[i] = traces.channels[i * traces.channelCount() + c];
     return colour;
   }
-  if (channel.name != name) channel = {name, flow::gatherScalar(field, volume, name)};
+  if (channel.name != name) {
+    channel = {name, flow::gatherScalar(field, volume, name), {}};
+    if (volume.interpolant == flow::Interpolant::Linear)
+      channel.gradients = flow::cellGradients(volume, channel.values, 1);
+  }
   const std::vector<float>& scalars = channel.values;
   tbb::parallel_for(std::size_t(0), traces.lineCount(), [&](std::size_t line) {
     flow::RegionCache cache;
     for (std::uint64_t i = traces.offsets[line]; i < traces.offsets[line + 1]; ++i) {
       const glm::vec3 cell(volume.transform.toCellUnits(glm::dvec3(traces.positions[i])));
-      colour.values[i] = flow::sampleScalar(volume, scalars, cell, &cache)
+      colour.values[i] = flow::sampleScalar(volume, scalars, cell, &cache, channel.gradients)
                              .value_or(std::numeric_limits<float>::quiet_NaN());
     }
   });

@@ -27,6 +27,7 @@ struct ColourField {
 struct ChannelValues {
   std::string name;
   std::vector<float> values;
+  std::vector<glm::vec3> gradients;  // the linear interpolant's (flow::cellGradients); else empty
 };
 
 // Throws InputError listing the choices when `name` is neither speed, time nor a channel of

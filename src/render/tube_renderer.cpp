@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "flow/cell_gradients.hpp"
 #include "tube_bvh.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
@@ -35,7 +36,7 @@ std::vector<VkAabbPositionsKHR> segmentBoxes(std::span<const shared::TubeSegment
 shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings& settings,
                                 const flow::VectorVolume& volume, std::uint32_t width,
                                 std::uint32_t height, std::uint32_t frame,
-                                std::size_t segmentCount) {
+                                std::size_t segmentCount, bool linearVolume) {
   const CameraFrame view = cameraFrame(camera);
   shared::RenderParams p{};
   p.eye = view.eye;
@@ -47,7 +48,8 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.frameIndex = frame;
   p.flags = (settings.ambientOcclusion ? AMRSTREAM_RENDER_AO : 0u) |
             (settings.volume ? AMRSTREAM_RENDER_VOLUME : 0u) |
-            (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u);
+            (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u) |
+            (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u);
   p.imageSize = {width, height};
   p.segmentCount = static_cast<std::uint32_t>(segmentCount);
   p.tubeRadius = settings.tubeRadius;
@@ -77,6 +79,12 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
   hasScalars_ = !contextScalars.empty();
   bricks_ = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
   scalars_ = vk::uploadToDeviceLocal(ctx, contextScalars, kStorage, "context scalars");
+  linearVolume_ = hasScalars_ && volume.interpolant == flow::Interpolant::Linear;
+  const std::vector<glm::vec3> gradients = linearVolume_
+                                               ? flow::cellGradients(volume, contextScalars, 1)
+                                               : std::vector<glm::vec3>(1);
+  scalarGradients_ =
+      vk::uploadToDeviceLocal(ctx, gradients, kStorage, "context scalar gradients");
   regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks_ =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
@@ -151,7 +159,7 @@ void TubeRenderer::writeDescriptors() {
   const std::array<VkDescriptorBufferInfo, kRenderBindingCount> buffers{
       whole(params_),       whole(bricks_),    whole(scalars_),      whole(regions_),
       whole(regionBricks_), whole(tree_),      whole(segments_),     whole(colourMap_),
-      whole(accumulation_), whole(pixels_),    whole(structure)};
+      whole(accumulation_), whole(pixels_),    whole(structure),     whole(scalarGradients_)};
   std::array<VkWriteDescriptorSet, kRenderBindingCount> writes{};
   for (std::uint32_t i = 0; i < kRenderBindingCount; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -188,7 +196,7 @@ void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& 
   lastSettings_ = settings;
 
   const shared::RenderParams params =
-      makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_);
+      makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_, linearVolume_);
   // The previous frame has completed (renderFrame waits), so the buffer is free to rewrite.
   std::memcpy(params_.mapped().data(), &params, sizeof(params));
   if (descriptorsStale_) writeDescriptors();

@@ -49,7 +49,8 @@ class TubeRenderer {
  public:
   // The context must have gpu::requiredCapabilities(backend) and outlive the renderer; so must
   // `volume`. `contextScalars` (brick-ordered, flow::gatherScalar; may be empty) is the field the
-  // volume shows.
+  // volume shows, reconstructed with `volume`'s interpolant (the linear one computes the scalar's
+  // cell gradients here).
   TubeRenderer(const vk::Context& ctx, gpu::Backend backend, const flow::VectorVolume& volume,
                std::span<const float> contextScalars);
 
@@ -84,8 +85,9 @@ class TubeRenderer {
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
   RenderKernel kernel_;
-  vk::Buffer bricks_, scalars_, regions_, regionBricks_, tree_;
+  vk::Buffer bricks_, scalars_, scalarGradients_, regions_, regionBricks_, tree_;
   bool hasScalars_ = false;
+  bool linearVolume_ = false;
   vk::Buffer segments_, bvhNodes_;
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <random>
 
+#include "flow/cell_gradients.hpp"
 #include "flow/integrator.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
@@ -96,6 +97,24 @@ TEST(LinearInterpolant, ReproducesLinearFieldsAnywhereOnRandomMultiLevelLayouts)
     // times part of a coarse cell (the oracle can fail).
     EXPECT_GT(largestError(tent, points, linearField), 1e-2) << "layout " << seed;
   }
+}
+
+// A scalar channel (the colour field's and the context volume's path: gatherScalar, cellGradients,
+// sampleScalar) through the same interpolant.
+TEST(LinearInterpolant, ReproducesALinearScalarSampledWithItsGradients) {
+  const bricks::AmrField field = testing::randomAmr(6, {}, asFunction(linearField));
+  const VectorVolume volume = volumeWith(field, Interpolant::Linear);
+  const std::vector<float> scalars = gatherScalar(field, volume, "vy");
+  const std::vector<glm::vec3> gradients = cellGradients(volume, scalars, 1);
+  double linearWorst = 0.0, tentWorst = 0.0;
+  for (const glm::dvec3& p : randomPoints(volume, 3000, 6)) {
+    const double exact = linearField(p).y;
+    linearWorst = std::max(
+        linearWorst, std::abs(*sampleScalar(volume, scalars, glm::vec3(p), nullptr, gradients) - exact));
+    tentWorst = std::max(tentWorst, std::abs(*sampleScalar(volume, scalars, glm::vec3(p)) - exact));
+  }
+  EXPECT_LT(linearWorst, 2e-5);
+  EXPECT_GT(tentWorst, 1e-2);
 }
 
 TEST(LinearInterpolant, ReproducesLinearFieldsAtEveryRegionFaceEdgeAndCorner) {

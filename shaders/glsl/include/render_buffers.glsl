@@ -16,3 +16,6 @@ layout(scalar, set = 0, binding = 6) readonly buffer SegmentBuffer { TubeSegment
 layout(scalar, set = 0, binding = 7) readonly buffer ColourMapBuffer { vec3 colourMap[]; };
 layout(scalar, set = 0, binding = 8) buffer AccumulationBuffer { vec4 accumulation[]; };
 layout(scalar, set = 0, binding = 9) writeonly buffer PixelBuffer { uint pixels[]; };
+// The context scalar's gradient per value slot, per finest cell (the linear interpolant; one
+// element, unread, with the tent).
+layout(scalar, set = 0, binding = 11) readonly buffer ScalarGradientBuffer { vec3 scalarGradients[]; };

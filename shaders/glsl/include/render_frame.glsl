@@ -10,6 +10,11 @@ const uint kMaxMarchSteps = 8192;
 #define TENT_VALUE(slot) scalars[slot]
 #define TENT_FUNCTION reconstructScalar
 #include "tent_reconstruction.glsl"
+#undef TENT_FUNCTION
+#define TENT_MODEL(slot, toP) dot(scalarGradients[slot], toP)
+#define TENT_FUNCTION reconstructScalarLinear
+#include "tent_reconstruction.glsl"
+#undef TENT_MODEL
 #undef TENT_TYPE
 #undef TENT_VALUE
 #undef TENT_FUNCTION
@@ -103,7 +108,9 @@ vec4 marchVolume(vec3 o, vec3 d, float tEnd) {
     const float step = (regionId >= 0 ? region.finestCellWidth : 1.0) * params.volumeStepScale;
     if (regionId >= 0) {
       float weighted;
-      const float weightSum = reconstructScalar(region, p, weighted);
+      const float weightSum = (params.flags & AMRSTREAM_RENDER_LINEAR_VOLUME) != 0
+                                  ? reconstructScalarLinear(region, p, weighted)
+                                  : reconstructScalar(region, p, weighted);
       float value = weightSum > kMinWeightSum ? weighted / weightSum : 0.0;
       if ((params.flags & AMRSTREAM_RENDER_LOG_VOLUME) != 0) value = log(max(value, 1e-30)) / log(10.0);
       const float span01 = params.volumeMax - params.volumeMin;

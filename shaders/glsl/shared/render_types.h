@@ -29,6 +29,7 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_AO 1u
 #define AMRSTREAM_RENDER_VOLUME 2u
 #define AMRSTREAM_RENDER_LOG_VOLUME 4u
+#define AMRSTREAM_RENDER_LINEAR_VOLUME 8u  // the volume's scalar through the linear interpolant
 
 // A pinhole camera and what one frame draws. A frame adds one jittered sample per pixel to the
 // accumulation buffer; pixels show the mean of the frames since the last reset (frameIndex 0).
