@@ -1,6 +1,7 @@
 #version 460
 // One tracing round with the host-built region tree: plain Vulkan compute, no ray tracing.
 #extension GL_GOOGLE_include_directive : require
+#define AMRSTREAM_LINEAR_CELL_WORDS
 #include "include/amr_buffers.glsl"
 #include "include/locate_tree.glsl"
 #include "include/sampler.glsl"

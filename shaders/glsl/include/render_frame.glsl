@@ -11,7 +11,7 @@ const uint kMaxMarchSteps = 8192;
 #define TENT_FUNCTION reconstructScalar
 #include "tent_reconstruction.glsl"
 #undef TENT_FUNCTION
-#define TENT_MODEL(slot, toP) dot(scalarGradients[slot], toP)
+#define TENT_MODEL(slot, toP) (scalars[slot] + dot(scalarGradients[slot], toP))
 #define TENT_FUNCTION reconstructScalarLinear
 #include "tent_reconstruction.glsl"
 #undef TENT_MODEL

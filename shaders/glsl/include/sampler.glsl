@@ -12,15 +12,24 @@ const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 #undef TENT_FUNCTION
 #undef TENT_VALUE
 
-// G_i (p - c_i) for the three components, summed in the order of the CPU's glm::dot.
-precise vec3 linearModelTerm(uint slot, vec3 toP) {
-  precise const vec3 gx = linearCells[4u * slot + 1u] * toP;
-  precise const vec3 gy = linearCells[4u * slot + 2u] * toP;
-  precise const vec3 gz = linearCells[4u * slot + 3u] * toP;
-  return vec3(gx.x + gx.y + gx.z, gy.x + gy.y + gy.z, gz.x + gz.y + gz.z);
+// The cell's linear model v_i + G_i (p - c_i), the dot products summed in the order of the
+// CPU's glm::dot.
+precise vec3 linearModel(uint slot, vec3 toP) {
+#ifdef AMRSTREAM_LINEAR_CELL_WORDS
+  const vec4 a = linearCellWords[3u * slot], b = linearCellWords[3u * slot + 1u],
+             c = linearCellWords[3u * slot + 2u];
+  const vec3 value = a.xyz, g0 = vec3(a.w, b.x, b.y), g1 = vec3(b.z, b.w, c.x),
+             g2 = vec3(c.y, c.z, c.w);
+#else
+  const vec3 value = linearCells[4u * slot], g0 = linearCells[4u * slot + 1u],
+             g1 = linearCells[4u * slot + 2u], g2 = linearCells[4u * slot + 3u];
+#endif
+  precise const vec3 gx = g0 * toP;
+  precise const vec3 gy = g1 * toP;
+  precise const vec3 gz = g2 * toP;
+  return value + vec3(gx.x + gx.y + gx.z, gy.x + gy.y + gy.z, gz.x + gz.y + gz.z);
 }
-#define TENT_VALUE(slot) linearCells[4u * slot]
-#define TENT_MODEL(slot, toP) linearModelTerm(slot, toP)
+#define TENT_MODEL(slot, toP) linearModel(slot, toP)
 #define TENT_FUNCTION reconstructVectorLinear
 #include "tent_reconstruction.glsl"
 #undef TENT_MODEL

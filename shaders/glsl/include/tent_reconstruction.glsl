@@ -3,8 +3,8 @@
 // and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers.
 // TENT_FUNCTION(region, p, weighted) returns the sum of the weights and sets `weighted` to the
 // weighted sum of the values; the sample is their quotient. With TENT_MODEL(slot, toP) defined
-// too, each value is the cell's linear model TENT_VALUE(slot) + TENT_MODEL(slot, p - c_i) (the
-// linear interpolant).
+// instead of TENT_VALUE, each value is the cell's linear model at p, toP = p - c_i (the linear
+// interpolant).
 
 float TENT_FUNCTION(Region region, vec3 p, out TENT_TYPE weighted) {
   // `precise` forbids fusing a*b+c into an FMA, which the CPU reference never does: both paths
@@ -28,7 +28,7 @@ float TENT_FUNCTION(Region region, vec3 p, out TENT_TYPE weighted) {
       weightSum += weight;
 #ifdef TENT_MODEL
       precise const vec3 toP = width * (frac - vec3(offset));
-      sum += weight * (TENT_VALUE(slot) + TENT_MODEL(slot, toP));
+      sum += weight * TENT_MODEL(slot, toP);
 #else
       sum += weight * TENT_VALUE(slot);
 #endif
