@@ -25,6 +25,8 @@ const char* reasonName(int reason) {
       return "max time";
     case AMRSTREAM_REASON_PERIODIC_WRAP:
       return "periodic wrap";
+    case AMRSTREAM_REASON_SERIES_END:
+      return "end of series";
     default:
       return "unknown";
   }

@@ -14,6 +14,8 @@ void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
       ->capture_default_str();
   command.add_option(seedFlag, options.seed, "random seed of a generated dataset")
       ->capture_default_str();
+  command.add_option("--time", options.time, "snapshot time of a generated unsteady dataset (swirl)")
+      ->capture_default_str();
 }
 
 void addDatasetOptions(CLI::App& command, DatasetOptions& options, const std::string& seedFlag) {

@@ -17,19 +17,31 @@ struct GenOptions {
   std::string kind;
   std::string out;
   synth::GeneratorOptions generator;
+  int series = 0;         // snapshots; 0: one dataset named by --out alone
+  double interval = 0.1;  // time between snapshots
 };
 
-void runGen(const GenOptions& o) {
+void writeOne(const std::string& kind, const synth::GeneratorOptions& generator,
+              const std::string& out) {
   Stopwatch clock;
-  const bricks::AmrField field = synth::generate(o.kind, o.generator);
+  const bricks::AmrField field = synth::generate(kind, generator);
   const double generateSeconds = clock.seconds();
   clock.restart();
-  const std::filesystem::path exa = formats::writeExa(field, o.out);
+  const std::filesystem::path exa = formats::writeExa(field, out);
   fmt::print("generated  {}: {} cells, levels {}..{} [{:.2f} s]\n", field.source(),
              withCommas(field.cellCount()), field.finestLevel(), field.coarsestLevel(),
              generateSeconds);
   fmt::print("wrote      {} and its .cells/.scalars files [{:.2f} s]\n", exa.string(),
              clock.seconds());
+}
+
+void runGen(const GenOptions& o) {
+  if (o.series == 0) return writeOne(o.kind, o.generator, o.out);
+  for (int i = 0; i < o.series; ++i) {
+    synth::GeneratorOptions snapshot = o.generator;
+    snapshot.time = o.generator.time + i * o.interval;
+    writeOne(o.kind, snapshot, fmt::format("{}_{:04d}", o.out, i));
+  }
 }
 
 }  // namespace
@@ -43,6 +55,13 @@ void addGenCommand(CLI::App& app) {
   command->add_option("--out", options->out, "output prefix: writes PREFIX.exa, PREFIX.cells, ...")
       ->required();
   addGeneratorOptions(*command, options->generator, "--seed");
+  command
+      ->add_option("--series", options->series,
+                   "write N snapshots PREFIX_0000.exa, ... at --time, --time + --interval, ...")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--interval", options->interval, "time between the snapshots of --series")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command->callback([options] { runGen(*options); });
 }
 

@@ -346,12 +346,17 @@ Box coarsen(const Box& box, int ratio) {
           glm::ivec3(down(box.hi.x), down(box.hi.y), down(box.hi.z))};
 }
 
-}  // namespace
-
-bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
+fs::path plotfileHeader(const fs::path& directory) {
   const fs::path headerPath = directory / "Header";
   if (!fs::is_regular_file(headerPath))
     throw InputError(directory.string(), "not an AMReX plotfile: no 'Header' file");
+  return headerPath;
+}
+
+}  // namespace
+
+bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
+  const fs::path headerPath = plotfileHeader(directory);
   const PlotHeader h = parseHeader(headerPath);
   const int levels = h.finestLevel + 1;
   const int ncomp = static_cast<int>(h.names.size());
@@ -445,6 +450,10 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
   for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
   field.setInfo(readAmrexInfo(directory, h.time, internalLevels));
   return field;
+}
+
+double amrexPlotfileTime(const fs::path& directory) {
+  return parseHeader(plotfileHeader(directory)).time;
 }
 
 }  // namespace amrstream::formats

@@ -21,4 +21,7 @@ namespace amrstream::formats {
 // Throws InputError naming the offending file and the inconsistency.
 bricks::AmrField readAmrexPlotfile(const std::filesystem::path& directory);
 
+// The Header's time alone, parsing only the Header (no level data); errors as readAmrexPlotfile's.
+double amrexPlotfileTime(const std::filesystem::path& directory);
+
 }  // namespace amrstream::formats

@@ -67,10 +67,14 @@ bricks::DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLev
   info.levelsCountDown = true;
   info.levelName = "Enzo level (0 = root grid)";
   if (parameters == nullptr) return info;
-  info.time = parameters->number("InitialTime");
+  info.time = readEnzoTime(*parameters);
   readPeriodicity(*parameters, info);
   readUnits(*parameters, info);
   return info;
+}
+
+std::optional<double> readEnzoTime(const EnzoParameters& parameters) {
+  return parameters.number("InitialTime");
 }
 
 }  // namespace amrstream::formats

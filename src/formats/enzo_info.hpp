@@ -11,6 +11,8 @@
 //   levels       Enzo levels, 0 = root grid: internal level L is Enzo level finest - L
 // Without a parameter file only the level numbering is known.
 
+#include <optional>
+
 #include "bricks/dataset_info.hpp"
 #include "enzo_parameters.hpp"
 
@@ -18,5 +20,8 @@ namespace amrstream::formats {
 
 // `parameters` may be null (no parameter file); `finestLevel` is the finest Enzo level present.
 bricks::DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel);
+
+// The snapshot's time alone (InitialTime; nullopt when absent).
+std::optional<double> readEnzoTime(const EnzoParameters& parameters);
 
 }  // namespace amrstream::formats

@@ -435,4 +435,6 @@ bricks::AmrField readEnzo(const fs::path& file) {
   return field;
 }
 
+fs::path enzoParameterFile(const fs::path& file) { return findSiblings(file).parameter; }
+
 }  // namespace amrstream::formats

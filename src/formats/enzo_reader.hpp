@@ -18,4 +18,9 @@ namespace amrstream::formats {
 // Throws InputError naming the file (and the dataset) for unreadable or inconsistent input.
 bricks::AmrField readEnzo(const std::filesystem::path& file);
 
+// The parameter file of the dataset `file` belongs to (`file` itself, or PREFIX for a `.hierarchy`,
+// `.harrays` or `.cpuNNNN` sibling), as readEnzo finds it; it need not exist. Throws InputError
+// when `file` does not exist.
+std::filesystem::path enzoParameterFile(const std::filesystem::path& file);
+
 }  // namespace amrstream::formats

@@ -183,6 +183,10 @@ bricks::AmrField readExa(const std::filesystem::path& config) {
   return field;
 }
 
+std::optional<double> readExaTime(const std::filesystem::path& config) {
+  return parseConfig(config).info.time;
+}
+
 namespace {
 
 void writeBytes(const std::filesystem::path& path, const void* data, std::size_t size) {

@@ -16,6 +16,7 @@
 //             amrstream builds its own bricks from the cells.
 
 #include <filesystem>
+#include <optional>
 
 #include "bricks/amr_field.hpp"
 
@@ -25,6 +26,10 @@ namespace amrstream::formats {
 // malformed directive, ...). The field's DatasetInfo holds the optional lines above and ExaBricks
 // level numbering (0 = finest).
 bricks::AmrField readExa(const std::filesystem::path& config);
+
+// The `time` line's value (nullopt without one), reading only the config: its lines are checked
+// as readExa checks them, but the cells and scalar files are not opened.
+std::optional<double> readExaTime(const std::filesystem::path& config);
 
 // Writes PREFIX.cells, PREFIX.NAME.scalars for every channel and PREFIX.exa, with the optional
 // lines for what the field's DatasetInfo knows; returns the .exa path. A unit text holding '#' or

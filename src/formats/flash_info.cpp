@@ -24,12 +24,18 @@ std::map<std::string, std::string> stringParameters(const FlashFile& file) {
 
 }  // namespace
 
+std::optional<double> readFlashTime(const FlashFile& file) {
+  std::optional<double> time;
+  for (const auto& [name, value] : file.readPairs<double>("real scalars"))
+    if (name == "time" && std::isfinite(value)) time = value;
+  return time;
+}
+
 bricks::DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel,
                                   int dimensionality) {
   bricks::DatasetInfo info;
   info.format = "FLASH";
-  for (const auto& [name, value] : file.readPairs<double>("real scalars"))
-    if (name == "time" && std::isfinite(value)) info.time = value;
+  info.time = readFlashTime(file);
 
   const auto parameters = stringParameters(file);
   const auto parameter = [&](const std::string& name) -> const std::string* {

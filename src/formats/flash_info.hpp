@@ -9,6 +9,8 @@
 //   levels       refine levels, 1 = root: internal level L is refine level rmax - L, rmax the finest
 //                leaf refine level
 
+#include <optional>
+
 #include "bricks/dataset_info.hpp"
 #include "flash_file.hpp"
 
@@ -16,5 +18,8 @@ namespace amrstream::formats::flash {
 
 bricks::DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel,
                                   int dimensionality);
+
+// The time alone (`real scalars` "time"; nullopt when absent or not finite).
+std::optional<double> readFlashTime(const FlashFile& file);
 
 }  // namespace amrstream::formats::flash

@@ -90,6 +90,15 @@ Columns parseHeader(const std::string& line, const std::string& where) {
   return columns;
 }
 
+// Parses the first line of `in`, opened on `file`, leaving `in` at the first row.
+Columns readHeader(std::ifstream& in, const std::filesystem::path& file) {
+  const std::string source = file.string();
+  if (!in) throw InputError(source, "cannot open the Gerris file");
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(source, "the file is empty (no Gerris header)");
+  return parseHeader(line, source + ":1");
+}
+
 struct Leaf {
   glm::dvec3 centre;
   int level;
@@ -101,10 +110,8 @@ struct Leaf {
 bricks::AmrField readGerris(const std::filesystem::path& file) {
   const std::string source = file.string();
   std::ifstream in(file);
-  if (!in) throw InputError(source, "cannot open the Gerris file");
+  const Columns columns = readHeader(in, file);
   std::string line;
-  if (!std::getline(in, line)) throw InputError(source, "the file is empty (no Gerris header)");
-  const Columns columns = parseHeader(line, source + ":1");
 
   std::vector<bricks::Channel> channels;
   std::vector<int> channelColumns;
@@ -189,6 +196,11 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
   info.levelName = "Gerris level (cell size 2^-level of the root box)";
   field.setInfo(std::move(info));
   return field;
+}
+
+std::optional<double> readGerrisTime(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return readHeader(in, file).time;
 }
 
 }  // namespace amrstream::formats

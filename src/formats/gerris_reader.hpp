@@ -14,6 +14,7 @@
 // simulation file, and Gerris is dimensionless unless that file scales it).
 
 #include <filesystem>
+#include <optional>
 
 #include "bricks/amr_field.hpp"
 
@@ -21,5 +22,9 @@ namespace amrstream::formats {
 
 // Throws InputError naming the file (and the line) on a malformed or inconsistent dump.
 bricks::AmrField readGerris(const std::filesystem::path& file);
+
+// The header's time alone (nullopt when the header ends without one), reading only the header
+// line; a malformed header throws as in readGerris.
+std::optional<double> readGerrisTime(const std::filesystem::path& file);
 
 }  // namespace amrstream::formats

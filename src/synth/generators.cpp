@@ -8,6 +8,7 @@
 #include "block_refiner.hpp"
 #include "cloud_field.hpp"
 #include "rotation_field.hpp"
+#include "swirl_field.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::synth {
@@ -31,7 +32,7 @@ BlockSampler velocitySampler(Velocity velocity) {
 bricks::DatasetInfo builtinInfo(const GeneratorOptions& options, bool periodic) {
   bricks::DatasetInfo info;
   info.format = "builtin";
-  info.time = 0.0;
+  info.time = options.time;
   info.periodic = {periodic, periodic, periodic};
   info.periodicKnown = true;
   info.finestFileLevel = options.levels - 1;
@@ -52,7 +53,7 @@ bricks::AmrField build(const GeneratorOptions& options, const std::string& sourc
 
 }  // namespace
 
-std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud"}; }
+std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud", "swirl"}; }
 
 bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options) {
   const std::string source = fmt::format("builtin:{}", kind);
@@ -70,6 +71,20 @@ bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options
         {"dens", "magx", "magy", "magz"},
         [&](const BlockBox& box, std::span<const glm::dvec3> centres,
             std::span<float* const> values) { cloud.sampleBlock(box, centres, values); },
+        false);
+  }
+  if (kind == "swirl") {
+    const double t = options.time;
+    return build(
+        options, source, [t](const BlockBox& box) { return SwirlField::refinementPriority(box, t); },
+        {"velx", "vely", "velz", "temp"},
+        [t](const BlockBox&, std::span<const glm::dvec3> centres, std::span<float* const> values) {
+          for (std::size_t i = 0; i < centres.size(); ++i) {
+            const glm::dvec3 v = SwirlField::velocity(centres[i], t);
+            for (int c = 0; c < 3; ++c) values[c][i] = float(v[c]);
+            values[3][i] = float(SwirlField::temperature(centres[i], t));
+          }
+        },
         false);
   }
   throw InputError(source, fmt::format("unknown generator kind '{}' (kinds: {})", kind,

@@ -19,12 +19,15 @@ struct GeneratorOptions {
   int rootBlocks = 4;                   // root blocks per axis (each 8^3 coarsest cells)
   std::size_t targetCells = 1'000'000;  // refinement stops before the cell count passes this
   std::uint64_t seed = 1;               // random choices (filament placement, ...)
+  double time = 0.0;                    // the snapshot's time (unsteady kinds: swirl)
 };
 
 // Kinds: "rotation" (solid-body rotation about the z axis through the domain centre, channels
 // velx vely velz), "abc" (Arnold-Beltrami-Childress flow, velx vely velz), "cloud" (magnetised
-// filament cloud: dens, magx magy magz). Throws InputError naming the kind and listing the kinds.
-// DatasetInfo: format "builtin", time 0, units unknown (dimensionless), periodic on every axis for
+// filament cloud: dens, magx magy magz), "swirl" (unsteady: a pulsing rotation with a vertical
+// drift at options.time, refined around a feature the flow carries, so refinement moves between
+// times; velx vely velz temp; swirl_field.hpp). Throws InputError naming the kind and listing the
+// kinds. DatasetInfo: format "builtin", time options.time (0 for the steady kinds), units unknown (dimensionless), periodic on every axis for
 // abc (one full period over the unit cube) and on none for the others, levels numbered 0 = the
 // root blocks' (coarsest) level up to levels - 1.
 bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options);

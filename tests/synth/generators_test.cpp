@@ -34,7 +34,7 @@ void expectIdentical(const bricks::AmrField& a, const bricks::AmrField& b) {
 }
 
 TEST(Generators, ListsTheKinds) {
-  EXPECT_EQ(generatorKinds(), (std::vector<std::string>{"rotation", "abc", "cloud"}));
+  EXPECT_EQ(generatorKinds(), (std::vector<std::string>{"rotation", "abc", "cloud", "swirl"}));
 }
 
 TEST(Generators, UnknownKindNamesItAndListsTheKinds) {

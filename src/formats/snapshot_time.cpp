@@ -1,0 +1,125 @@
+#include "snapshot_time.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <glob.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <string_view>
+
+#include "amrex_reader.hpp"
+#include "enzo_info.hpp"
+#include "enzo_parameters.hpp"
+#include "enzo_reader.hpp"
+#include "exa_format.hpp"
+#include "flash_file.hpp"
+#include "flash_info.hpp"
+#include "gerris_reader.hpp"
+#include "load_input.hpp"
+#include "synth/generators.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream::formats {
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr std::string_view kBuiltinPrefix = "builtin:";
+
+// loadInput(input, {}) generates builtin datasets at time 0; an unknown kind fails as it does.
+double builtinTime(const std::string& input) {
+  const std::string kind = input.substr(kBuiltinPrefix.size());
+  const std::vector<std::string> kinds = synth::generatorKinds();
+  if (std::ranges::find(kinds, kind) == kinds.end())
+    throw InputError(input, fmt::format("unknown generator kind '{}' (kinds: {})", kind,
+                                        fmt::join(kinds, ", ")));
+  return 0.0;
+}
+
+// Without its parameter file an Enzo dataset states no time, as readEnzo finds.
+std::optional<double> enzoTime(const std::string& input) {
+  const fs::path parameterFile = enzoParameterFile(input);
+  std::error_code error;
+  if (!fs::is_regular_file(parameterFile, error)) return std::nullopt;
+  return readEnzoTime(EnzoParameters(parameterFile));
+}
+
+// Frees a glob_t's matches when it goes out of scope.
+class GlobMatches {
+ public:
+  explicit GlobMatches(const std::string& pattern) {
+    result_ = glob(pattern.c_str(), 0, nullptr, &matches_);
+  }
+  GlobMatches(const GlobMatches&) = delete;
+  GlobMatches& operator=(const GlobMatches&) = delete;
+  ~GlobMatches() { globfree(&matches_); }
+
+  int result() const { return result_; }
+  std::span<char* const> paths() const { return {matches_.gl_pathv, matches_.gl_pathc}; }
+
+ private:
+  glob_t matches_{};
+  int result_ = 0;
+};
+
+std::vector<std::string> globMatches(const std::string& pattern) {
+  const GlobMatches matches(pattern);
+  if (matches.result() == GLOB_NOMATCH) throw InputError(pattern, "matches no file");
+  if (matches.result() != 0)
+    throw InputError(pattern, "cannot expand the pattern (out of memory or a read error)");
+  return {matches.paths().begin(), matches.paths().end()};
+}
+
+bool keptAsGiven(const std::string& argument) {
+  std::error_code error;
+  return argument.starts_with(kBuiltinPrefix) || fs::exists(argument, error);
+}
+
+// One key per path however it is spelt: `dir/./a`, `dir//a` and `dir/a/` name `dir/a`.
+std::string pathKey(const std::string& path) {
+  if (path.starts_with(kBuiltinPrefix)) return path;
+  std::error_code error;
+  fs::path key = fs::absolute(path, error).lexically_normal();
+  if (!key.has_filename() && key.has_parent_path()) key = key.parent_path();
+  return key.string();
+}
+
+}  // namespace
+
+std::optional<double> snapshotTime(const std::string& input) {
+  switch (detectFormat(input)) {
+    case Format::Builtin:
+      return builtinTime(input);
+    case Format::ExaBricks:
+      return readExaTime(input);
+    case Format::Amrex:
+      return amrexPlotfileTime(input);
+    case Format::Enzo:
+      return enzoTime(input);
+    case Format::Flash:
+      return flash::readFlashTime(flash::FlashFile(input));
+    case Format::Gerris:
+      return readGerrisTime(input);
+  }
+  throw InputError(input, "unknown input format");
+}
+
+std::vector<std::string> expandSnapshotPatterns(std::span<const std::string> patterns) {
+  std::vector<std::string> paths;
+  std::set<std::string> seen;
+  const auto add = [&](const std::string& path) {
+    if (seen.insert(pathKey(path)).second) paths.push_back(path);
+  };
+  for (const std::string& pattern : patterns) {
+    if (keptAsGiven(pattern)) {
+      add(pattern);
+      continue;
+    }
+    for (const std::string& match : globMatches(pattern)) add(match);
+  }
+  return paths;
+}
+
+}  // namespace amrstream::formats
