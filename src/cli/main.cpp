@@ -10,6 +10,7 @@
 #include "devices_command.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
+#include "pathlines_command.hpp"
 #include "render_command.hpp"
 #include "trace_command.hpp"
 #include "util/input_error.hpp"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "amrstream 0.1.0");
   amrstream::cli::addTraceCommand(app);
+  amrstream::cli::addPathlinesCommand(app);
   amrstream::cli::addInfoCommand(app);
   amrstream::cli::addGenCommand(app);
   amrstream::cli::addDevicesCommand(app);

@@ -109,32 +109,26 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
   return stored;
 }
 
-void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t defaultCount) {
+void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string& seedsOut) {
   CLI::App* command = &app;
-  TraceJobOptions* options = &job;
-  options->seeds.count = defaultCount;
-  addDatasetOptions(*command, options->dataset, "--gen-seed");
-  command->add_option("--vector", options->field.vector,
-                      "three channels forming the vector, e.g. velx,vely,velz "
-                      "(default: the velocity, else the magnetic field)");
   auto* seedsFile =
       command
-          ->add_option("--seeds", options->seeds.file, "file of seed points, one 'x y z' per line")
+          ->add_option("--seeds", seeds.file, "file of seed points, one 'x y z' per line")
           ->check(CLI::ExistingFile);
   command
-      ->add_option("--seed-box", options->seeds.box,
+      ->add_option("--seed-box", seeds.box,
                    "random seeds in this box: x0,y0,z0,x1,y1,z1 (default: the domain)")
       ->delimiter(',')
       ->expected(6)
       ->excludes(seedsFile);
   auto* seedLine = command
-                       ->add_option("--seed-line", options->seeds.line,
+                       ->add_option("--seed-line", seeds.line,
                                     "a rake of --count seeds from x0,y0,z0 to x1,y1,z1")
                        ->delimiter(',')
                        ->expected(6)
                        ->excludes(seedsFile);
   command
-      ->add_option("--seed-grid", options->seeds.grid,
+      ->add_option("--seed-grid", seeds.grid,
                    "a regular NX,NY,NZ grid in the seed box instead of random seeds (a box of "
                    "zero thickness with count 1 on that axis is a plane)")
       ->delimiter(',')
@@ -144,30 +138,62 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
   auto* seedGrid = command->get_option("--seed-grid");
   auto* seedDensity =
       command
-          ->add_option("--seed-density", options->seeds.density,
+          ->add_option("--seed-density", seeds.density,
                        "the paper's seeding: random points in random cells where this scalar is "
                        "at or above --seed-percentile")
           ->excludes(seedsFile)
           ->excludes(seedLine);
-  command->add_option("--seed-percentile", options->seeds.percentile, "see --seed-density")
+  command->add_option("--seed-percentile", seeds.percentile, "see --seed-density")
       ->capture_default_str()
       ->needs(seedDensity);
   command
-      ->add_flag("--seed-weighted", options->seeds.weighted,
+      ->add_flag("--seed-weighted", seeds.weighted,
                  "with --seed-density: pick cells with probability proportional to the scalar")
       ->needs(seedDensity);
-  command->add_option("--seeds-out", options->seedsOut,
+  command->add_option("--seeds-out", seedsOut,
                       "write the seeds used to this file, so the run can be repeated with --seeds");
   command
-      ->add_option("--count", options->seeds.count,
+      ->add_option("--count", seeds.count,
                    "number of seeds (random, along --seed-line, or of --seed-density)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
       ->excludes(seedsFile)
       ->excludes(seedGrid);
-  command->add_option("--seed", options->seeds.seed, "random seed for the seed points")
+  command->add_option("--seed", seeds.seed, "random seed for the seed points")
       ->capture_default_str()
       ->excludes(seedsFile);
+}
+
+void addFieldOptions(CLI::App& app, FieldOptions& field) {
+  CLI::App* command = &app;
+  command->add_option("--vector", field.vector,
+                      "three channels forming the vector, e.g. velx,vely,velz "
+                      "(default: the velocity, else the magnetic field)");
+  command
+      ->add_option("--point-data", field.pointData,
+                   "channels sampled at every trace point: all (every channel but the vector's), "
+                   "none, or NAME,NAME,...")
+      ->capture_default_str();
+  command
+      ->add_option("--periodic", field.periodic,
+                   "periodic axes: auto (as the file says), none, or a list such as x,y,z")
+      ->capture_default_str();
+  command
+      ->add_option("--interpolant", field.interpolant,
+                   "tent: the paper's tent basis functions (exact for constants); linear: tent "
+                   "weights over each cell's least-squares linear model (exact for linear fields "
+                   "across level jumps)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tent", "linear"}));
+}
+
+void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t defaultCount) {
+  CLI::App* command = &app;
+  TraceJobOptions* options = &job;
+  options->seeds.count = defaultCount;
+  addDatasetOptions(*command, options->dataset, "--gen-seed");
+  addFieldOptions(*command, options->field);
+  addSeedOptions(*command, options->seeds, options->seedsOut);
   command->add_option("--steps", options->trace.steps, "maximum integration steps per trace")
       ->capture_default_str();
   command->add_option("--step-size", options->trace.stepSize,
@@ -184,24 +210,8 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
                    "ParaView's Stream Tracer)")
       ->capture_default_str()
       ->check(CLI::IsMember({"forward", "backward", "both"}));
-  command
-      ->add_option("--point-data", options->field.pointData,
-                   "channels sampled at every trace point: all (every channel but the vector's), "
-                   "none, or NAME,NAME,...")
-      ->capture_default_str();
   command->add_flag("--vorticity", options->trace.vorticity,
                     "also write Vorticity, Rotation and AngularVelocity (as vtkStreamTracer)");
-  command
-      ->add_option("--periodic", options->field.periodic,
-                   "periodic axes: auto (as the file says), none, or a list such as x,y,z")
-      ->capture_default_str();
-  command
-      ->add_option("--interpolant", options->field.interpolant,
-                   "tent: the paper's tent basis functions (exact for constants); linear: tent "
-                   "weights over each cell's least-squares linear model (exact for linear fields "
-                   "across level jumps; CPU backend only so far)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"tent", "linear"}));
   command
       ->add_option("--terminal-speed", options->trace.terminalSpeed,
                    "stop where the speed falls below this")

@@ -30,6 +30,11 @@ struct TraceJobOptions {
   BackendRequest backend;
 };
 
+// The seeding options (--seeds, --seed-box, --seed-line, --seed-grid, --seed-density, --count,
+// ...) and the field options (--vector, --point-data, --periodic, --interpolant).
+void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string& seedsOut);
+void addFieldOptions(CLI::App& command, FieldOptions& field);
+
 // Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
 void addTraceJobOptions(CLI::App& command, TraceJobOptions& options, std::size_t defaultCount = 256);
 

@@ -168,7 +168,7 @@ void PathlineTracer::move(Particle& p, Snapshot a, Snapshot b, double until) con
     }
   }
   if (p.reason == AMRSTREAM_REASON_RUNNING && p.time >= options_.endTime)
-    p.reason = AMRSTREAM_REASON_MAX_TIME;
+    p.reason = options_.endReason;
 }
 
 void PathlineTracer::advance(Snapshot a, Snapshot b) {
@@ -213,6 +213,12 @@ std::uint64_t PathlineTracer::pointCount() const {
   std::uint64_t points = 0;
   for (const Particle& p : particles_) points += p.positions.size();
   return points;
+}
+
+std::uint64_t PathlineTracer::stepCount() const {
+  std::uint64_t steps = 0;
+  for (const Particle& p : particles_) steps += p.steps;
+  return steps;
 }
 
 TraceSet PathlineTracer::emptySet() const {

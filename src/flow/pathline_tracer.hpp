@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../../shaders/glsl/shared/trace_codes.h"
 #include "trace_set.hpp"
 #include "vector_volume.hpp"
 
@@ -21,7 +22,8 @@ namespace amrstream::flow {
 
 struct PathlineOptions {
   double startTime = 0.0;  // the seeds' (first) release
-  double endTime = std::numeric_limits<double>::infinity();  // particles stop here (max time)
+  double endTime = std::numeric_limits<double>::infinity();  // particles stop here, with:
+  int endReason = AMRSTREAM_REASON_MAX_TIME;  // or SERIES_END where the series ends there
   double stepSize = 0.0;      // dt, physical time, > 0
   double releaseEvery = 0.0;  // > 0: new particles from every seed at this interval (streaklines)
   // The collected points may take at most this many bytes (0: no limit): advance() throws an
@@ -59,6 +61,7 @@ class PathlineTracer {
   std::size_t particleCount() const { return particles_.size(); }
   std::size_t runningCount() const;
   std::uint64_t pointCount() const;
+  std::uint64_t stepCount() const;
   double time() const { return time_; }  // where the last interval ended
 
  private:

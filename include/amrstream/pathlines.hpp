@@ -1,0 +1,73 @@
+#pragma once
+// Pathlines and streaklines through a time series of snapshots (docs/architecture.md,
+// "Pathlines"): the snapshots are listed and ordered by the times their files state, then read
+// and built one at a time, the next on another thread while the current interval is traced, so at
+// most three are in memory whatever the series' length.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "amrstream/field.hpp"
+#include "amrstream/log.hpp"
+#include "amrstream/seeding.hpp"
+#include "flow/pathline_tracer.hpp"
+#include "output/vtk_field_data.hpp"
+
+namespace amrstream {
+
+struct SnapshotFile {
+  std::string path;
+  double time = 0.0;
+};
+
+// Expands the glob patterns, reads each snapshot's time from its metadata and sorts by time.
+// Throws InputError naming the file that states no time, two files at the same time, or fewer
+// than two snapshots.
+std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns);
+
+struct PathlineSettings {
+  std::optional<double> startTime;  // default: the first snapshot's time
+  std::optional<double> endTime;    // default: the last snapshot's time
+  std::optional<double> stepSize;   // physical time; default: the shortest interval used / 10
+  double releaseEvery = 0.0;        // > 0: streaklines, new particles at this interval
+  std::uint64_t maxResultBytes = 0;  // 0: a share of the machine's memory (kTraceMemoryShare)
+};
+
+// Where the time went: reading and building every snapshot (on the loading thread, except the
+// first), tracing, and waiting for a snapshot that was not ready when tracing needed it.
+struct PathlineReport {
+  std::size_t snapshotsUsed = 0;
+  std::uint64_t cellsRead = 0;
+  double readSeconds = 0.0, buildSeconds = 0.0, traceSeconds = 0.0, waitSeconds = 0.0;
+  double wallSeconds = 0.0;
+  std::uint64_t steps = 0;
+  flow::PathlineOptions options;  // as resolved from the settings
+  std::size_t seedCount = 0;
+  std::string seedDescription;
+  std::string vectorName;
+  std::vector<std::string> channelNames;
+  std::string interpolant;
+  bricks::DatasetInfo firstInfo;  // what the first snapshot used says of itself
+};
+
+// Called after each interval with the intervals done and their number.
+using IntervalProgress = std::function<void(std::size_t done, std::size_t intervals)>;
+
+// Traces particles released from the seeds (chosen on the snapshot at or before the start time)
+// through the series. Throws InputError for a start or end time outside the series, a snapshot
+// that lacks the vector or a point-data channel, or seeds outside the domain.
+flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const FieldOptions& field,
+                                    const SeedRequest& seeds, const PathlineSettings& settings,
+                                    PathlineReport& report, const IntervalProgress& progress = {},
+                                    const Log& log = {});
+
+// The .vtp's FieldData for paths made so (`kind`: "pathlines" or "streaklines").
+std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotFile> series,
+                                                       const PathlineReport& report,
+                                                       const std::string& kind);
+
+}  // namespace amrstream

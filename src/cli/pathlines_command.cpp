@@ -1,0 +1,137 @@
+#include "pathlines_command.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <memory>
+
+#include "amrstream/pathlines.hpp"
+#include "amrstream/tracing.hpp"
+#include "dataset_options.hpp"
+#include "output/vtp_writer.hpp"
+#include "progress.hpp"
+#include "trace_job.hpp"
+#include "util/input_error.hpp"
+#include "util/peak_memory.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+struct PathlinesOptions {
+  std::vector<std::string> snapshots;
+  FieldOptions field;
+  SeedRequest seeds;
+  std::string seedsOut;
+  std::optional<double> startTime, endTime, stepSize;
+  double releaseEvery = 0.0;
+  std::string backend = "auto";
+  std::string out = "pathlines.vtp";
+  std::string compression = "zlib";
+};
+
+std::string reasonHistogram(const flow::TraceSet& lines) {
+  std::map<int, std::size_t> reasons;
+  for (const std::int32_t reason : lines.reasons) ++reasons[reason];
+  std::string histogram;
+  for (const auto& [reason, count] : reasons)
+    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
+                             reason, withCommas(count));
+  return histogram;
+}
+
+void runPathlines(const PathlinesOptions& o) {
+  const std::vector<SnapshotFile> series = listSnapshots(o.snapshots);
+  fmt::print("series     {} snapshots from t = {:g} ({}) to {:g} ({})\n", series.size(),
+             series.front().time, series.front().path, series.back().time, series.back().path);
+  if (o.backend != "auto" && o.backend != "cpu")
+    throw InputError("--backend", fmt::format("pathlines run on the CPU reference only so far; "
+                                              "'{}' is not available for them",
+                                              o.backend));
+  PathlineSettings settings;
+  settings.startTime = o.startTime;
+  settings.endTime = o.endTime;
+  settings.stepSize = o.stepSize;
+  settings.releaseEvery = o.releaseEvery;
+
+  PathlineReport report;
+  const flow::PathlineTracer tracer = [&] {
+    Progress progress("intervals", series.size() - 1);
+    return tracePathlines(
+        series, o.field, o.seeds, settings, report,
+        [&](std::size_t done, std::size_t) { progress.update(done); }, printLine);
+  }();
+  const flow::PathlineOptions& options = report.options;
+  fmt::print("stepping   dt = {:g} from t = {:g} to {:g}{}, {} snapshots used, interpolant {}\n",
+             options.stepSize, options.startTime, options.endTime,
+             options.releaseEvery > 0.0 ? fmt::format(", released every {:g}", options.releaseEvery)
+                                        : std::string(),
+             report.snapshotsUsed, report.interpolant);
+
+  const bool streaks = options.releaseEvery > 0.0;
+  const flow::TraceSet lines = streaks ? tracer.streaklines() : tracer.pathlines();
+  const flow::TraceSet paths = streaks ? tracer.pathlines() : flow::TraceSet{};
+  fmt::print("particles  {} ({} seeds), {} steps; reasons {}\n",
+             withCommas(tracer.particleCount()), withCommas(report.seedCount),
+             withCommas(report.steps), reasonHistogram(streaks ? paths : lines));
+  const double readBuild = report.readSeconds + report.buildSeconds;
+  fmt::print("time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} cells), "
+             "tracing {:.2f} s ({:.3g} particle-steps/s), waiting for snapshots {:.2f} s; "
+             "{:.2f}x the reading and building\n",
+             report.wallSeconds, report.readSeconds, report.buildSeconds,
+             withCommas(report.cellsRead), report.traceSeconds,
+             double(report.steps) / std::max(report.traceSeconds, 1e-9), report.waitSeconds,
+             report.wallSeconds / std::max(readBuild, 1e-9));
+
+  Stopwatch clock;
+  output::VtpWriteOptions writeOptions;
+  writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
+  writeOptions.fieldData = pathlineProvenance(series, report, streaks ? "streaklines" : "pathlines");
+  const output::VtpCounts written = output::writeVtp(o.out, lines, writeOptions);
+  fmt::print("output     {} ({} {}, {} points) [{:.2f} s]\n", o.out, withCommas(written.lines),
+             streaks ? "streaklines" : "pathlines", withCommas(written.points), clock.seconds());
+  fmt::print("memory     {:.2f} GiB peak resident on the host\n",
+             double(peakResidentBytes()) / 0x1p30);
+}
+
+}  // namespace
+
+void addPathlinesCommand(CLI::App& app) {
+  auto options = std::make_shared<PathlinesOptions>();
+  CLI::App* command = app.add_subcommand(
+      "pathlines", "trace pathlines (or streaklines) through a time series of snapshots");
+  command
+      ->add_option("snapshots", options->snapshots,
+                   "the snapshots: files, folders (AMReX plotfiles) or glob patterns such as "
+                   "'run/ring-*.txt', in any order (sorted by the times the files state)")
+      ->required();
+  addFieldOptions(*command, options->field);
+  addSeedOptions(*command, options->seeds, options->seedsOut);
+  command->add_option("--start-time", options->startTime,
+                      "release the particles at this time (default: the first snapshot's)");
+  command->add_option("--end-time", options->endTime,
+                      "stop the particles at this time (default: the last snapshot's)");
+  command->add_option("--step-size", options->stepSize,
+                      "RK4 time step (default: a tenth of the shortest interval between the "
+                      "snapshots used); steps end on every snapshot's time");
+  command
+      ->add_option("--release-every", options->releaseEvery,
+                   "release new particles from the seeds at this interval and write streaklines "
+                   "(one line per seed through its particles at the end time)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--backend", options->backend,
+                   "auto or cpu (pathlines run on the CPU reference so far)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "rayquery", "pipeline", "compute", "cpu"}));
+  command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
+  command
+      ->add_option("--compression", options->compression,
+                   "compression of the .vtp's arrays: zlib, lz4 or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "zlib", "lz4"}));
+  command->callback([options] { runPathlines(*options); });
+}
+
+}  // namespace amrstream::cli

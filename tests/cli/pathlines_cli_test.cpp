@@ -1,0 +1,119 @@
+// `amrstream pathlines` end to end: a generated series in any order, streaklines, the real
+// Gerris series from its files as they are, and bad series that must fail naming the file.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run_amrstream.hpp"
+#include "temp_dir_test.hpp"
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+using amrstream::testing::Outcome;
+
+Outcome run(const std::string& arguments) { return amrstream::testing::runAmrstream(arguments); }
+
+class PathlinesCli : public amrstream::testing::TempDirTest {
+ protected:
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // swirl_0000.exa ... at times 0, 0.05, ...
+  void generateSwirl(int snapshots, const std::string& prefix = "swirl") {
+    const Outcome r = run("gen swirl --levels 3 --root-blocks 2 --target-cells 20000 --series " +
+                          std::to_string(snapshots) + " --interval 0.05 --out " + path(prefix));
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+};
+
+TEST_F(PathlinesCli, TracesAGeneratedSeriesGivenInAnyOrder) {
+  generateSwirl(5);
+  // Named last first: the times in the files set the order.
+  const Outcome r = run("pathlines " + path("swirl_0004.exa") + " '" + path("swirl_000[0-3].exa") +
+                        "' --count 16 --seed-box 0.3,0.3,0.3,0.7,0.7,0.7 --point-data temp --out " +
+                        path("p.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("series     5 snapshots from t = 0 ("));
+  EXPECT_THAT(r.output, HasSubstr("to 0.2 ("));
+  EXPECT_THAT(r.output, HasSubstr("stepping   dt = 0.005 from t = 0 to 0.2"));
+  EXPECT_THAT(r.output, HasSubstr("end of series (9): 16"));
+  EXPECT_THAT(r.output, HasSubstr("(16 pathlines, "));
+  EXPECT_GT(fs::file_size(path("p.vtp")), 1000u);
+}
+
+TEST_F(PathlinesCli, WritesStreaklinesWithReleaseEvery) {
+  generateSwirl(3);
+  const Outcome r = run("pathlines '" + path("swirl_*.exa") +
+                        "' --seed-line 0.6,0.5,0.5,0.7,0.5,0.5 --count 3 --release-every 0.01 "
+                        "--end-time 0.08 --out " + path("s.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("released every 0.01"));
+  EXPECT_THAT(r.output, HasSubstr("particles  24 (3 seeds)"));
+  EXPECT_THAT(r.output, HasSubstr("max time (7): 24"));
+  EXPECT_THAT(r.output, HasSubstr("(3 streaklines, 24 points)"));
+}
+
+TEST_F(PathlinesCli, RunsTheRealGerrisSeriesFromItsFiles) {
+  const fs::path archive = fs::path(AMRSTREAM_REAL_DATA_DIR) / "gerris-ring-series.tar.xz";
+  if (!fs::exists(archive)) GTEST_SKIP() << "the Gerris series is not at " << archive;
+  ASSERT_EQ(std::system(("tar -xJf " + archive.string() + " -C " + dir_.string()).c_str()), 0);
+  const Outcome r =
+      run("pathlines '" + path("gerris-ring-series/ring-*.txt") +
+          "' --seed-grid 4,4,2 --seed-box -0.2,-0.2,-0.4,0.2,0.2,-0.1 --end-time 0.3 --out " +
+          path("ring.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("series     31 snapshots from t = 0 ("));
+  EXPECT_THAT(r.output, HasSubstr("16 snapshots used"));  // 0, 0.02, ..., 0.3
+  EXPECT_THAT(r.output, HasSubstr("max time (7): 32"));
+}
+
+TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
+  generateSwirl(2);
+  Outcome r = run("pathlines " + path("swirl_0000.exa") + " --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("a series needs two snapshots or more; 1 given"));
+
+  r = run("pathlines '" + path("nothing_*.exa") + "' --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("nothing_*.exa: matches no file"));
+
+  // The same time twice.
+  ASSERT_EQ(run("gen swirl --levels 2 --root-blocks 1 --target-cells 600 --out " + path("again"))
+                .status,
+            0);
+  r = run("pathlines '" + path("swirl_*.exa") + "' " + path("again.exa") + " --out " +
+          path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("it is at time 0, as"));
+
+  // A Gerris dump whose header states no time.
+  std::ofstream(path("untimed.txt")) << "# 1:x 2:y 3:z 4:U 5:V 6:W 7:Lev\n0.25 0.25 0.25 1 0 0 1\n";
+  r = run("pathlines '" + path("swirl_*.exa") + "' " + path("untimed.txt") + " --out " +
+          path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("untimed.txt: the file states no time"));
+
+  r = run("pathlines '" + path("swirl_*.exa") + "' --start-time 0.5 --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--start-time: 0.5 is outside the series"));
+
+  // A later snapshot without the first one's point data (rotation has no temp).
+  ASSERT_EQ(run("gen rotation --levels 2 --root-blocks 1 --target-cells 600 --time 0.07 --out " +
+                path("rot"))
+                .status,
+            0);
+  r = run("pathlines '" + path("swirl_*.exa") + "' " + path("rot.exa") + " --out " +
+          path("x.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("rot.exa: its point-data channels are none, the first "
+                                  "snapshot's temp"));
+  EXPECT_FALSE(fs::exists(path("x.vtp")));
+}
+
+}  // namespace
