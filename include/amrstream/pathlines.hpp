@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/backend.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/log.hpp"
 #include "amrstream/seeding.hpp"
@@ -40,6 +41,9 @@ struct PathlineSettings {
 // Where the time went: reading and building every snapshot (on the loading thread, except the
 // first), tracing, and waiting for a snapshot that was not ready when tracing needed it.
 struct PathlineReport {
+  std::string backend;  // "cpu", "compute", ...
+  std::string device;   // the Vulkan device's name, or the CPU's thread count
+  double deviceSeconds = 0.0;  // GPU backends: the context, kernels, uploads and structures
   std::size_t snapshotsUsed = 0;
   std::uint64_t cellsRead = 0;
   double readSeconds = 0.0, buildSeconds = 0.0, traceSeconds = 0.0, waitSeconds = 0.0;
@@ -58,12 +62,14 @@ struct PathlineReport {
 using IntervalProgress = std::function<void(std::size_t done, std::size_t intervals)>;
 
 // Traces particles released from the seeds (chosen on the snapshot at or before the start time)
-// through the series. Throws InputError for a start or end time outside the series, a snapshot
+// through the series. With a GPU backend each snapshot is uploaded with its point-location
+// structure and the RK4 stages' samples are taken on the device (gpu/vector_probe.hpp); the
+// host does the rest. Throws InputError for a start or end time outside the series, a snapshot
 // that lacks the vector or a point-data channel, or seeds outside the domain.
 flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const FieldOptions& field,
                                     const SeedRequest& seeds, const PathlineSettings& settings,
-                                    PathlineReport& report, const IntervalProgress& progress = {},
-                                    const Log& log = {});
+                                    const BackendRequest& backend, PathlineReport& report,
+                                    const IntervalProgress& progress = {}, const Log& log = {});
 
 // The .vtp's FieldData for paths made so (`kind`: "pathlines" or "streaklines").
 std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotFile> series,

@@ -1,5 +1,5 @@
 #version 460
-// Point-location probe for the `rayquery` backend (see include/locate_probe.glsl).
+// The probe for the `rayquery` backend: point location and one sample per point (include/locate_probe.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "include/amr_buffers.glsl"
 #include "include/locate_rayquery.glsl"

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <memory>
+#include <tbb/info.h>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "amrstream/dataset.hpp"
 #include "formats/snapshot_time.hpp"
+#include "gpu/vector_probe.hpp"
 #include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -25,8 +28,10 @@ struct LoadedSnapshot {
   double readSeconds = 0.0, buildSeconds = 0.0;
 };
 
-LoadedSnapshot loadSnapshot(const SnapshotFile& file, const FieldOptions& options, bool keepCells) {
-  LoadedSnapshot loaded;
+std::unique_ptr<LoadedSnapshot> loadSnapshot(const SnapshotFile& file, const FieldOptions& options,
+                                             bool keepCells) {
+  auto owned = std::make_unique<LoadedSnapshot>();
+  LoadedSnapshot& loaded = *owned;
   loaded.time = file.time;
   Stopwatch clock;
   Dataset cells = load(file.path);
@@ -36,7 +41,7 @@ LoadedSnapshot loadSnapshot(const SnapshotFile& file, const FieldOptions& option
   loaded.field = buildField(cells, options);
   loaded.buildSeconds = clock.seconds();
   if (keepCells) loaded.cells.emplace(std::move(cells));
-  return loaded;
+  return owned;
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -67,6 +72,31 @@ std::pair<std::size_t, std::size_t> snapshotsUsed(std::span<const SnapshotFile> 
   return {first, last};
 }
 
+// A GPU backend's context and probe kernel, shared by the snapshots' probes.
+struct GpuSampling {
+  vk::Context ctx;
+  gpu::TraceKernel kernel;
+
+  GpuSampling(const BackendRequest& request, const BackendChoice& choice)
+      : ctx(createContext(request, choice)),
+        kernel(gpu::createTraceKernel(ctx, choice.backend, gpu::KernelProgram::LocateProbe)) {}
+
+  std::unique_ptr<gpu::VectorProbe> probe(const flow::VectorVolume& volume,
+                                          PathlineReport& report) {
+    Stopwatch clock;
+    auto probe = std::make_unique<gpu::VectorProbe>(ctx, kernel, volume);
+    report.deviceSeconds += clock.seconds();
+    return probe;
+  }
+};
+
+flow::VectorBatchSampler samplerOf(gpu::VectorProbe* probe) {
+  if (!probe) return {};
+  return [probe](std::span<const glm::vec3> cells, std::span<flow::VectorSample> out) {
+    probe->sample(cells, out);
+  };
+}
+
 }  // namespace
 
 std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
@@ -91,9 +121,22 @@ std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
 
 flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const FieldOptions& field,
                                     const SeedRequest& seedRequest,
-                                    const PathlineSettings& settings, PathlineReport& report,
+                                    const PathlineSettings& settings,
+                                    const BackendRequest& backendRequest, PathlineReport& report,
                                     const IntervalProgress& progress, const Log& log) {
   Stopwatch wall;
+  const BackendChoice choice = chooseBackend(backendRequest, BackendUse::Trace, log);
+  std::optional<GpuSampling> gpu;
+  if (choice.backend == gpu::Backend::Cpu) {
+    report.backend = "cpu";
+    report.device = fmt::format("{} threads", tbb::info::default_concurrency());
+  } else {
+    Stopwatch setup;
+    gpu.emplace(backendRequest, choice);
+    report.backend = gpu::backendName(choice.backend);
+    report.device = gpu->ctx.deviceName();
+    report.deviceSeconds += setup.seconds();
+  }
   const double seriesStart = series.front().time, seriesEnd = series.back().time;
   flow::PathlineOptions& options = report.options;
   options.startTime = settings.startTime.value_or(seriesStart);
@@ -126,44 +169,53 @@ flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const 
           : static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
   report.snapshotsUsed = last - first + 1;
 
-  LoadedSnapshot a = loadSnapshot(series[first], field, true);
-  report.readSeconds += a.readSeconds;
-  report.buildSeconds += a.buildSeconds;
-  report.cellsRead += a.cellCount;
-  report.vectorName = a.field.volume.vectorName;
-  report.channelNames = a.field.volume.channelNames;
-  report.interpolant = interpolantName(a.field.volume.interpolant);
-  report.firstInfo = a.field.info;
+  // On the heap: a GPU probe points at its snapshot's volume, which must not move.
+  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], field, true);
+  report.readSeconds += a->readSeconds;
+  report.buildSeconds += a->buildSeconds;
+  report.cellsRead += a->cellCount;
+  const flow::VectorVolume& firstVolume = a->field.volume;
+  report.vectorName = firstVolume.vectorName;
+  report.channelNames = firstVolume.channelNames;
+  report.interpolant = interpolantName(firstVolume.interpolant);
+  report.firstInfo = a->field.info;
   const auto loadAhead = [&](std::size_t i) {
     return std::async(std::launch::async,
                       [&, i] { return loadSnapshot(series[i], field, false); });
   };
-  std::future<LoadedSnapshot> next = loadAhead(first + 1);
+  std::future<std::unique_ptr<LoadedSnapshot>> next = loadAhead(first + 1);
 
   flow::SeedList seeds =
-      chooseSeeds(seedRequest, domainOf(a.field.volume), &*a.cells, report.seedDescription);
-  placeSeeds(a.field.volume, seeds);
-  a.cells.reset();
+      chooseSeeds(seedRequest, domainOf(firstVolume), &*a->cells, report.seedDescription);
+  placeSeeds(firstVolume, seeds);
+  a->cells.reset();
   report.seedCount = seeds.points.size();
   say(log, fmt::format("seeds      {} from {}", seeds.points.size(), report.seedDescription));
   flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
+  say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
 
+  std::unique_ptr<gpu::VectorProbe> probeA, probeB;
+  if (gpu) probeA = gpu->probe(a->field.volume, report);
   for (std::size_t i = first; i < last; ++i) {
     Stopwatch waiting;
-    LoadedSnapshot b = next.get();
+    std::unique_ptr<LoadedSnapshot> b = next.get();
     report.waitSeconds += waiting.seconds();
-    report.readSeconds += b.readSeconds;
-    report.buildSeconds += b.buildSeconds;
-    report.cellsRead += b.cellCount;
-    checkLikeTheFirst(b, series[i + 1].path, report);
+    report.readSeconds += b->readSeconds;
+    report.buildSeconds += b->buildSeconds;
+    report.cellsRead += b->cellCount;
+    checkLikeTheFirst(*b, series[i + 1].path, report);
     if (i + 2 <= last) next = loadAhead(i + 2);
+    if (gpu) probeB = gpu->probe(b->field.volume, report);
     Stopwatch tracing;
-    tracer.advance({a.time, &a.field.volume}, {b.time, &b.field.volume});
+    tracer.advance({a->time, &a->field.volume, samplerOf(probeA.get())},
+                   {b->time, &b->field.volume, samplerOf(probeB.get())});
     report.traceSeconds += tracing.seconds();
+    probeA = std::move(probeB);
     a = std::move(b);
     if (progress) progress(i - first + 1, last - first);
   }
   tracer.finish();
+  if (gpu) checkValidation(gpu->ctx);
   report.steps = tracer.stepCount();
   report.wallSeconds = wall.seconds();
   return tracer;
@@ -191,7 +243,7 @@ std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotF
       numberField("StartTime", o.startTime),
       numberField("EndTime", o.endTime),
       numberField("ReleaseEvery", o.releaseEvery),
-      textField("Backend", "cpu"),
+      textField("Backend", report.backend + " on " + report.device),
   };
   if (!info.timeUnit.empty()) fields.push_back(textField("TimeUnit", info.timeUnit));
   if (!info.lengthUnit.empty()) fields.push_back(textField("LengthUnit", info.lengthUnit));

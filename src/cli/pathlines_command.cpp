@@ -26,7 +26,7 @@ struct PathlinesOptions {
   std::string seedsOut;
   std::optional<double> startTime, endTime, stepSize;
   double releaseEvery = 0.0;
-  std::string backend = "auto";
+  BackendRequest backend;
   std::string out = "pathlines.vtp";
   std::string compression = "zlib";
 };
@@ -45,10 +45,6 @@ void runPathlines(const PathlinesOptions& o) {
   const std::vector<SnapshotFile> series = listSnapshots(o.snapshots);
   fmt::print("series     {} snapshots from t = {:g} ({}) to {:g} ({})\n", series.size(),
              series.front().time, series.front().path, series.back().time, series.back().path);
-  if (o.backend != "auto" && o.backend != "cpu")
-    throw InputError("--backend", fmt::format("pathlines run on the CPU reference only so far; "
-                                              "'{}' is not available for them",
-                                              o.backend));
   PathlineSettings settings;
   settings.startTime = o.startTime;
   settings.endTime = o.endTime;
@@ -59,7 +55,7 @@ void runPathlines(const PathlinesOptions& o) {
   const flow::PathlineTracer tracer = [&] {
     Progress progress("intervals", series.size() - 1);
     return tracePathlines(
-        series, o.field, o.seeds, settings, report,
+        series, o.field, o.seeds, settings, o.backend, report,
         [&](std::size_t done, std::size_t) { progress.update(done); }, printLine);
   }();
   const flow::PathlineOptions& options = report.options;
@@ -77,10 +73,10 @@ void runPathlines(const PathlinesOptions& o) {
              withCommas(report.steps), reasonHistogram(streaks ? paths : lines));
   const double readBuild = report.readSeconds + report.buildSeconds;
   fmt::print("time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} cells), "
-             "tracing {:.2f} s ({:.3g} particle-steps/s), waiting for snapshots {:.2f} s; "
-             "{:.2f}x the reading and building\n",
+             "device setup {:.2f} s, tracing {:.2f} s ({:.3g} particle-steps/s), waiting for "
+             "snapshots {:.2f} s; {:.2f}x the reading and building\n",
              report.wallSeconds, report.readSeconds, report.buildSeconds,
-             withCommas(report.cellsRead), report.traceSeconds,
+             withCommas(report.cellsRead), report.deviceSeconds, report.traceSeconds,
              double(report.steps) / std::max(report.traceSeconds, 1e-9), report.waitSeconds,
              report.wallSeconds / std::max(readBuild, 1e-9));
 
@@ -121,17 +117,23 @@ void addPathlinesCommand(CLI::App& app) {
                    "(one line per seed through its particles at the end time)")
       ->check(CLI::PositiveNumber);
   command
-      ->add_option("--backend", options->backend,
-                   "auto or cpu (pathlines run on the CPU reference so far)")
+      ->add_option("--backend", options->backend.backend,
+                   "auto (as for trace), rayquery, pipeline, compute or cpu: where the RK4 "
+                   "stages' samples are taken")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "rayquery", "pipeline", "compute", "cpu"}));
+  command->add_option("--device", options->backend.device,
+                      "the Vulkan device whose name contains this (see `amrstream devices`)");
   command->add_option("--out", options->out, "output .vtp file")->capture_default_str();
   command
       ->add_option("--compression", options->compression,
                    "compression of the .vtp's arrays: zlib, lz4 or none")
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "zlib", "lz4"}));
-  command->callback([options] { runPathlines(*options); });
+  command->callback([options] {
+    options->backend.validation = validationRequested();
+    runPathlines(*options);
+  });
 }
 
 }  // namespace amrstream::cli

@@ -1,6 +1,7 @@
 #include "pathline_tracer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -19,8 +20,35 @@ namespace {
 // the step before it: float rounding of the time must not make a sliver of a step.
 constexpr double kSliverFraction = 1e-4;
 
-// The vector at (x, t) from the two snapshots bracketing t, with the regions each was found in.
-struct TimeSample {
+glm::vec3 cellOf(const VectorVolume& volume, glm::vec3 x) {
+  return wrapPeriodic(volume, glm::vec3(volume.transform.toCellUnits(glm::dvec3(x))));
+}
+
+// x moved by whole periods into the volume's domain along its periodic axes.
+glm::vec3 wrapPhysical(const VectorVolume& volume, glm::vec3 x) {
+  if (!(volume.periodic[0] || volume.periodic[1] || volume.periodic[2])) return x;
+  return glm::vec3(volume.transform.toPhysical(glm::dvec3(cellOf(volume, x))));
+}
+
+std::vector<VectorSample> sampleSnapshot(const Snapshot& snapshot,
+                                         std::span<const glm::vec3> cells) {
+  std::vector<VectorSample> samples(cells.size());
+  if (snapshot.sampler) {
+    snapshot.sampler(cells, samples);
+    return samples;
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256), [&](const auto& range) {
+    RegionCache cache;
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      samples[i] = sampleVector(*snapshot.volume, cells[i], &cache);
+  });
+  return samples;
+}
+
+}  // namespace
+
+// The vector at (x, t) from the two snapshots bracketing t, and where each found it.
+struct PathlineTracer::TimeSample {
   int reason = AMRSTREAM_REASON_RUNNING;  // OUT_OF_DOMAIN or UNEXPECTED_VALUE when it failed
   glm::vec3 value{0.0f};
   float weightB = 0.0f;
@@ -28,43 +56,37 @@ struct TimeSample {
   std::int32_t regionA = -1, regionB = -1;
 };
 
-struct Caches {
-  RegionCache a, b;
-};
-
-glm::vec3 cellOf(const VectorVolume& volume, glm::vec3 x) {
-  return wrapPeriodic(volume, glm::vec3(volume.transform.toCellUnits(glm::dvec3(x))));
+std::vector<PathlineTracer::TimeSample> PathlineTracer::sampleAt(
+    const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
+    std::span<const double> times) const {
+  std::vector<TimeSample> out(points.size());
+  std::vector<glm::vec3> cellsA(points.size()), cellsB(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    cellsA[i] = cellOf(*a.volume, points[i]);
+    cellsB[i] = cellOf(*b.volume, points[i]);
+  });
+  const std::vector<VectorSample> sa = sampleSnapshot(a, cellsA);
+  const std::vector<VectorSample> sb = sampleSnapshot(b, cellsB);
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    TimeSample& s = out[i];
+    s.weightB = float((times[i] - a.time) / (b.time - a.time));
+    s.cellA = cellsA[i];
+    s.cellB = cellsB[i];
+    if (!sa[i].located || !sb[i].located) {
+      s.reason = AMRSTREAM_REASON_OUT_OF_DOMAIN;
+      return;
+    }
+    if (!sa[i].valid || !sb[i].valid) {
+      s.reason = AMRSTREAM_REASON_UNEXPECTED_VALUE;
+      return;
+    }
+    // a + w (b - a): identical snapshots give a's vector exactly.
+    s.value = sa[i].value + s.weightB * (sb[i].value - sa[i].value);
+    s.regionA = sa[i].region;
+    s.regionB = sb[i].region;
+  });
+  return out;
 }
-
-// x moved by whole periods into a's domain along its periodic axes.
-glm::vec3 wrapPhysical(const VectorVolume& volume, glm::vec3 x) {
-  if (!(volume.periodic[0] || volume.periodic[1] || volume.periodic[2])) return x;
-  return glm::vec3(volume.transform.toPhysical(glm::dvec3(cellOf(volume, x))));
-}
-
-TimeSample sampleAt(Snapshot a, Snapshot b, glm::vec3 x, double t, Caches& caches) {
-  TimeSample s;
-  s.weightB = float((t - a.time) / (b.time - a.time));
-  s.cellA = cellOf(*a.volume, x);
-  s.cellB = cellOf(*b.volume, x);
-  const VectorSample sa = sampleVector(*a.volume, s.cellA, &caches.a);
-  const VectorSample sb = sampleVector(*b.volume, s.cellB, &caches.b);
-  if (!sa.located || !sb.located) {
-    s.reason = AMRSTREAM_REASON_OUT_OF_DOMAIN;
-    return s;
-  }
-  if (!sa.valid || !sb.valid) {
-    s.reason = AMRSTREAM_REASON_UNEXPECTED_VALUE;
-    return s;
-  }
-  // a + w (b - a): identical snapshots give a's vector exactly.
-  s.value = sa.value + s.weightB * (sb.value - sa.value);
-  s.regionA = sa.region;
-  s.regionB = sb.region;
-  return s;
-}
-
-}  // namespace
 
 PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const PathlineOptions& options,
                                std::string vectorName, std::vector<std::string> channelNames)
@@ -92,100 +114,145 @@ PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const Pathline
     }
 }
 
-void PathlineTracer::release(Particle& p, Snapshot a, Snapshot b) const {
-  p.released = true;
-  p.time = p.releaseTime;
-  Caches caches;
-  const TimeSample s = sampleAt(a, b, p.position, p.time, caches);
-  p.position = wrapPhysical(*a.volume, p.position);
+void PathlineTracer::appendPoint(Particle& p, const Snapshot& a, const Snapshot& b,
+                                 const TimeSample& s) const {
   p.positions.push_back(p.position);
   p.times.push_back(p.time);
   p.vectors.push_back(s.value);
   const std::size_t channels = channelNames_.size();
-  p.channels.resize(channels, std::numeric_limits<float>::quiet_NaN());
+  if (channels == 0) return;
   if (s.reason != AMRSTREAM_REASON_RUNNING) {
-    p.reason = s.reason;
+    p.channels.resize(p.channels.size() + channels, std::numeric_limits<float>::quiet_NaN());
     return;
   }
-  if (channels > 0) {
-    std::vector<float> va(channels), vb(channels);
-    sampleChannels(*a.volume, s.regionA, s.cellA, va);
-    sampleChannels(*b.volume, s.regionB, s.cellB, vb);
-    for (std::size_t c = 0; c < channels; ++c) p.channels[c] = va[c] + s.weightB * (vb[c] - va[c]);
-  }
+  std::vector<float> va(channels), vb(channels);
+  sampleChannels(*a.volume, s.regionA, s.cellA, va);
+  sampleChannels(*b.volume, s.regionB, s.cellB, vb);
+  for (std::size_t c = 0; c < channels; ++c) p.channels.push_back(va[c] + s.weightB * (vb[c] - va[c]));
 }
 
-void PathlineTracer::move(Particle& p, Snapshot a, Snapshot b, double until) const {
-  const std::size_t channels = channelNames_.size();
-  std::vector<float> va(channels), vb(channels);
-  Caches caches;
-  while (p.reason == AMRSTREAM_REASON_RUNNING && p.time < until) {
-    double h = std::min(options_.stepSize, until - p.time);
-    const bool last = until - (p.time + h) < kSliverFraction * options_.stepSize;
-    if (last) h = until - p.time;
-    const float hf = float(h);
-    const glm::vec3 x = p.position;
-    const TimeSample s1 = sampleAt(a, b, x, p.time, caches);
-    int reason = s1.reason;
-    TimeSample s2, s3, s4, next;
-    glm::vec3 moved{0.0f};
-    if (reason == AMRSTREAM_REASON_RUNNING) {
-      const glm::vec3 k1 = hf * s1.value;
-      s2 = sampleAt(a, b, x + 0.5f * k1, p.time + 0.5 * h, caches);
-      reason = s2.reason;
-      if (reason == AMRSTREAM_REASON_RUNNING) {
-        const glm::vec3 k2 = hf * s2.value;
-        s3 = sampleAt(a, b, x + 0.5f * k2, p.time + 0.5 * h, caches);
-        reason = s3.reason;
-        if (reason == AMRSTREAM_REASON_RUNNING) {
-          const glm::vec3 k3 = hf * s3.value;
-          s4 = sampleAt(a, b, x + k3, p.time + h, caches);
-          reason = s4.reason;
-          if (reason == AMRSTREAM_REASON_RUNNING) {
-            const glm::vec3 k4 = hf * s4.value;
-            moved = wrapPhysical(*a.volume, x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f);
-            next = sampleAt(a, b, moved, p.time + h, caches);
-            reason = next.reason;
-          }
-        }
-      }
-    }
-    if (reason != AMRSTREAM_REASON_RUNNING) {
-      p.reason = reason;
-      return;
-    }
-    p.position = moved;
-    p.time = last ? until : p.time + h;
-    ++p.steps;
-    p.positions.push_back(p.position);
-    p.times.push_back(p.time);
-    p.vectors.push_back(next.value);
-    if (channels > 0) {
-      sampleChannels(*a.volume, next.regionA, next.cellA, va);
-      sampleChannels(*b.volume, next.regionB, next.cellB, vb);
-      for (std::size_t c = 0; c < channels; ++c)
-        p.channels.push_back(va[c] + next.weightB * (vb[c] - va[c]));
-    }
+void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a,
+                             const Snapshot& b) {
+  std::vector<glm::vec3> points(due.size());
+  std::vector<double> times(due.size());
+  for (std::size_t i = 0; i < due.size(); ++i) {
+    Particle& p = particles_[due[i]];
+    p.released = true;
+    p.time = p.releaseTime;
+    p.position = wrapPhysical(*a.volume, p.position);
+    points[i] = p.position;
+    times[i] = p.time;
   }
-  if (p.reason == AMRSTREAM_REASON_RUNNING && p.time >= options_.endTime)
-    p.reason = options_.endReason;
+  const std::vector<TimeSample> samples = sampleAt(a, b, points, times);
+  tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
+    Particle& p = particles_[due[i]];
+    appendPoint(p, a, b, samples[i]);
+    if (samples[i].reason != AMRSTREAM_REASON_RUNNING) p.reason = samples[i].reason;
+  });
+}
+
+void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a,
+                          const Snapshot& b, double until) {
+  std::vector<std::size_t> active(moving.begin(), moving.end());
+  std::vector<glm::vec3> x, points;
+  std::vector<double> t, h, stageTimes;
+  std::vector<char> last;
+  std::vector<glm::vec3> k1, k2, k3, k4;
+  std::vector<TimeSample> start;  // the sample at each particle's (x, t)
+  while (!active.empty()) {
+    const std::size_t n = active.size();
+    x.resize(n);
+    t.resize(n);
+    h.resize(n);
+    last.resize(n);
+    points.resize(n);
+    stageTimes.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Particle& p = particles_[active[i]];
+      x[i] = p.position;
+      t[i] = p.time;
+      h[i] = std::min(options_.stepSize, until - p.time);
+      last[i] = until - (p.time + h[i]) < kSliverFraction * options_.stepSize;
+      if (last[i]) h[i] = until - p.time;
+    }
+    if (start.size() != n) start = sampleAt(a, b, x, t);
+    std::vector<int> reasons(n);
+    for (std::size_t i = 0; i < n; ++i) reasons[i] = start[i].reason;
+    // One stage for all: k = h v(point, time), then the next stage's point and time.
+    const auto stage = [&](std::vector<glm::vec3>& k, const std::vector<TimeSample>& s,
+                           float along, double timeAlong) {
+      k.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        k[i] = float(h[i]) * s[i].value;
+        if (reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = s[i].reason;
+        points[i] = x[i] + along * k[i];
+        stageTimes[i] = t[i] + timeAlong * h[i];
+      }
+    };
+    stage(k1, start, 0.5f, 0.5);
+    const std::vector<TimeSample> s2 = sampleAt(a, b, points, stageTimes);
+    stage(k2, s2, 0.5f, 0.5);
+    const std::vector<TimeSample> s3 = sampleAt(a, b, points, stageTimes);
+    stage(k3, s3, 1.0f, 1.0);
+    const std::vector<TimeSample> s4 = sampleAt(a, b, points, stageTimes);
+    k4.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      k4[i] = float(h[i]) * s4[i].value;
+      if (reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = s4[i].reason;
+      points[i] = wrapPhysical(*a.volume, x[i] + (k1[i] + 2.0f * k2[i] + 2.0f * k3[i] + k4[i]) / 6.0f);
+      stageTimes[i] = last[i] ? until : t[i] + h[i];
+    }
+    std::vector<TimeSample> next = sampleAt(a, b, points, stageTimes);
+
+    std::vector<char> goesOn(n, 0);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      Particle& p = particles_[active[i]];
+      const int reason = reasons[i] != AMRSTREAM_REASON_RUNNING ? reasons[i] : next[i].reason;
+      if (reason != AMRSTREAM_REASON_RUNNING) {
+        p.reason = reason;
+        return;
+      }
+      p.position = points[i];
+      p.time = stageTimes[i];
+      ++p.steps;
+      appendPoint(p, a, b, next[i]);
+      if (p.time >= options_.endTime) {
+        p.reason = options_.endReason;
+        return;
+      }
+      goesOn[i] = p.time < until;
+    });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (goesOn[i]) {
+        active[kept] = active[i];
+        next[kept] = next[i];
+        ++kept;
+      }
+    active.resize(kept);
+    next.resize(kept);
+    start = std::move(next);
+  }
 }
 
 void PathlineTracer::advance(Snapshot a, Snapshot b) {
   if (!(b.time > a.time))
     throw std::invalid_argument("pathlines: an interval must go forward in time");
-  for (const Snapshot& s : {a, b})
-    if (s.volume->channelNames != channelNames_)
+  for (const Snapshot* s : {&a, &b})
+    if (s->volume->channelNames != channelNames_)
       throw std::invalid_argument("pathlines: every snapshot needs the same point-data channels");
   const double until = std::min(b.time, options_.endTime);
-  tbb::parallel_for(std::size_t(0), particles_.size(), [&](std::size_t i) {
-    Particle& p = particles_[i];
-    if (!p.released) {
-      if (p.releaseTime < a.time || p.releaseTime >= until) return;
-      release(p, a, b);
-    }
-    if (p.reason == AMRSTREAM_REASON_RUNNING) move(p, a, b, until);
-  });
+  std::vector<std::size_t> due, moving;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const Particle& p = particles_[i];
+    if (!p.released && p.releaseTime >= a.time && p.releaseTime < until) due.push_back(i);
+  }
+  release(due, a, b);
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const Particle& p = particles_[i];
+    if (p.released && p.reason == AMRSTREAM_REASON_RUNNING && p.time < until) moving.push_back(i);
+  }
+  move(moving, a, b, until);
   time_ = until;
   if (options_.maxResultBytes > 0) {
     const std::uint64_t bytes =

@@ -8,6 +8,7 @@
 // to end on the later snapshot's time.
 
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 #include <limits>
 #include <span>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "sampler.hpp"
 #include "trace_set.hpp"
 #include "vector_volume.hpp"
 
@@ -31,9 +33,15 @@ struct PathlineOptions {
   std::uint64_t maxResultBytes = 0;
 };
 
+// sampleVector() at each point (finest-cell units of the snapshot, already wrapped) into `out`;
+// a GPU backend's probe, or the CPU's sampler when empty.
+using VectorBatchSampler =
+    std::function<void(std::span<const glm::vec3> cellPoints, std::span<VectorSample> out)>;
+
 struct Snapshot {
   double time = 0.0;
   const VectorVolume* volume = nullptr;
+  VectorBatchSampler sampler;
 };
 
 class PathlineTracer {
@@ -46,7 +54,8 @@ class PathlineTracer {
 
   // Releases the particles due in [a.time, b.time) and moves every running particle from its
   // time to min(b.time, endTime). Intervals come in order of time, each starting where the last
-  // ended. Runs on all cores.
+  // ended. The particles advance together, one RK4 stage at a time, each stage's samples of
+  // both snapshots taken in one batch by the snapshots' samplers; the rest runs on all cores.
   void advance(Snapshot a, Snapshot b);
   // Stops the particles still running at the series' end (AMRSTREAM_REASON_SERIES_END).
   void finish();
@@ -78,8 +87,16 @@ class PathlineTracer {
     std::vector<float> channels;
   };
 
-  void release(Particle& particle, Snapshot a, Snapshot b) const;
-  void move(Particle& particle, Snapshot a, Snapshot b, double until) const;
+  void release(std::span<const std::size_t> due, const Snapshot& a, const Snapshot& b);
+  void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
+            double until);
+  struct TimeSample;
+  // The vector at each (point, time) from the two snapshots bracketing the times.
+  std::vector<TimeSample> sampleAt(const Snapshot& a, const Snapshot& b,
+                                   std::span<const glm::vec3> points,
+                                   std::span<const double> times) const;
+  void appendPoint(Particle& particle, const Snapshot& a, const Snapshot& b,
+                   const TimeSample& s) const;
   TraceSet emptySet() const;
 
   PathlineOptions options_;

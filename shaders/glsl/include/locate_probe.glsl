@@ -1,6 +1,10 @@
-// The point-location probe: locateRegion() for one point, for tests that compare every backend's
-// point location with brute force. It reuses the tracing bindings: the points are the positions
-// of statesIn (cell units) and the region ids (-1 for none) go to outRegions.
+// The probe: one sample of the vector per point, for tests that compare every backend's point
+// location with brute force and for pathlines, whose host-side RK4 samples two snapshots per
+// stage. It reuses the tracing bindings: the points are the positions of statesIn (cell units,
+// already wrapped), the region found (-1 for none) goes to outRegions and the vector to
+// outVectors, NaN where the sample is located but invalid.
 void probeLocation(uint pointIndex) {
-  outRegions[pointIndex] = locateRegion(statesIn[pointIndex].position);
+  const VectorSample s = sampleVector(statesIn[pointIndex].position);
+  outRegions[pointIndex] = s.located ? s.region : -1;
+  outVectors[pointIndex] = s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
 }

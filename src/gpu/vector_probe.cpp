@@ -1,0 +1,110 @@
+#include "vector_probe.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include "../../shaders/glsl/shared/line_state.h"
+#include "flow/integrator.hpp"
+#include "vk/commands.hpp"
+#include "vk/context.hpp"
+
+namespace amrstream::gpu {
+
+namespace {
+
+// Points per dispatch: within every backend's dispatch limits, and buffers of a few tens of MB.
+constexpr std::size_t kPointsPerDispatch = std::size_t(1) << 20;
+
+vk::DescriptorTarget storage(const vk::Buffer& buffer) {
+  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer.handle()};
+}
+
+}  // namespace
+
+VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
+                         const flow::VectorVolume& volume)
+    : ctx_(&ctx), volume_(&volume), device_(ctx, kernel.backend, volume, setup_), kernel_(&kernel) {
+  params_ = vk::Buffer::upload(ctx, sizeof(shared::TraceParams),
+                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "probe params");
+  unused_ = vk::Buffer::deviceLocal(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe unused");
+}
+
+void VectorProbe::reserve(std::size_t points) {
+  if (points <= capacity_) return;
+  const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  points_ = vk::Buffer::upload(*ctx_, points * sizeof(shared::LineState), usage, "probe points");
+  vectors_ = vk::Buffer::readback(*ctx_, points * sizeof(glm::vec3), usage, "probe vectors");
+  regions_ = vk::Buffer::readback(*ctx_, points * sizeof(std::int32_t), usage, "probe regions");
+  const std::array<VkDescriptorPoolSize, 3> sizes{
+      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTraceBindingCount},
+       {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
+  pool_ = std::make_unique<vk::DescriptorPool>(*ctx_, 1, sizes);
+  set_ = pool_->allocate(kernel_->setLayout.get());
+  const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
+      vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle()},
+      storage(device_.bricks),
+      storage(device_.values),
+      storage(device_.regions),
+      storage(device_.regionBricks),
+      storage(points_),   // statesIn: the points
+      storage(unused_),   // statesOut
+      storage(unused_),   // lineRounds
+      storage(unused_),   // outPositions
+      storage(unused_),   // outTimes
+      storage(vectors_),  // outVectors
+      storage(regions_),  // outRegions
+      device_.locateTarget(),
+      storage(device_.vectorGradients)};
+  vk::writeDescriptors(*ctx_, set_, targets);
+  capacity_ = points;
+}
+
+void VectorProbe::sample(std::span<const glm::vec3> cellPoints,
+                         std::span<flow::VectorSample> out) {
+  for (std::size_t first = 0; first < cellPoints.size(); first += kPointsPerDispatch) {
+    const std::size_t n = std::min(kPointsPerDispatch, cellPoints.size() - first);
+    reserve(std::max(n, std::min(kPointsPerDispatch, cellPoints.size())));
+    auto* states = reinterpret_cast<shared::LineState*>(points_.mapped().data());
+    for (std::size_t i = 0; i < n; ++i) states[i].position = cellPoints[first + i];
+    flow::TraceOptions options;
+    options.keepHistory = false;
+    shared::TraceParams params = flow::makeTraceParams(*volume_, options);
+    params.lineCount = static_cast<std::uint32_t>(n);
+    std::memcpy(params_.mapped().data(), &params, sizeof(params));
+    vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+      vk::memoryBarrier(cmd, vk::access::kHostWrite, vk::access::kAny);
+      vkCmdBindPipeline(cmd, kernel_->bindPoint, kernel_->pipeline.get());
+      vkCmdBindDescriptorSets(cmd, kernel_->bindPoint, kernel_->pipelineLayout.get(), 0, 1, &set_,
+                              0, nullptr);
+      if (kernel_->backend == Backend::Pipeline) {
+        const ShaderBindingTable& sbt = kernel_->bindingTable;
+        ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
+                                            std::uint32_t(n), 1, 1);
+      } else {
+        vkCmdDispatch(cmd, std::uint32_t((n + kernel_->workgroupSize - 1) / kernel_->workgroupSize),
+                      1, 1);
+      }
+      vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kHostRead);
+    });
+    vectors_.invalidateMapped();
+    regions_.invalidateMapped();
+    const auto* vectors = reinterpret_cast<const glm::vec3*>(vectors_.mapped().data());
+    const auto* regions = reinterpret_cast<const std::int32_t*>(regions_.mapped().data());
+    for (std::size_t i = 0; i < n; ++i) {
+      flow::VectorSample& s = out[first + i];
+      s = {};
+      s.region = regions[i];
+      s.located = regions[i] >= 0;
+      if (!s.located) continue;
+      s.cellWidth = volume_->regions.regions[std::size_t(regions[i])].finestCellWidth;
+      s.value = vectors[i];
+      s.valid = !glm::any(glm::isnan(s.value)) && !glm::any(glm::isinf(s.value));
+      if (!s.valid) s.value = glm::vec3(0.0f);
+    }
+  }
+}
+
+}  // namespace amrstream::gpu

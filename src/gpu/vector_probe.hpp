@@ -1,0 +1,50 @@
+#pragma once
+// Samples of the vector at many points on the device, through the backend's point location and
+// the same reconstruction as the tracing kernels (shaders/glsl/include/locate_probe.glsl): what
+// pathlines ask of a snapshot at every RK4 stage, since each stage needs two snapshots and the
+// host combines them. The points go to the device and the samples come back through host-visible
+// buffers, kept for the next call.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <span>
+
+#include "backend.hpp"
+#include "flow/sampler.hpp"
+#include "flow/vector_volume.hpp"
+#include "trace_kernel.hpp"
+#include "vk/buffer.hpp"
+#include "vk/descriptor_pool.hpp"
+#include "volume_buffers.hpp"
+
+namespace amrstream::gpu {
+
+class VectorProbe {
+ public:
+  // The kernel: createTraceKernel(ctx, backend, KernelProgram::LocateProbe), shared by the probes
+  // of many volumes. The context, the kernel and `volume` must outlive the probe.
+  VectorProbe(const vk::Context& ctx, const TraceKernel& kernel, const flow::VectorVolume& volume);
+
+  // flow::sampleVector() at each point (finest-cell units, already wrapped), into `out`, which
+  // has one element per point.
+  void sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out);
+
+  const TracerSetup& setup() const { return setup_; }
+
+ private:
+  // Host-visible buffers and their descriptor set for `points` points per dispatch.
+  void reserve(std::size_t points);
+
+  const vk::Context* ctx_;
+  const flow::VectorVolume* volume_;
+  TracerSetup setup_;
+  VolumeBuffers device_;
+  const TraceKernel* kernel_;
+  std::size_t capacity_ = 0;
+  vk::Buffer params_, points_, vectors_, regions_, unused_;
+  std::unique_ptr<vk::DescriptorPool> pool_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+}  // namespace amrstream::gpu

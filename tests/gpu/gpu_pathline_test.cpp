@@ -1,0 +1,124 @@
+// Pathlines with every GPU backend's samples (gpu::VectorProbe) against the CPU reference: the
+// probe's samples equal flow::sampleVector at random points and region faces; pathlines and
+// streaklines through a swirl series whose refinement moves have the CPU's lines, steps and
+// reasons, and positions within float rounding, with either interpolant.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "flow/pathline_tracer.hpp"
+#include "flow/sampler.hpp"
+#include "gpu/vector_probe.hpp"
+#include "gpu_test.hpp"
+#include "synth/generators.hpp"
+
+namespace amrstream::gpu {
+namespace {
+
+const flow::VectorChannels kVelocity{{"velx", "vely", "velz"}, "vel"};
+
+flow::VectorVolume swirlVolume(double t, flow::Interpolant interpolant) {
+  synth::GeneratorOptions g;
+  g.levels = 3;
+  g.rootBlocks = 2;
+  g.targetCells = 12000;
+  g.time = t;
+  flow::VolumeOptions options;
+  options.interpolant = interpolant;
+  options.pointData = {"temp"};
+  return flow::buildVectorVolume(synth::generate("swirl", g), kVelocity, options);
+}
+
+class GpuPathlineTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
+ protected:
+  vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
+};
+
+TEST_P(GpuPathlineTest, ProbeSamplesEqualTheCpusSampler) {
+  const flow::VectorVolume volume = swirlVolume(0.1, flow::Interpolant::Linear);
+  const TraceKernel kernel = createTraceKernel(ctx(), GetParam(), KernelProgram::LocateProbe);
+  VectorProbe probe(ctx(), kernel, volume);
+  std::vector<glm::vec3> points;
+  std::mt19937_64 rng(5);
+  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  std::uniform_real_distribution<float> u(-0.05f, 1.05f);
+  for (int i = 0; i < 3000; ++i) points.push_back(lower + glm::vec3(u(rng), u(rng), u(rng)) * (upper - lower));
+  for (const shared::Region& r : volume.regions.regions) points.push_back(r.lower);
+  std::vector<flow::VectorSample> samples(points.size());
+  probe.sample(points, samples);
+  std::size_t located = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const flow::VectorSample expected = flow::sampleVector(volume, points[i]);
+    ASSERT_EQ(samples[i].located, expected.located) << "point " << i;
+    ASSERT_EQ(samples[i].valid, expected.valid) << "point " << i;
+    if (!expected.located) continue;
+    ++located;
+    EXPECT_EQ(samples[i].region, expected.region);
+    EXPECT_EQ(samples[i].cellWidth, expected.cellWidth);
+    EXPECT_LT(glm::length(samples[i].value - expected.value), 1e-5f) << "point " << i;
+  }
+  EXPECT_GT(located, points.size() / 2);
+}
+
+TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
+  for (const flow::Interpolant interpolant : {flow::Interpolant::Tent, flow::Interpolant::Linear}) {
+    std::vector<double> times;
+    std::vector<flow::VectorVolume> volumes;
+    for (int i = 0; i < 4; ++i) {
+      times.push_back(0.05 * i);
+      volumes.push_back(swirlVolume(0.05 * i, interpolant));
+    }
+    const TraceKernel kernel = createTraceKernel(ctx(), GetParam(), KernelProgram::LocateProbe);
+    std::vector<std::unique_ptr<VectorProbe>> probes;
+    for (const flow::VectorVolume& v : volumes)
+      probes.push_back(std::make_unique<VectorProbe>(ctx(), kernel, v));
+
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.05, 0.95);
+    std::vector<glm::dvec3> seeds;
+    for (int i = 0; i < 48; ++i) seeds.push_back({u(rng), u(rng), u(rng)});  // some leave
+    flow::PathlineOptions options;
+    options.stepSize = 0.01;
+    options.releaseEvery = 0.04;
+    options.endTime = 0.15;
+    flow::PathlineTracer cpu(seeds, options, "vel", {"temp"}), gpu(seeds, options, "vel", {"temp"});
+    for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+      cpu.advance({times[i], &volumes[i], {}}, {times[i + 1], &volumes[i + 1], {}});
+      VectorProbe* a = probes[i].get();
+      VectorProbe* b = probes[i + 1].get();
+      gpu.advance({times[i], &volumes[i],
+                   [a](auto cells, auto out) { a->sample(cells, out); }},
+                  {times[i + 1], &volumes[i + 1],
+                   [b](auto cells, auto out) { b->sample(cells, out); }});
+    }
+    for (const bool streaks : {false, true}) {
+      const flow::TraceSet want = streaks ? cpu.streaklines() : cpu.pathlines();
+      const flow::TraceSet got = streaks ? gpu.streaklines() : gpu.pathlines();
+      ASSERT_EQ(got.lineCount(), want.lineCount());
+      EXPECT_EQ(got.reasons, want.reasons);
+      EXPECT_EQ(got.steps, want.steps);
+      ASSERT_EQ(got.offsets, want.offsets);
+      float worst = 0.0f, worstChannel = 0.0f;
+      for (std::uint64_t i = 0; i < want.pointCount(); ++i) {
+        worst = std::max(worst, glm::length(got.positions[i] - want.positions[i]));
+        EXPECT_FLOAT_EQ(got.times[i], want.times[i]);
+        worstChannel = std::max(worstChannel, std::abs(got.channels[i] - want.channels[i]));
+      }
+      EXPECT_LT(worst, 1e-5f) << (streaks ? "streaklines" : "pathlines");
+      EXPECT_LT(worstChannel, 1e-5f);
+    }
+    const flow::TraceSet paths = cpu.pathlines();
+    EXPECT_GT(paths.lineCount(), 48u * 3);
+    EXPECT_NE(std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_OUT_OF_DOMAIN),
+              0);
+    EXPECT_NE(std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_MAX_TIME), 0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuPathlineTest,
+                         ::testing::Values(Backend::RayQuery, Backend::Pipeline, Backend::Compute),
+                         [](const auto& info) { return std::string(backendName(info.param)); });
+
+}  // namespace
+}  // namespace amrstream::gpu
