@@ -1,7 +1,6 @@
 #include "pathline_tracer.hpp"
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -30,17 +29,18 @@ glm::vec3 wrapPhysical(const VectorVolume& volume, glm::vec3 x) {
   return glm::vec3(volume.transform.toPhysical(glm::dvec3(cellOf(volume, x))));
 }
 
+// The CPU sampler keeps each particle's last region in the snapshot (`caches`): a particle's
+// consecutive samples mostly fall in one region.
 std::vector<VectorSample> sampleSnapshot(const Snapshot& snapshot,
-                                         std::span<const glm::vec3> cells) {
+                                         std::span<const glm::vec3> cells,
+                                         std::span<RegionCache* const> caches) {
   std::vector<VectorSample> samples(cells.size());
   if (snapshot.sampler) {
     snapshot.sampler(cells, samples);
     return samples;
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256), [&](const auto& range) {
-    RegionCache cache;
-    for (std::size_t i = range.begin(); i != range.end(); ++i)
-      samples[i] = sampleVector(*snapshot.volume, cells[i], &cache);
+  tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t i) {
+    samples[i] = sampleVector(*snapshot.volume, cells[i], caches[i]);
   });
   return samples;
 }
@@ -58,15 +58,18 @@ struct PathlineTracer::TimeSample {
 
 std::vector<PathlineTracer::TimeSample> PathlineTracer::sampleAt(
     const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
-    std::span<const double> times) const {
+    std::span<const double> times, std::span<const std::size_t> owners) {
   std::vector<TimeSample> out(points.size());
   std::vector<glm::vec3> cellsA(points.size()), cellsB(points.size());
+  std::vector<RegionCache*> cachesA(points.size()), cachesB(points.size());
   tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
     cellsA[i] = cellOf(*a.volume, points[i]);
     cellsB[i] = cellOf(*b.volume, points[i]);
+    cachesA[i] = &particles_[owners[i]].cacheA;
+    cachesB[i] = &particles_[owners[i]].cacheB;
   });
-  const std::vector<VectorSample> sa = sampleSnapshot(a, cellsA);
-  const std::vector<VectorSample> sb = sampleSnapshot(b, cellsB);
+  const std::vector<VectorSample> sa = sampleSnapshot(a, cellsA, cachesA);
+  const std::vector<VectorSample> sb = sampleSnapshot(b, cellsB, cachesB);
   tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
     TimeSample& s = out[i];
     s.weightB = float((times[i] - a.time) / (b.time - a.time));
@@ -143,7 +146,7 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
     points[i] = p.position;
     times[i] = p.time;
   }
-  const std::vector<TimeSample> samples = sampleAt(a, b, points, times);
+  const std::vector<TimeSample> samples = sampleAt(a, b, points, times, due);
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
     Particle& p = particles_[due[i]];
     appendPoint(p, a, b, samples[i]);
@@ -175,7 +178,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       last[i] = until - (p.time + h[i]) < kSliverFraction * options_.stepSize;
       if (last[i]) h[i] = until - p.time;
     }
-    if (start.size() != n) start = sampleAt(a, b, x, t);
+    if (start.size() != n) start = sampleAt(a, b, x, t, active);
     std::vector<int> reasons(n);
     for (std::size_t i = 0; i < n; ++i) reasons[i] = start[i].reason;
     // One stage for all: k = h v(point, time), then the next stage's point and time.
@@ -190,11 +193,11 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       }
     };
     stage(k1, start, 0.5f, 0.5);
-    const std::vector<TimeSample> s2 = sampleAt(a, b, points, stageTimes);
+    const std::vector<TimeSample> s2 = sampleAt(a, b, points, stageTimes, active);
     stage(k2, s2, 0.5f, 0.5);
-    const std::vector<TimeSample> s3 = sampleAt(a, b, points, stageTimes);
+    const std::vector<TimeSample> s3 = sampleAt(a, b, points, stageTimes, active);
     stage(k3, s3, 1.0f, 1.0);
-    const std::vector<TimeSample> s4 = sampleAt(a, b, points, stageTimes);
+    const std::vector<TimeSample> s4 = sampleAt(a, b, points, stageTimes, active);
     k4.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       k4[i] = float(h[i]) * s4[i].value;
@@ -202,7 +205,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       points[i] = wrapPhysical(*a.volume, x[i] + (k1[i] + 2.0f * k2[i] + 2.0f * k3[i] + k4[i]) / 6.0f);
       stageTimes[i] = last[i] ? until : t[i] + h[i];
     }
-    std::vector<TimeSample> next = sampleAt(a, b, points, stageTimes);
+    std::vector<TimeSample> next = sampleAt(a, b, points, stageTimes, active);
 
     std::vector<char> goesOn(n, 0);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
@@ -242,6 +245,12 @@ void PathlineTracer::advance(Snapshot a, Snapshot b) {
     if (s->volume->channelNames != channelNames_)
       throw std::invalid_argument("pathlines: every snapshot needs the same point-data channels");
   const double until = std::min(b.time, options_.endTime);
+  const bool aWasB = a.volume == lastB_;  // the caches hold regions of the volumes they name
+  for (Particle& p : particles_) {
+    p.cacheA = aWasB ? p.cacheB : RegionCache{};
+    p.cacheB = {};
+  }
+  lastB_ = b.volume;
   std::vector<std::size_t> due, moving;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];

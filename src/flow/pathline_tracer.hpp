@@ -82,6 +82,7 @@ class PathlineTracer {
     glm::vec3 position{0.0f};
     double time = 0.0;
     std::uint32_t steps = 0;
+    RegionCache cacheA, cacheB;  // the CPU sampler's last regions in the interval's snapshots
     std::vector<glm::vec3> positions, vectors;
     std::vector<double> times;
     std::vector<float> channels;
@@ -91,10 +92,12 @@ class PathlineTracer {
   void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
             double until);
   struct TimeSample;
-  // The vector at each (point, time) from the two snapshots bracketing the times.
+  // The vector at each (point, time) from the two snapshots bracketing the times; point i is
+  // particle owners[i]'s.
   std::vector<TimeSample> sampleAt(const Snapshot& a, const Snapshot& b,
                                    std::span<const glm::vec3> points,
-                                   std::span<const double> times) const;
+                                   std::span<const double> times,
+                                   std::span<const std::size_t> owners);
   void appendPoint(Particle& particle, const Snapshot& a, const Snapshot& b,
                    const TimeSample& s) const;
   TraceSet emptySet() const;
@@ -105,6 +108,7 @@ class PathlineTracer {
   std::size_t seedCount_ = 0;
   std::vector<Particle> particles_;
   double time_;
+  const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
 };
 
 }  // namespace amrstream::flow
