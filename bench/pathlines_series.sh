@@ -12,13 +12,13 @@ snapshots=${4:-10}
 particles=${5:-1048576}
 backends=${6:-"compute pipeline cpu"}
 rm -f "$dir"/swirl_*
-start=$(date +%s.%N)
+start=$(date +%s%N)
 "$A" gen swirl --levels 7 --root-blocks 8 --target-cells "$cells" --series "$snapshots" \
   --interval 0.02 --out "$dir/swirl" | grep '^generated' | tail -1
-echo "generated and wrote $snapshots snapshots in $(echo "$(date +%s.%N) - $start" | bc) s"
+echo "generated and wrote $snapshots snapshots in $(( ($(date +%s%N) - start) / 1000000 )) ms"
 du -sh "$dir" | tail -1
 S="--seed-box 0.2,0.2,0.3,0.8,0.8,0.7 --point-data none"
-keep='^(series|stepping|particles|time|output|memory|tracing)'
+keep='^(series|stepping|particles|time|samples|output|memory|tracing)'
 echo "== baseline: one particle (reading and building the series)"
 "$A" pathlines "$dir/swirl_*.exa" $S --count 1 --backend cpu --out "$dir/one.vtp" 2>&1 | grep -E "$keep"
 for b in $backends; do

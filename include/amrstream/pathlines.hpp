@@ -44,6 +44,10 @@ struct PathlineReport {
   std::string backend;  // "cpu", "compute", ...
   std::string device;   // the Vulkan device's name, or the CPU's thread count
   double deviceSeconds = 0.0;  // GPU backends: the context, kernels, uploads and structures
+  // GPU backends, within traceSeconds: the samples' batches, writing their points, waiting for
+  // the device and reading the samples.
+  std::size_t probeCalls = 0;
+  double probeWriteSeconds = 0.0, probeDeviceSeconds = 0.0, probeReadSeconds = 0.0;
   std::size_t snapshotsUsed = 0;
   std::uint64_t cellsRead = 0;
   double readSeconds = 0.0, buildSeconds = 0.0, traceSeconds = 0.0, waitSeconds = 0.0;

@@ -1,6 +1,7 @@
 #version 460
 // The probe for the `rayquery` backend: point location and one sample per point (include/locate_probe.glsl).
 #extension GL_GOOGLE_include_directive : require
+#define AMRSTREAM_PROBE_POINTS
 #include "include/amr_buffers.glsl"
 #include "include/locate_rayquery.glsl"
 #include "include/sampler.glsl"

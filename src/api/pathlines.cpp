@@ -90,6 +90,14 @@ struct GpuSampling {
   }
 };
 
+void addProbeTimes(const gpu::VectorProbe& probe, PathlineReport& report) {
+  const gpu::VectorProbe::Times& t = probe.times();
+  report.probeCalls += t.calls;
+  report.probeWriteSeconds += t.writeSeconds;
+  report.probeDeviceSeconds += t.deviceSeconds;
+  report.probeReadSeconds += t.readSeconds;
+}
+
 flow::VectorBatchSampler samplerOf(gpu::VectorProbe* probe) {
   if (!probe) return {};
   return [probe](std::span<const glm::vec3> cells, std::span<flow::VectorSample> out) {
@@ -210,10 +218,12 @@ flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const 
     tracer.advance({a->time, &a->field.volume, samplerOf(probeA.get())},
                    {b->time, &b->field.volume, samplerOf(probeB.get())});
     report.traceSeconds += tracing.seconds();
+    if (probeA) addProbeTimes(*probeA, report);
     probeA = std::move(probeB);
     a = std::move(b);
     if (progress) progress(i - first + 1, last - first);
   }
+  if (probeA) addProbeTimes(*probeA, report);
   tracer.finish();
   if (gpu) checkValidation(gpu->ctx);
   report.steps = tracer.stepCount();

@@ -80,6 +80,12 @@ void runPathlines(const PathlinesOptions& o) {
              double(report.steps) / std::max(report.traceSeconds, 1e-9), report.waitSeconds,
              report.wallSeconds / std::max(readBuild, 1e-9));
 
+  if (report.probeCalls > 0)
+    fmt::print("samples    {} batches on the device: writing the points {:.2f} s, the device "
+               "{:.2f} s, reading the samples {:.2f} s\n",
+               withCommas(report.probeCalls), report.probeWriteSeconds, report.probeDeviceSeconds,
+               report.probeReadSeconds);
+
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;
   writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11

@@ -31,18 +31,12 @@ glm::vec3 wrapPhysical(const VectorVolume& volume, glm::vec3 x) {
 
 // The CPU sampler keeps each particle's last region in the snapshot (`caches`): a particle's
 // consecutive samples mostly fall in one region.
-std::vector<VectorSample> sampleSnapshot(const Snapshot& snapshot,
-                                         std::span<const glm::vec3> cells,
-                                         std::span<RegionCache* const> caches) {
-  std::vector<VectorSample> samples(cells.size());
-  if (snapshot.sampler) {
-    snapshot.sampler(cells, samples);
-    return samples;
-  }
+void sampleSnapshot(const Snapshot& snapshot, std::span<const glm::vec3> cells,
+                    std::span<RegionCache* const> caches, std::span<VectorSample> out) {
+  if (snapshot.sampler) return snapshot.sampler(cells, out);
   tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t i) {
-    samples[i] = sampleVector(*snapshot.volume, cells[i], caches[i]);
+    out[i] = sampleVector(*snapshot.volume, cells[i], caches[i]);
   });
-  return samples;
 }
 
 }  // namespace
@@ -56,39 +50,53 @@ struct PathlineTracer::TimeSample {
   std::int32_t regionA = -1, regionB = -1;
 };
 
-std::vector<PathlineTracer::TimeSample> PathlineTracer::sampleAt(
-    const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
-    std::span<const double> times, std::span<const std::size_t> owners) {
-  std::vector<TimeSample> out(points.size());
-  std::vector<glm::vec3> cellsA(points.size()), cellsB(points.size());
-  std::vector<RegionCache*> cachesA(points.size()), cachesB(points.size());
+// Scratch arrays of sampleAt(), kept between calls: a batch is up to every particle, and fresh
+// memory for each of the stages' batches would be paid for in page faults.
+struct PathlineTracer::SampleScratch {
+  std::vector<glm::vec3> cellsA, cellsB;
+  std::vector<RegionCache*> cachesA, cachesB;
+  std::vector<VectorSample> samplesA, samplesB;
+
+  void resize(std::size_t n) {
+    for (auto* v : {&cellsA, &cellsB}) v->resize(n);
+    for (auto* v : {&cachesA, &cachesB}) v->resize(n);
+    for (auto* v : {&samplesA, &samplesB}) v->resize(n);
+  }
+};
+
+void PathlineTracer::sampleAt(const Snapshot& a, const Snapshot& b,
+                              std::span<const glm::vec3> points, std::span<const double> times,
+                              std::span<const std::size_t> owners, std::span<TimeSample> out) {
+  SampleScratch& w = *scratch_;
+  w.resize(points.size());
   tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
-    cellsA[i] = cellOf(*a.volume, points[i]);
-    cellsB[i] = cellOf(*b.volume, points[i]);
-    cachesA[i] = &particles_[owners[i]].cacheA;
-    cachesB[i] = &particles_[owners[i]].cacheB;
+    w.cellsA[i] = cellOf(*a.volume, points[i]);
+    w.cellsB[i] = cellOf(*b.volume, points[i]);
+    w.cachesA[i] = &particles_[owners[i]].cacheA;
+    w.cachesB[i] = &particles_[owners[i]].cacheB;
   });
-  const std::vector<VectorSample> sa = sampleSnapshot(a, cellsA, cachesA);
-  const std::vector<VectorSample> sb = sampleSnapshot(b, cellsB, cachesB);
+  sampleSnapshot(a, w.cellsA, w.cachesA, w.samplesA);
+  sampleSnapshot(b, w.cellsB, w.cachesB, w.samplesB);
   tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    const VectorSample &sa = w.samplesA[i], &sb = w.samplesB[i];
     TimeSample& s = out[i];
+    s = {};
     s.weightB = float((times[i] - a.time) / (b.time - a.time));
-    s.cellA = cellsA[i];
-    s.cellB = cellsB[i];
-    if (!sa[i].located || !sb[i].located) {
+    s.cellA = w.cellsA[i];
+    s.cellB = w.cellsB[i];
+    if (!sa.located || !sb.located) {
       s.reason = AMRSTREAM_REASON_OUT_OF_DOMAIN;
       return;
     }
-    if (!sa[i].valid || !sb[i].valid) {
+    if (!sa.valid || !sb.valid) {
       s.reason = AMRSTREAM_REASON_UNEXPECTED_VALUE;
       return;
     }
     // a + w (b - a): identical snapshots give a's vector exactly.
-    s.value = sa[i].value + s.weightB * (sb[i].value - sa[i].value);
-    s.regionA = sa[i].region;
-    s.regionB = sb[i].region;
+    s.value = sa.value + s.weightB * (sb.value - sa.value);
+    s.regionA = sa.region;
+    s.regionB = sb.region;
   });
-  return out;
 }
 
 PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const PathlineOptions& options,
@@ -97,7 +105,8 @@ PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const Pathline
       vectorName_(std::move(vectorName)),
       channelNames_(std::move(channelNames)),
       seedCount_(seeds.size()),
-      time_(options.startTime) {
+      time_(options.startTime),
+      scratch_(std::make_unique<SampleScratch>()) {
   if (!(options.stepSize > 0.0) || !std::isfinite(options.stepSize))
     throw std::invalid_argument("pathlines: the step size must be a positive number");
   if (!(options.endTime > options.startTime))
@@ -117,6 +126,10 @@ PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const Pathline
     }
 }
 
+PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
+PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
+PathlineTracer::~PathlineTracer() = default;
+
 void PathlineTracer::appendPoint(Particle& p, const Snapshot& a, const Snapshot& b,
                                  const TimeSample& s) const {
   p.positions.push_back(p.position);
@@ -128,7 +141,9 @@ void PathlineTracer::appendPoint(Particle& p, const Snapshot& a, const Snapshot&
     p.channels.resize(p.channels.size() + channels, std::numeric_limits<float>::quiet_NaN());
     return;
   }
-  std::vector<float> va(channels), vb(channels);
+  thread_local std::vector<float> va, vb;
+  va.resize(channels);
+  vb.resize(channels);
   sampleChannels(*a.volume, s.regionA, s.cellA, va);
   sampleChannels(*b.volume, s.regionB, s.cellB, vb);
   for (std::size_t c = 0; c < channels; ++c) p.channels.push_back(va[c] + s.weightB * (vb[c] - va[c]));
@@ -146,7 +161,8 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
     points[i] = p.position;
     times[i] = p.time;
   }
-  const std::vector<TimeSample> samples = sampleAt(a, b, points, times, due);
+  std::vector<TimeSample> samples(due.size());
+  sampleAt(a, b, points, times, due, samples);
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
     Particle& p = particles_[due[i]];
     appendPoint(p, a, b, samples[i]);
@@ -157,60 +173,68 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
 void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a,
                           const Snapshot& b, double until) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
-  std::vector<glm::vec3> x, points;
-  std::vector<double> t, h, stageTimes;
-  std::vector<char> last;
-  std::vector<glm::vec3> k1, k2, k3, k4;
-  std::vector<TimeSample> start;  // the sample at each particle's (x, t)
+  const std::size_t all = active.size();
+  // Room for the interval's points, so that appending them does not reallocate.
+  tbb::parallel_for(std::size_t(0), all, [&](std::size_t i) {
+    Particle& p = particles_[active[i]];
+    const std::size_t more = std::size_t(std::ceil((until - p.time) / options_.stepSize)) + 1;
+    p.positions.reserve(p.positions.size() + more);
+    p.times.reserve(p.times.size() + more);
+    p.vectors.reserve(p.vectors.size() + more);
+    p.channels.reserve(p.channels.size() + more * channelNames_.size());
+  });
+  std::vector<glm::vec3> x(all), points(all), k1(all), k2(all), k3(all);
+  std::vector<double> t(all), h(all), stageTimes(all);
+  std::vector<char> last(all), goesOn(all);
+  std::vector<int> reasons(all);
+  std::vector<TimeSample> start(all), stage(all);  // start: the sample at each particle's (x, t)
+  bool startKnown = false;
   while (!active.empty()) {
     const std::size_t n = active.size();
-    x.resize(n);
-    t.resize(n);
-    h.resize(n);
-    last.resize(n);
-    points.resize(n);
-    stageTimes.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       const Particle& p = particles_[active[i]];
       x[i] = p.position;
       t[i] = p.time;
       h[i] = std::min(options_.stepSize, until - p.time);
       last[i] = until - (p.time + h[i]) < kSliverFraction * options_.stepSize;
       if (last[i]) h[i] = until - p.time;
-    }
-    if (start.size() != n) start = sampleAt(a, b, x, t, active);
-    std::vector<int> reasons(n);
-    for (std::size_t i = 0; i < n; ++i) reasons[i] = start[i].reason;
-    // One stage for all: k = h v(point, time), then the next stage's point and time.
-    const auto stage = [&](std::vector<glm::vec3>& k, const std::vector<TimeSample>& s,
-                           float along, double timeAlong) {
-      k.resize(n);
-      for (std::size_t i = 0; i < n; ++i) {
+    });
+    const std::span<const std::size_t> owners(active.data(), n);
+    if (!startKnown)
+      sampleAt(a, b, std::span(x.data(), n), std::span(t.data(), n), owners,
+               std::span(start.data(), n));
+    // k = h v(point, time) from this stage's samples, then the next stage's point and time.
+    const auto advanceStage = [&](std::vector<glm::vec3>& k, const std::vector<TimeSample>& s,
+                                  float along, double timeAlong, bool first) {
+      tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
         k[i] = float(h[i]) * s[i].value;
-        if (reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = s[i].reason;
+        if (first || reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = s[i].reason;
         points[i] = x[i] + along * k[i];
         stageTimes[i] = t[i] + timeAlong * h[i];
-      }
+      });
     };
-    stage(k1, start, 0.5f, 0.5);
-    const std::vector<TimeSample> s2 = sampleAt(a, b, points, stageTimes, active);
-    stage(k2, s2, 0.5f, 0.5);
-    const std::vector<TimeSample> s3 = sampleAt(a, b, points, stageTimes, active);
-    stage(k3, s3, 1.0f, 1.0);
-    const std::vector<TimeSample> s4 = sampleAt(a, b, points, stageTimes, active);
-    k4.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      k4[i] = float(h[i]) * s4[i].value;
-      if (reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = s4[i].reason;
-      points[i] = wrapPhysical(*a.volume, x[i] + (k1[i] + 2.0f * k2[i] + 2.0f * k3[i] + k4[i]) / 6.0f);
-      stageTimes[i] = last[i] ? until : t[i] + h[i];
-    }
-    std::vector<TimeSample> next = sampleAt(a, b, points, stageTimes, active);
-
-    std::vector<char> goesOn(n, 0);
+    const auto sampleStage = [&] {
+      sampleAt(a, b, std::span(points.data(), n), std::span(stageTimes.data(), n), owners,
+               std::span(stage.data(), n));
+    };
+    advanceStage(k1, start, 0.5f, 0.5, true);
+    sampleStage();
+    advanceStage(k2, stage, 0.5f, 0.5, false);
+    sampleStage();
+    advanceStage(k3, stage, 1.0f, 1.0, false);
+    sampleStage();
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      const glm::vec3 k4 = float(h[i]) * stage[i].value;
+      if (reasons[i] == AMRSTREAM_REASON_RUNNING) reasons[i] = stage[i].reason;
+      points[i] = wrapPhysical(*a.volume, x[i] + (k1[i] + 2.0f * k2[i] + 2.0f * k3[i] + k4) / 6.0f);
+      stageTimes[i] = last[i] ? until : t[i] + h[i];
+    });
+    sampleStage();  // at the new points: their output and the next step's first stage
+
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      goesOn[i] = 0;
       Particle& p = particles_[active[i]];
-      const int reason = reasons[i] != AMRSTREAM_REASON_RUNNING ? reasons[i] : next[i].reason;
+      const int reason = reasons[i] != AMRSTREAM_REASON_RUNNING ? reasons[i] : stage[i].reason;
       if (reason != AMRSTREAM_REASON_RUNNING) {
         p.reason = reason;
         return;
@@ -218,7 +242,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       p.position = points[i];
       p.time = stageTimes[i];
       ++p.steps;
-      appendPoint(p, a, b, next[i]);
+      appendPoint(p, a, b, stage[i]);
       if (p.time >= options_.endTime) {
         p.reason = options_.endReason;
         return;
@@ -229,12 +253,11 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
     for (std::size_t i = 0; i < n; ++i)
       if (goesOn[i]) {
         active[kept] = active[i];
-        next[kept] = next[i];
+        start[kept] = stage[i];
         ++kept;
       }
     active.resize(kept);
-    next.resize(kept);
-    start = std::move(next);
+    startKnown = true;
   }
 }
 

@@ -11,6 +11,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -51,6 +52,9 @@ class PathlineTracer {
   // positive or an end before the start.
   PathlineTracer(std::span<const glm::dvec3> seeds, const PathlineOptions& options,
                  std::string vectorName, std::vector<std::string> channelNames);
+  PathlineTracer(PathlineTracer&&) noexcept;
+  PathlineTracer& operator=(PathlineTracer&&) noexcept;
+  ~PathlineTracer();
 
   // Releases the particles due in [a.time, b.time) and moves every running particle from its
   // time to min(b.time, endTime). Intervals come in order of time, each starting where the last
@@ -92,12 +96,12 @@ class PathlineTracer {
   void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
             double until);
   struct TimeSample;
-  // The vector at each (point, time) from the two snapshots bracketing the times; point i is
-  // particle owners[i]'s.
-  std::vector<TimeSample> sampleAt(const Snapshot& a, const Snapshot& b,
-                                   std::span<const glm::vec3> points,
-                                   std::span<const double> times,
-                                   std::span<const std::size_t> owners);
+  struct SampleScratch;
+  // The vector at each (point, time) from the two snapshots bracketing the times, into `out`;
+  // point i is particle owners[i]'s.
+  void sampleAt(const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
+                std::span<const double> times, std::span<const std::size_t> owners,
+                std::span<TimeSample> out);
   void appendPoint(Particle& particle, const Snapshot& a, const Snapshot& b,
                    const TimeSample& s) const;
   TraceSet emptySet() const;
@@ -109,6 +113,7 @@ class PathlineTracer {
   std::vector<Particle> particles_;
   double time_;
   const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
+  std::unique_ptr<SampleScratch> scratch_;
 };
 
 }  // namespace amrstream::flow

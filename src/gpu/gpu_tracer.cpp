@@ -9,6 +9,7 @@
 
 #include "gpu_rounds.hpp"
 #include "morton_order.hpp"
+#include "vector_probe.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
@@ -152,56 +153,12 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
   if (!probe_) probe_ = createTraceKernel(*ctx_, kernel_.backend, KernelProgram::LocateProbe);
-  std::vector<shared::LineState> points(cellPoints.size());
-  for (std::size_t i = 0; i < points.size(); ++i) points[i].position = cellPoints[i];
-  flow::TraceOptions options;
-  options.keepHistory = false;
-  RoundBuffers buffers(*ctx_, points.size(), points.size(), 0, false);
-  buffers.setStates(*ctx_, points);
-  shared::TraceParams params = flow::makeTraceParams(*volume_, options);
-  params.lineCount = static_cast<std::uint32_t>(points.size());
-  std::memcpy(buffers.params.mapped().data(), &params, sizeof(params));
-
-  const std::array<VkDescriptorPoolSize, 3> sizes{
-      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTraceBindingCount},
-       {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
-  vk::DescriptorPool pool(*ctx_, 1, sizes);
-  const VkDescriptorSet set = pool.allocate(probe_->setLayout.get());
-  const auto storage = [](const vk::Buffer& b) {
-    return vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.handle()};
-  };
-  const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
-      vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers.params.handle()},
-      storage(device_.bricks),
-      storage(device_.values),
-      storage(device_.regions),
-      storage(device_.regionBricks),
-      storage(buffers.states),
-      storage(buffers.roundStates),
-      storage(buffers.lineRounds[0]),
-      storage(buffers.positions),
-      storage(buffers.times),
-      storage(buffers.vectors),
-      storage(buffers.regionIds),
-      device_.locateTarget(),
-      storage(device_.vectorGradients)};
-  vk::writeDescriptors(*ctx_, set, targets);
-  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, probe_->bindPoint, probe_->pipeline.get());
-    vkCmdBindDescriptorSets(cmd, probe_->bindPoint, probe_->pipelineLayout.get(), 0, 1, &set, 0,
-                            nullptr);
-    const std::uint32_t n = params.lineCount;
-    if (probe_->backend == Backend::Pipeline) {
-      const ShaderBindingTable& sbt = probe_->bindingTable;
-      ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable, n,
-                                          1, 1);
-    } else {
-      vkCmdDispatch(cmd, (n + probe_->workgroupSize - 1) / probe_->workgroupSize, 1, 1);
-    }
-    vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
-  });
-  return vk::readBackAs<std::int32_t>(*ctx_, buffers.regionIds);
+  VectorProbe probe(*ctx_, *probe_, *volume_, device_);
+  std::vector<flow::VectorSample> samples(cellPoints.size());
+  probe.sample(cellPoints, samples);
+  std::vector<std::int32_t> regions(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) regions[i] = samples[i].region;
+  return regions;
 }
 
 }  // namespace amrstream::gpu

@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "../../shaders/glsl/shared/line_state.h"
 #include "flow/integrator.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
 
@@ -25,7 +28,20 @@ vk::DescriptorTarget storage(const vk::Buffer& buffer) {
 
 VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
                          const flow::VectorVolume& volume)
-    : ctx_(&ctx), volume_(&volume), device_(ctx, kernel.backend, volume, setup_), kernel_(&kernel) {
+    : ctx_(&ctx), volume_(&volume), kernel_(&kernel) {
+  owned_.emplace(ctx, kernel.backend, volume, setup_);
+  device_ = &*owned_;
+  makeFixedBuffers();
+}
+
+VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
+                         const flow::VectorVolume& volume, const VolumeBuffers& device)
+    : ctx_(&ctx), volume_(&volume), device_(&device), kernel_(&kernel) {
+  makeFixedBuffers();
+}
+
+void VectorProbe::makeFixedBuffers() {
+  const vk::Context& ctx = *ctx_;
   params_ = vk::Buffer::upload(ctx, sizeof(shared::TraceParams),
                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "probe params");
   unused_ = vk::Buffer::deviceLocal(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe unused");
@@ -34,7 +50,7 @@ VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
 void VectorProbe::reserve(std::size_t points) {
   if (points <= capacity_) return;
   const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  points_ = vk::Buffer::upload(*ctx_, points * sizeof(shared::LineState), usage, "probe points");
+  points_ = vk::Buffer::upload(*ctx_, points * sizeof(glm::vec3), usage, "probe points");
   vectors_ = vk::Buffer::readback(*ctx_, points * sizeof(glm::vec3), usage, "probe vectors");
   regions_ = vk::Buffer::readback(*ctx_, points * sizeof(std::int32_t), usage, "probe regions");
   const std::array<VkDescriptorPoolSize, 3> sizes{
@@ -45,19 +61,19 @@ void VectorProbe::reserve(std::size_t points) {
   set_ = pool_->allocate(kernel_->setLayout.get());
   const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
       vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle()},
-      storage(device_.bricks),
-      storage(device_.values),
-      storage(device_.regions),
-      storage(device_.regionBricks),
-      storage(points_),   // statesIn: the points
+      storage(device_->bricks),
+      storage(device_->values),
+      storage(device_->regions),
+      storage(device_->regionBricks),
+      storage(points_),   // probePoints
       storage(unused_),   // statesOut
       storage(unused_),   // lineRounds
       storage(unused_),   // outPositions
       storage(unused_),   // outTimes
       storage(vectors_),  // outVectors
       storage(regions_),  // outRegions
-      device_.locateTarget(),
-      storage(device_.vectorGradients)};
+      device_->locateTarget(),
+      storage(device_->vectorGradients)};
   vk::writeDescriptors(*ctx_, set_, targets);
   capacity_ = points;
 }
@@ -67,13 +83,19 @@ void VectorProbe::sample(std::span<const glm::vec3> cellPoints,
   for (std::size_t first = 0; first < cellPoints.size(); first += kPointsPerDispatch) {
     const std::size_t n = std::min(kPointsPerDispatch, cellPoints.size() - first);
     reserve(std::max(n, std::min(kPointsPerDispatch, cellPoints.size())));
-    auto* states = reinterpret_cast<shared::LineState*>(points_.mapped().data());
-    for (std::size_t i = 0; i < n; ++i) states[i].position = cellPoints[first + i];
+    Stopwatch clock;
+    auto* points = reinterpret_cast<glm::vec3*>(points_.mapped().data());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384), [&](const auto& range) {
+      std::memcpy(points + range.begin(), cellPoints.data() + first + range.begin(),
+                  (range.end() - range.begin()) * sizeof(glm::vec3));
+    });
     flow::TraceOptions options;
     options.keepHistory = false;
     shared::TraceParams params = flow::makeTraceParams(*volume_, options);
     params.lineCount = static_cast<std::uint32_t>(n);
     std::memcpy(params_.mapped().data(), &params, sizeof(params));
+    times_.writeSeconds += clock.seconds();
+    clock.restart();
     vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
       vk::memoryBarrier(cmd, vk::access::kHostWrite, vk::access::kAny);
       vkCmdBindPipeline(cmd, kernel_->bindPoint, kernel_->pipeline.get());
@@ -89,21 +111,25 @@ void VectorProbe::sample(std::span<const glm::vec3> cellPoints,
       }
       vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kHostRead);
     });
+    times_.deviceSeconds += clock.seconds();
+    clock.restart();
     vectors_.invalidateMapped();
     regions_.invalidateMapped();
     const auto* vectors = reinterpret_cast<const glm::vec3*>(vectors_.mapped().data());
     const auto* regions = reinterpret_cast<const std::int32_t*>(regions_.mapped().data());
-    for (std::size_t i = 0; i < n; ++i) {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       flow::VectorSample& s = out[first + i];
       s = {};
       s.region = regions[i];
       s.located = regions[i] >= 0;
-      if (!s.located) continue;
+      if (!s.located) return;
       s.cellWidth = volume_->regions.regions[std::size_t(regions[i])].finestCellWidth;
       s.value = vectors[i];
       s.valid = !glm::any(glm::isnan(s.value)) && !glm::any(glm::isinf(s.value));
       if (!s.valid) s.value = glm::vec3(0.0f);
-    }
+    });
+    times_.readSeconds += clock.seconds();
+    ++times_.calls;
   }
 }
 

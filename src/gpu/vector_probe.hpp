@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "backend.hpp"
@@ -25,6 +26,10 @@ class VectorProbe {
   // The kernel: createTraceKernel(ctx, backend, KernelProgram::LocateProbe), shared by the probes
   // of many volumes. The context, the kernel and `volume` must outlive the probe.
   VectorProbe(const vk::Context& ctx, const TraceKernel& kernel, const flow::VectorVolume& volume);
+  // The same on the device copy of `volume` that `device` already holds (it must outlive the
+  // probe).
+  VectorProbe(const vk::Context& ctx, const TraceKernel& kernel, const flow::VectorVolume& volume,
+              const VolumeBuffers& device);
 
   // flow::sampleVector() at each point (finest-cell units, already wrapped), into `out`, which
   // has one element per point.
@@ -32,14 +37,26 @@ class VectorProbe {
 
   const TracerSetup& setup() const { return setup_; }
 
+  // Host time of the calls so far: writing the points, waiting for the device, reading the
+  // samples.
+  struct Times {
+    std::size_t calls = 0;
+    double writeSeconds = 0.0, deviceSeconds = 0.0, readSeconds = 0.0;
+  };
+  const Times& times() const { return times_; }
+
  private:
+  // The parameters' buffer and the one bound where the probe writes nothing.
+  void makeFixedBuffers();
   // Host-visible buffers and their descriptor set for `points` points per dispatch.
   void reserve(std::size_t points);
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
   TracerSetup setup_;
-  VolumeBuffers device_;
+  std::optional<VolumeBuffers> owned_;
+  const VolumeBuffers* device_;
+  Times times_;
   const TraceKernel* kernel_;
   std::size_t capacity_ = 0;
   vk::Buffer params_, points_, vectors_, regions_, unused_;

@@ -14,7 +14,11 @@ layout(scalar, set = 0, binding = 1) readonly buffer BrickBuffer { Brick bricks[
 layout(scalar, set = 0, binding = 2) readonly buffer ValueBuffer { vec3 values[]; };
 layout(scalar, set = 0, binding = 3) readonly buffer RegionBuffer { Region regions[]; };
 layout(scalar, set = 0, binding = 4) readonly buffer RegionBrickBuffer { uint regionBricks[]; };
+#ifdef AMRSTREAM_PROBE_POINTS  // the probe (locate_probe.glsl): binding 5 holds bare points
+layout(scalar, set = 0, binding = 5) readonly buffer ProbePointBuffer { vec3 probePoints[]; };
+#else
 layout(scalar, set = 0, binding = 5) readonly buffer StatesInBuffer { LineState statesIn[]; };
+#endif
 layout(scalar, set = 0, binding = 6) writeonly buffer StatesOutBuffer { LineState statesOut[]; };
 layout(scalar, set = 0, binding = 7) writeonly buffer LineRoundBuffer { LineRound lineRounds[]; };
 layout(scalar, set = 0, binding = 8) writeonly buffer PositionBuffer { vec3 outPositions[]; };

@@ -1,10 +1,11 @@
 // The probe: one sample of the vector per point, for tests that compare every backend's point
 // location with brute force and for pathlines, whose host-side RK4 samples two snapshots per
-// stage. It reuses the tracing bindings: the points are the positions of statesIn (cell units,
-// already wrapped), the region found (-1 for none) goes to outRegions and the vector to
-// outVectors, NaN where the sample is located but invalid.
+// stage. It reuses the tracing bindings, binding 5 holding the points (probePoints, cell
+// units, already wrapped; AMRSTREAM_PROBE_POINTS defined before amr_buffers.glsl); the region
+// found (-1 for none) goes to outRegions and the vector to outVectors, NaN where the sample is
+// located but invalid.
 void probeLocation(uint pointIndex) {
-  const VectorSample s = sampleVector(statesIn[pointIndex].position);
+  const VectorSample s = sampleVector(probePoints[pointIndex]);
   outRegions[pointIndex] = s.located ? s.region : -1;
   outVectors[pointIndex] = s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
 }
