@@ -165,6 +165,15 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   sampleAt(a, b, points, times, due, samples);
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
     Particle& p = particles_[due[i]];
+    // Room for the points of whole steps to the end (steps shortened at snapshots add a few).
+    if (std::isfinite(options_.endTime)) {
+      const std::size_t points =
+          std::size_t(std::ceil((options_.endTime - p.time) / options_.stepSize)) + 2;
+      p.positions.reserve(points);
+      p.times.reserve(points);
+      p.vectors.reserve(points);
+      p.channels.reserve(points * channelNames_.size());
+    }
     appendPoint(p, a, b, samples[i]);
     if (samples[i].reason != AMRSTREAM_REASON_RUNNING) p.reason = samples[i].reason;
   });
@@ -174,15 +183,6 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
                           const Snapshot& b, double until) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
-  // Room for the interval's points, so that appending them does not reallocate.
-  tbb::parallel_for(std::size_t(0), all, [&](std::size_t i) {
-    Particle& p = particles_[active[i]];
-    const std::size_t more = std::size_t(std::ceil((until - p.time) / options_.stepSize)) + 1;
-    p.positions.reserve(p.positions.size() + more);
-    p.times.reserve(p.times.size() + more);
-    p.vectors.reserve(p.vectors.size() + more);
-    p.channels.reserve(p.channels.size() + more * channelNames_.size());
-  });
   std::vector<glm::vec3> x(all), points(all), k1(all), k2(all), k3(all);
   std::vector<double> t(all), h(all), stageTimes(all);
   std::vector<char> last(all), goesOn(all);
@@ -329,28 +329,31 @@ TraceSet PathlineTracer::emptySet() const {
 
 TraceSet PathlineTracer::pathlines() const {
   TraceSet set = emptySet();
-  const std::uint64_t points = pointCount();
   const std::size_t channels = channelNames_.size();
-  set.positions.resize(points);
-  set.times.resize(points);
-  set.vectors.resize(points);
-  set.channels.resize(points * channels);
-  std::uint64_t at = 0;
+  std::vector<const Particle*> lines;
   for (const Particle& p : particles_) {
     if (!p.released) continue;
+    lines.push_back(&p);
     set.seedIds.push_back(p.seed);
     set.directions.push_back(1.0f);
     set.steps.push_back(p.steps);
     set.reasons.push_back(p.reason);
-    for (std::size_t k = 0; k < p.positions.size(); ++k, ++at) {
-      set.positions[at] = p.positions[k];
-      set.times[at] = float(p.times[k]);
-      set.vectors[at] = p.vectors[k];
-      for (std::size_t c = 0; c < channels; ++c)
-        set.channels[at * channels + c] = p.channels[k * channels + c];
-    }
-    set.offsets.push_back(at);
+    set.offsets.push_back(set.offsets.back() + p.positions.size());
   }
+  const std::uint64_t points = set.offsets.back();
+  set.positions.resize(points);
+  set.times.resize(points);
+  set.vectors.resize(points);
+  set.channels.resize(points * channels);
+  tbb::parallel_for(std::size_t(0), lines.size(), [&](std::size_t line) {
+    const Particle& p = *lines[line];
+    const std::uint64_t at = set.offsets[line];
+    std::copy(p.positions.begin(), p.positions.end(), set.positions.begin() + at);
+    std::transform(p.times.begin(), p.times.end(), set.times.begin() + at,
+                   [](double t) { return float(t); });
+    std::copy(p.vectors.begin(), p.vectors.end(), set.vectors.begin() + at);
+    std::copy(p.channels.begin(), p.channels.end(), set.channels.begin() + at * channels);
+  });
   return set;
 }
 
