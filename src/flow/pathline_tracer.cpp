@@ -64,6 +64,24 @@ struct PathlineTracer::SampleScratch {
   }
 };
 
+// The per-particle arrays of move()'s stages, kept between intervals (fresh memory for each
+// would be paid for in page faults).
+struct PathlineTracer::StageScratch {
+  std::vector<glm::vec3> x, points, k1, k2, k3;
+  std::vector<double> t, h, stageTimes;
+  std::vector<char> last, goesOn;
+  std::vector<int> reasons;
+  std::vector<TimeSample> start, stage;
+
+  void resize(std::size_t n) {
+    for (auto* v : {&x, &points, &k1, &k2, &k3}) v->resize(std::max(v->size(), n));
+    for (auto* v : {&t, &h, &stageTimes}) v->resize(std::max(v->size(), n));
+    for (auto* v : {&last, &goesOn}) v->resize(std::max(v->size(), n));
+    reasons.resize(std::max(reasons.size(), n));
+    for (auto* v : {&start, &stage}) v->resize(std::max(v->size(), n));
+  }
+};
+
 void PathlineTracer::sampleAt(const Snapshot& a, const Snapshot& b,
                               std::span<const glm::vec3> points, std::span<const double> times,
                               std::span<const std::size_t> owners, std::span<TimeSample> out) {
@@ -106,7 +124,8 @@ PathlineTracer::PathlineTracer(std::span<const glm::dvec3> seeds, const Pathline
       channelNames_(std::move(channelNames)),
       seedCount_(seeds.size()),
       time_(options.startTime),
-      scratch_(std::make_unique<SampleScratch>()) {
+      scratch_(std::make_unique<SampleScratch>()),
+      stages_(std::make_unique<StageScratch>()) {
   if (!(options.stepSize > 0.0) || !std::isfinite(options.stepSize))
     throw std::invalid_argument("pathlines: the step size must be a positive number");
   if (!(options.endTime > options.startTime))
@@ -183,11 +202,13 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
                           const Snapshot& b, double until) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
-  std::vector<glm::vec3> x(all), points(all), k1(all), k2(all), k3(all);
-  std::vector<double> t(all), h(all), stageTimes(all);
-  std::vector<char> last(all), goesOn(all);
-  std::vector<int> reasons(all);
-  std::vector<TimeSample> start(all), stage(all);  // start: the sample at each particle's (x, t)
+  StageScratch& w = *stages_;
+  w.resize(all);
+  auto &x = w.x, &points = w.points, &k1 = w.k1, &k2 = w.k2, &k3 = w.k3;
+  auto &t = w.t, &h = w.h, &stageTimes = w.stageTimes;
+  auto &last = w.last, &goesOn = w.goesOn;
+  auto& reasons = w.reasons;
+  auto &start = w.start, &stage = w.stage;  // start: the sample at each particle's (x, t)
   bool startKnown = false;
   while (!active.empty()) {
     const std::size_t n = active.size();
@@ -249,14 +270,20 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       }
       goesOn[i] = p.time < until;
     });
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (goesOn[i]) {
-        active[kept] = active[i];
-        start[kept] = stage[i];
-        ++kept;
-      }
-    active.resize(kept);
+    // Mostly every particle goes on (all but the interval's last step): no copying then.
+    const std::size_t going = std::size_t(std::count(goesOn.begin(), goesOn.begin() + n, 1));
+    if (going == n) {
+      std::swap(start, stage);
+    } else {
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (goesOn[i]) {
+          active[kept] = active[i];
+          start[kept] = stage[i];
+          ++kept;
+        }
+      active.resize(kept);
+    }
     startKnown = true;
   }
 }

@@ -114,6 +114,8 @@ class PathlineTracer {
   double time_;
   const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
   std::unique_ptr<SampleScratch> scratch_;
+  struct StageScratch;
+  std::unique_ptr<StageScratch> stages_;
 };
 
 }  // namespace amrstream::flow
