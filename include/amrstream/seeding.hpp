@@ -15,7 +15,8 @@ namespace amrstream {
 
 // The first strategy set wins, in the order of the members.
 struct SeedRequest {
-  std::string file;          // one "x y z" per line
+  std::vector<glm::dvec3> points;  // given points (physical coordinates), e.g. from Python
+  std::string file;                // one "x y z" per line
   std::vector<double> line;  // x0,y0,z0,x1,y1,z1: `count` seeds from one end to the other
   std::string density;       // a scalar: random points in cells at or above its percentile
   double percentile = 90.0;

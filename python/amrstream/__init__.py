@@ -30,8 +30,8 @@ from . import _amrstream
 
 __all__ = [
     "BackendError", "Dataset", "Field", "InputError", "Traces", "__version__", "from_arrays",
-    "from_yt", "load", "prepare", "reason_name", "render", "seeds_densest", "seeds_grid",
-    "seeds_line", "seeds_random", "trace",
+    "from_yt", "load", "pathlines", "prepare", "reason_name", "render", "seeds_densest",
+    "seeds_grid", "seeds_line", "seeds_random", "trace",
 ]
 
 DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
@@ -74,6 +74,26 @@ def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpo
         point_data = ",".join(point_data) if point_data else "none"
     return _amrstream.trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
                             periodic=periodic, interpolant=interpolant, **settings)
+
+
+def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
+    """Traces pathlines from seeds ((N, 3) points) through a time series of snapshots: a list of
+    files, folders (AMReX plotfiles) or glob patterns (a single string is one pattern), ordered
+    by the times the files state.
+
+    Settings, as `amrstream pathlines` names them: start_time (default: the first snapshot's),
+    end_time (default: the last's), step_size (default: a tenth of the shortest interval),
+    release_every (streaklines: new particles from every seed at this interval), periodic,
+    interpolant, backend, device, progress=callable(done, total) over the intervals,
+    verbose=False. vector and point_data as for prepare(). Returns Traces (one line per
+    particle; integration_time is physical time), which to_vtp() writes.
+    """
+    if isinstance(snapshots, str):
+        snapshots = [snapshots]
+    if isinstance(point_data, (list, tuple)):
+        point_data = ",".join(point_data) if point_data else "none"
+    return _amrstream.pathlines([str(s) for s in snapshots], seeds, vector=_vector_text(vector),
+                                point_data=point_data, **settings)
 
 
 def render(traces, **look):

@@ -52,6 +52,14 @@ Domain domainOf(const flow::VectorVolume& volume) {
 
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
                            std::string& description) {
+  if (!request.points.empty()) {
+    description = "given points";
+    flow::SeedList seeds;
+    seeds.points = request.points;
+    for (std::size_t i = 0; i < seeds.points.size(); ++i)
+      seeds.origins.push_back(fmt::format("seeds[{}]", i));
+    return seeds;
+  }
   if (!request.file.empty()) {
     description = request.file;
     return flow::readSeedFile(request.file);

@@ -1,4 +1,5 @@
-// amrstream.trace and the Traces it returns: numpy views of the traced lines, and to_vtp.
+// amrstream.trace and amrstream.pathlines, and the Traces they return: numpy views of the traced
+// lines, to_vtp and render.
 
 #include <fmt/format.h>
 #include <pybind11/functional.h>
@@ -8,6 +9,7 @@
 #include <mutex>
 
 #include "amrstream/field.hpp"
+#include "amrstream/pathlines.hpp"
 #include "amrstream/provenance.hpp"
 #include "amrstream/rendering.hpp"
 #include "amrstream/seeding.hpp"
@@ -26,7 +28,7 @@ struct Traces {
   flow::TraceSet lines;
   std::vector<output::FieldDataArray> provenance;
   TraceReport report;
-  std::shared_ptr<const PreparedField> field;  // what rendering the lines reads
+  std::shared_ptr<const PreparedField> field;  // what rendering the lines reads; none for paths
 };
 
 std::size_t lineIndex(const Traces& t, py::ssize_t i) {
@@ -123,6 +125,31 @@ std::shared_ptr<Traces> runTrace(py::object target, py::object seeds,
   return result;
 }
 
+std::shared_ptr<Traces> runPathlines(const std::vector<std::string>& snapshots, py::object seeds,
+                                     const FieldOptions& field, const PathlineSettings& settings,
+                                     const BackendRequest& backend, py::object progress,
+                                     bool verbose) {
+  SeedRequest request;
+  request.points = seedListOf(seeds).points;
+  if (request.points.empty()) throw py::value_error("pathlines() needs at least one seed");
+  const flow::TraceProgress onProgress = throttled(progress);
+  const Log log = pythonLog(verbose);
+  auto result = std::make_shared<Traces>();
+  py::gil_scoped_release unlocked;
+  const std::vector<SnapshotFile> series = listSnapshots(snapshots);
+  PathlineReport report;
+  const flow::PathlineTracer tracer =
+      tracePathlines(series, field, request, settings, backend, report, onProgress, log);
+  const bool streaks = report.options.releaseEvery > 0.0;
+  result->lines = streaks ? tracer.streaklines() : tracer.pathlines();
+  result->provenance = pathlineProvenance(series, report, streaks ? "streaklines" : "pathlines");
+  result->report.backend = report.backend;
+  result->report.device = report.device;
+  result->report.setupSeconds = report.deviceSeconds;
+  result->report.traceSeconds = report.traceSeconds;
+  return result;
+}
+
 py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t height,
                        std::optional<std::vector<float>> camera,
                        std::optional<std::vector<double>> viewBox, std::optional<float> tubeRadius,
@@ -132,6 +159,10 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
                        std::optional<std::vector<float>> volumeRange, float volumeOpacity,
                        bool linearVolume, std::uint32_t frames, bool colourBar, std::string backend,
                        std::string device, bool validation, py::object progress, bool verbose) {
+  if (!t.field)
+    throw py::value_error(
+        "paths through a series have no one field to render with: write them with to_vtp() and "
+        "run `amrstream render SNAPSHOT --traces FILE.vtp`");
   if (width < 16 || height < 16 || width > 16384 || height > 16384)
     throw py::value_error("width and height must be 16 to 16384 pixels");
   if (camera && camera->size() != 2 && camera->size() != 3)
@@ -328,6 +359,36 @@ void bindTracing(py::module_& m) {
       py::arg("progress") = py::none(), py::arg("verbose") = false,
       "Traces streamlines from seeds ((N, 3) points) through a Dataset (vector, point_data "
       "and periodic as for prepare()) or a prepared Field, as `amrstream trace` does.");
+  m.def(
+      "pathlines",
+      [](std::vector<std::string> snapshots, py::object seeds, std::optional<std::string> vector,
+         std::optional<std::string> pointData, std::optional<std::string> periodic,
+         std::optional<std::string> interpolant, std::optional<double> startTime,
+         std::optional<double> endTime, std::optional<double> stepSize, double releaseEvery,
+         std::string backend, std::string device, bool validation, py::object progress,
+         bool verbose) {
+        const FieldOptions field{vector.value_or(""), pointData.value_or("all"),
+                                 periodic.value_or("auto"), interpolant.value_or("tent")};
+        PathlineSettings settings;
+        settings.startTime = startTime;
+        settings.endTime = endTime;
+        settings.stepSize = stepSize;
+        settings.releaseEvery = releaseEvery;
+        const BackendRequest request{std::move(backend), std::move(device),
+                                     validation || validationRequested()};
+        return runPathlines(snapshots, seeds, field, settings, request, progress, verbose);
+      },
+      py::arg("snapshots"), py::arg("seeds"), py::kw_only(), py::arg("vector") = py::none(),
+      py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
+      py::arg("interpolant") = py::none(), py::arg("start_time") = py::none(),
+      py::arg("end_time") = py::none(), py::arg("step_size") = py::none(),
+      py::arg("release_every") = 0.0, py::arg("backend") = "auto", py::arg("device") = "",
+      py::arg("validation") = false, py::arg("progress") = py::none(),
+      py::arg("verbose") = false,
+      "Traces pathlines from seeds ((N, 3) points, released at start_time) through a time series "
+      "of snapshot files or glob patterns, ordered by the times the files state, as `amrstream "
+      "pathlines` does; with release_every, streaklines. integration_time is physical time "
+      "(streaklines: each particle's age); progress(done, total) counts intervals.");
   m.def("reason_name", &reasonName, py::arg("code"),
         "The name of a ReasonForTermination code, e.g. 'out of domain'.");
 }

@@ -1,0 +1,102 @@
+"""amrstream.pathlines against the command line and against the swirl's closed form.
+
+A swirl series (`amrstream gen swirl --series`, refinement following a feature the flow
+carries) is traced from Python and with `amrstream pathlines` from the same seeds: the .vtp files
+must be the same, bit for bit but for the Seeds description; the paths must follow the closed
+form; bad series must raise InputError naming the file.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import amrstream
+
+from test_api import Vtp, assert_same_vtp, require_backend, run_cli, write_seeds
+
+GEN = ["--levels", "3", "--root-blocks", "2", "--target-cells", "20000"]
+
+
+def swirl_path(p, t0, t):
+    """The closed form of synth/swirl_field.hpp: where the particle at p at time t0 is at t."""
+    def turned(s):
+        return 2 * math.pi * s + 0.5 * (1 - math.cos(2 * math.pi * s))
+
+    def risen(s):
+        return 0.1 * math.sin(2 * math.pi * s) / (2 * math.pi)
+
+    a = turned(t) - turned(t0)
+    x, y = p[0] - 0.5, p[1] - 0.5
+    return np.array([0.5 + math.cos(a) * x - math.sin(a) * y,
+                     0.5 + math.sin(a) * x + math.cos(a) * y, p[2] + risen(t) - risen(t0)])
+
+
+@pytest.fixture(scope="module")
+def series(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("swirl")
+    run_cli("gen", "swirl", *GEN, "--series", "5", "--interval", "0.05", "--out",
+            folder / "swirl")
+    return folder
+
+
+@pytest.fixture(scope="module")
+def seeds():
+    rng = np.random.default_rng(4)
+    return rng.uniform([0.3, 0.3, 0.4], [0.7, 0.7, 0.6], size=(24, 3))
+
+
+@pytest.mark.parametrize("backend", ["cpu", "compute"])
+def test_pathlines_equal_the_cli_vtp(backend, series, seeds, tmp_path):
+    require_backend(backend)
+    pattern = str(series / "swirl_*.exa")
+    write_seeds(tmp_path / "seeds.txt", seeds)
+    run_cli("pathlines", pattern, "--seeds", tmp_path / "seeds.txt", "--backend", backend,
+            "--interpolant", "linear", "--out", tmp_path / "cli.vtp")
+    paths = amrstream.pathlines(pattern, seeds, backend=backend, interpolant="linear")
+    assert len(paths) == len(seeds)
+    assert paths.to_vtp(str(tmp_path / "py.vtp"))[0] == len(seeds)
+    assert_same_vtp(Vtp(tmp_path / "py.vtp"), Vtp(tmp_path / "cli.vtp"),
+                    ignore_field_data=("Seeds",))
+    assert paths.backend == backend
+
+
+def test_pathlines_follow_the_closed_form(series, seeds):
+    paths = amrstream.pathlines([str(series / f"swirl_000{i}.exa") for i in (4, 0, 2, 1, 3)],
+                                seeds, interpolant="linear", point_data=["temp"])
+    times = paths.integration_time
+    assert times[0] == 0.0 and math.isclose(times[-1], 0.2, rel_tol=1e-6)
+    worst = 0.0
+    for line, seed_id in enumerate(paths.seed_ids):
+        first, end = paths.offsets[line], paths.offsets[line + 1]
+        for k in range(first, end):
+            exact = swirl_path(seeds[seed_id], 0.0, float(times[k]))
+            worst = max(worst, float(np.linalg.norm(paths.points[k] - exact)))
+    # Linear in time between snapshots 0.05 apart: a few 1e-3 (the C++ test measures the order).
+    assert worst < 5e-3
+    temp = paths.point_data["temp"]
+    expected = 1.0 + 0.5 * paths.points[:, 2] + 0.25 * times
+    assert np.max(np.abs(temp - expected)) < 1e-5
+    assert set(paths.reasons) == {9}  # end of series
+
+
+def test_streaklines_have_one_line_per_seed(series):
+    streaks = amrstream.pathlines(str(series / "swirl_*.exa"), [[0.6, 0.5, 0.5], [0.7, 0.5, 0.5]],
+                                  release_every=0.02, end_time=0.1)
+    assert len(streaks) == 2
+    assert list(streaks.seed_ids) == [0, 1]
+    assert np.all(np.diff(streaks.offsets) == 5)  # released at 0, 0.02, ..., 0.08
+
+
+def test_bad_series_raise_input_error_naming_the_file(series, tmp_path):
+    with pytest.raises(amrstream.InputError, match="two snapshots or more"):
+        amrstream.pathlines(str(series / "swirl_0000.exa"), [[0.5, 0.5, 0.5]])
+    with pytest.raises(amrstream.InputError, match="matches no file"):
+        amrstream.pathlines(str(tmp_path / "none_*.exa"), [[0.5, 0.5, 0.5]])
+    with pytest.raises(amrstream.InputError, match="outside the series"):
+        amrstream.pathlines(str(series / "swirl_*.exa"), [[0.5, 0.5, 0.5]], start_time=3.0)
+    with pytest.raises(ValueError, match="at least one seed"):
+        amrstream.pathlines(str(series / "swirl_*.exa"), np.zeros((0, 3)))
+    paths = amrstream.pathlines(str(series / "swirl_*.exa"), [[0.5, 0.6, 0.5]])
+    with pytest.raises(ValueError, match="to_vtp"):
+        paths.render()
