@@ -149,15 +149,32 @@ PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
 PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
 PathlineTracer::~PathlineTracer() = default;
 
-void PathlineTracer::appendPoint(Particle& p, const Snapshot& a, const Snapshot& b,
-                                 const TimeSample& s) const {
-  p.positions.push_back(p.position);
-  p.times.push_back(p.time);
-  p.vectors.push_back(s.value);
+PathlineTracer::PointBlock& PathlineTracer::newBlock(std::size_t slots) {
+  PointBlock& block = blocks_.emplace_back();
+  block.particles.assign(slots, kNoParticle);
+  block.positions.resize(slots);
+  block.vectors.resize(slots);
+  block.times.resize(slots);
+  block.channels.resize(slots * channelNames_.size());
+  return block;
+}
+
+void PathlineTracer::storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a,
+                                const Snapshot& b, const TimeSample& s) {
+  Particle& p = particles_[particle];
+  PointBlock& block = blocks_.back();
+  block.particles[slot] = std::uint32_t(particle);
+  block.positions[slot] = p.position;
+  block.times[slot] = p.time;
+  block.vectors[slot] = s.value;
+  p.lastBlock = std::uint32_t(blocks_.size() - 1);
+  p.lastSlot = slot;
+  ++p.points;
   const std::size_t channels = channelNames_.size();
   if (channels == 0) return;
+  float* out = block.channels.data() + std::size_t(slot) * channels;
   if (s.reason != AMRSTREAM_REASON_RUNNING) {
-    p.channels.resize(p.channels.size() + channels, std::numeric_limits<float>::quiet_NaN());
+    std::fill(out, out + channels, std::numeric_limits<float>::quiet_NaN());
     return;
   }
   thread_local std::vector<float> va, vb;
@@ -165,7 +182,7 @@ void PathlineTracer::appendPoint(Particle& p, const Snapshot& a, const Snapshot&
   vb.resize(channels);
   sampleChannels(*a.volume, s.regionA, s.cellA, va);
   sampleChannels(*b.volume, s.regionB, s.cellB, vb);
-  for (std::size_t c = 0; c < channels; ++c) p.channels.push_back(va[c] + s.weightB * (vb[c] - va[c]));
+  for (std::size_t c = 0; c < channels; ++c) out[c] = va[c] + s.weightB * (vb[c] - va[c]);
 }
 
 void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a,
@@ -182,19 +199,10 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   }
   std::vector<TimeSample> samples(due.size());
   sampleAt(a, b, points, times, due, samples);
+  newBlock(due.size());
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
-    Particle& p = particles_[due[i]];
-    // Room for the points of whole steps to the end (steps shortened at snapshots add a few).
-    if (std::isfinite(options_.endTime)) {
-      const std::size_t points =
-          std::size_t(std::ceil((options_.endTime - p.time) / options_.stepSize)) + 2;
-      p.positions.reserve(points);
-      p.times.reserve(points);
-      p.vectors.reserve(points);
-      p.channels.reserve(points * channelNames_.size());
-    }
-    appendPoint(p, a, b, samples[i]);
-    if (samples[i].reason != AMRSTREAM_REASON_RUNNING) p.reason = samples[i].reason;
+    storePoint(due[i], std::uint32_t(i), a, b, samples[i]);
+    if (samples[i].reason != AMRSTREAM_REASON_RUNNING) particles_[due[i]].reason = samples[i].reason;
   });
 }
 
@@ -252,6 +260,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
     });
     sampleStage();  // at the new points: their output and the next step's first stage
 
+    newBlock(n);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       goesOn[i] = 0;
       Particle& p = particles_[active[i]];
@@ -263,7 +272,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       p.position = points[i];
       p.time = stageTimes[i];
       ++p.steps;
-      appendPoint(p, a, b, stage[i]);
+      storePoint(active[i], std::uint32_t(i), a, b, stage[i]);
       if (p.time >= options_.endTime) {
         p.reason = options_.endReason;
         return;
@@ -337,7 +346,7 @@ std::size_t PathlineTracer::runningCount() const {
 
 std::uint64_t PathlineTracer::pointCount() const {
   std::uint64_t points = 0;
-  for (const Particle& p : particles_) points += p.positions.size();
+  for (const Particle& p : particles_) points += p.points;
   return points;
 }
 
@@ -357,30 +366,35 @@ TraceSet PathlineTracer::emptySet() const {
 TraceSet PathlineTracer::pathlines() const {
   TraceSet set = emptySet();
   const std::size_t channels = channelNames_.size();
-  std::vector<const Particle*> lines;
-  for (const Particle& p : particles_) {
+  std::vector<std::uint64_t> next(particles_.size());  // where each particle's next point goes
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const Particle& p = particles_[i];
     if (!p.released) continue;
-    lines.push_back(&p);
+    next[i] = set.offsets.back();
     set.seedIds.push_back(p.seed);
     set.directions.push_back(1.0f);
     set.steps.push_back(p.steps);
     set.reasons.push_back(p.reason);
-    set.offsets.push_back(set.offsets.back() + p.positions.size());
+    set.offsets.push_back(set.offsets.back() + p.points);
   }
   const std::uint64_t points = set.offsets.back();
   set.positions.resize(points);
   set.times.resize(points);
   set.vectors.resize(points);
   set.channels.resize(points * channels);
-  tbb::parallel_for(std::size_t(0), lines.size(), [&](std::size_t line) {
-    const Particle& p = *lines[line];
-    const std::uint64_t at = set.offsets[line];
-    std::copy(p.positions.begin(), p.positions.end(), set.positions.begin() + at);
-    std::transform(p.times.begin(), p.times.end(), set.times.begin() + at,
-                   [](double t) { return float(t); });
-    std::copy(p.vectors.begin(), p.vectors.end(), set.vectors.begin() + at);
-    std::copy(p.channels.begin(), p.channels.end(), set.channels.begin() + at * channels);
-  });
+  // Blocks in the order they were made: each particle's points in order; a particle has at most
+  // one slot per block, so a block's slots go in parallel.
+  for (const PointBlock& block : blocks_)
+    tbb::parallel_for(std::size_t(0), block.particles.size(), [&](std::size_t slot) {
+      const std::uint32_t particle = block.particles[slot];
+      if (particle == kNoParticle) return;
+      const std::uint64_t at = next[particle]++;
+      set.positions[at] = block.positions[slot];
+      set.times[at] = float(block.times[slot]);
+      set.vectors[at] = block.vectors[slot];
+      std::copy_n(block.channels.begin() + slot * channels, channels,
+                  set.channels.begin() + at * channels);
+    });
   return set;
 }
 
@@ -396,11 +410,12 @@ TraceSet PathlineTracer::streaklines() const {
       const Particle& p = particles_[r * seedCount_ + s];
       if (!p.released || p.time < time_) continue;  // not yet released, or stopped before the end
       reason = p.reason;
-      set.positions.push_back(p.positions.back());
+      const PointBlock& block = blocks_[p.lastBlock];
+      set.positions.push_back(block.positions[p.lastSlot]);
       set.times.push_back(float(p.time - p.releaseTime));
-      set.vectors.push_back(p.vectors.back());
+      set.vectors.push_back(block.vectors[p.lastSlot]);
       for (std::size_t c = 0; c < channels; ++c)
-        set.channels.push_back(p.channels[(p.positions.size() - 1) * channels + c]);
+        set.channels.push_back(block.channels[std::size_t(p.lastSlot) * channels + c]);
       ++at;
       ++count;
     }

@@ -87,9 +87,18 @@ class PathlineTracer {
     double time = 0.0;
     std::uint32_t steps = 0;
     RegionCache cacheA, cacheB;  // the CPU sampler's last regions in the interval's snapshots
+    std::uint32_t points = 0;    // points stored
+    std::uint32_t lastBlock = 0, lastSlot = 0;  // where the last of them is
+  };
+
+  // The points of one release or one step of many particles, slot by slot: each step's points go
+  // to consecutive memory instead of one growing array per particle (scattered writes).
+  static constexpr std::uint32_t kNoParticle = ~0u;  // a slot whose particle made no point
+  struct PointBlock {
+    std::vector<std::uint32_t> particles;
     std::vector<glm::vec3> positions, vectors;
     std::vector<double> times;
-    std::vector<float> channels;
+    std::vector<float> channels;  // channelNames.size() per slot
   };
 
   void release(std::span<const std::size_t> due, const Snapshot& a, const Snapshot& b);
@@ -102,8 +111,10 @@ class PathlineTracer {
   void sampleAt(const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
                 std::span<const double> times, std::span<const std::size_t> owners,
                 std::span<TimeSample> out);
-  void appendPoint(Particle& particle, const Snapshot& a, const Snapshot& b,
-                   const TimeSample& s) const;
+  // A new block of `slots` slots, each empty until storePoint() fills it.
+  PointBlock& newBlock(std::size_t slots);
+  void storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a, const Snapshot& b,
+                  const TimeSample& s);
   TraceSet emptySet() const;
 
   PathlineOptions options_;
@@ -111,6 +122,7 @@ class PathlineTracer {
   std::vector<std::string> channelNames_;
   std::size_t seedCount_ = 0;
   std::vector<Particle> particles_;
+  std::vector<PointBlock> blocks_;
   double time_;
   const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
   std::unique_ptr<SampleScratch> scratch_;
