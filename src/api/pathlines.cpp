@@ -6,6 +6,7 @@
 #include <cmath>
 #include <future>
 #include <memory>
+#include <set>
 #include <tbb/info.h>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -109,7 +110,10 @@ flow::VectorBatchSampler samplerOf(gpu::VectorProbe* probe) {
 
 std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
   std::vector<SnapshotFile> series;
-  for (const std::string& path : formats::expandSnapshotPatterns(patterns)) {
+  std::set<std::string> datasets;
+  for (const std::string& file : formats::expandSnapshotPatterns(patterns)) {
+    const std::string path = formats::snapshotDataset(file);
+    if (!datasets.insert(path).second) continue;  // another file of a dataset already listed
     const std::optional<double> time = formats::snapshotTime(path);
     if (!time)
       throw InputError(path, "the file states no time, so it cannot take a place in a series");

@@ -106,6 +106,21 @@ std::optional<double> snapshotTime(const std::string& input) {
   throw InputError(input, "unknown input format");
 }
 
+std::string snapshotDataset(const std::string& path) {
+  const fs::path file(path);
+  const std::string name = file.filename().string();
+  const std::size_t dot = name.find('.');
+  if (dot == std::string::npos || dot == 0) return path;
+  const fs::path stem = file.parent_path() / name.substr(0, dot);
+  std::error_code error;
+  if (!fs::is_regular_file(stem, error)) return path;
+  try {
+    return detectFormat(stem.string()) == Format::Enzo ? stem.string() : path;
+  } catch (const InputError&) {
+    return path;  // the stem is no dataset: `path` stands for itself
+  }
+}
+
 std::vector<std::string> expandSnapshotPatterns(std::span<const std::string> patterns) {
   std::vector<std::string> paths;
   std::set<std::string> seen;

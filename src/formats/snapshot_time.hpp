@@ -17,6 +17,11 @@ namespace amrstream::formats {
 // problem for a missing file, an unknown format or a malformed time (or header).
 std::optional<double> snapshotTime(const std::string& input);
 
+// The dataset `path` belongs to: for a file named after an Enzo parameter file beside it
+// (DD0010/data0010.hierarchy, .harrays, .cpu0000, .boundary, .procmap, ...), that parameter file;
+// otherwise `path` itself. A glob such as 'DD*/data*' then names each Enzo dataset once.
+std::string snapshotDataset(const std::string& path);
+
 // Each argument in turn: an existing path (file or directory, such as an AMReX plotfile) or a
 // builtin:KIND input is kept as it is; anything else is a glob(3) pattern replaced by its matches
 // in glob's sorted order. A path named again (also through another pattern) is dropped, the first

@@ -73,6 +73,16 @@ TEST_F(PathlinesCli, RunsTheRealGerrisSeriesFromItsFiles) {
   EXPECT_THAT(r.output, HasSubstr("max time (7): 32"));
 }
 
+// 'DD*/name*' matches an Enzo dataset's parameter file and all the files named after it: they
+// are one snapshot, so one Enzo output is a series of one.
+TEST_F(PathlinesCli, AnEnzoOutputsFilesAreOneSnapshot) {
+  const fs::path dd = fs::path(AMRSTREAM_REAL_DATA_DIR) / "enzo-moving7" / "DD0010";
+  if (!fs::exists(dd)) GTEST_SKIP() << "the Enzo output is not at " << dd;
+  const Outcome r = run("pathlines '" + (dd / "moving7_0010*").string() + "' --out " + path("e.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("a series needs two snapshots or more; 1 given"));
+}
+
 TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
   generateSwirl(2);
   Outcome r = run("pathlines " + path("swirl_0000.exa") + " --out " + path("x.vtp"));

@@ -75,6 +75,20 @@ TEST(SnapshotTimeReal, EnzoParameterFileAndItsSiblingsGiveTheReadersTime) {
   }
 }
 
+// A glob over an Enzo output directory matches the parameter file and every file named after
+// it, readable or not (.boundary, .procmap): all stand for the one dataset.
+TEST(SnapshotTimeReal, EveryFileOfAnEnzoDatasetStandsForItsParameterFile) {
+  const fs::path parameters = kRealDataDir / "enzo-moving7" / "DD0010" / "moving7_0010";
+  if (!fs::exists(parameters)) GTEST_SKIP() << absent(parameters);
+  const std::vector<std::string> files =
+      expandSnapshotPatterns(std::vector<std::string>{parameters.string() + "*"});
+  ASSERT_EQ(files.size(), 7u);  // the parameter file, .boundary, .boundary.hdf, .cpu0000, ...
+  for (const std::string& file : files) EXPECT_EQ(snapshotDataset(file), parameters.string());
+  const fs::path gerris = kRealDataDir / "gerris-ring" / "ring-end.txt";
+  EXPECT_EQ(snapshotDataset(gerris.string()), gerris.string());
+  EXPECT_EQ(snapshotDataset("builtin:abc"), "builtin:abc");
+}
+
 TEST(SnapshotTimeReal, AmrexPlotfileGivesTheReadersTime) {
   const fs::path plotfile = kRealDataDir / "amrex-pelelmex-3d" / "example_plt_3d";
   if (!fs::exists(plotfile)) GTEST_SKIP() << absent(plotfile);
