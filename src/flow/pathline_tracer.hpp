@@ -1,6 +1,7 @@
 #pragma once
-// Pathlines and streaklines through a time series of AMR snapshots, the CPU reference
-// (docs/architecture.md, "Pathlines"): RK4 in physical time and physical coordinates; each
+// Pathlines and streaklines through a time series of AMR snapshots (docs/architecture.md,
+// "Pathlines"), on the CPU or with a GPU backend's samples: RK4 in physical time and physical
+// coordinates; each
 // stage's vector is the linear interpolation in time of the two snapshots that bracket the
 // stage's time, each reconstructed on its own cells with its own interpolant. The tracer holds
 // no snapshot: advance() gets the two of one interval, so a caller keeps two resident and reads
@@ -82,7 +83,7 @@ class PathlineTracer {
     std::uint32_t seed = 0;
     double releaseTime = 0.0;
     bool released = false;
-    int reason = 0;  // AMRSTREAM_REASON_*; RUNNING while it goes on
+    int reason = AMRSTREAM_REASON_RUNNING;  // AMRSTREAM_REASON_*
     glm::vec3 position{0.0f};
     double time = 0.0;
     std::uint32_t steps = 0;
