@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <map>
 #include <memory>
 
 #include "amrstream/pathlines.hpp"
@@ -11,7 +10,6 @@
 #include "output/vtp_writer.hpp"
 #include "progress.hpp"
 #include "trace_job.hpp"
-#include "util/input_error.hpp"
 #include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
@@ -30,16 +28,6 @@ struct PathlinesOptions {
   std::string out = "pathlines.vtp";
   std::string compression = "zlib";
 };
-
-std::string reasonHistogram(const flow::TraceSet& lines) {
-  std::map<int, std::size_t> reasons;
-  for (const std::int32_t reason : lines.reasons) ++reasons[reason];
-  std::string histogram;
-  for (const auto& [reason, count] : reasons)
-    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
-                             reason, withCommas(count));
-  return histogram;
-}
 
 void runPathlines(const PathlinesOptions& o) {
   const std::vector<SnapshotFile> series = listSnapshots(o.snapshots);
@@ -67,10 +55,9 @@ void runPathlines(const PathlinesOptions& o) {
 
   const bool streaks = options.releaseEvery > 0.0;
   const flow::TraceSet lines = streaks ? tracer.streaklines() : tracer.pathlines();
-  const flow::TraceSet paths = streaks ? tracer.pathlines() : flow::TraceSet{};
   fmt::print("particles  {} ({} seeds), {} steps; reasons {}\n",
              withCommas(tracer.particleCount()), withCommas(report.seedCount),
-             withCommas(report.steps), reasonHistogram(streaks ? paths : lines));
+             withCommas(report.steps), reasonHistogram(tracer.reasons()));
   const double readBuild = report.readSeconds + report.buildSeconds;
   fmt::print("time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} cells), "
              "device setup {:.2f} s, tracing {:.2f} s ({:.3g} particle-steps/s), waiting for "

@@ -14,6 +14,16 @@ namespace amrstream::cli {
 
 void printLine(const std::string& line) { fmt::print("{}\n", line); }
 
+std::string reasonHistogram(std::span<const std::int32_t> reasons) {
+  std::map<int, std::size_t> counts;
+  for (const std::int32_t reason : reasons) ++counts[reason];
+  std::string histogram;
+  for (const auto& [reason, count] : counts)
+    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
+                             reason, withCommas(count));
+  return histogram;
+}
+
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   Stopwatch clock;
   PreparedInput input;
@@ -88,19 +98,11 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
   const flow::TraceSet& traces = stored.lines();
 
   std::size_t steps = 0;
-  std::map<int, std::size_t> reasons;
-  for (std::size_t i = 0; i < traces.lineCount(); ++i) {
-    steps += traces.steps[i];
-    ++reasons[traces.reasons[i]];
-  }
-  std::string histogram;
-  for (const auto& [reason, count] : reasons)
-    histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
-                             reason, withCommas(count));
+  for (const std::uint32_t lineSteps : traces.steps) steps += lineSteps;
   fmt::print("steps      {} taken in {} lines, {:.1f} per line\n", withCommas(steps),
              withCommas(traces.lineCount()),
              double(steps) / double(std::max<std::size_t>(1, traces.lineCount())));
-  fmt::print("reasons    {}\n", histogram);
+  fmt::print("reasons    {}\n", reasonHistogram(traces.reasons));
   fmt::print("time       {:.3f} s tracing, {:.3g} particle-steps/s{}\n", traceSeconds,
              double(steps) / std::max(traceSeconds, 1e-9),
              report.setupSeconds > 0.0

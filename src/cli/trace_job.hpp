@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -72,5 +73,8 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
 
 // Prints a line of the library's log on stdout.
 void printLine(const std::string& line);
+
+// "out of domain (1): 12, max steps (5): 244": how many lines ended for each reason.
+std::string reasonHistogram(std::span<const std::int32_t> reasons);
 
 }  // namespace amrstream::cli

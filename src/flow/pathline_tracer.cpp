@@ -338,10 +338,11 @@ void PathlineTracer::finish() {
     if (p.released && p.reason == AMRSTREAM_REASON_RUNNING) p.reason = AMRSTREAM_REASON_SERIES_END;
 }
 
-std::size_t PathlineTracer::runningCount() const {
-  return std::size_t(std::count_if(particles_.begin(), particles_.end(), [](const Particle& p) {
-    return p.released && p.reason == AMRSTREAM_REASON_RUNNING;
-  }));
+std::vector<std::int32_t> PathlineTracer::reasons() const {
+  std::vector<std::int32_t> reasons;
+  for (const Particle& p : particles_)
+    if (p.released) reasons.push_back(p.reason);
+  return reasons;
 }
 
 std::uint64_t PathlineTracer::pointCount() const {

@@ -68,15 +68,14 @@ class PathlineTracer {
   // One line per particle, in order of release and then of seed; IntegrationTime is the
   // physical time of each point.
   TraceSet pathlines() const;
-  // One line per seed through its particles still running at `time` (the end), from the newest
+  // One line per seed through its particles that reached the last interval's end, from the newest
   // (at the seed) to the oldest; IntegrationTime is each particle's age.
   TraceSet streaklines() const;
 
   std::size_t particleCount() const { return particles_.size(); }
-  std::size_t runningCount() const;
+  std::vector<std::int32_t> reasons() const;  // of the released particles, in line order
   std::uint64_t pointCount() const;
   std::uint64_t stepCount() const;
-  double time() const { return time_; }  // where the last interval ended
 
  private:
   struct Particle {
@@ -124,7 +123,7 @@ class PathlineTracer {
   std::size_t seedCount_ = 0;
   std::vector<Particle> particles_;
   std::vector<PointBlock> blocks_;
-  double time_;
+  double time_;  // where the last interval ended
   const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;

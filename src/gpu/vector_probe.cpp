@@ -80,18 +80,18 @@ void VectorProbe::reserve(std::size_t points) {
 
 void VectorProbe::sample(std::span<const glm::vec3> cellPoints,
                          std::span<flow::VectorSample> out) {
+  reserve(std::min(kPointsPerDispatch, cellPoints.size()));
+  flow::TraceOptions options;
+  options.keepHistory = false;
+  shared::TraceParams params = flow::makeTraceParams(*volume_, options);
   for (std::size_t first = 0; first < cellPoints.size(); first += kPointsPerDispatch) {
     const std::size_t n = std::min(kPointsPerDispatch, cellPoints.size() - first);
-    reserve(std::max(n, std::min(kPointsPerDispatch, cellPoints.size())));
     Stopwatch clock;
     auto* points = reinterpret_cast<glm::vec3*>(points_.mapped().data());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384), [&](const auto& range) {
       std::memcpy(points + range.begin(), cellPoints.data() + first + range.begin(),
                   (range.end() - range.begin()) * sizeof(glm::vec3));
     });
-    flow::TraceOptions options;
-    options.keepHistory = false;
-    shared::TraceParams params = flow::makeTraceParams(*volume_, options);
     params.lineCount = static_cast<std::uint32_t>(n);
     std::memcpy(params_.mapped().data(), &params, sizeof(params));
     times_.writeSeconds += clock.seconds();
