@@ -1,6 +1,10 @@
 #include "amrstream/trace_settings.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "util/host_memory.hpp"
 #include "util/input_error.hpp"
@@ -47,18 +51,42 @@ std::string directionName(flow::Direction direction) {
 
 float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
                      const flow::VectorVolume& volume) {
-  float step = flow::TraceOptions{}.stepSize;
   if (requested) {
-    step = *requested;
-  } else if (mode == flow::StepMode::Time) {
-    float maxSpeed = 0.0f;
-    for (const glm::vec3& v : volume.values) maxSpeed = std::max(maxSpeed, glm::length(v));
-    const glm::dvec3 s = volume.transform.spacing;
-    const double finest = std::min(s.x, std::min(s.y, s.z));
-    step = maxSpeed > 0.0f ? float(0.25 * finest / maxSpeed) : 1.0f;
+    if (!(*requested > 0.0f) || !std::isfinite(*requested))
+      throw InputError("--step-size", fmt::format("{} is not a positive finite step", *requested));
+    return *requested;
   }
-  if (!(step > 0.0f)) throw InputError("--step-size", "the step size must be positive");
-  return step;
+  if (mode != flow::StepMode::Time) return flow::TraceOptions{}.stepSize;
+  // A quarter of the finest cell crossed at the maximum speed (in double: |v|² of a float
+  // component near 1e18 overflows float).
+  double maxSpeed = 0.0;
+  for (const glm::vec3& v : volume.values) maxSpeed = std::max(maxSpeed, glm::length(glm::dvec3(v)));
+  const glm::dvec3 s = volume.transform.spacing;
+  const double finest = std::min(s.x, std::min(s.y, s.z));
+  const double step = maxSpeed > 0.0 ? 0.25 * finest / maxSpeed : 1.0;
+  if (!(step >= double(std::numeric_limits<float>::min()) &&
+        step <= double(std::numeric_limits<float>::max())))
+    throw InputError(volume.vectorName,
+                     fmt::format("the default time step (a quarter of the finest cell, {:g}, "
+                                 "crossed at the maximum speed, {:g}) is {:g}, outside float32's "
+                                 "range: give --step-size or rescale the field",
+                                 finest, maxSpeed, step));
+  return float(step);
+}
+
+// The curl is a difference of values over a cell width: it must stay finite in float32.
+void checkVorticityRange(const flow::VectorVolume& volume) {
+  float maxComponent = 0.0f;
+  for (const glm::vec3& v : volume.values)
+    maxComponent = std::max({maxComponent, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  const glm::dvec3 s = volume.transform.spacing;
+  const double finest = std::min(s.x, std::min(s.y, s.z));
+  const double bound = 4.0 * double(maxComponent) / finest;
+  if (!(bound <= 1e36))
+    throw InputError("--vorticity",
+                     fmt::format("'{}' reaches {:g} over a finest cell of {:g}: its curl would "
+                                 "overflow float32; rescale the field or its coordinates",
+                                 volume.vectorName, maxComponent, finest));
 }
 
 flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume& volume) {
@@ -75,6 +103,7 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.maxTime = s.maxTime;
   options.direction = parseDirection(s.direction);
   options.vorticity = s.vorticity;
+  if (s.vorticity) checkVorticityRange(volume);
   options.memoryBudget = s.memoryBudget;
   options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
   return options;

@@ -131,6 +131,30 @@ std::vector<std::size_t> AmrField::cellsPerLevel() const {
   return counts;
 }
 
+// Physical positions and widths are written as float32: the transform must map the cells into
+// float's normal range, or positions become inf or collapse to zero.
+void AmrField::validateTransform() const {
+  const WorldTransform& t = transform_;
+  const double smallest = std::numeric_limits<float>::min(), largest = 1e37;
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(t.origin[a]))
+      throw InputError(source_, fmt::format("the origin's {} coordinate is {}", "xyz"[a],
+                                            t.origin[a]));
+    if (!(t.spacing[a] >= smallest && t.spacing[a] <= largest))
+      throw InputError(source_,
+                       fmt::format("the finest cell width along {} is {:g}; it must lie in "
+                                   "[{:g}, {:g}] (float32 positions)",
+                                   "xyz"[a], t.spacing[a], smallest, largest));
+    for (int corner : {bounds_.lower[a], bounds_.upper[a]}) {
+      const double p = t.origin[a] + t.spacing[a] * double(corner);
+      if (!(std::abs(p) <= largest))
+        throw InputError(source_, fmt::format("the domain reaches {:g} along {}, beyond the "
+                                              "float32 range of the outputs (|x| <= {:g})",
+                                              p, "xyz"[a], largest));
+    }
+  }
+}
+
 void AmrField::validate() {
   const std::size_t n = lowers_.size();
   if (n == 0) throw InputError(source_, "the dataset has no cells");
@@ -169,18 +193,27 @@ void AmrField::validate() {
                                    c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
   }
 
-  CellBox box{glm::ivec3(std::numeric_limits<int>::max()),
-              glm::ivec3(std::numeric_limits<int>::min())};
+  // In 64 bits: a corner near INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.
+  glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max());
+  glm::i64vec3 upper(std::numeric_limits<std::int64_t>::min());
   for (std::size_t i = 0; i < n; ++i) {
-    box.lower = glm::min(box.lower, lowers_[i]);
-    box.upper = glm::max(box.upper, lowers_[i] + cellWidth(levels_[i]));
+    lower = glm::min(lower, glm::i64vec3(lowers_[i]));
+    upper = glm::max(upper, glm::i64vec3(lowers_[i]) + std::int64_t(cellWidth(levels_[i])));
   }
-  const glm::ivec3 extent = box.upper - box.lower;
-  if (glm::any(glm::greaterThanEqual(extent, glm::ivec3(1 << kMaxExtentBits))))
+  const glm::i64vec3 extent = upper - lower;
+  const std::int64_t maxExtent = (std::int64_t(1) << kMaxExtentBits) - 1;
+  if (glm::any(glm::greaterThan(extent, glm::i64vec3(maxExtent))))
     throw InputError(source_, fmt::format("the cells span {}x{}x{} finest cells; at most {} per "
                                           "axis are supported",
-                                          extent.x, extent.y, extent.z, (1 << kMaxExtentBits) - 1));
+                                          extent.x, extent.y, extent.z, maxExtent));
+  if (glm::any(glm::greaterThan(upper, glm::i64vec3(std::numeric_limits<int>::max()))))
+    throw InputError(source_, fmt::format("the cells reach {},{},{}, beyond the largest "
+                                          "supported corner coordinate {}",
+                                          upper.x, upper.y, upper.z,
+                                          std::numeric_limits<int>::max()));
+  const CellBox box{glm::ivec3(lower), glm::ivec3(upper)};
   bounds_ = box;
+  validateTransform();
 
   // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
   // inside a coarser one finds that cell's aligned corner in the coarser level's set.

@@ -83,6 +83,7 @@ class AmrField {
 
  private:
   void validate();  // also sets bounds_
+  void validateTransform() const;
 
   std::vector<glm::ivec3> lowers_;
   std::vector<std::uint8_t> levels_;

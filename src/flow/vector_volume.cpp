@@ -9,6 +9,7 @@
 #include "cell_gradients.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
+#include "value_range.hpp"
 
 namespace amrstream::flow {
 
@@ -57,6 +58,7 @@ std::string channelList(const bricks::AmrField& field) {
 
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const VolumeOptions& options, VolumeBuildTimes* times) {
+  checkArithmeticRange(field, vector, options.pointData);
   VolumeBuildTimes local;
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
