@@ -7,6 +7,7 @@
 #include <numeric>
 #include <random>
 
+#include "sampler.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::flow {
@@ -37,6 +38,43 @@ SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts) {
         seeds.points.push_back(lower + t * (upper - lower));
         seeds.origins.push_back(fmt::format("--seed-grid point ({}, {}, {})", i, j, k));
       }
+  return seeds;
+}
+
+bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits) {
+  const std::int32_t region = locateRegion(volume, glm::vec3(cellUnits));
+  if (region < 0) return false;
+  const shared::Region& r = volume.regions.regions[std::size_t(region)];
+  for (std::uint32_t i = 0; i < r.brickCount; ++i) {
+    const shared::Brick& b = volume.bricks[volume.regions.regionBricks[r.brickOffset + i]];
+    const glm::dvec3 lower(b.lower), upper = lower + glm::dvec3(b.size) * double(1 << b.level);
+    if (glm::all(glm::greaterThanEqual(cellUnits, lower)) && glm::all(glm::lessThan(cellUnits, upper)))
+      return true;
+  }
+  return false;
+}
+
+SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::dvec3 upper,
+                            std::size_t count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  SeedList seeds;
+  const std::size_t maxDraws = 1000 * std::max<std::size_t>(count, 1);
+  std::size_t draws = 0;
+  while (seeds.points.size() < count) {
+    if (draws == maxDraws)
+      throw InputError("random seeds",
+                       fmt::format("only {} of {} random points in the box ({:g}, {:g}, {:g}) .. "
+                                   "({:g}, {:g}, {:g}) fell inside cells: the box is nearly all "
+                                   "holes; give a --seed-box around the data or --seed-density",
+                                   seeds.points.size(), draws, lower.x, lower.y, lower.z, upper.x,
+                                   upper.y, upper.z));
+    ++draws;
+    const glm::dvec3 t(unitRandom(rng), unitRandom(rng), unitRandom(rng));
+    const glm::dvec3 p = lower + t * (upper - lower);
+    if (!insideACell(volume, volume.transform.toCellUnits(p))) continue;
+    seeds.origins.push_back(fmt::format("random seed #{}", seeds.points.size()));
+    seeds.points.push_back(p);
+  }
   return seeds;
 }
 

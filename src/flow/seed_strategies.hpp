@@ -9,6 +9,7 @@
 
 #include "bricks/amr_field.hpp"
 #include "seeds.hpp"
+#include "vector_volume.hpp"
 
 namespace amrstream::flow {
 
@@ -18,6 +19,16 @@ SeedList seedsAlongLine(glm::dvec3 from, glm::dvec3 to, std::size_t count);
 // Cell-centred regular grid of counts.x * counts.y * counts.z points in [lower, upper]; an axis
 // with count 1 gets the box's middle, so a zero-thickness box with one count is a plane.
 SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts);
+
+// True when `cellUnits` (finest-cell units) lies inside one of the volume's cells, not in a hole
+// of the domain nor only in the half-cell padding of a brick's domain.
+bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits);
+
+// `count` seeds uniform in the physical box [lower, upper) restricted to the cells: points that
+// fall in holes are drawn again. With no holes in the box this equals randomSeedsInBox. Throws
+// InputError when under 1 in 1000 draws lands in a cell (a box that is nearly all holes).
+SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::dvec3 upper,
+                            std::size_t count, std::uint64_t seed);
 
 struct DensestCellsOptions {
   std::string channel;       // the scalar, e.g. "dens"

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "flow_test_support.hpp"
 #include "input_error_of.hpp"
 #include "random_amr.hpp"
 
@@ -15,6 +16,53 @@ namespace amrstream::flow {
 namespace {
 
 using ::testing::HasSubstr;
+
+// Brute force over the field's cells: the oracle for insideACell.
+bool insideSomeCell(const bricks::AmrField& field, glm::dvec3 p) {
+  for (std::size_t i = 0; i < field.cellCount(); ++i) {
+    const glm::dvec3 lower(field.lowers()[i]);
+    const double width = bricks::AmrField::cellWidth(field.levels()[i]);
+    if (glm::all(glm::greaterThanEqual(p, lower)) && glm::all(glm::lessThan(p, lower + width)))
+      return true;
+  }
+  return false;
+}
+
+TEST(SeedStrategies, RandomSeedsLandInCellsNeverInHoles) {
+  // Two 4^3 blocks at x = 0..4 and 8..12: the domain box [0, 12) has a hole at 4 <= x < 8.
+  const bricks::AmrField field = testing::twoBlocksWithAGap();
+  const VectorVolume volume = testing::volumeOf(field);
+  const SeedList seeds = randomSeedsInCells(volume, {0, 0, 0}, {12, 4, 4}, 500, 5);
+  ASSERT_EQ(seeds.points.size(), 500u);
+  std::size_t inSecondBlock = 0;
+  for (const glm::dvec3& p : seeds.points) {
+    ASSERT_TRUE(insideSomeCell(field, p)) << p.x << " " << p.y << " " << p.z;
+    inSecondBlock += p.x >= 8.0;
+  }
+  EXPECT_GT(inSecondBlock, 150u);  // both blocks are seeded, about half each
+  EXPECT_LT(inSecondBlock, 350u);
+  for (double x = 0.0; x < 12.0; x += 0.25) {
+    const glm::dvec3 p(x, 1.3, 2.7);
+    EXPECT_EQ(insideACell(volume, p), insideSomeCell(field, p)) << x;
+  }
+}
+
+TEST(SeedStrategies, RandomSeedsInCellsEqualTheBoxDrawWithoutHoles) {
+  const VectorVolume volume = testing::volumeOf(testing::uniformGrid(4, [](glm::dvec3) {
+    return glm::vec3(1.0f);
+  }));
+  const SeedList inCells = randomSeedsInCells(volume, {0, 0, 0}, {3.9, 3.9, 3.9}, 100, 11);
+  const SeedList inBox = randomSeedsInBox({0, 0, 0}, {3.9, 3.9, 3.9}, 100, 11);
+  EXPECT_EQ(inCells.points, inBox.points);
+}
+
+TEST(SeedStrategies, RandomSeedsInABoxOfHolesAreRefusedByName) {
+  const VectorVolume volume = testing::volumeOf(testing::twoBlocksWithAGap());
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                randomSeedsInCells(volume, {4.6, 0, 0}, {7.4, 4, 4}, 10, 1);
+              }),
+              HasSubstr("the box is nearly all holes"));
+}
 
 TEST(SeedStrategies, RakeIsEvenlySpacedWithBothEnds) {
   const SeedList rake = seedsAlongLine({0, 0, 0}, {1, 2, 4}, 5);
