@@ -151,6 +151,16 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
                                      ctx.deviceName()));
   }
 
+  MemoryLedger& ledger = ctx.memoryLedger();
+  std::optional<MemoryCharge> charge = ledger.charge(requirements.size);
+  if (!charge) {
+    throwAllocationError(tooLarge, name, size,
+                         fmt::format("the limit AMRSTREAM_DEVICE_MEMORY_LIMIT of {} would be "
+                                     "exceeded ({} in use)",
+                                     formatBytes(*ledger.limit()), formatBytes(ledger.used())));
+  }
+  charge_ = std::move(*charge);
+
   VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
   flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
   VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
@@ -188,6 +198,7 @@ Buffer::Buffer(Buffer&& other) noexcept
       device_(std::exchange(other.device_, VK_NULL_HANDLE)),
       coherent_(std::exchange(other.coherent_, true)),
       buffer_(std::move(other.buffer_)),
+      charge_(std::move(other.charge_)),
       memory_(std::move(other.memory_)),
       mapped_(std::exchange(other.mapped_, nullptr)),
       address_(std::exchange(other.address_, 0)) {}
@@ -201,6 +212,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     std::swap(device_, moved.device_);
     std::swap(coherent_, moved.coherent_);
     std::swap(buffer_, moved.buffer_);
+    std::swap(charge_, moved.charge_);
     std::swap(memory_, moved.memory_);
     std::swap(mapped_, moved.mapped_);
     std::swap(address_, moved.address_);

@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "vk/memory_ledger.hpp"
 #include "vk/unique_handle.hpp"
 
 namespace amrstream::vk {
@@ -69,6 +70,7 @@ class Buffer {
   // Destroyed in reverse: the memory is freed (and implicitly unmapped) before the buffer is
   // destroyed, which the specification allows as long as the buffer is not used in between.
   UniqueHandle<VkBuffer> buffer_;
+  MemoryCharge charge_;  // released after the memory is freed
   UniqueHandle<VkDeviceMemory> memory_;
   std::byte* mapped_ = nullptr;
   VkDeviceAddress address_ = 0;

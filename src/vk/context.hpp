@@ -23,6 +23,7 @@
 #include "vk/device_functions.hpp"
 #include "vk/device_report.hpp"
 #include "vk/device_support.hpp"
+#include "vk/memory_ledger.hpp"
 #include "vk/presentation.hpp"
 #include "vk/unique_handle.hpp"
 #include "vk/validation_log.hpp"
@@ -60,6 +61,8 @@ class Context {
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return properties_.memory; }
   std::vector<VkDeviceSize> memoryHeapSizes() const;
   VkDeviceSize maxMemoryAllocationSize() const { return properties_.maxMemoryAllocationSize; }
+  // Every buffer's memory is charged here (see memory_ledger.hpp for the optional limit).
+  MemoryLedger& memoryLedger() const { return *memoryLedger_; }
 
   // The requested capabilities plus those they imply (see Capability::AccelerationStructure).
   CapabilitySet capabilities() const { return capabilities_; }
@@ -83,6 +86,7 @@ class Context {
   Context() = default;
 
   std::shared_ptr<ValidationLog> validationLog_;
+  std::shared_ptr<MemoryLedger> memoryLedger_;
   UniqueHandle<VkInstance> instance_;
   InstanceFunctions instanceFunctions_;
   UniqueHandle<VkDebugUtilsMessengerEXT> messenger_;

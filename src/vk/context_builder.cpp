@@ -108,6 +108,7 @@ Context ContextBuilder::build() const {
   Context ctx;
   const bool validation = validation_ || synchronizationValidation_;
   if (validation) ctx.validationLog_ = std::make_shared<ValidationLog>();
+  ctx.memoryLedger_ = std::make_shared<MemoryLedger>(MemoryLedger::limitFromEnvironment());
 
   Instance instance = createInstance(
       {validation, synchronizationValidation_, validation || debugNames_, ctx.validationLog_.get(),
