@@ -117,6 +117,10 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.period = glm::vec3(volume.period());
   for (int a = 0; a < 3; ++a) params.periodicAxes |= volume.periodic[a] ? 1u << a : 0u;
   params.stepSize = options.stepSize;
+  params.integrator = static_cast<int>(options.integrator);
+  params.toleranceSquared = options.tolerance * options.tolerance;
+  params.minStep = options.minStep;
+  params.maxStep = options.maxStep;
   params.maxSteps = options.maxSteps;
   params.terminalSpeed = options.terminalSpeed;
   params.maxLength = options.maxLength;

@@ -22,6 +22,13 @@ enum class StepMode : int {
   Arc = AMRSTREAM_STEP_ARC,
 };
 
+enum class Integrator : int {
+  Rk4 = AMRSTREAM_INTEGRATOR_RK4,
+  Rk2 = AMRSTREAM_INTEGRATOR_RK2,
+  Euler = AMRSTREAM_INTEGRATOR_EULER,
+  Rk45 = AMRSTREAM_INTEGRATOR_RK45,
+};
+
 // vtkStreamTracer's IntegrationDirection: Both traces each seed forward and backward, two lines.
 enum class Direction { Forward, Backward, Both };
 
@@ -29,6 +36,12 @@ enum class Direction { Forward, Backward, Both };
 struct TraceOptions {
   StepMode stepMode = StepMode::Cell;
   float stepSize = 0.25f;         // h: cell widths (cell, arc) or physical time (time)
+  Integrator integrator = Integrator::Rk4;
+  // rk45 only: the error allowed per step, in finest cell widths of the step's region, and the
+  // bounds of the adaptive step (in stepSize's units; stepSize is the first step tried).
+  float tolerance = 1e-4f;
+  float minStep = 0.0025f;
+  float maxStep = 1.0f;
   std::uint32_t maxSteps = 1000;  // a line holds at most maxSteps + 1 points
   float terminalSpeed = 1e-12f;   // stagnation below this speed (physical units)
   float maxLength = 0.0f;         // physical arc length limit; 0 means none

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "line_steps.hpp"
 
 namespace amrstream::flow {
 
@@ -12,19 +13,17 @@ namespace {
 // parameterStep() is the advance of |IntegrationTime| (physical time, or physical arc length in
 // arc mode) and direction() the RK4 stage vector in cell units; both read the same TraceParams
 // values as their GLSL twins.
-float parameterStep(const shared::TraceParams& params, const VectorSample& s) {
-  return params.stepMode == AMRSTREAM_STEP_TIME
-             ? params.stepSize
-             : params.stepSize * s.cellWidth * params.physicalCellWidth;
+float parameterStep(const shared::TraceParams& params, const VectorSample& s, float h) {
+  return params.stepMode == AMRSTREAM_STEP_TIME ? h : h * s.cellWidth * params.physicalCellWidth;
 }
 
-glm::vec3 direction(const shared::TraceParams& params, const VectorSample& s) {
+glm::vec3 direction(const shared::TraceParams& params, const VectorSample& s, float h) {
   glm::vec3 v = s.value;
   if (params.stepMode == AMRSTREAM_STEP_ARC) {
     const float speed = glm::length(v);
     v = speed > 0.0f ? v / speed : glm::vec3(0.0f);
   }
-  return parameterStep(params, s) * v * params.cellsPerPhysical;
+  return parameterStep(params, s, h) * v * params.cellsPerPhysical;
 }
 
 // The reason a stage sample ends the trace, or AMRSTREAM_REASON_RUNNING.
@@ -58,6 +57,7 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
   glm::vec3 x = state.position;
   float time = state.time, length = state.arcLength;
   std::uint32_t steps = state.steps, emitted = 0;
+  float nextStep = state.stepSize;
   VectorSample s = sample(x);
   if (steps == 0 && params.keepHistory) {
     emit(x, time, s);
@@ -80,26 +80,27 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     }
     if (taken == params.roundSteps) break;  // paused; the next round goes on from here
 
-    // The last step before --max-time is shortened to end on it.
-    const float advance = parameterStep(params, s);
+    // The last step before --max-time is shortened to end on it: the fixed-step integrators
+    // scale their stage vectors, rk45 starts from the shortened step.
+    const bool adaptive = params.integrator == AMRSTREAM_INTEGRATOR_RK45;
+    float h = adaptive && nextStep > 0.0f ? nextStep : params.stepSize;
+    const float advance = parameterStep(params, s, h);
     float scale = sign;
-    const bool endsOnMaxTime = params.maxTime > 0.0f && std::abs(time) + advance > params.maxTime;
-    if (endsOnMaxTime) scale = sign * ((params.maxTime - std::abs(time)) / advance);
+    bool endsOnMaxTime = params.maxTime > 0.0f && std::abs(time) + advance > params.maxTime;
+    const float remaining = (params.maxTime - std::abs(time)) / advance;
+    if (endsOnMaxTime && adaptive) h *= remaining;
+    if (endsOnMaxTime && !adaptive) scale = sign * remaining;
 
-    const glm::vec3 k1 = scale * direction(params, s);
-    const VectorSample s2 = sample(x + 0.5f * k1);
-    if ((reason = sampleFailure(s2))) break;
-    const glm::vec3 k2 = scale * direction(params, s2);
-    const VectorSample s3 = sample(x + 0.5f * k2);
-    if ((reason = sampleFailure(s3))) break;
-    const glm::vec3 k3 = scale * direction(params, s3);
-    const VectorSample s4 = sample(x + k3);
-    if ((reason = sampleFailure(s4))) break;
-    const glm::vec3 k4 = scale * direction(params, s4);
-    const glm::vec3 unwrapped = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
+    const auto stage = [&](const VectorSample& at, float step) {
+      return scale * direction(params, at, step);
+    };
+    const StepOutcome step = adaptive ? dormandPrinceStep(params, x, s, h, sample, stage)
+                                      : fixedStep(params.integrator, x, s, h, sample, stage);
+    if ((reason = step.reason)) break;
+    endsOnMaxTime = endsOnMaxTime && step.step == h;
+    const glm::vec3 unwrapped = step.unwrapped;
     const glm::vec3 next = wrap(params, unwrapped);
-    const VectorSample sNext = sampleVector(volume, next, &cache);
-    if ((reason = sampleFailure(sNext))) break;
+    const VectorSample sNext = step.next;
 
     if (params.maxLength > 0.0f) {
       const float stepLength = glm::length(params.spacing * (unwrapped - x));
@@ -109,7 +110,9 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
       }
       length += stepLength;
     }
-    time = endsOnMaxTime ? sign * params.maxTime : time + sign * advance;
+    time =
+        endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(params, s, step.step);
+    nextStep = step.nextStep;
     x = next;
     s = sNext;
     ++steps;
@@ -122,7 +125,7 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     emit(x, time, s);
     ++emitted;
   }
-  state = {x, time, length, steps, state.line, sign};
+  state = {x, time, length, steps, state.line, sign, nextStep};
   return {state.line, emitted, steps, reason};
 }
 

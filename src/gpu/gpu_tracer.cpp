@@ -9,8 +9,8 @@
 
 #include "gpu_rounds.hpp"
 #include "morton_order.hpp"
-#include "vector_probe.hpp"
 #include "util/stopwatch.hpp"
+#include "vector_probe.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
@@ -43,11 +43,28 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
 
 GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
                      const KernelSettings& settings)
-    : ctx_(&ctx), volume_(&volume), device_(ctx, gpuBackend(backend), volume, setup_) {
+    : ctx_(&ctx),
+      volume_(&volume),
+      device_(ctx, gpuBackend(backend), volume, setup_),
+      settings_(settings) {
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings);
   roundKernels_ = createRoundKernels(ctx);
   setup_.pipelineSeconds = clock.seconds();
+}
+
+const TraceKernel& GpuTracer::kernelFor(const flow::TraceOptions& options) {
+  if (options.integrator == settings_.integrator) return kernel_;
+  auto found = otherKernels_.find(options.integrator);
+  if (found == otherKernels_.end()) {
+    KernelSettings settings = settings_;
+    settings.integrator = options.integrator;
+    found = otherKernels_
+                .emplace(options.integrator,
+                         createTraceKernel(*ctx_, kernel_.backend, KernelProgram::Trace, settings))
+                .first;
+  }
+  return found->second;
 }
 
 std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const {
@@ -110,7 +127,7 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     clock.restart();
     const std::vector<shared::LineState> ordered =
         threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
-    GpuRounds rounds(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered, options,
+    GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
                      *roundBuffers_, timeKernels_);
     lastRun_.linesSeconds += clock.seconds();
     rounds.runToEnd([&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
@@ -147,8 +164,8 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
   auto buffers =
       std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
                                      volume_->channelCount(), options.vorticity);
-  return std::make_unique<GpuRounds>(*ctx_, kernel_, roundKernels_, device_, *volume_, ordered,
-                                     options, std::move(buffers), timeKernels_);
+  return std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
+                                     ordered, options, std::move(buffers), timeKernels_);
 }
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -85,6 +86,8 @@ class GpuTracer {
   void timeKernels(bool on) { timeKernels_ = on; }
 
  private:
+  // The kernel taking the options' integrator's steps.
+  const TraceKernel& kernelFor(const flow::TraceOptions& options);
   // Output slots for a batch: the budget's, within the device's buffer range.
   std::uint64_t pointSlots(const flow::TraceOptions& options, std::size_t batchLines) const;
 
@@ -92,7 +95,9 @@ class GpuTracer {
   const flow::VectorVolume* volume_;
   TracerSetup setup_;
   VolumeBuffers device_;
-  TraceKernel kernel_;
+  TraceKernel kernel_;  // with settings_.integrator
+  KernelSettings settings_;
+  std::map<flow::Integrator, TraceKernel> otherKernels_;  // created by the first trace needing one
   RoundKernels roundKernels_;
   std::optional<TraceKernel> probe_;            // created by the first locate()
   std::unique_ptr<RoundBuffers> roundBuffers_;  // kept for the next batch or trace that fits

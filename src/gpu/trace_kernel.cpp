@@ -40,20 +40,24 @@ void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
 }
 
 // The kernels' specialization constants: 0 the workgroup size (compute kernels), 1 whether
-// samples test the previous region first (include/sampler.glsl).
+// samples test the previous region first (include/sampler.glsl), 2 the integrator
+// (include/line_round.glsl).
 struct SpecializationValues {
   std::uint32_t workgroupSize;
   VkBool32 useRegionHint;
+  std::int32_t integrator;
 };
-constexpr std::array<VkSpecializationMapEntry, 2> kSpecializationEntries{
+constexpr std::array<VkSpecializationMapEntry, 3> kSpecializationEntries{
     {{0, offsetof(SpecializationValues, workgroupSize), sizeof(std::uint32_t)},
-     {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)}}};
+     {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)},
+     {2, offsetof(SpecializationValues, integrator), sizeof(std::int32_t)}}};
 
 void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
                            std::span<const std::uint32_t> code, const KernelSettings& settings) {
   kernel.workgroupSize =
       std::min(kPreferredWorkgroupSize, ctx.limits().maxComputeWorkGroupInvocations);
-  const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint};
+  const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint,
+                                    static_cast<std::int32_t>(settings.integrator)};
   const VkSpecializationInfo specialization{kSpecializationEntries.size(),
                                             kSpecializationEntries.data(), sizeof(values), &values};
   kernel.pipeline = vk::createComputePipeline(
@@ -64,9 +68,9 @@ void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
 void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
                               std::span<const std::uint32_t> raygen,
                               const KernelSettings& settings) {
-  const SpecializationValues values{0, settings.useRegionHint};
-  const VkSpecializationInfo specialization{1, &kSpecializationEntries[1], sizeof(values),
-                                            &values};
+  const SpecializationValues values{0, settings.useRegionHint,
+                                    static_cast<std::int32_t>(settings.integrator)};
+  const VkSpecializationInfo specialization{2, &kSpecializationEntries[1], sizeof(values), &values};
   vk::RayTracingPipeline created = vk::createProceduralRayTracingPipeline(
       ctx, kernel.pipelineLayout.get(),
       {raygen, spirv(amrstream_spirv_locate_rmiss), spirv(amrstream_spirv_locate_rint),

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "backend.hpp"
+#include "flow/integrator.hpp"
 #include "vk/buffer.hpp"
 #include "vk/pipelines.hpp"
 #include "vk/unique_handle.hpp"
@@ -43,6 +44,8 @@ struct KernelSettings {
   // Samples test the previous sample's region before locating (include/sampler.glsl). The
   // results are the same either way; off, every sample runs the backend's point location.
   bool useRegionHint = true;
+  // The step the kernel takes (include/line_round.glsl): one pipeline per integrator.
+  flow::Integrator integrator = flow::Integrator::Rk4;
 };
 
 // The settings each backend runs with unless told otherwise: the region hint on everywhere.

@@ -343,6 +343,86 @@ TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
   expectGpuMatchesCpu(gpu, cpu, volume);
 }
 
+// Every integrator (rk4 is the rest of this suite), in every step mode and both directions, with
+// history and endpoints only, and rk45's last step landing on --max-time.
+TEST_P(GpuTracerTest, EveryIntegratorMatchesCpu) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 3;
+  layout.rootCells = glm::ivec3(4, 3, 3);
+  const glm::dvec3 centre(16.0, 12.0, 12.0);
+  const bricks::AmrField field = testing::randomAmr(5, layout, [&](glm::dvec3 p) {
+    const glm::dvec3 r = p - centre;  // a rotation with a slow drift along z
+    return glm::vec3(-0.05 * r.y, 0.05 * r.x, 0.02);
+  });
+  const flow::VectorVolume volume = volumeOf(field);
+  for (flow::Integrator integrator :
+       {flow::Integrator::Euler, flow::Integrator::Rk2, flow::Integrator::Rk45}) {
+    for (flow::StepMode mode : {flow::StepMode::Cell, flow::StepMode::Time, flow::StepMode::Arc}) {
+      flow::TraceOptions options;
+      options.integrator = integrator;
+      options.stepMode = mode;
+      options.stepSize = mode == flow::StepMode::Time ? 2.0f : 0.25f;
+      options.minStep = options.stepSize / 100.0f;
+      options.maxStep = options.stepSize * 4.0f;
+      options.tolerance = 1e-4f;
+      options.maxSteps = 100;
+      SCOPED_TRACE(static_cast<int>(integrator) * 10 + static_cast<int>(mode));
+      compare(volume, seedsIn(volume, 32), options);
+    }
+  }
+  flow::TraceOptions options;
+  options.integrator = flow::Integrator::Rk45;
+  options.stepMode = flow::StepMode::Time;
+  options.stepSize = 1.0f;
+  options.minStep = 0.01f;
+  options.maxStep = 4.0f;
+  options.maxTime = 37.3f;
+  compare(volume, seedsIn(volume, 32), options);
+
+  options.keepHistory = false;
+  const flow::SeedList seeds = seedsIn(volume, 32);
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+  const flow::TraceSet gpu = tracer.trace(seeds.points, options);
+  ASSERT_EQ(gpu.steps, cpu.steps);
+  ASSERT_EQ(gpu.reasons, cpu.reasons);
+  ASSERT_EQ(gpu.times, cpu.times);
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line)
+    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
+              positionTolerance(cpu.steps[line]) * volume.transform.spacing.x)
+        << "line " << line;
+}
+
+// rk45 carries its next step from round to round: many short rounds equal one long one.
+TEST_P(GpuTracerTest, Rk45StreamedInRoundsMatchesOneRound) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 2;
+  layout.rootCells = glm::ivec3(12, 12, 4);
+  const glm::dvec3 centre(12.0, 12.0, 4.0);
+  const bricks::AmrField field = testing::randomAmr(3, layout, [&](glm::dvec3 p) {
+    return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0);
+  });
+  const flow::VectorVolume volume = volumeOf(field);
+  const std::vector<glm::dvec3> seeds{{17.0, 12.0, 4.1}, {12.0, 4.5, 2.0}, {15.0, 15.0, 6.0}};
+  flow::TraceOptions options;
+  options.integrator = flow::Integrator::Rk45;
+  options.maxSteps = 5000;
+  options.stepMode = flow::StepMode::Time;
+  options.stepSize = 0.02f;
+  options.minStep = 0.0002f;
+  options.maxStep = 0.5f;
+  options.direction = flow::Direction::Forward;
+  const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds, options);
+  GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+  const flow::TraceSet once = tracer.trace(seeds, options);
+  options.roundSteps = 7;
+  const flow::TraceSet gpu = tracer.trace(seeds, options);
+  EXPECT_GT(tracer.lastRun().rounds, 10u);
+  EXPECT_EQ(gpu.positions, once.positions);
+  EXPECT_EQ(gpu.times, once.times);
+  expectGpuMatchesCpu(gpu, cpu, volume);
+}
+
 // The viewer's progressive tracing: lines grown 13 steps per round on the GPU equal the CPU's
 // one run.
 TEST_P(GpuTracerTest, ProgressiveRoundsMatchOneCpuRun) {

@@ -1,22 +1,25 @@
-// One tracing round of one line: at most params.roundSteps RK4 steps with the step mode's
-// direction scaling, VTK termination codes, periodic wrapping and the --max-time shortening of
-// the last step; twin of src/flow/line_tracer.cpp (advanceLine). Needs sampler.glsl.
+// One tracing round of one line: at most params.roundSteps steps of the integrator with the step
+// mode's direction scaling, VTK termination codes, periodic wrapping and the --max-time
+// shortening of the last step; twin of src/flow/line_tracer.cpp (advanceLine). Needs
+// sampler.glsl.
 
 // `precise` throughout, as in sampler.glsl: no FMA contraction, like the CPU reference.
-float parameterStep(VectorSample s) {
+// parameterStep() is the advance of |IntegrationTime| for step h, direction() the stage vector
+// (the displacement in cell units that step h would make with that sample's velocity).
+float parameterStep(VectorSample s, float h) {
   precise const float step = params.stepMode == AMRSTREAM_STEP_TIME
-                                 ? params.stepSize
-                                 : params.stepSize * s.cellWidth * params.physicalCellWidth;
+                                 ? h
+                                 : h * s.cellWidth * params.physicalCellWidth;
   return step;
 }
 
-vec3 direction(VectorSample s) {
+vec3 direction(VectorSample s, float h) {
   precise vec3 v = s.value;
   if (params.stepMode == AMRSTREAM_STEP_ARC) {
     precise const float speed = length(v);
     v = speed > 0.0 ? v / speed : vec3(0.0);
   }
-  precise const vec3 k = parameterStep(s) * v * params.cellsPerPhysical;
+  precise const vec3 k = parameterStep(s, h) * v * params.cellsPerPhysical;
   return k;
 }
 
@@ -25,6 +28,26 @@ int sampleFailure(VectorSample s) {
   if (!s.valid) return AMRSTREAM_REASON_UNEXPECTED_VALUE;
   return AMRSTREAM_REASON_RUNNING;
 }
+
+VectorSample sampleStage(vec3 unwrapped) { return sampleVector(wrapPeriodic(unwrapped)); }
+
+// What one step did; twin of flow::StepOutcome (src/flow/line_steps.hpp).
+struct StepOutcome {
+  int reason;          // AMRSTREAM_REASON_RUNNING when the step was taken
+  vec3 unwrapped;      // x plus the step's displacement
+  VectorSample next;   // the sample at the wrapped end point
+  float step;          // the step taken
+  float nextStep;      // rk45: the step to try next
+};
+
+// The integrator is baked into the pipeline (specialization constant 2), so a kernel holds only
+// its own step's registers.
+layout(constant_id = 2) const int kIntegrator = AMRSTREAM_INTEGRATOR_RK4;
+
+#include "euler_step.glsl"
+#include "rk2_step.glsl"
+#include "rk4_step.glsl"
+#include "rk45_step.glsl"
 
 // Outputs are point-major: point k of thread t is at slot k * lineCount + t, so the invocations
 // of a subgroup write one step's points to neighbouring slots. The compaction kernels gather them.
@@ -42,6 +65,7 @@ void advanceLine(uint thread) {
   precise vec3 x = state.position;
   precise float time = state.time, traceLength = state.arcLength;
   uint steps = state.steps, emitted = 0;
+  float nextStep = state.stepSize;
   VectorSample s = sampleVector(wrapPeriodic(x));
   if (steps == 0 && params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
 
@@ -61,29 +85,31 @@ void advanceLine(uint thread) {
     }
     if (taken == params.roundSteps) break;  // paused; the next round goes on from here
 
-    // The last step before --max-time is shortened to end on it.
-    precise const float advance = parameterStep(s);
+    // The last step before --max-time is shortened to end on it: the fixed-step integrators
+    // scale their stage vectors, rk45 starts from the shortened step.
+    const bool adaptive = kIntegrator == AMRSTREAM_INTEGRATOR_RK45;
+    precise float h = adaptive && nextStep > 0.0 ? nextStep : params.stepSize;
+    precise const float advance = parameterStep(s, h);
     precise float scale = sign;
-    const bool endsOnMaxTime = params.maxTime > 0.0 && abs(time) + advance > params.maxTime;
-    if (endsOnMaxTime) scale = sign * ((params.maxTime - abs(time)) / advance);
+    bool endsOnMaxTime = params.maxTime > 0.0 && abs(time) + advance > params.maxTime;
+    precise const float remaining = (params.maxTime - abs(time)) / advance;
+    if (endsOnMaxTime && adaptive) h *= remaining;
+    if (endsOnMaxTime && !adaptive) scale = sign * remaining;
 
-    precise const vec3 k1 = scale * direction(s);
-    precise const vec3 p2 = x + 0.5 * k1;
-    const VectorSample s2 = sampleVector(wrapPeriodic(p2));
-    if ((reason = sampleFailure(s2)) != AMRSTREAM_REASON_RUNNING) break;
-    precise const vec3 k2 = scale * direction(s2);
-    precise const vec3 p3 = x + 0.5 * k2;
-    const VectorSample s3 = sampleVector(wrapPeriodic(p3));
-    if ((reason = sampleFailure(s3)) != AMRSTREAM_REASON_RUNNING) break;
-    precise const vec3 k3 = scale * direction(s3);
-    precise const vec3 p4 = x + k3;
-    const VectorSample s4 = sampleVector(wrapPeriodic(p4));
-    if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
-    precise const vec3 k4 = scale * direction(s4);
-    precise const vec3 unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+    StepOutcome step;
+    if (kIntegrator == AMRSTREAM_INTEGRATOR_EULER)
+      step = eulerStep(x, s, h, scale);
+    else if (kIntegrator == AMRSTREAM_INTEGRATOR_RK2)
+      step = rk2Step(x, s, h, scale);
+    else if (kIntegrator == AMRSTREAM_INTEGRATOR_RK45)
+      step = dormandPrinceStep(x, s, h, scale);
+    else
+      step = rk4Step(x, s, h, scale);
+    if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
+    endsOnMaxTime = endsOnMaxTime && step.step == h;
+    precise const vec3 unwrapped = step.unwrapped;
     precise const vec3 next = wrapPeriodic(unwrapped);
-    const VectorSample sNext = sampleVector(next);
-    if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
+    const VectorSample sNext = step.next;
 
     if (params.maxLength > 0.0) {
       precise const float stepLength = length(params.spacing * (unwrapped - x));
@@ -93,7 +119,8 @@ void advanceLine(uint thread) {
       }
       traceLength += stepLength;
     }
-    time = endsOnMaxTime ? sign * params.maxTime : time + sign * advance;
+    time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, step.step);
+    nextStep = step.nextStep;
     x = next;
     s = sNext;
     ++steps;
@@ -101,6 +128,6 @@ void advanceLine(uint thread) {
   }
   if (params.keepHistory == 0 && reason != AMRSTREAM_REASON_RUNNING)
     emitPoint(thread, emitted++, x, time, s);  // endpoints only: the last point, written once
-  statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign);
+  statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign, nextStep);
   lineRounds[thread] = LineRound(state.line, emitted, steps, reason);
 }

@@ -1,7 +1,8 @@
 // What a streamline carries from one tracing round to the next, and what a round reports per
 // line; shared by the host and the GLSL kernels (scalar layout). A line is one seed traced in
-// one direction; RK4 keeps no state between steps but the point, so a line continued in the next
-// round is the same line as one traced in one go.
+// one direction. The fixed-step integrators keep no state between steps but the point and rk45
+// only its next step, so a line continued in the next round is the same line as one traced in
+// one go.
 #ifndef AMRSTREAM_SHARED_LINE_STATE_H
 #define AMRSTREAM_SHARED_LINE_STATE_H
 
@@ -17,6 +18,7 @@ struct LineState {
   uint steps;       // integration steps taken so far
   uint line;        // the line's index in the output
   float direction;  // +1 forward, -1 backward
+  float stepSize;   // rk45: the step the next step tries first; 0: params.stepSize
 };
 
 // One per line advanced by a round, in thread order.
@@ -32,7 +34,7 @@ struct LineRound {
 #define AMRSTREAM_NO_REGION_ID (-1)
 
 #ifdef __cplusplus
-static_assert(sizeof(LineState) == 32 && offsetof(LineState, line) == 24);
+static_assert(sizeof(LineState) == 36 && offsetof(LineState, line) == 24);
 static_assert(sizeof(LineRound) == 16);
 }  // namespace amrstream::shared
 #endif

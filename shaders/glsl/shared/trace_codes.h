@@ -18,4 +18,11 @@
 #define AMRSTREAM_STEP_TIME 1  // RK4 on dx/dt = v(x) with a fixed physical dt = h
 #define AMRSTREAM_STEP_ARC 2   // RK4 on dx/ds = w(x) v/|v|: unit speed, step h in cell widths
 
+// Integrators (--integrator); each has its step in include/<name>_step.glsl and its CPU twin in
+// src/flow/line_steps.cpp.
+#define AMRSTREAM_INTEGRATOR_RK4 0    // classic Runge-Kutta, fixed step (the paper's)
+#define AMRSTREAM_INTEGRATOR_RK2 1    // midpoint rule, fixed step (VTK's vtkRungeKutta2)
+#define AMRSTREAM_INTEGRATOR_EULER 2  // forward Euler, fixed step
+#define AMRSTREAM_INTEGRATOR_RK45 3   // Dormand-Prince 5(4), adaptive step with error control
+
 #endif

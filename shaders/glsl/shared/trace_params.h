@@ -28,10 +28,14 @@ struct TraceParams {
   uint keepHistory;         // 0: emit only each line's last point, when it ends
   uint pointsPerLine;       // output slots per line in this round: roundSteps + 1, or 1
   uint linearInterpolant;   // 1: tent weights over the cells' linear models (vectorGradients)
+  int integrator;           // AMRSTREAM_INTEGRATOR_*
+  float toleranceSquared;   // rk45: the square of the error allowed per step, in cell widths
+  float minStep;            // rk45: bounds of the adaptive step, in the units of stepSize
+  float maxStep;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 112 && offsetof(TraceParams, period) == 64 &&
+static_assert(sizeof(TraceParams) == 128 && offsetof(TraceParams, period) == 64 &&
               offsetof(TraceParams, maxTime) == 96);
 }  // namespace amrstream::shared
 #endif
