@@ -15,6 +15,10 @@ struct TraceSettings {
   std::uint32_t steps = 1000;      // at most this many steps per line
   std::optional<float> stepSize;   // default: see chooseStepSize
   std::string stepMode = "cell";   // cell, time or arc
+  std::string integrator = "rk4";  // rk4, rk45, rk2 or euler
+  float tolerance = 1e-4f;         // rk45: error per step, in finest cell widths of its region
+  std::optional<float> minStep;    // rk45: default the first step / 100
+  std::optional<float> maxStep;    // rk45: default the first step x 4
   std::string direction = "both";  // forward, backward or both (two lines per seed)
   float terminalSpeed = 1e-12f;
   float maxLength = 0.0f;  // 0: no limit
@@ -31,6 +35,9 @@ flow::TraceOptions traceOptions(const TraceSettings& settings, const flow::Vecto
 // "cell", "time" or "arc"; InputError otherwise.
 flow::StepMode parseStepMode(const std::string& name);
 std::string stepModeName(flow::StepMode mode);  // "cell", "time", "arc"
+// "rk4", "rk45", "rk2" or "euler"; InputError otherwise.
+flow::Integrator parseIntegrator(const std::string& name);
+std::string integratorName(flow::Integrator integrator);
 // "forward", "backward" or "both"; InputError otherwise.
 flow::Direction parseDirection(const std::string& name);
 std::string directionName(flow::Direction direction);  // "forward", "backward", "both"

@@ -28,6 +28,7 @@ std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
       textField("Interpolant", interpolantName(volume.interpolant)),
       textField("StepMode", stepModeName(options.stepMode)),
       numberField("StepSize", options.stepSize),
+      textField("Integrator", integratorName(options.integrator)),
       integerField("MaxSteps", options.maxSteps),
       textField("IntegrationDirection", directionName(options.direction)),
       numberField("MaxLength", options.maxLength),
@@ -35,6 +36,11 @@ std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
       numberField("TerminalSpeed", options.terminalSpeed),
       textField("Backend", p.report.backend + " on " + p.report.device),
   };
+  if (options.integrator == flow::Integrator::Rk45) {
+    fields.push_back(numberField("Tolerance", options.tolerance));
+    fields.push_back(numberField("MinStep", options.minStep));
+    fields.push_back(numberField("MaxStep", options.maxStep));
+  }
   if (info.time) fields.push_back(numberField("SimulationTime", *info.time));
   if (!info.timeUnit.empty()) fields.push_back(textField("TimeUnit", info.timeUnit));
   if (!info.lengthUnit.empty()) fields.push_back(textField("LengthUnit", info.lengthUnit));

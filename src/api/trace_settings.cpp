@@ -30,6 +30,28 @@ std::string stepModeName(flow::StepMode mode) {
   return "cell";
 }
 
+flow::Integrator parseIntegrator(const std::string& name) {
+  if (name == "rk4") return flow::Integrator::Rk4;
+  if (name == "rk45") return flow::Integrator::Rk45;
+  if (name == "rk2") return flow::Integrator::Rk2;
+  if (name == "euler") return flow::Integrator::Euler;
+  throw InputError("integrator", "'" + name + "' is not rk4, rk45, rk2 or euler");
+}
+
+std::string integratorName(flow::Integrator integrator) {
+  switch (integrator) {
+    case flow::Integrator::Rk45:
+      return "rk45";
+    case flow::Integrator::Rk2:
+      return "rk2";
+    case flow::Integrator::Euler:
+      return "euler";
+    case flow::Integrator::Rk4:
+      break;
+  }
+  return "rk4";
+}
+
 flow::Direction parseDirection(const std::string& name) {
   if (name == "forward") return flow::Direction::Forward;
   if (name == "backward") return flow::Direction::Backward;
@@ -94,6 +116,20 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.stepMode = parseStepMode(s.stepMode);
   options.stepSize = chooseStepSize(options.stepMode, s.stepSize, volume);
   options.maxSteps = s.steps;
+  options.integrator = parseIntegrator(s.integrator);
+  // rk45's tolerance squared must stay a normal float (the controller reads its exponent).
+  if (!(s.tolerance >= 1e-8f && s.tolerance <= 1.0f))
+    throw InputError("--tolerance",
+                     fmt::format("{} is not in [1e-8, 1] (finest cell widths per step)", s.tolerance));
+  options.tolerance = s.tolerance;
+  options.minStep = s.minStep.value_or(options.stepSize / 100.0f);
+  options.maxStep = s.maxStep.value_or(options.stepSize * 4.0f);
+  if (!(options.minStep > 0.0f && std::isfinite(options.maxStep) &&
+        options.minStep <= options.stepSize && options.stepSize <= options.maxStep))
+    throw InputError("--min-step",
+                     fmt::format("rk45 needs 0 < --min-step ({:g}) <= the first step ({:g}) <= "
+                                 "--max-step ({:g})",
+                                 options.minStep, options.stepSize, options.maxStep));
   options.keepHistory = s.keepHistory;
   if (!(s.terminalSpeed >= 0.0f)) throw InputError("--terminal-speed", "must be 0 or positive");
   if (!(s.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");

@@ -331,13 +331,19 @@ void bindTracing(py::module_& m) {
       [](py::object target, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
          std::optional<std::string> interpolant, std::uint32_t steps, std::optional<float> stepSize,
-         std::string stepMode, std::string direction, bool vorticity, float maxLength,
-         float maxTime, float terminalSpeed, std::uint64_t memoryBudget, std::string backend,
-         std::string device, bool validation, py::object progress, bool verbose) {
+         std::string stepMode, std::string integrator, float tolerance,
+         std::optional<float> minStep, std::optional<float> maxStep, std::string direction,
+         bool vorticity, float maxLength, float maxTime, float terminalSpeed,
+         std::uint64_t memoryBudget, std::string backend, std::string device, bool validation,
+         py::object progress, bool verbose) {
         TraceSettings settings;
         settings.steps = steps;
         settings.stepSize = stepSize;
         settings.stepMode = std::move(stepMode);
+        settings.integrator = std::move(integrator);
+        settings.tolerance = tolerance;
+        settings.minStep = minStep;
+        settings.maxStep = maxStep;
         settings.direction = std::move(direction);
         settings.vorticity = vorticity;
         settings.maxLength = maxLength;
@@ -353,6 +359,8 @@ void bindTracing(py::module_& m) {
       py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
       py::arg("interpolant") = py::none(), py::arg("steps") = 1000,
       py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
+      py::arg("integrator") = "rk4", py::arg("tolerance") = 1e-4f,
+      py::arg("min_step") = py::none(), py::arg("max_step") = py::none(),
       py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,
       py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f, py::arg("memory_budget") = 0,
       py::arg("backend") = "auto", py::arg("device") = "", py::arg("validation") = false,
