@@ -39,7 +39,8 @@ float stepFactor(float errorSquared, float limitSquared, float displacementSquar
   // err / tol = 2^(dErr / 2), so (tol / err)^(1/5) = 2^(-dErr / 10); likewise the displacement's
   // square root is 2^(-5 dDisp / 10).
   const int dError = binaryExponent(errorSquared) - binaryExponent(limitSquared);
-  const int dDisplacement = binaryExponent(displacementSquared) - binaryExponent(capSquared);
+  const int dDisplacement = binaryExponent(displacementSquared * AMRSTREAM_RK45_BINADE_SHIFT) -
+                            binaryExponent(capSquared);
   const float byError = halfToTheTenths(dError),
               byDisplacement = halfToTheTenths(5 * dDisplacement);
   return std::clamp(0.9f * std::min(byError, byDisplacement), 0.2f, 5.0f);
@@ -115,7 +116,8 @@ StepOutcome dormandPrinceStep(const shared::TraceParams& params, glm::vec3 x, co
                                       displacement.y * displacement.y +
                                       displacement.z * displacement.z;
     const float factor = stepFactor(errorSquared, limitSquared, displacementSquared, capSquared);
-    const bool accepted = (errorSquared <= limitSquared && displacementSquared <= capSquared) ||
+    const bool accepted = (errorSquared <= limitSquared &&
+                           displacementSquared <= capSquared * AMRSTREAM_RK45_CAP_SQUARED_MARGIN) ||
                           h <= params.minStep || attempt + 1 == AMRSTREAM_RK45_MAX_ATTEMPTS;
     if (accepted) {
       out.unwrapped = x + displacement;

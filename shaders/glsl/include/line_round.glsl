@@ -46,7 +46,6 @@ layout(constant_id = 2) const int kIntegrator = AMRSTREAM_INTEGRATOR_RK4;
 
 #include "euler_step.glsl"
 #include "rk2_step.glsl"
-#include "rk4_step.glsl"
 #include "rk45_step.glsl"
 
 // Outputs are point-major: point k of thread t is at slot k * lineCount + t, so the invocations
@@ -87,29 +86,53 @@ void advanceLine(uint thread) {
 
     // The last step before --max-time is shortened to end on it: the fixed-step integrators
     // scale their stage vectors, rk45 starts from the shortened step.
-    const bool adaptive = kIntegrator == AMRSTREAM_INTEGRATOR_RK45;
-    precise float h = adaptive && nextStep > 0.0 ? nextStep : params.stepSize;
+    precise float h = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 && nextStep > 0.0
+                          ? nextStep
+                          : params.stepSize;
     precise const float advance = parameterStep(s, h);
     precise float scale = sign;
     bool endsOnMaxTime = params.maxTime > 0.0 && abs(time) + advance > params.maxTime;
-    precise const float remaining = (params.maxTime - abs(time)) / advance;
-    if (endsOnMaxTime && adaptive) h *= remaining;
-    if (endsOnMaxTime && !adaptive) scale = sign * remaining;
+    if (endsOnMaxTime) {
+      precise const float remaining = (params.maxTime - abs(time)) / advance;
+      if (kIntegrator == AMRSTREAM_INTEGRATOR_RK45)
+        h *= remaining;
+      else
+        scale = sign * remaining;
+    }
 
-    StepOutcome step;
-    if (kIntegrator == AMRSTREAM_INTEGRATOR_EULER)
-      step = eulerStep(x, s, h, scale);
-    else if (kIntegrator == AMRSTREAM_INTEGRATOR_RK2)
-      step = rk2Step(x, s, h, scale);
-    else if (kIntegrator == AMRSTREAM_INTEGRATOR_RK45)
-      step = dormandPrinceStep(x, s, h, scale);
-    else
-      step = rk4Step(x, s, h, scale);
-    if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
-    endsOnMaxTime = endsOnMaxTime && step.step == h;
-    precise const vec3 unwrapped = step.unwrapped;
+    precise vec3 unwrapped;
+    VectorSample sNext;
+    precise float stepTaken = h;
+    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) {
+      // Classic fourth-order Runge-Kutta, the paper's: written out here, as the hot path.
+      precise const vec3 k1 = scale * direction(s, h);
+      precise const vec3 p2 = x + 0.5 * k1;
+      const VectorSample s2 = sampleStage(p2);
+      if ((reason = sampleFailure(s2)) != AMRSTREAM_REASON_RUNNING) break;
+      precise const vec3 k2 = scale * direction(s2, h);
+      precise const vec3 p3 = x + 0.5 * k2;
+      const VectorSample s3 = sampleStage(p3);
+      if ((reason = sampleFailure(s3)) != AMRSTREAM_REASON_RUNNING) break;
+      precise const vec3 k3 = scale * direction(s3, h);
+      precise const vec3 p4 = x + k3;
+      const VectorSample s4 = sampleStage(p4);
+      if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
+      precise const vec3 k4 = scale * direction(s4, h);
+      unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+      sNext = sampleStage(unwrapped);
+      if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
+    } else {
+      const StepOutcome step = kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, h, scale)
+                               : kIntegrator == AMRSTREAM_INTEGRATOR_RK2 ? rk2Step(x, s, h, scale)
+                                                                        : dormandPrinceStep(x, s, h, scale);
+      if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
+      unwrapped = step.unwrapped;
+      sNext = step.next;
+      stepTaken = step.step;
+      nextStep = step.nextStep;
+      endsOnMaxTime = endsOnMaxTime && step.step == h;
+    }
     precise const vec3 next = wrapPeriodic(unwrapped);
-    const VectorSample sNext = step.next;
 
     if (params.maxLength > 0.0) {
       precise const float stepLength = length(params.spacing * (unwrapped - x));
@@ -119,8 +142,7 @@ void advanceLine(uint thread) {
       }
       traceLength += stepLength;
     }
-    time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, step.step);
-    nextStep = step.nextStep;
+    time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, stepTaken);
     x = next;
     s = sNext;
     ++steps;

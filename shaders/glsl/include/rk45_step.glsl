@@ -21,7 +21,8 @@ float halfToTheTenths(int d) {
 float stepFactor(float errorSquared, float limitSquared, float displacementSquared,
                  float capSquared) {
   const int dError = binaryExponent(errorSquared) - binaryExponent(limitSquared);
-  const int dDisplacement = binaryExponent(displacementSquared) - binaryExponent(capSquared);
+  const int dDisplacement =
+      binaryExponent(displacementSquared * AMRSTREAM_RK45_BINADE_SHIFT) - binaryExponent(capSquared);
   precise const float factor =
       0.9 * min(halfToTheTenths(dError), halfToTheTenths(5 * dDisplacement));
   return clamp(factor, 0.2, 5.0);
@@ -74,7 +75,8 @@ StepOutcome dormandPrinceStep(vec3 x, VectorSample s, float h0, float scale) {
                                               displacement.y * displacement.y +
                                               displacement.z * displacement.z;
     const float factor = stepFactor(errorSquared, limitSquared, displacementSquared, capSquared);
-    const bool accepted = (errorSquared <= limitSquared && displacementSquared <= capSquared) ||
+    precise const float capWithMargin = capSquared * AMRSTREAM_RK45_CAP_SQUARED_MARGIN;
+    const bool accepted = (errorSquared <= limitSquared && displacementSquared <= capWithMargin) ||
                           h <= params.minStep || attempt + 1 == AMRSTREAM_RK45_MAX_ATTEMPTS;
     if (accepted) {
       result.unwrapped = unwrapped;

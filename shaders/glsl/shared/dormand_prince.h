@@ -40,5 +40,12 @@
 #define AMRSTREAM_HALF_TENTHS 1.0f, 0.933033f, 0.8705506f, 0.8122524f, 0.7578583f, \
     0.70710677f, 0.659754f, 0.6155722f, 0.57434916f, 0.5358867f
 #define AMRSTREAM_RK45_MAX_ATTEMPTS 32  // tries of one step before it is taken regardless
+// A step may move one finest cell of its region and 0.1 % (squared: 1.002): in arc mode a step
+// of h = 1 moves exactly one cell, which rounding would put on either side of the bound.
+#define AMRSTREAM_RK45_CAP_SQUARED_MARGIN 1.002f
+// The displacement's binary exponent is taken of its square times sqrt(2), so that a step of a
+// power-of-two fraction of a cell (as the first, h = 0.25 in arc mode) lies mid-binade, not on
+// a boundary that rounding would put it on either side of.
+#define AMRSTREAM_RK45_BINADE_SHIFT 1.4142135f
 
 #endif
