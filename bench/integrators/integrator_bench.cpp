@@ -19,19 +19,22 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "amrstream/backend.hpp"
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/trace_settings.hpp"
-#include "amrstream/tracing.hpp"
+#include "gpu/gpu_tracer.hpp"
 #include "synth/rotation_field.hpp"
 
 namespace {
@@ -54,16 +57,17 @@ glm::dvec3 exactEnd(glm::dvec3 seed, double duration) {
 }
 
 struct Runs {
-  const BackendRequest& request;
   flow::VectorVolume& volume;
   const std::vector<glm::dvec3>& seeds;
   std::vector<glm::dvec3> reference;  // the end point of every seed
   float tau = 0.0f;
   double duration = 0.0;
+  std::optional<vk::Context> context;  // GPU backends: one context and tracer for all runs
+  std::unique_ptr<gpu::GpuTracer> tracer;
 };
 
-flow::TraceSet traceEnds(Runs& r, const std::string& integrator, float setting,
-                         TraceReport* report) {
+// Traces the seeds; returns the end points and the seconds spent tracing.
+flow::TraceSet traceEnds(Runs& r, const std::string& integrator, float setting, double* seconds) {
   TraceSettings settings;
   settings.stepMode = "time";
   settings.integrator = integrator;
@@ -80,14 +84,17 @@ flow::TraceSet traceEnds(Runs& r, const std::string& integrator, float setting,
     settings.stepSize = setting;
   }
   const flow::TraceOptions options = traceOptions(settings, r.volume);
-  return trace(r.request, r.volume, r.seeds, options, {}, report).assemble();
+  const auto start = std::chrono::steady_clock::now();
+  flow::TraceSet traces = r.tracer ? r.tracer->trace(r.seeds, options)
+                                   : flow::traceStreamlines(r.volume, r.seeds, options);
+  if (seconds)
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return traces;
 }
 
 Run runOnce(Runs& r, const std::string& integrator, float setting) {
-  TraceReport report;
-  const flow::TraceSet traces = traceEnds(r, integrator, setting, &report);
   Run run{integrator, setting};
-  run.seconds = report.traceSeconds;
+  const flow::TraceSet traces = traceEnds(r, integrator, setting, &run.seconds);
   const double finest = r.volume.transform.spacing.x;
   double sumSquares = 0.0;
   for (std::size_t line = 0; line < traces.lineCount(); ++line) {
@@ -147,7 +154,12 @@ int main(int argc, char** argv) {
       seeds.push_back({0.3 + 0.4 * unit(rng), 0.3 + 0.4 * unit(rng), 0.3 + 0.4 * unit(rng)});
     }
   }
-  Runs r{request, volume, seeds};
+  Runs r{volume, seeds};
+  if (request.backend != "cpu") {
+    const BackendChoice choice = chooseBackend(request, BackendUse::Trace);
+    r.context.emplace(createContext(request, choice));
+    r.tracer = std::make_unique<gpu::GpuTracer>(*r.context, choice.backend, volume);
+  }
   r.duration = duration;
   r.tau = chooseStepSize(flow::StepMode::Time, std::nullopt, volume);
   const std::vector<float> multiples{64.0f, 32.0f, 16.0f, 8.0f, 4.0f, 2.0f, 1.0f, 0.5f};

@@ -64,7 +64,8 @@ void advanceLine(uint thread) {
   precise vec3 x = state.position;
   precise float time = state.time, traceLength = state.arcLength;
   uint steps = state.steps, emitted = 0;
-  float nextStep = state.stepSize;
+  // rk45's next step; the fixed-step kernels keep none, so it holds no register there.
+  float nextStep = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 ? state.stepSize : 0.0;
   VectorSample s = sampleVector(wrapPeriodic(x));
   if (steps == 0 && params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
 
