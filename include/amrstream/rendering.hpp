@@ -22,6 +22,13 @@
 
 namespace amrstream {
 
+// Bounds of the options below: the image's sides in pixels, and the work per image, which is
+// pixels x frames x (1 + ambient-occlusion rays): 4096 frames of 256 rays take hours on a fast
+// GPU, and the image stops changing long before.
+inline constexpr std::uint32_t kMinImageSide = 16, kMaxImageSide = 16384;
+inline constexpr std::uint32_t kMaxRenderFrames = 4096;
+inline constexpr std::uint32_t kMaxAoSamples = 256;
+
 struct RenderOptions {
   std::uint32_t width = 1024, height = 768;
   std::vector<float> camera;        // azimuth, elevation (degrees)[, zoom]
@@ -51,7 +58,8 @@ struct RenderScene {
 // Sets the tube radius and what depends on it (the ambient-occlusion ray length).
 void setTubeRadius(render::RenderSettings& settings, float radius);
 
-// Throws InputError for a bad colour map, colour field, volume channel, range or camera.
+// Throws InputError for a bad colour map, colour field, volume channel, range, camera, image size,
+// number of ambient-occlusion rays, or a value that is not finite.
 // `cells` give the context volume's channel and scalars to colour by; `volume` the domain.
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
                          const flow::VectorVolume& volume, const flow::TraceSet& traces);
@@ -73,8 +81,8 @@ using FrameProgress = std::function<void(std::uint32_t done, std::uint32_t frame
 // (renderImage checks it too; callers that trace first check it before tracing.)
 void requireRenderBackend(const BackendRequest& request);
 
-// Throws InputError for the CPU backend (rendering needs a Vulkan device) and bad options,
-// vk::ContextError when the device lacks what the backend needs.
+// Throws InputError for the CPU backend (rendering needs a Vulkan device), bad options and frames
+// outside 1..kMaxRenderFrames, vk::ContextError when the device lacks what the backend needs.
 RenderedImage renderImage(const BackendRequest& request, const RenderOptions& options,
                           const Dataset& cells, const flow::VectorVolume& volume,
                           const flow::TraceSet& traces, std::uint32_t frames, bool colourBar,

@@ -27,6 +27,15 @@ struct SeedRequest {
   std::uint64_t seed = 1;  // random seed
 };
 
+// The most seeds one request may make: lines are numbered in 32 bits, and each seed may make two
+// (forward and backward).
+inline constexpr std::uint64_t kMaxSeedCount = 2147483647;
+
+// Throws InputError naming `option` when `count` seeds are more than kMaxSeedCount, or more than
+// the machine's trace memory share (kTraceMemoryShare) can hold at the least each seed takes: the
+// seed itself and one line of one point. Called before any seed is made.
+void checkSeedCount(double count, const std::string& option);
+
 // The box seeds may fill: the cells' bounding box [lower, upper) in physical coordinates.
 struct Domain {
   glm::dvec3 lower{0.0}, upper{0.0};
@@ -35,8 +44,13 @@ struct Domain {
 Domain domainOf(const Dataset& cells);
 Domain domainOf(const flow::VectorVolume& volume);
 
+// checkSeedCount of the seeds the request makes (--count, or --seed-grid's NX x NY x NZ); given
+// points and files are not checked.
+void checkSeedRequest(const SeedRequest& request);
+
 // The seeds and, in `description`, which strategy made them. Density seeding needs the cells.
-// Throws InputError naming the option at fault.
+// Throws InputError naming the option at fault, the request checked (checkSeedRequest) before any
+// seed is made.
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
                            std::string& description);
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include "render/image/colour_bar.hpp"
 #include "render/volume_range.hpp"
@@ -21,9 +23,33 @@ float defaultTubeRadius(const flow::VectorVolume& volume) {
 }
 
 render::ValueRange parseRange(const std::vector<float>& values, const char* option) {
-  if (values.size() != 2 || !(values[0] < values[1]))
-    throw InputError(option, "expected MIN,MAX with MIN < MAX");
+  if (values.size() != 2 || !(values[0] < values[1]) || !std::isfinite(values[0]) ||
+      !std::isfinite(values[1]))
+    throw InputError(option, "expected finite MIN,MAX with MIN < MAX");
   return {values[0], values[1]};
+}
+
+template <class T>
+void requireFinite(const std::vector<T>& values, const char* option) {
+  for (const T value : values)
+    if (!std::isfinite(value))
+      throw InputError(option, fmt::format("{} is not a finite number", value));
+}
+
+void checkImageOptions(const RenderOptions& o) {
+  for (const auto& [side, option] :
+       {std::pair{o.width, "--width"}, std::pair{o.height, "--height"}})
+    if (side < kMinImageSide || side > kMaxImageSide)
+      throw InputError(option, fmt::format("{} pixels is outside the range {} to {}", side,
+                                           kMinImageSide, kMaxImageSide));
+  if (o.aoSamples > kMaxAoSamples)
+    throw InputError("--ao-samples", fmt::format("{} rays per pixel and frame are more than {}",
+                                                 o.aoSamples, kMaxAoSamples));
+  requireFinite(o.camera, "--camera");
+  requireFinite(o.viewBox, "--view-box");
+  if (!(o.volumeOpacity >= 0.0f) || !std::isfinite(o.volumeOpacity))
+    throw InputError("--volume-opacity",
+                     fmt::format("{} is not a finite number >= 0", o.volumeOpacity));
 }
 
 }  // namespace
@@ -44,6 +70,7 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cell
 
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
                          const flow::VectorVolume& volume, const flow::TraceSet& traces) {
+  checkImageOptions(o);
   RenderScene scene;
   const auto map = render::parseColourMap(o.colourMap);
   if (!map)
@@ -54,7 +81,8 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
 
   render::RenderSettings& s = scene.settings;
   setTubeRadius(s, o.tubeRadius.value_or(defaultTubeRadius(volume)));
-  if (!(s.tubeRadius > 0.0f)) throw InputError("--tube-radius", "must be positive");
+  if (!(s.tubeRadius > 0.0f) || !std::isfinite(s.tubeRadius))
+    throw InputError("--tube-radius", "must be positive and finite");
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   updateTubes(scene, o, cells, volume, traces);
@@ -107,7 +135,9 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
                           const flow::TraceSet& traces, std::uint32_t frames, bool colourBar,
                           const FrameProgress& progress, const Log& log) {
   requireRenderBackend(request);
-  if (frames == 0) throw InputError("--frames", "must be at least 1");
+  if (frames == 0 || frames > kMaxRenderFrames)
+    throw InputError("--frames", fmt::format("{} is outside the range 1 to {}", frames,
+                                             kMaxRenderFrames));
   const RenderScene scene = prepareScene(options, cells, volume, traces);
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "flow/seed_strategies.hpp"
+#include "flow/trace_set.hpp"
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream {
@@ -38,7 +40,28 @@ std::pair<glm::dvec3, glm::dvec3> seedBox(const SeedRequest& request, const Doma
   return {lo, hi};
 }
 
+// The least host memory a seed takes through a run: its point and the text naming its origin in
+// the seed list, and one traced line (offset, seed id, direction, steps, reason) of one point.
+const double kLeastBytesPerSeed = double(sizeof(glm::dvec3) + sizeof(std::string) + 32 +
+                                          sizeof(std::uint64_t) + 4 * sizeof(std::uint32_t) +
+                                          flow::TraceSet::bytesPerPoint(0, false));
+
 }  // namespace
+
+void checkSeedCount(double count, const std::string& option) {
+  if (count > double(kMaxSeedCount))
+    throw InputError(option, fmt::format("{:.0f} seeds are more than the {} one run may trace "
+                                         "(lines are numbered in 32 bits, two per seed)",
+                                         count, kMaxSeedCount));
+  const double bytes = count * kLeastBytesPerSeed;
+  const double limit = kTraceMemoryShare * physicalMemoryBytes();
+  if (limit > 0.0 && bytes > limit)
+    throw InputError(option, fmt::format("{:.0f} seeds need at least {:.1f} GiB ({:.0f} bytes each "
+                                         "for the seed and its traced line), more than the {:.1f} "
+                                         "GiB (3/4 of the memory) traces may take on this machine",
+                                         count, bytes / 0x1p30, kLeastBytesPerSeed,
+                                         limit / 0x1p30));
+}
 
 Domain domainOf(const Dataset& cells) {
   const bricks::WorldTransform& t = cells.transform();
@@ -50,8 +73,18 @@ Domain domainOf(const flow::VectorVolume& volume) {
   return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing};
 }
 
+void checkSeedRequest(const SeedRequest& request) {
+  if (!request.points.empty() || !request.file.empty()) return;
+  if (request.line.empty() && request.density.empty() && request.grid.size() == 3)
+    checkSeedCount(double(request.grid[0]) * double(request.grid[1]) * double(request.grid[2]),
+                   "--seed-grid");
+  else
+    checkSeedCount(double(request.count), "--count");
+}
+
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
                            std::string& description) {
+  checkSeedRequest(request);
   if (!request.points.empty()) {
     description = "given points";
     flow::SeedList seeds;

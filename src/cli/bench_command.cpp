@@ -3,17 +3,23 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 
 #include "bench/bench_report.hpp"
 #include "bench/bench_runner.hpp"
+#include "dataset_files.hpp"
 #include "dataset_options.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
+#include "output_paths.hpp"
 #include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "formats/load_input.hpp"
 #include "amrstream/backend.hpp"
 #include "amrstream/field.hpp"
+#include "amrstream/seeding.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -94,13 +100,12 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   std::sort(config.particles.begin(), config.particles.end());
   config.particles.erase(std::unique(config.particles.begin(), config.particles.end()),
                          config.particles.end());
-  if (config.particles.front() == 0) throw InputError("--particles", "counts must be positive");
   config.cpuMaxParticles = o.cpuMaxParticles;
   config.historyModes = o.mode == "endpoints" ? std::vector<bool>{false}
                         : o.mode == "history" ? std::vector<bool>{true}
                                               : std::vector<bool>{false, true};
   config.historyPointBudget = o.historyPoints;
-  config.repeats = std::max<std::uint32_t>(1, o.repeats);
+  config.repeats = o.repeats;
   config.trace.stepMode = parseStepMode(o.stepMode);
   config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
   config.trace.maxSteps = o.steps;
@@ -113,6 +118,15 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
 }
 
 void runBench(const BenchCommandOptions& o) {
+  checkBuiltinSize(o.dataset);
+  if (!o.particles.empty())
+    checkSeedCount(double(*std::max_element(o.particles.begin(), o.particles.end())),
+                   "--particles");
+  RunFiles files;
+  files.addInputs(datasetFiles(o.dataset.input));
+  if (!o.seedsFile.empty()) files.addInput(o.seedsFile);
+  files.addOutput("--json", o.json);
+
   bench::BenchReport report;
   report.command = o.commandLine;
   report.host = bench::hostDescription();
@@ -198,10 +212,12 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--particles", options->particles,
                    "particle counts, comma-separated [default: 1024,2048,...,1048576]")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(countIn(1, kMaxSeedCount));
   command->add_option("--cpu-max-particles", options->cpuMaxParticles,
                       "the CPU path runs counts up to this")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(countIn(0, kMaxSeedCount));
   command
       ->add_option("--mode", options->mode,
                    "endpoints (keep only the last point), history (every step), or both")
@@ -210,13 +226,18 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--history-points", options->historyPoints,
                    "history rows storing more trace points than this are skipped")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(countIn(1, kMaxHistoryPoints));
   command->add_option("--repeats", options->repeats, "runs per row; the fastest is kept")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(countIn(1, kMaxRepeats));
   command->add_option("--steps", options->steps, "maximum integration steps per particle")
-      ->capture_default_str();
-  command->add_option("--step-size", options->stepSize,
-                      "h: in cell widths (cell, arc) or physical time (time) [default 0.25]");
+      ->capture_default_str()
+      ->check(countIn(1, kMaxSteps));
+  command
+      ->add_option("--step-size", options->stepSize,
+                   "h: in cell widths (cell, arc) or physical time (time) [default 0.25]")
+      ->check(positiveFloat());
   command->add_option("--interpolant", options->interpolant, "tent (paper) or linear")
       ->capture_default_str()
       ->check(CLI::IsMember({"tent", "linear"}));
@@ -227,7 +248,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
                         ->add_option("--seeds", options->seedsFile,
                                      "seed points, one 'x y z' per line (at least the largest "
                                      "particle count)")
-                        ->check(CLI::ExistingFile);
+                        ->check(regularFile());
   command
       ->add_option("--seed-density", options->seedDensity,
                    "the scalar whose densest cells get the seeds [default: dens, else the first "
@@ -236,9 +257,11 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--seed-percentile", options->seedPercentile,
                       "candidate cells are at or above this percentile of the scalar")
       ->capture_default_str()
+      ->check(numberIn(0.0, 100.0))
       ->excludes(seedsFile);
   command->add_option("--seed", options->seed, "random seed for the seed points")
       ->capture_default_str()
+      ->check(countIn(0, std::numeric_limits<std::uint64_t>::max()))
       ->excludes(seedsFile);
   command->add_option("--device", options->device,
                       "the Vulkan device whose name contains this (see `amrstream devices`)");

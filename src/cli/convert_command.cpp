@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <memory>
 
+#include "dataset_files.hpp"
 #include "dataset_options.hpp"
+#include "output_paths.hpp"
 #include "formats/exa_format.hpp"
 #include "formats/load_input.hpp"
 #include "util/stopwatch.hpp"
@@ -19,16 +21,30 @@ struct ConvertOptions {
   std::string out;
 };
 
+// writeExa's files for PREFIX: PREFIX.exa, PREFIX.cells and PREFIX.NAME.scalars per channel.
+std::filesystem::path exaFile(const std::filesystem::path& prefix, const std::string& suffix) {
+  return prefix.parent_path() / (prefix.filename().string() + suffix);
+}
+
 void runConvert(const ConvertOptions& o) {
+  checkBuiltinSize(o.dataset);
+  std::filesystem::path prefix(o.out);
+  if (prefix.extension() == ".exa") prefix.replace_extension();
+  RunFiles files;
+  files.addInputs(datasetFiles(o.dataset.input));
+  files.addOutput("OUT", exaFile(prefix, ".exa"));
+  files.addOutput("OUT's cells", exaFile(prefix, ".cells"));
+
   Stopwatch clock;
   const formats::Format format = formats::detectFormat(o.dataset.input);
   const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
+  // The channels' names are known now, still before anything is written.
+  for (const bricks::Channel& channel : field.channels())
+    files.addOutput("OUT's scalars", exaFile(prefix, "." + channel.name + ".scalars"));
   fmt::print("read       {} ({}): {} cells, levels {}..{}, {} channels [{:.2f} s]\n",
              field.source(), formats::formatName(format), withCommas(field.cellCount()),
              field.finestLevel(), field.coarsestLevel(), field.channels().size(), clock.seconds());
   clock.restart();
-  std::filesystem::path prefix(o.out);
-  if (prefix.extension() == ".exa") prefix.replace_extension();
   const std::filesystem::path exa = formats::writeExa(field, prefix);
   fmt::print("wrote      {} and its .cells/.scalars files [{:.2f} s]\n", exa.string(),
              clock.seconds());

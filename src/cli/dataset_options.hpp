@@ -19,6 +19,12 @@ void addDatasetOptions(CLI::App& command, DatasetOptions& options, const std::st
 void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
                          const std::string& seedFlag);
 
+// Throws InputError naming --target-cells when the cells of a builtin dataset (`--target-cells`,
+// or all cells of fully refined levels if fewer) cannot fit in the memory traces may take: called
+// before generating. Inputs other than builtin:KIND are not checked.
+void checkBuiltinSize(const DatasetOptions& options);
+void checkGeneratorSize(const synth::GeneratorOptions& generator);
+
 // "1234567" -> "1,234,567".
 std::string withCommas(std::size_t n);
 

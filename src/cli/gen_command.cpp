@@ -5,6 +5,9 @@
 #include <memory>
 
 #include "dataset_options.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
+#include "output_paths.hpp"
 #include "formats/exa_format.hpp"
 #include "synth/generators.hpp"
 #include "util/stopwatch.hpp"
@@ -35,7 +38,16 @@ void writeOne(const std::string& kind, const synth::GeneratorOptions& generator,
              clock.seconds());
 }
 
+// gen reads nothing and names every file apart: what is left to check before the work is the
+// size and that the first file can be written (its directory exists, it is no directory).
+void checkOutputs(const GenOptions& o) {
+  checkGeneratorSize(o.generator);
+  const std::string first = o.series == 0 ? o.out + ".exa" : fmt::format("{}_0000.exa", o.out);
+  RunFiles().checkOutput("--out", first);
+}
+
 void runGen(const GenOptions& o) {
+  checkOutputs(o);
   if (o.series == 0) return writeOne(o.kind, o.generator, o.out);
   for (int i = 0; i < o.series; ++i) {
     synth::GeneratorOptions snapshot = o.generator;
@@ -58,10 +70,10 @@ void addGenCommand(CLI::App& app) {
   command
       ->add_option("--series", options->series,
                    "write N snapshots PREFIX_0000.exa, ... at --time, --time + --interval, ...")
-      ->check(CLI::Range(1, 100000));
+      ->check(countIn(1, kMaxSeriesSnapshots));
   command->add_option("--interval", options->interval, "time between the snapshots of --series")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveDouble());
   command->callback([options] { runGen(*options); });
 }
 

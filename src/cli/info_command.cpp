@@ -36,6 +36,7 @@ void printLevels(const bricks::AmrField& field) {
 }
 
 void runInfo(const DatasetOptions& options) {
+  checkBuiltinSize(options);
   Stopwatch clock;
   const bricks::AmrField field = formats::loadInput(options.input, options.generator);
   const bricks::DatasetInfo& info = field.info();

@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   amrstream::cli::addBenchCommand(app, commandLine);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ValidationError& e) {
+    // A bad option value ("--count: ..."): bad input, reported as the other input errors are.
+    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
+    return 2;
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const amrstream::InputError& e) {

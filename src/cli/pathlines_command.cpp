@@ -6,7 +6,9 @@
 
 #include "amrstream/pathlines.hpp"
 #include "amrstream/tracing.hpp"
+#include "dataset_files.hpp"
 #include "dataset_options.hpp"
+#include "option_checks.hpp"
 #include "output/vtp_writer.hpp"
 #include "progress.hpp"
 #include "trace_job.hpp"
@@ -21,7 +23,6 @@ struct PathlinesOptions {
   std::vector<std::string> snapshots;
   FieldOptions field;
   SeedRequest seeds;
-  std::string seedsOut;
   std::optional<double> startTime, endTime, stepSize;
   double releaseEvery = 0.0;
   BackendRequest backend;
@@ -30,7 +31,12 @@ struct PathlinesOptions {
 };
 
 void runPathlines(const PathlinesOptions& o) {
+  checkSeedRequest(o.seeds);
   const std::vector<SnapshotFile> series = listSnapshots(o.snapshots);
+  RunFiles files;
+  for (const SnapshotFile& snapshot : series) files.addInputs(datasetFiles(snapshot.path));
+  if (!o.seeds.file.empty()) files.addInput(o.seeds.file);
+  files.addOutput("--out", o.out);
   fmt::print("series     {} snapshots from t = {:g} ({}) to {:g} ({})\n", series.size(),
              series.front().time, series.front().path, series.back().time, series.back().path);
   PathlineSettings settings;
@@ -96,19 +102,26 @@ void addPathlinesCommand(CLI::App& app) {
                    "'run/ring-*.txt', in any order (sorted by the times the files state)")
       ->required();
   addFieldOptions(*command, options->field);
-  addSeedOptions(*command, options->seeds, options->seedsOut);
-  command->add_option("--start-time", options->startTime,
-                      "release the particles at this time (default: the first snapshot's)");
-  command->add_option("--end-time", options->endTime,
-                      "stop the particles at this time (default: the last snapshot's)");
-  command->add_option("--step-size", options->stepSize,
-                      "RK4 time step (default: a tenth of the shortest interval between the "
-                      "snapshots used); steps end on every snapshot's time");
+  // The seeds are chosen inside the run (on the snapshot at the start time): no --seeds-out.
+  addSeedOptions(*command, options->seeds, nullptr);
+  command
+      ->add_option("--start-time", options->startTime,
+                   "release the particles at this time (default: the first snapshot's)")
+      ->check(finiteDouble());
+  command
+      ->add_option("--end-time", options->endTime,
+                   "stop the particles at this time (default: the last snapshot's)")
+      ->check(finiteDouble());
+  command
+      ->add_option("--step-size", options->stepSize,
+                   "RK4 time step (default: a tenth of the shortest interval between the "
+                   "snapshots used); steps end on every snapshot's time")
+      ->check(positiveDouble());
   command
       ->add_option("--release-every", options->releaseEvery,
                    "release new particles from the seeds at this interval and write streaklines "
                    "(one line per seed through its particles at the end time)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveDouble());
   command
       ->add_option("--backend", options->backend.backend,
                    "auto (as for trace), rayquery, pipeline, compute or cpu: where the RK4 "

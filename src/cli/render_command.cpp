@@ -6,6 +6,8 @@
 
 #include "flow/seeds.hpp"
 #include "output/vtp_reader.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
 #include "progress.hpp"
 #include "render/image/png_io.hpp"
 #include "render_options.hpp"
@@ -48,6 +50,9 @@ void checkTracesInDomain(const std::string& path, const flow::TraceSet& traces,
 
 void runRender(const RenderCommandOptions& o) {
   requireRenderBackend(o.job.backend);  // before tracing
+  RunFiles files = jobFiles(o.job);
+  if (!o.traces.empty()) files.addInput(o.traces);
+  files.addOutput("--out", o.out);
   PreparedInput input = prepareInput(o.job, o.traces.empty());
   flow::TraceSet traces;
   if (o.traces.empty()) {
@@ -80,12 +85,12 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--traces", options->traces,
                       "render the traces of this .vtp (e.g. from `amrstream trace`) instead of "
                       "tracing; INPUT gives the domain, the volume and the colour channels")
-      ->check(CLI::ExistingFile);
+      ->check(regularFile());
   command->add_option("--frames", options->frames,
                       "frames accumulated: jittered samples per pixel, each with --ao-samples "
                       "occlusion rays")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(countIn(1, kMaxRenderFrames));
   command->add_flag("!--no-colour-bar", options->colourBar, "leave the colour bar out");
   command->add_option("--out", options->out, "output PNG file")->capture_default_str();
   command->callback([options] {

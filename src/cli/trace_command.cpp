@@ -24,6 +24,7 @@ struct TraceCommandOptions {
 };
 
 void runTrace(const TraceCommandOptions& o) {
+  jobFiles(o.job).addOutput("--out", o.out);
   PreparedInput input = prepareInput(o.job);
   input.releaseField();  // the volume holds the vector and the point data
   input.options.keepHistory = !o.endpointsOnly;

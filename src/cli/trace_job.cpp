@@ -2,15 +2,31 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <map>
 
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
+#include "dataset_files.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
 #include "progress.hpp"
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
+
+namespace {
+
+// The most --memory-budget may ask for: the machine's memory (any count when it is unknown).
+std::uint64_t hostMemoryBytes() {
+  const double memory = physicalMemoryBytes();
+  return memory > 0.0 ? static_cast<std::uint64_t>(memory)
+                      : std::numeric_limits<std::uint64_t>::max();
+}
+
+}  // namespace
 
 void printLine(const std::string& line) { fmt::print("{}\n", line); }
 
@@ -22,6 +38,16 @@ std::string reasonHistogram(std::span<const std::int32_t> reasons) {
     histogram += fmt::format("{}{} ({}): {}", histogram.empty() ? "" : ", ", reasonName(reason),
                              reason, withCommas(count));
   return histogram;
+}
+
+RunFiles jobFiles(const TraceJobOptions& o) {
+  checkBuiltinSize(o.dataset);
+  checkSeedRequest(o.seeds);
+  RunFiles files;
+  files.addInputs(datasetFiles(o.dataset.input));
+  if (!o.seeds.file.empty()) files.addInput(o.seeds.file);
+  if (!o.seedsOut.empty()) files.addOutput("--seeds-out", o.seedsOut);
+  return files;
 }
 
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
@@ -111,23 +137,25 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
   return stored;
 }
 
-void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string& seedsOut) {
+void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string* seedsOut) {
   CLI::App* command = &app;
   auto* seedsFile =
       command
           ->add_option("--seeds", seeds.file, "file of seed points, one 'x y z' per line")
-          ->check(CLI::ExistingFile);
+          ->check(regularFile());
   command
       ->add_option("--seed-box", seeds.box,
                    "random seeds in this box: x0,y0,z0,x1,y1,z1 (default: the domain)")
       ->delimiter(',')
       ->expected(6)
+      ->check(finiteFloat())
       ->excludes(seedsFile);
   auto* seedLine = command
                        ->add_option("--seed-line", seeds.line,
                                     "a rake of --count seeds from x0,y0,z0 to x1,y1,z1")
                        ->delimiter(',')
                        ->expected(6)
+                       ->check(finiteFloat())
                        ->excludes(seedsFile);
   command
       ->add_option("--seed-grid", seeds.grid,
@@ -135,6 +163,7 @@ void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string& seedsOut) {
                    "zero thickness with count 1 on that axis is a plane)")
       ->delimiter(',')
       ->expected(3)
+      ->check(countIn(1, kMaxSeedCount))
       ->excludes(seedsFile)
       ->excludes(seedLine);
   auto* seedGrid = command->get_option("--seed-grid");
@@ -147,22 +176,26 @@ void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string& seedsOut) {
           ->excludes(seedLine);
   command->add_option("--seed-percentile", seeds.percentile, "see --seed-density")
       ->capture_default_str()
+      ->check(numberIn(0.0, 100.0))
       ->needs(seedDensity);
   command
       ->add_flag("--seed-weighted", seeds.weighted,
                  "with --seed-density: pick cells with probability proportional to the scalar")
       ->needs(seedDensity);
-  command->add_option("--seeds-out", seedsOut,
-                      "write the seeds used to this file, so the run can be repeated with --seeds");
+  if (seedsOut != nullptr)
+    command->add_option("--seeds-out", *seedsOut,
+                        "write the seeds used to this file, so the run can be repeated with "
+                        "--seeds");
   command
       ->add_option("--count", seeds.count,
                    "number of seeds (random, along --seed-line, or of --seed-density)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber)
+      ->check(countIn(1, kMaxSeedCount))
       ->excludes(seedsFile)
       ->excludes(seedGrid);
   command->add_option("--seed", seeds.seed, "random seed for the seed points")
       ->capture_default_str()
+      ->check(countIn(0, std::numeric_limits<std::uint64_t>::max()))
       ->excludes(seedsFile);
 }
 
@@ -195,12 +228,15 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
   options->seeds.count = defaultCount;
   addDatasetOptions(*command, options->dataset, "--gen-seed");
   addFieldOptions(*command, options->field);
-  addSeedOptions(*command, options->seeds, options->seedsOut);
+  addSeedOptions(*command, options->seeds, &options->seedsOut);
   command->add_option("--steps", options->trace.steps, "maximum integration steps per trace")
-      ->capture_default_str();
-  command->add_option("--step-size", options->trace.stepSize,
-                      "h: in cell widths (cell, arc) or physical time (time; default 1/4 of the "
-                      "finest cell crossed at the maximum speed) [default 0.25]");
+      ->capture_default_str()
+      ->check(countIn(0, kMaxSteps));
+  command
+      ->add_option("--step-size", options->trace.stepSize,
+                   "h: in cell widths (cell, arc) or physical time (time; default 1/4 of the "
+                   "finest cell crossed at the maximum speed) [default 0.25]")
+      ->check(positiveFloat());
   command
       ->add_option("--step-mode", options->trace.stepMode,
                    "cell: RK4 on w(x)v(x) (paper); time: fixed dt; arc: unit speed")
@@ -217,21 +253,25 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
   command
       ->add_option("--terminal-speed", options->trace.terminalSpeed,
                    "stop where the speed falls below this")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(nonNegativeFloat());
   command
       ->add_option("--max-length", options->trace.maxLength,
                    "stop before the trace's physical length passes this (0: no limit)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(nonNegativeFloat());
   command
       ->add_option("--max-time", options->trace.maxTime,
                    "stop where |IntegrationTime| reaches this, the last step shortened to end "
                    "on it (0: no limit)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(nonNegativeFloat());
   command
       ->add_option("--memory-budget", options->trace.memoryBudget,
                    "bytes the tracing rounds may use on the device and for the host copies, "
                    "e.g. 512M or 2G (the collected traces come on top); 0: automatic, 256M to 2G")
       ->transform(CLI::AsSizeValue(false))
+      ->check(countIn(0, hostMemoryBytes()))
       ->capture_default_str();
   command
       ->add_option("--backend", options->backend.backend,

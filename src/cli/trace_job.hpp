@@ -15,6 +15,7 @@
 #include "flow/seeds.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "output_paths.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
 #include "amrstream/trace_settings.hpp"
@@ -32,12 +33,18 @@ struct TraceJobOptions {
 };
 
 // The seeding options (--seeds, --seed-box, --seed-line, --seed-grid, --seed-density, --count,
-// ...) and the field options (--vector, --point-data, --periodic, --interpolant).
-void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string& seedsOut);
+// ..., and --seeds-out unless `seedsOut` is null) and the field options (--vector, --point-data,
+// --periodic, --interpolant).
+void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string* seedsOut);
 void addFieldOptions(CLI::App& command, FieldOptions& field);
 
 // Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
 void addTraceJobOptions(CLI::App& command, TraceJobOptions& options, std::size_t defaultCount = 256);
+
+// What the job reads (the dataset's files, the seeds file) and its --seeds-out, checked
+// (RunFiles): the caller adds its own inputs and outputs before any work. Also checks the size of
+// a builtin dataset (checkBuiltinSize) and the seed count (checkSeedRequest).
+RunFiles jobFiles(const TraceJobOptions& o);
 
 // The input loaded and prepared for tracing.
 struct PreparedInput {

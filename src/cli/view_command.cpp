@@ -8,6 +8,8 @@
 #include "app/frame_presenter.hpp"
 #include "app/imgui_layer.hpp"
 #include "app/window.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
 #include "output/vtp_writer.hpp"
 #include "render/image/png_io.hpp"
 #include "amrstream/trace_settings.hpp"
@@ -32,6 +34,8 @@ void runView(const ViewOptions& o) {
   if (o.job.backend.backend == "cpu")
     throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
                                   "pipeline or compute");
+  RunFiles files = jobFiles(o.job);
+  if (!o.screenshot.empty()) files.addOutput("--screenshot", o.screenshot);
   // The window first: without a display, say so before loading anything.
   app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   PreparedInput input = prepareInput(o.job);
@@ -49,6 +53,18 @@ void runView(const ViewOptions& o) {
   app::FramePresenter presenter(ctx, window);
   app::ImGuiLayer imgui(ctx, window, presenter.overlayRenderPass(), presenter.framesInFlight());
   fmt::print("viewer     backend {} on {}\n", gpu::backendName(choice.backend), ctx.deviceName());
+
+  // The files the keys write as the session goes: one that would replace an input or another
+  // output is skipped with a message, and the window stays open.
+  const auto writable = [&](const std::string& what, const std::string& path) {
+    try {
+      files.checkOutput(what, path);
+      return true;
+    } catch (const InputError& refused) {
+      fmt::print("skipped    {}\n", refused.what());
+      return false;
+    }
+  };
 
   FrameStats stats{0.0, 0.0, ctx.deviceName()};
   std::uint32_t frame = 0, screenshots = 0, exports = 0;
@@ -75,15 +91,19 @@ void runView(const ViewOptions& o) {
     render::orbit(session.camera(), o.orbitPerFrame, 0.0f);
     if (requests.exportTraces) {
       const std::string path = fmt::format("view_traces_{}.vtp", exports++);
-      output::writeVtp(path, session.traces().traces());
-      fmt::print("exported   {}\n", path);
+      if (writable("export", path)) {
+        output::writeVtp(path, session.traces().traces());
+        fmt::print("exported   {}\n", path);
+      }
     }
     const bool last = o.frames > 0 && frame + 1 >= o.frames;
-    if (requests.screenshot || (last && !o.screenshot.empty())) {
-      const std::string path = last && !o.screenshot.empty()
-                                   ? o.screenshot
-                                   : fmt::format("view_screenshot_{}.png", screenshots++);
-      presenter.requestScreenshot([path](app::Screenshot shot) { saveScreenshot(path, shot); });
+    if (last && !o.screenshot.empty()) {
+      presenter.requestScreenshot(
+          [path = o.screenshot](app::Screenshot shot) { saveScreenshot(path, shot); });
+    } else if (requests.screenshot) {
+      const std::string path = fmt::format("view_screenshot_{}.png", screenshots++);
+      if (writable("screenshot", path))
+        presenter.requestScreenshot([path](app::Screenshot shot) { saveScreenshot(path, shot); });
     }
 
     if (auto presented = presenter.beginFrame()) {
@@ -119,12 +139,14 @@ void addViewCommand(CLI::App& app) {
   command->add_option("--steps-per-frame", options->stepsPerFrame,
                       "integration steps every particle takes before each frame")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(countIn(1, kMaxStepsPerFrame));
   command->add_option("--frames", options->frames,
                       "close after this many frames (0: when the window is closed)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(countIn(0, kMaxViewFrames));
   command->add_option("--orbit-per-frame", options->orbitPerFrame,
-                      "turn the camera by this many degrees each frame (scripted runs)");
+                      "turn the camera by this many degrees each frame (scripted runs)")
+      ->check(numberIn(-360.0, 360.0));
   command->add_option("--screenshot", options->screenshot,
                       "with --frames: save the last frame (with the controls) to this PNG");
   command->callback([options] {

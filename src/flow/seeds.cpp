@@ -1,24 +1,62 @@
 #include "seeds.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <random>
+#include <string>
+#include <string_view>
 
 #include "sampler.hpp"
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
+#include "util/input_file.hpp"
 
 namespace amrstream::flow {
 
-SeedList readSeedFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
+namespace {
+
+// The whole file, which must be a regular file (checked before opening: a FIFO would block, a
+// device never end) that fits in memory and keeps its size while it is read.
+std::string wholeSeedFile(const std::filesystem::path& path) {
+  const std::uint64_t size = regularFileSize(path);
+  const double limit = kTraceMemoryShare * physicalMemoryBytes();
+  if (limit > 0.0 && double(size) > limit)
+    throw InputError(path.string(), fmt::format("the file's {:.1f} GiB are more than the {:.1f} "
+                                                "GiB (3/4 of the memory) seeds may take here",
+                                                double(size) / 0x1p30, limit / 0x1p30));
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open the seeds file");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  const auto read = static_cast<std::uint64_t>(in.gcount());
+  if (in.bad()) throw InputError(path.string(), "cannot read the seeds file");
+  const bool grew = read == size && in.peek() != std::ifstream::traits_type::eof();
+  if (read != size || grew)
+    throw InputError(path.string(), fmt::format("the file changed while it was read: {} bytes "
+                                                "when opened, {} read",
+                                                size, grew ? "more" : std::to_string(read)));
+  return text;
+}
+
+}  // namespace
+
+SeedList readSeedFile(const std::filesystem::path& path) {
+  const std::string text = wholeSeedFile(path);
   SeedList seeds;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  std::size_t number = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    std::string line = text.substr(at, end - at);
+    at = end + 1;
+    ++number;
     if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     for (char& c : line)
       if (c == ',' || c == '\t' || c == '\r') c = ' ';
@@ -45,12 +83,31 @@ SeedList readSeedFile(const std::filesystem::path& path) {
 }
 
 void writeSeedFile(const std::filesystem::path& path, const SeedList& seeds) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path.string(), "cannot create the seeds file");
-  out << "# amrstream seeds: x y z in physical coordinates\n";
+  // A hidden temporary beside `path`, renamed over it once complete and on disk, so that `path`
+  // is never left half written (as AtomicFile does for the other outputs, in a library that
+  // this one does not link).
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path temporary =
+      path.parent_path() / fmt::format(".{}.{}-{}.tmp", path.filename().string(),
+                                       static_cast<long>(::getpid()), counter++);
+  std::FILE* file = std::fopen(temporary.c_str(), "wx");
+  if (file == nullptr)
+    throw InputError(path.string(),
+                     fmt::format("cannot create the seeds file ({})", std::strerror(errno)));
+  errno = 0;
+  std::fprintf(file, "# amrstream seeds: x y z in physical coordinates\n");
   for (const glm::dvec3& p : seeds.points)
-    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p.x, p.y, p.z);
-  if (!out.flush()) throw InputError(path.string(), "write failed (disk full?)");
+    std::fprintf(file, "%.17g %.17g %.17g\n", p.x, p.y, p.z);  // as {:.17g}: reads back the same
+  const bool written =
+      std::fflush(file) == 0 && !std::ferror(file) && ::fsync(::fileno(file)) == 0;
+  int error = written ? 0 : (errno != 0 ? errno : EIO);
+  if (std::fclose(file) != 0 && error == 0) error = errno;
+  if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
+  if (error != 0) {
+    std::remove(temporary.c_str());
+    throw InputError(path.string(),
+                     fmt::format("cannot write the seeds file ({})", std::strerror(error)));
+  }
 }
 
 SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,

@@ -19,27 +19,39 @@
 #include <type_traits>
 #include <utility>
 
+#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
+#include "util/input_file.hpp"
 
 namespace amrstream::output {
 namespace {
 
+// The whole file, which must be a regular file (a FIFO would block, a device never end) that fits
+// in the memory traces may take, and must keep its size while it is read.
 std::string readFileBytes(const std::filesystem::path& path) {
+  const std::uint64_t size = regularFileSize(path);
+  const double limit = kTraceMemoryShare * physicalMemoryBytes();
+  if (limit > 0.0 && double(size) > limit)
+    throw InputError(path.string(),
+                     fmt::format("the file's {:.1f} GiB are more than the {:.1f} GiB (3/4 of the "
+                                 "memory) traces may take on this machine; split the file",
+                                 double(size) / 0x1p30, limit / 0x1p30));
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              std::fclose);
   if (!file) {
     throw InputError(path.string(), fmt::format("cannot open ({})", std::strerror(errno)));
   }
-  std::error_code ignored;
-  const std::uintmax_t size = std::filesystem::file_size(path, ignored);
-  std::string bytes;
-  if (!ignored) bytes.reserve(static_cast<std::size_t>(size));
-  std::array<char, 1 << 16> chunk;
-  while (const std::size_t count = std::fread(chunk.data(), 1, chunk.size(), file.get())) {
-    bytes.append(chunk.data(), count);
-  }
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  const std::size_t read = std::fread(bytes.data(), 1, bytes.size(), file.get());
   if (std::ferror(file.get())) {
     throw InputError(path.string(), fmt::format("cannot read ({})", std::strerror(errno)));
+  }
+  const bool grew = read == bytes.size() && std::fgetc(file.get()) != EOF;
+  if (read != bytes.size() || grew) {
+    throw InputError(path.string(),
+                     fmt::format("the file changed while it was read: {} bytes when opened, {} "
+                                 "read",
+                                 size, grew ? "more" : std::to_string(read)));
   }
   return bytes;
 }
@@ -243,6 +255,16 @@ int VtkXmlFile::components(const XmlElement& dataArray) const {
                      dataArray.attribute("Name") ? *dataArray.attribute("Name") : "", n));
   }
   return static_cast<int>(n);
+}
+
+void VtkXmlFile::checkFitsInMemory(std::uint64_t values, std::size_t bytesEach,
+                                   const std::string& what) const {
+  const double bytes = double(values) * double(bytesEach);
+  const double limit = kTraceMemoryShare * physicalMemoryBytes();
+  if (limit > 0.0 && bytes > limit)
+    fail(fmt::format("array {} holds {} values, {:.1f} GiB once read, more than the {:.1f} GiB "
+                     "(3/4 of the memory) traces may take on this machine",
+                     what, values, bytes / 0x1p30, limit / 0x1p30));
 }
 
 void VtkXmlFile::checkCount(std::uint64_t values, std::optional<std::uint64_t> tuples,
@@ -510,6 +532,7 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
                                                  ? inlineBlock(array, what, decoded)
                                                  : appendedBlock(array, what, decoded);
     checkBytes(block.size());
+    checkFitsInMemory(block.size() / elementBytes, sizeof(T), what);
     std::vector<T> out(block.size() / elementBytes);
     convertInto(out, 0, block);
     return out;
@@ -520,6 +543,7 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
     const BlockReader reader(compression_, compressed.header, compressed.blocks);
     // Sized by the header, which the reader checked against the compressed bytes in the file.
     checkBytes(reader.uncompressedBytes());
+    checkFitsInMemory(reader.uncompressedBytes() / elementBytes, sizeof(T), what);
     std::vector<T> out(static_cast<std::size_t>(reader.uncompressedBytes() / elementBytes));
     // A value may straddle two batches when blocks are not a whole number of values long.
     std::vector<std::byte> straddling;

@@ -14,9 +14,11 @@
 // compressed array's block header on its own (padded with '=') and then all its compressed
 // blocks as one more base64 run; both are read that way.
 //
-// Every problem throws amrstream::InputError naming the file (and the array, for its data);
-// nothing is read past the file's end and no allocation is sized by an attribute before the
-// data to fill it has been found. For compressed arrays: the block count and the compressed
+// Every problem throws amrstream::InputError naming the file (and the array, for its data). The
+// path must name a regular file (a FIFO or a device is refused before it is opened) that fits in
+// 3/4 of the memory and keeps its size while it is read. Nothing is read past the file's end, no
+// allocation is sized by an attribute before the data to fill it has been found, and no array's
+// converted values may exceed 3/4 of the memory. For compressed arrays: the block count and the compressed
 // sizes must fit in the bytes left in the file, a block may not claim more bytes than its
 // compressor can inflate its compressed bytes to, the total must equal NumberOfTuples x
 // components (where the caller knows it) before anything is decompressed, and every block must
@@ -80,6 +82,10 @@ class VtkXmlFile {
                         int expectedComponents, const std::string& what) const;
   void checkCount(std::uint64_t values, std::optional<std::uint64_t> tuples, int components,
                   const std::string& what) const;
+  // An array's values, `bytesEach` once converted, must fit in the memory traces may take: a
+  // compressed array may inflate a thousandfold.
+  void checkFitsInMemory(std::uint64_t values, std::size_t bytesEach,
+                         const std::string& what) const;
   // The payload of a format="binary" or format="appended" array; `decoded` holds it when it had
   // to be decoded from base64.
   std::span<const std::byte> inlineBlock(const XmlElement& dataArray, const std::string& what,

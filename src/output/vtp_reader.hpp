@@ -31,10 +31,10 @@
 namespace amrstream::output {
 
 // Throws amrstream::InputError naming `path` and the problem on a missing or unreadable file,
-// one that is not VTK XML PolyData, has several pieces, is LZMA-compressed, corrupt or
-// truncated, has an array offset outside the appended data, connectivity ids out of range,
-// decreasing offsets, non-finite positions, or traces that would not fit in this machine's
-// memory.
+// one that is not a regular file (a FIFO, a device), changes while it is read, is not VTK XML
+// PolyData, has several pieces, is LZMA-compressed, corrupt or truncated, has an array offset
+// outside the appended data, connectivity ids out of range, decreasing offsets, non-finite
+// positions, or arrays or traces that would not fit in this machine's memory.
 flow::TraceSet readVtpTraces(const std::filesystem::path& path);
 
 }  // namespace amrstream::output

@@ -107,7 +107,7 @@ TEST_F(Cli, BadOptionsFail) {
   EXPECT_THAT(r.output, HasSubstr("--step-mode"));
   r = run("trace builtin:rotation" + kSmall + " --step-size -1");
   EXPECT_EQ(r.status, 2);
-  EXPECT_THAT(r.output, HasSubstr("step size must be positive"));
+  EXPECT_THAT(r.output, HasSubstr("--step-size: -1 is not > 0"));
   r = run("gen rotation --levels 12 --out " + path("x"));
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("levels"));

@@ -5,8 +5,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "flow/vector_selection.hpp"
 #include "flow_test_support.hpp"
@@ -47,7 +53,50 @@ TEST(SeedFile, RejectsMalformedLinesNamingTheLine) {
   const fs::path empty = writeSeeds("empty", "# nothing\n");
   EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(empty); }), HasSubstr("holds no seeds"));
   EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile("/nonexistent/seeds.txt"); }),
-              HasSubstr("/nonexistent/seeds.txt: cannot open"));
+              HasSubstr("/nonexistent/seeds.txt: no such file"));
+}
+
+// Checked before opening: a FIFO without a writer would block the reader, a device never end.
+TEST(SeedFile, RefusesFifosDevicesAndDirectoriesByName) {
+  const fs::path fifo = fs::temp_directory_path() / ("amrstream-seeds-fifo-" +
+                                                     std::to_string(::getpid()));
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(fifo); }),
+              HasSubstr(fifo.string() + ": is a FIFO (named pipe), not a regular file"));
+  fs::remove(fifo);
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile("/dev/zero"); }),
+              HasSubstr("/dev/zero: is a device, not a regular file"));
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(fs::temp_directory_path()); }),
+              HasSubstr("is a directory"));
+}
+
+// A file whose size differs from what was read (here a /proc file, which says it is empty and is
+// not) has changed underneath: refused by name, whatever its lines hold.
+TEST(SeedFile, AFileThatChangesWhileItIsReadFailsByName) {
+  EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile("/proc/self/status"); }),
+              HasSubstr("/proc/self/status: the file changed while it was read: 0 bytes when "
+                        "opened, more read"));
+}
+
+// The file is written beside the target and renamed over it: another name of the old file (a
+// hard link) keeps the old contents, and no temporary is left.
+TEST(SeedFile, WritingReplacesTheFileInsteadOfWritingIntoIt) {
+  const fs::path dir = fs::temp_directory_path() / "amrstream-seeds-replace";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "old.txt") << "1 2 3\n";
+  fs::create_hard_link(dir / "old.txt", dir / "seeds.txt");
+  SeedList seeds;
+  seeds.points = {{0.1, 0.2, 0.3}, {4, 5, 6}};
+  writeSeedFile(dir / "seeds.txt", seeds);
+  EXPECT_EQ(readSeedFile(dir / "seeds.txt").points, seeds.points);
+  EXPECT_EQ(readSeedFile(dir / "old.txt").points, std::vector<glm::dvec3>{glm::dvec3(1, 2, 3)});
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"old.txt", "seeds.txt"}));
+  fs::remove_all(dir);
 }
 
 TEST(SeedBox, IsReproducibleAndInsideTheBox) {

@@ -87,6 +87,16 @@ TEST_F(PngIoTest, WriteLeavesOnlyTheFinishedFile) {
   EXPECT_EQ(readPng(dir_ / "a.png").rgba, randomImage(2, 3, 8).rgba);
 }
 
+// Written beside the target and renamed over it: another name of the old file (a hard link)
+// keeps the old image.
+TEST_F(PngIoTest, WritingReplacesTheFileInsteadOfWritingIntoIt) {
+  writePng(dir_ / "old.png", randomImage(4, 4, 1));
+  std::filesystem::create_hard_link(dir_ / "old.png", dir_ / "new.png");
+  writePng(dir_ / "new.png", randomImage(3, 2, 2));
+  EXPECT_EQ(readPng(dir_ / "new.png").rgba, randomImage(3, 2, 2).rgba);
+  EXPECT_EQ(readPng(dir_ / "old.png").rgba, randomImage(4, 4, 1).rgba);
+}
+
 TEST_F(PngIoTest, WritingAnEmptyImageThrowsAndWritesNothing) {
   const auto path = dir_ / "empty.png";
   EXPECT_THAT(errorOf([&] { writePng(path, Image(0, 4)); }),
