@@ -40,6 +40,8 @@ void checkSeedCount(double count, const std::string& option);
 struct Domain {
   glm::dvec3 lower{0.0}, upper{0.0};
   glm::dvec3 finestWidth{1.0};
+  // When known, random seeds are drawn inside its cells, never in holes of the domain.
+  const flow::VectorVolume* volume = nullptr;
 };
 Domain domainOf(const Dataset& cells);
 Domain domainOf(const flow::VectorVolume& volume);

@@ -14,7 +14,7 @@ namespace amrstream {
 struct TraceSettings {
   std::uint32_t steps = 1000;      // at most this many steps per line
   std::optional<float> stepSize;   // default: see chooseStepSize
-  std::string stepMode = "cell";   // cell, time or arc
+  std::string stepMode = "arc";    // arc, cell (the paper's) or time: see docs/cli.md
   std::string integrator = "rk4";  // rk4, rk45, rk2 or euler
   float tolerance = 1e-4f;         // rk45: error per step, in finest cell widths of its region
   std::optional<float> minStep;    // rk45: default the first step / 100

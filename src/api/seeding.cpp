@@ -42,9 +42,9 @@ std::pair<glm::dvec3, glm::dvec3> seedBox(const SeedRequest& request, const Doma
 
 // The least host memory a seed takes through a run: its point and the text naming its origin in
 // the seed list, and one traced line (offset, seed id, direction, steps, reason) of one point.
-const double kLeastBytesPerSeed = double(sizeof(glm::dvec3) + sizeof(std::string) + 32 +
-                                          sizeof(std::uint64_t) + 4 * sizeof(std::uint32_t) +
-                                          flow::TraceSet::bytesPerPoint(0, false));
+const double kLeastBytesPerSeed =
+    double(sizeof(glm::dvec3) + sizeof(std::string) + 32 + sizeof(std::uint64_t) +
+           4 * sizeof(std::uint32_t) + flow::TraceSet::bytesPerPoint(0, false));
 
 }  // namespace
 
@@ -56,11 +56,11 @@ void checkSeedCount(double count, const std::string& option) {
   const double bytes = count * kLeastBytesPerSeed;
   const double limit = kTraceMemoryShare * physicalMemoryBytes();
   if (limit > 0.0 && bytes > limit)
-    throw InputError(option, fmt::format("{:.0f} seeds need at least {:.1f} GiB ({:.0f} bytes each "
-                                         "for the seed and its traced line), more than the {:.1f} "
-                                         "GiB (3/4 of the memory) traces may take on this machine",
-                                         count, bytes / 0x1p30, kLeastBytesPerSeed,
-                                         limit / 0x1p30));
+    throw InputError(option,
+                     fmt::format("{:.0f} seeds need at least {:.1f} GiB ({:.0f} bytes each "
+                                 "for the seed and its traced line), more than the {:.1f} "
+                                 "GiB (3/4 of the memory) traces may take on this machine",
+                                 count, bytes / 0x1p30, kLeastBytesPerSeed, limit / 0x1p30));
 }
 
 Domain domainOf(const Dataset& cells) {
@@ -70,7 +70,7 @@ Domain domainOf(const Dataset& cells) {
 }
 
 Domain domainOf(const flow::VectorVolume& volume) {
-  return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing};
+  return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing, &volume};
 }
 
 void checkSeedRequest(const SeedRequest& request) {
@@ -121,7 +121,10 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
     description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
     return flow::seedsOnGrid(lo, hi, counts);
   }
-  description = fmt::format("random (seed {}) in a box", request.seed);
+  description = fmt::format("random (seed {}) in {}", request.seed,
+                            domain.volume ? "the cells of a box" : "a box");
+  if (domain.volume)
+    return flow::randomSeedsInCells(*domain.volume, lo, hi, request.count, request.seed);
   return flow::randomSeedsInBox(lo, hi, request.count, request.seed);
 }
 

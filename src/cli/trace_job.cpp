@@ -98,8 +98,13 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   std::string limits;
   if (o.trace.maxLength > 0.0f) limits += fmt::format(", length <= {:g}", o.trace.maxLength);
   if (o.trace.maxTime > 0.0f) limits += fmt::format(", |time| <= {:g}", o.trace.maxTime);
-  fmt::print("stepping   mode {}, h = {:g}, {}, at most {} steps{}\n", o.trace.stepMode,
-             options.stepSize,
+  const std::string integrator =
+      options.integrator == flow::Integrator::Rk45
+          ? fmt::format("rk45 (tolerance {:g}, steps {:g} .. {:g})", options.tolerance,
+                        options.minStep, options.maxStep)
+          : integratorName(options.integrator);
+  fmt::print("stepping   mode {}, h = {:g}, {}, {}, at most {} steps{}\n", o.trace.stepMode,
+             options.stepSize, integrator,
              options.direction == flow::Direction::Both ? "both directions"
                                                         : directionName(options.direction),
              o.trace.steps, limits);
@@ -239,9 +244,29 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->check(positiveFloat());
   command
       ->add_option("--step-mode", options->trace.stepMode,
-                   "cell: RK4 on w(x)v(x) (paper); time: fixed dt; arc: unit speed")
+                   "arc: steps of h cell widths whatever the speed; cell: the paper's, on "
+                   "w(x)v(x), so h depends on the vector's units; time: fixed dt")
       ->capture_default_str()
       ->check(CLI::IsMember({"cell", "time", "arc"}));
+  command
+      ->add_option("--integrator", options->trace.integrator,
+                   "rk4 (the paper's), rk45 (Dormand-Prince with error control), rk2 or euler")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rk4", "rk45", "rk2", "euler"}));
+  command
+      ->add_option("--tolerance", options->trace.tolerance,
+                   "rk45: the error allowed per step, in finest cell widths of its region")
+      ->capture_default_str()
+      ->check(positiveFloat());
+  command
+      ->add_option("--min-step", options->trace.minStep,
+                   "rk45: the smallest step, in --step-size's units [default: the first step / "
+                   "100]")
+      ->check(positiveFloat());
+  command
+      ->add_option("--max-step", options->trace.maxStep,
+                   "rk45: the largest step, in --step-size's units [default: the first step x 4]")
+      ->check(positiveFloat());
   command
       ->add_option("--direction", options->trace.direction,
                    "integration direction: forward, backward, or both (two lines per seed, as "

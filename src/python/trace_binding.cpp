@@ -358,7 +358,7 @@ void bindTracing(py::module_& m) {
       py::arg("target"), py::arg("seeds"), py::kw_only(), py::arg("vector") = py::none(),
       py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
       py::arg("interpolant") = py::none(), py::arg("steps") = 1000,
-      py::arg("step_size") = py::none(), py::arg("step_mode") = "cell",
+      py::arg("step_size") = py::none(), py::arg("step_mode") = "arc",
       py::arg("integrator") = "rk4", py::arg("tolerance") = 1e-4f,
       py::arg("min_step") = py::none(), py::arg("max_step") = py::none(),
       py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,

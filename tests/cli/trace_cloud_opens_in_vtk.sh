@@ -22,7 +22,7 @@ points=$(echo "$line" | sed -n 's/.*(\([0-9,]*\) polylines, \([0-9,]*\) points).
   --cell-array SeedIds:1 --cell-array ReasonForTermination:1 \
   --scalars IntegrationTime --vectors mag --speed-of mag --both-directions 64 \
   --field-text Input=builtin:cloud --field-text IntegrationDirection=both \
-  --field-text PointDataChannels=dens --field-text StepMode=cell
+  --field-text PointDataChannels=dens --field-text StepMode=arc --field-text Integrator=rk4
 
 # A periodic box: the lines are split where they wrap, so there are more polylines than lines,
 # every one inside the domain; VTK opens them.
