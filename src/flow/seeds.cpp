@@ -142,7 +142,14 @@ void closeUpperFaces(const VectorVolume& volume, SeedList& seeds) {
 void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {
   for (std::size_t i = 0; i < seeds.points.size(); ++i) {
     const glm::dvec3 p = seeds.points[i];
-    if (locateRegion(volume, glm::vec3(volume.transform.toCellUnits(p))) >= 0) continue;
+    const VectorSample sample = sampleVector(volume, glm::vec3(volume.transform.toCellUnits(p)));
+    if (sample.valid) continue;
+    if (sample.located)
+      throw InputError(seeds.origins[i],
+                       fmt::format("seed ({:g}, {:g}, {:g}) lies on the outer face of the data, "
+                                   "next to empty space, where no cell's tent function reaches: "
+                                   "move it into a cell",
+                                   p.x, p.y, p.z));
     const glm::dvec3 lo = domainLower(volume), hi = domainUpper(volume);
     throw InputError(seeds.origins[i],
                      fmt::format("seed ({:g}, {:g}, {:g}) is outside the domain [{:g}, {:g}) x "

@@ -107,12 +107,14 @@ PieceTable pieceTable(std::vector<Piece> pieces) {
   return table;
 }
 
-// Bytes [first, first + out.size()) of a point array, `width` floats per written point, whose
-// values along a line `lineValues(line, scratch)` gives; each piece takes its part of its line
-// (a 1-point piece its values twice). Thread-safe when lineValues is.
+// Bytes [first, first + out.size()) of the point array `name`, `width` floats per written point,
+// whose values along a line `lineValues(line, scratch)` gives; each piece takes its part of its
+// line (a 1-point piece its values twice). Thread-safe when lineValues is. Throws
+// std::runtime_error naming the array and the point for a value that is not finite: no inf or
+// NaN is ever written (the file is then not made).
 template <typename LineValues>
 void fillPoints(const PieceTable& table, std::size_t width, const LineValues& lineValues,
-                std::uint64_t first, std::span<std::byte> out) {
+                const std::string& name, std::uint64_t first, std::span<std::byte> out) {
   const std::uint64_t pointBytes = width * sizeof(float);
   const std::uint64_t begin = first / pointBytes;
   const std::uint64_t end = (first + out.size() + pointBytes - 1) / pointBytes;
@@ -129,6 +131,11 @@ void fillPoints(const PieceTable& table, std::size_t width, const LineValues& li
       to = std::copy_n(line.data() + point * width, width, to);
     }
   }
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw std::runtime_error(fmt::format("the point array '{}' has a non-finite value ({}) at "
+                                           "written point {}: nothing was written",
+                                           name, values[i], begin + i / width));
   std::memcpy(out.data(), reinterpret_cast<const std::byte*>(values.data()) + (first - begin * pointBytes),
               out.size());
 }
@@ -138,9 +145,9 @@ template <typename LineValues>
 AppendedArray pointArray(std::string name, int components, const PieceTable& table,
                          LineValues lineValues) {
   const std::size_t width = static_cast<std::size_t>(components);
-  return {std::move(name), "Float32", components, table.points() * width * sizeof(float), {},
-          [&table, width, lineValues](std::uint64_t first, std::span<std::byte> out) {
-            fillPoints(table, width, lineValues, first, out);
+  return {name, "Float32", components, table.points() * width * sizeof(float), {},
+          [&table, width, lineValues, name](std::uint64_t first, std::span<std::byte> out) {
+            fillPoints(table, width, lineValues, name, first, out);
           }};
 }
 

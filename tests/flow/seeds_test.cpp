@@ -124,6 +124,17 @@ TEST(SeedCheck, NamesTheFirstSeedOutsideTheDomain) {
   EXPECT_NO_THROW(checkSeedsInDomain(volume, inside));
 }
 
+TEST(SeedCheck, RefusesASeedWhereNoTentReachesSoNoSampleIsNaN) {
+  // x = 7.5 is the lower face of the second block's domain: in its region, but every tent
+  // function of its cells is zero there, so the sample (and point data) would be undefined.
+  const VectorVolume volume = testing::volumeOf(testing::twoBlocksWithAGap());
+  SeedList seeds;
+  seeds.points = {{2.0, 2.0, 2.0}, {7.5, 2.0, 2.0}};
+  seeds.origins = {"a", "b"};
+  EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
+              HasSubstr("b: seed (7.5, 2, 2) lies on the outer face of the data"));
+}
+
 TEST(VectorSelection, PrefersVelocityThenMagneticFieldAndNamesTheVector) {
   const auto field = [](std::vector<std::string> names) {
     std::vector<bricks::Channel> channels;

@@ -1,5 +1,6 @@
 #include "output/vtp_writer.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <ostream>
 #include <set>
 #include <stdexcept>
@@ -442,6 +444,22 @@ TEST_P(VtpWriter, InconsistentTracesThrowBeforeCreatingAFile) {
   flow::TraceSet missingReason = sampleTraces(kSamplePointCounts);
   missingReason.reasons.pop_back();
   EXPECT_THROW(output::writeVtp(path, missingReason), std::invalid_argument);
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_P(VtpWriter, ANonFiniteValueIsRefusedAndNoFileIsMade) {
+  const fs::path path = dir_ / "traces.vtp";
+  flow::TraceSet badPosition = sampleTraces(kSamplePointCounts);
+  badPosition.positions[4].y = std::numeric_limits<float>::infinity();
+  try {
+    output::writeVtp(path, badPosition, options());
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("'Points' has a non-finite value (inf)"));
+  }
+  flow::TraceSet badTime = sampleTraces(kSamplePointCounts);
+  badTime.times[7] = std::nanf("");
+  EXPECT_THROW(output::writeVtp(path, badTime, options()), std::runtime_error);
   EXPECT_TRUE(entries().empty());
 }
 
