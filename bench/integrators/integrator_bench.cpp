@@ -14,7 +14,8 @@
 // the finest cell crossed at the maximum speed). For each integrator and step (rk45: tolerance)
 // the table gives the steps taken, the error of the end points (RMS and maximum, in finest
 // cells) and the tracing time (GPU backends: the kernels' time from timestamps; the CPU: wall
-// time); then, for target errors, the fastest run of each integrator that meets them. A
+// time); then, for target RMS errors, the fastest run of each integrator that meets them (the
+// maximum is left to a few seeds near the flow's separatrices, where rounding alone grows). A
 // benchmark, not a test: nothing is asserted.
 
 #include <fmt/format.h>
@@ -197,13 +198,13 @@ int main(int argc, char** argv) {
     for (float multiple : multiples) add(integrator, multiple * r.tau);
   for (float tolerance : {1e-1f, 1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f}) add("rk45", tolerance);
 
-  fmt::print("\n| max error at most (cells) | euler | rk2 | rk4 | rk45 |\n|---|---|---|---|---|\n");
-  for (double target : {1.0, 1e-1, 1e-2, 1e-3}) {
+  fmt::print("\n| RMS error at most (cells) | euler | rk2 | rk4 | rk45 |\n|---|---|---|---|---|\n");
+  for (double target : {1.0, 1e-1, 1e-2, 1e-3, 5e-4}) {
     std::string row = fmt::format("| {:g} |", target);
     for (const char* integrator : {"euler", "rk2", "rk4", "rk45"}) {
       std::optional<Run> best;
       for (const Run& run : runs)
-        if (run.integrator == integrator && run.maxError <= target &&
+        if (run.integrator == integrator && run.rmsError <= target &&
             (!best || run.seconds < best->seconds))
           best = run;
       row += best ? fmt::format(" {:.4f} s, {} steps ({:.3g}) |", best->seconds, best->steps,
