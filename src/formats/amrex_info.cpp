@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <string>
 
+#include "input_bytes.hpp"
+#include "text_numbers.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -28,8 +29,7 @@ fs::path findJobInfo(const fs::path& directory) {
 }
 
 void readPeriodicity(const fs::path& jobInfo, bricks::DatasetInfo& info) {
-  std::ifstream in(jobInfo);
-  if (!in) throw InputError(jobInfo.string(), "cannot open the job_info file");
+  std::istringstream in(readWholeFile(jobInfo, "the job_info file"));
   const std::string key = "geometry.is_periodic";
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -42,7 +42,7 @@ void readPeriodicity(const fs::path& jobInfo, bricks::DatasetInfo& info) {
         (words >> extra) || std::ranges::any_of(flags, [](int f) { return f != 0 && f != 1; }))
       throw InputError(fmt::format("{}:{}", jobInfo.string(), number),
                        fmt::format("'{}' is not '{} = X Y Z' with 0 or 1 for each axis",
-                                   line.substr(start), key));
+                                   excerpt(line.substr(start)), key));
     info.periodicKnown = true;
     for (int a = 0; a < 3; ++a) info.periodic[a] = flags[a] == 1;
   }

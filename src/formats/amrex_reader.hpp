@@ -18,7 +18,12 @@
 
 namespace amrstream::formats {
 
-// Throws InputError naming the offending file and the inconsistency.
+// Throws InputError naming the offending file and the inconsistency: a path that is not a regular
+// file, a malformed header, a level domain that is not the coarser one refined or spans 2^21 or
+// more cells, a box outside its level's domain, a FAB whose header disagrees with Cell_H or whose
+// declared value type does not fill its bytes exactly (float32 declared over float64 data), a
+// truncated FAB, or a value that is not finite or beyond the float range (naming the FAB file,
+// the variable and the cell).
 bricks::AmrField readAmrexPlotfile(const std::filesystem::path& directory);
 
 // The Header's time alone, parsing only the Header (no level data); errors as readAmrexPlotfile's.

@@ -12,14 +12,15 @@ namespace amrstream::formats {
 
 class EnzoParameters {
  public:
-  // Throws InputError when the file cannot be opened.
+  // Throws InputError when the path is not a readable regular file.
   explicit EnzoParameters(const std::filesystem::path& file);
 
   const std::filesystem::path& file() const { return file_; }
   const std::map<std::string, std::string>& values() const { return values_; }
   bool has(const std::string& key) const { return values_.contains(key); }
 
-  // Absent keys give nullopt; a value that is not exactly one number (or three) throws.
+  // Absent keys give nullopt; a value that is not exactly one finite number (or three) throws,
+  // naming the file, the key and the text.
   std::optional<double> number(const std::string& key) const;
   std::optional<std::array<double, 3>> threeNumbers(const std::string& key) const;
 

@@ -6,41 +6,30 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cell_checks.hpp"
 #include "enzo_info.hpp"
 #include "enzo_parameters.hpp"
+#include "hdf5_checks.hpp"
+#include "hdf5_handle.hpp"
+#include "input_bytes.hpp"
+#include "text_numbers.hpp"
 #include "util/input_error.hpp"
+#include "util/input_file.hpp"
 
 namespace amrstream::formats {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Owns one hid_t and closes it with the matching H5?close.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, H5I_INVALID_HID)), close_(o.close_) {}
-  Handle& operator=(Handle&&) = delete;
-  Handle(const Handle&) = delete;
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using Handle = Hdf5Handle;
 
 Handle checked(hid_t id, herr_t (*close)(hid_t), const fs::path& file, const std::string& what) {
   if (id < 0) throw InputError(file.string(), fmt::format("HDF5 could not {}", what));
@@ -70,104 +59,156 @@ std::string trim(std::string s) {
   return s;
 }
 
-template <typename T>
-glm::vec<3, T> parse3(const std::string& value, const fs::path& file, const std::string& what) {
-  std::istringstream in(value);
-  glm::vec<3, T> v{};
-  std::string extra;
-  if (!(in >> v.x >> v.y >> v.z) || (in >> extra))
-    throw InputError(file.string(), fmt::format("{} needs 3 numbers, got '{}'", what, value));
-  return v;
+// Active zones per grid axis and per grid: beyond these no grid fits the cells' extent or this
+// machine's memory.
+constexpr std::int64_t kMaxZonesPerAxis = std::int64_t{1} << bricks::kMaxExtentBits;
+constexpr std::int64_t kMaxZonesPerGrid = std::int64_t{1} << 31;
+
+glm::ivec3 toIvec3(const std::array<std::int64_t, 3>& v) {
+  return glm::ivec3(static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]));
+}
+glm::dvec3 toDvec3(const std::array<double, 3>& v) { return glm::dvec3(v[0], v[1], v[2]); }
+
+// The grid's active zones, or an InputError unless they are 1 to kMaxZonesPerAxis per axis and at
+// most kMaxZonesPerGrid in all, before anything is allocated for them.
+glm::ivec3 requireGridSize(int id, const glm::i64vec3& dims, const std::string& table) {
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] < 1 || dims[a] > kMaxZonesPerAxis)
+      throw InputError(table, fmt::format("grid {} has {} active zones along axis {} (expected 1 "
+                                          "to {})",
+                                          id, dims[a], "xyz"[a], kMaxZonesPerAxis));
+  const glm::u64vec3 size(dims);  // up to 2^21 each: the product fits in 64 bits unsigned
+  const std::uint64_t zones = size.x * size.y * size.z;
+  if (zones > std::uint64_t(kMaxZonesPerGrid))
+    throw InputError(table, fmt::format("grid {} has {} x {} x {} = {} active zones, more than "
+                                        "the {} accepted",
+                                        id, dims.x, dims.y, dims.z, zones, kMaxZonesPerGrid));
+  return glm::ivec3(dims);
 }
 
 Domain readParameters(const EnzoParameters& parameters) {
   const auto& kv = parameters.values();
-  const fs::path& file = parameters.file();
+  const std::string file = parameters.file().string();
   auto need = [&](const char* key) -> const std::string& {
     const auto it = kv.find(key);
-    if (it == kv.end()) throw InputError(file.string(), fmt::format("missing {}", key));
+    if (it == kv.end()) throw InputError(file, fmt::format("missing {}", key));
     return it->second;
   };
   Domain d;
-  d.topDims = parse3<int>(need("TopGridDimensions"), file, "TopGridDimensions");
-  d.left = parse3<double>(need("DomainLeftEdge"), file, "DomainLeftEdge");
-  d.right = parse3<double>(need("DomainRightEdge"), file, "DomainRightEdge");
-  if (const auto it = kv.find("RefineBy"); it != kv.end() && std::stoi(it->second) != 2)
-    throw InputError(file.string(),
-                     fmt::format("RefineBy {} is not supported (only 2)", it->second));
+  d.topDims = toIvec3(parseThreeIntegers(need("TopGridDimensions"), file, "TopGridDimensions", 1,
+                                         kMaxZonesPerAxis));
+  d.left = toDvec3(parseThreeFinite(need("DomainLeftEdge"), file, "DomainLeftEdge"));
+  d.right = toDvec3(parseThreeFinite(need("DomainRightEdge"), file, "DomainRightEdge"));
+  if (const auto it = kv.find("RefineBy"); it != kv.end()) {
+    const std::int64_t refineBy = parseInteger(it->second, file, "RefineBy", 1, 1 << 30);
+    if (refineBy != 2)
+      throw InputError(file, fmt::format("RefineBy {} is not supported (only 2)", refineBy));
+  }
   if (kv.contains("TopGridRank") && need("TopGridRank") != "3")
-    throw InputError(file.string(), "only 3D data (TopGridRank 3) is supported");
+    throw InputError(file, "only 3D data (TopGridRank 3) is supported");
   d.known = true;
   return d;
 }
 
+// "Pointer: Grid[A]->NextGridWHICH" = TARGET (blanks after the colon optional); false when the
+// key is not of that form.
+bool parsePointer(std::string_view key, std::string_view value, const std::string& where,
+                  std::int64_t& grid, std::string& which, std::int64_t& target) {
+  constexpr std::string_view kPointer = "Pointer:", kGrid = "Grid[", kArrow = "]->NextGrid";
+  if (!key.starts_with(kPointer)) return false;
+  key.remove_prefix(kPointer.size());
+  while (!key.empty() && (key.front() == ' ' || key.front() == '\t')) key.remove_prefix(1);
+  if (!key.starts_with(kGrid)) return false;
+  const std::size_t close = key.find(kArrow);
+  if (close == std::string_view::npos) return false;
+  grid = parseInteger(key.substr(kGrid.size(), close - kGrid.size()), where, "a pointer's grid", 1,
+                      std::numeric_limits<std::int32_t>::max());
+  which = std::string(key.substr(close + kArrow.size()));
+  const auto words = splitWords(value);
+  if (words.empty()) return false;
+  target = parseInteger(words.front(), where, "a pointer's target grid", 0,
+                        std::numeric_limits<std::int32_t>::max());
+  return true;
+}
+
 // The text hierarchy: blocks `Grid = N` of `Key = value` lines, then `Pointer:` lines.
 std::vector<Grid> readHierarchy(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "cannot open the hierarchy file");
+  const std::string source = file.string();
+  const std::string text = readWholeFile(file, "the hierarchy file");
   std::vector<std::map<std::string, std::string>> blocks;
-  std::set<std::pair<int, std::string>> pointers;  // (grid, ThisLevel/NextLevel)
-  int maxTarget = 0;
-  for (std::string line; std::getline(in, line);) {
+  std::set<std::pair<std::int64_t, std::string>> pointers;  // (grid, ThisLevel/NextLevel)
+  std::int64_t maxTarget = 0;
+  std::size_t lineStart = 0;
+  for (int number = 1; lineStart < text.size(); ++number) {
+    const std::size_t lineEnd = std::min(text.find('\n', lineStart), text.size());
+    const std::string line = text.substr(lineStart, lineEnd - lineStart);
+    lineStart = lineEnd + 1;
     const auto eq = line.find('=');
     if (eq == std::string::npos) continue;
     const auto key = trim(line.substr(0, eq));
     const auto value = trim(line.substr(eq + 1));
+    const std::string where = fmt::format("{}:{}", source, number);
     if (key == "Grid") {
       if (value != std::to_string(blocks.size() + 1))
-        throw InputError(file.string(), fmt::format("expected Grid = {}, got Grid = {}",
-                                                    blocks.size() + 1, value));
+        throw InputError(where, fmt::format("expected Grid = {}, got Grid = {}", blocks.size() + 1,
+                                            excerpt(value)));
       blocks.emplace_back();
     } else if (key.starts_with("Pointer:")) {
-      // Pointer: Grid[a]->NextGridThisLevel = b
-      int a = 0;
-      char which[32] = {};
-      int target = -1;
-      if (std::sscanf(key.c_str(), "Pointer: Grid[%d]->NextGrid%31s", &a, which) != 2 ||
-          std::sscanf(value.c_str(), "%d", &target) != 1)
-        throw InputError(file.string(), fmt::format("cannot parse '{}' (truncated?)", trim(line)));
-      pointers.emplace(a, which);
+      std::int64_t grid = 0, target = 0;
+      std::string which;
+      if (!parsePointer(key, value, where, grid, which, target))
+        throw InputError(where, fmt::format("cannot parse '{}' (truncated?)", excerpt(trim(line))));
+      pointers.emplace(grid, which);
       maxTarget = std::max(maxTarget, target);
     } else if (!blocks.empty()) {
       blocks.back()[key] = value;
     }
   }
-  const int n = static_cast<int>(blocks.size());
-  if (n == 0) throw InputError(file.string(), "no grids (no `Grid = 1` line)");
-  if (maxTarget > n)
+  const std::size_t n = blocks.size();
+  if (n == 0) throw InputError(source, "no grids (no `Grid = 1` line)");
+  if (maxTarget > static_cast<std::int64_t>(n))
     throw InputError(
-        file.string(),
-        fmt::format("a pointer names grid {} but only {} grids are listed (truncated?)", maxTarget,
-                    n));
+        source, fmt::format("a pointer names grid {} but only {} grids are listed (truncated?)",
+                            maxTarget, n));
   std::vector<Grid> grids;
-  for (int i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const auto& b = blocks[i];
+    const int id = static_cast<int>(i) + 1;
     auto need = [&](const char* key) -> const std::string& {
       const auto it = b.find(key);
       if (it == b.end())
-        throw InputError(file.string(), fmt::format("grid {} lacks {} (truncated?)", i + 1, key));
+        throw InputError(source, fmt::format("grid {} lacks {} (truncated?)", id, key));
       return it->second;
     };
     for (const char* which : {"ThisLevel", "NextLevel"})
-      if (!pointers.contains({i + 1, which}))
+      if (!pointers.contains({id, which}))
         throw InputError(
-            file.string(),
-            fmt::format("grid {} lacks its NextGrid{} pointer (truncated?)", i + 1, which));
+            source, fmt::format("grid {} lacks its NextGrid{} pointer (truncated?)", id, which));
     if (trim(need("GridRank")) != "3")
-      throw InputError(file.string(), fmt::format("grid {}: only GridRank 3 is supported", i + 1));
+      throw InputError(source, fmt::format("grid {}: only GridRank 3 is supported", id));
     Grid g;
-    g.id = i + 1;
-    const auto start = parse3<int>(need("GridStartIndex"), file, "GridStartIndex");
-    const auto end = parse3<int>(need("GridEndIndex"), file, "GridEndIndex");
-    const auto total = parse3<int>(need("GridDimension"), file, "GridDimension");
-    g.dims = end - start + 1;
-    if (glm::any(glm::lessThan(start, glm::ivec3(0))) ||
-        glm::any(glm::greaterThanEqual(end, total)))
-      throw InputError(file.string(),
-                       fmt::format("grid {}: start/end index outside GridDimension", g.id));
-    g.left = parse3<double>(need("GridLeftEdge"), file, "GridLeftEdge");
-    g.right = parse3<double>(need("GridRightEdge"), file, "GridRightEdge");
-    if (const auto it = b.find("Level"); it != b.end()) g.level = std::stoi(it->second);
+    g.id = id;
+    const std::string what = fmt::format("grid {} ", id);
+    const std::int64_t kIntMax = std::numeric_limits<std::int32_t>::max();
+    const auto start =
+        parseThreeIntegers(need("GridStartIndex"), source, what + "GridStartIndex", 0, kIntMax);
+    const auto end =
+        parseThreeIntegers(need("GridEndIndex"), source, what + "GridEndIndex", 0, kIntMax);
+    const auto total =
+        parseThreeIntegers(need("GridDimension"), source, what + "GridDimension", 1, kIntMax);
+    glm::i64vec3 dims;
+    for (int a = 0; a < 3; ++a) {
+      if (end[a] >= total[a] || end[a] < start[a])
+        throw InputError(source, fmt::format("grid {}: start/end index {}..{} along axis {} is "
+                                             "not inside GridDimension {}",
+                                             id, start[a], end[a], "xyz"[a], total[a]));
+      dims[a] = end[a] - start[a] + 1;
+    }
+    g.dims = requireGridSize(id, dims, source);
+    g.left = toDvec3(parseThreeFinite(need("GridLeftEdge"), source, what + "GridLeftEdge"));
+    g.right = toDvec3(parseThreeFinite(need("GridRightEdge"), source, what + "GridRightEdge"));
+    if (const auto it = b.find("Level"); it != b.end())
+      g.level = static_cast<int>(parseInteger(it->second, source, what + "Level", 0, kIntMax));
     // An absolute path from the machine that wrote it: only the basename is meaningful.
     g.file = fs::path(need("BaryonFileName")).filename().string();
     grids.push_back(g);
@@ -178,10 +219,11 @@ std::vector<Grid> readHierarchy(const fs::path& file) {
 std::vector<hsize_t> shapeOf(hid_t dataset, const fs::path& file, const std::string& name) {
   const auto space = checked(H5Dget_space(dataset), H5Sclose, file, "get the shape of " + name);
   const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank < 0)
+  if (rank < 0 || rank > H5S_MAX_RANK)
     throw InputError(file.string(), fmt::format("HDF5 could not get the rank of {}", name));
   std::vector<hsize_t> dims(rank);
-  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0)
+    throw InputError(file.string(), fmt::format("HDF5 could not get the shape of {}", name));
   return dims;
 }
 
@@ -192,18 +234,21 @@ std::vector<T> readTable(hid_t h5file, const fs::path& file, const char* name, h
                           fmt::format("open dataset {}", name));
   if (shapeOf(ds.get(), file, name) != expected)
     throw InputError(file.string(), fmt::format("dataset {} has an unexpected shape", name));
-  std::size_t count = 1;
-  for (auto e : expected) count *= e;
-  std::vector<T> values(count);
+  std::vector<T> values(requireStoredValues(ds.get(), file.string(), name));
   if (H5Dread(ds.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
     throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", name));
   return values;
 }
 
+Handle openHdf5(const fs::path& file) {
+  regularFileSize(file);  // refuses a directory or FIFO before HDF5 opens it
+  return checked(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
+                 "open the file (not HDF5, truncated or corrupt?)");
+}
+
 // The HDF5 grid table: LeftEdges, RightEdges, ActiveDimensions (n,3, x y z), Level (n).
 std::vector<Grid> readHarrays(const fs::path& file) {
-  const auto h5 =
-      checked(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file, "open the file");
+  const auto h5 = openHdf5(file);
   const auto ds =
       checked(H5Dopen2(h5.get(), "Level", H5P_DEFAULT), H5Dclose, file, "open dataset Level");
   const auto shape = shapeOf(ds.get(), file, "Level");
@@ -221,23 +266,37 @@ std::vector<Grid> readHarrays(const fs::path& file) {
     g.level = levels[i];
     g.left = {lefts[3 * i], lefts[3 * i + 1], lefts[3 * i + 2]};
     g.right = {rights[3 * i], rights[3 * i + 1], rights[3 * i + 2]};
-    g.dims = {dims[3 * i], dims[3 * i + 1], dims[3 * i + 2]};
+    g.dims = requireGridSize(g.id, glm::i64vec3(dims[3 * i], dims[3 * i + 1], dims[3 * i + 2]),
+                             file.string());
   }
   return grids;
 }
 
-// Sets level (checked against the cell size), lower and width of every grid; returns the finest dx.
+// Sets level (checked against the cell size), lower and width of every grid; returns the finest
+// dx. Every grid must lie inside the domain, which spans fewer than 2^kMaxExtentBits finest cells
+// per axis, so the cells' integer arithmetic cannot overflow.
 glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::path& table) {
   const auto src = table.string();
   const glm::dvec3 topDx = (domain.right - domain.left) / glm::dvec3(domain.topDims);
-  if (glm::any(glm::lessThanEqual(topDx, glm::dvec3(0.0))))
-    throw InputError(src, "the domain or the top grid dimensions are empty");
+  for (int a = 0; a < 3; ++a)
+    if (!std::isnormal(topDx[a]) || !(topDx[a] > 0))
+      throw InputError(
+          src, fmt::format("the domain [{}, {}] along axis {} over {} top-grid "
+                           "cells gives cells {} wide",
+                           domain.left[a], domain.right[a], "xyz"[a], domain.topDims[a], topDx[a]));
   int finest = 0;
   for (auto& g : grids) {
-    if (glm::any(glm::lessThanEqual(g.dims, glm::ivec3(0))))
-      throw InputError(src, fmt::format("grid {} has no active zones", g.id));
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(g.left[a]) || !std::isfinite(g.right[a]) || !(g.right[a] > g.left[a]))
+        throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}", g.id, g.left[a],
+                                          g.right[a], "xyz"[a]));
     const glm::dvec3 ratio = topDx * glm::dvec3(g.dims) / (g.right - g.left);
-    const int level = static_cast<int>(std::lround(std::log2(ratio.x)));
+    const double log2Ratio = std::log2(ratio.x);
+    if (!(log2Ratio > -0.5 && log2Ratio < bricks::kMaxLevel + 0.5))
+      throw InputError(src, fmt::format("grid {}: its cells are 1/{} of a top-grid cell, not "
+                                        "1/2^L for a level L in 0..{}",
+                                        g.id, ratio.x, bricks::kMaxLevel));
+    const int level = static_cast<int>(std::lround(log2Ratio));
     for (int a = 0; a < 3; ++a)
       if (!(std::abs(ratio[a] / std::ldexp(1.0, level) - 1.0) < 1e-6))
         throw InputError(src, fmt::format("grid {}: cell size is not the top-grid cell size / 2^L "
@@ -246,20 +305,32 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
     if (g.level >= 0 && g.level != level)
       throw InputError(
           src, fmt::format("grid {}: Level {} but its cell size says {}", g.id, g.level, level));
-    if (level < 0 || level > bricks::kMaxLevel)
-      throw InputError(src, fmt::format("grid {}: level {} out of range", g.id, level));
     g.level = level;
     finest = std::max(finest, level);
   }
   const glm::dvec3 finestDx = topDx / std::ldexp(1.0, finest);
+  const glm::i64vec3 domainCells = glm::i64vec3(domain.topDims) << std::int64_t(finest);
+  for (int a = 0; a < 3; ++a)
+    if (domainCells[a] >= kMaxZonesPerAxis)
+      throw InputError(src, fmt::format("the domain spans {} finest cells along axis {} ({} "
+                                        "top-grid cells refined {} times); at most {} are "
+                                        "supported",
+                                        domainCells[a], "xyz"[a], domain.topDims[a], finest,
+                                        kMaxZonesPerAxis - 1));
   for (auto& g : grids) {
     g.width = 1 << (finest - g.level);
     const glm::dvec3 lo = (g.left - domain.left) / finestDx;
     const glm::dvec3 hi = (g.right - domain.left) / finestDx;
     for (int a = 0; a < 3; ++a) {
+      const std::int64_t upper = std::int64_t{g.dims[a]} * g.width;
+      if (!(lo[a] > -0.5 && lo[a] + upper < domainCells[a] + 0.5))
+        throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}, outside the "
+                                          "domain [{}, {}]",
+                                          g.id, g.left[a], g.right[a], "xyz"[a], domain.left[a],
+                                          domain.right[a]));
       g.lower[a] = static_cast<int>(std::lround(lo[a]));
-      const double up = static_cast<double>(g.lower[a]) + double(g.dims[a]) * g.width;
-      if (std::abs(lo[a] - g.lower[a]) > 1e-3 || std::abs(hi[a] - up) > 1e-3 ||
+      const double up = static_cast<double>(g.lower[a]) + static_cast<double>(upper);
+      if (std::abs(lo[a] - g.lower[a]) > 1e-3 || !(std::abs(hi[a] - up) <= 1e-3) ||
           g.lower[a] % g.width != 0)
         throw InputError(src, fmt::format("grid {} is not aligned to its level's cells", g.id));
     }
@@ -296,8 +367,10 @@ herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out) {
   return 0;
 }
 
-std::vector<float> readField(hid_t group, const fs::path& file, const std::string& groupName,
-                             const std::string& name, glm::ivec3 dims) {
+// One field of a grid, as stored (read as float64 so that no value is rounded before it is
+// checked).
+std::vector<double> readField(hid_t group, const fs::path& file, const std::string& groupName,
+                              const std::string& name, glm::ivec3 dims) {
   const auto what = fmt::format("{}/{}", groupName, name);
   if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
     throw InputError(file.string(), fmt::format("dataset {} is missing", what));
@@ -315,8 +388,8 @@ std::vector<float> readField(hid_t group, const fs::path& file, const std::strin
   const auto type = checked(H5Dget_type(ds.get()), H5Tclose, file, "get the type of " + what);
   if (H5Tget_class(type.get()) != H5T_FLOAT)
     throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
-  std::vector<float> values(std::size_t(dims.x) * dims.y * dims.z);
-  if (H5Dread(ds.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+  std::vector<double> values(requireStoredValues(ds.get(), file.string(), what));
+  if (H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
     throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", what));
   return values;
 }
@@ -325,9 +398,14 @@ struct Siblings {
   fs::path dir, parameter, hierarchy, harrays;
 };
 
-Siblings findSiblings(const fs::path& file) {
+// A path that is there, whatever it is: reading it then refuses a directory or FIFO by name.
+bool present(const fs::path& path) {
   std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw InputError(file.string(), "no such file");
+  return fs::exists(path, ec);
+}
+
+Siblings findSiblings(const fs::path& file) {
+  regularFileSize(file);
   fs::path base = file;
   const auto ext = file.extension().string();
   if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) base.replace_extension();
@@ -344,9 +422,8 @@ Siblings findSiblings(const fs::path& file) {
 bricks::AmrField readEnzo(const fs::path& file) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const auto sib = findSiblings(file);
-  std::error_code ec;
-  const bool hasHierarchy = fs::is_regular_file(sib.hierarchy, ec);
-  const bool hasHarrays = fs::is_regular_file(sib.harrays, ec);
+  const bool hasHierarchy = present(sib.hierarchy);
+  const bool hasHarrays = present(sib.harrays);
   if (!hasHierarchy && !hasHarrays)
     throw InputError(file.string(),
                      fmt::format("neither {} nor {} exists", sib.hierarchy.filename().string(),
@@ -372,7 +449,8 @@ bricks::AmrField readEnzo(const fs::path& file) {
 
   Domain domain;
   std::optional<EnzoParameters> parameters;
-  if (fs::is_regular_file(sib.parameter, ec)) {
+  std::error_code ec;
+  if (present(sib.parameter) && !fs::is_directory(sib.parameter, ec)) {
     parameters.emplace(sib.parameter);
     domain = readParameters(*parameters);
   } else {
@@ -393,12 +471,9 @@ bricks::AmrField readEnzo(const fs::path& file) {
     const fs::path path = sib.dir / g.file;
     auto it = files.find(g.file);
     if (it == files.end()) {
-      if (!fs::is_regular_file(path, ec))
+      if (!present(path))
         throw InputError(path.string(), fmt::format("grid {}'s field file is missing", g.id));
-      it = files
-               .emplace(g.file, checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT),
-                                        H5Fclose, path, "open the file"))
-               .first;
+      it = files.emplace(g.file, openHdf5(path)).first;
     }
     const auto groupName = fmt::format("/Grid{:08d}", g.id);
     const auto group = checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose,
@@ -412,10 +487,11 @@ bricks::AmrField readEnzo(const fs::path& file) {
       if (channels.empty())
         throw InputError(path.string(), fmt::format("group {} has no field datasets", groupName));
     }
-    const auto covered = coveredCells(g, grids, table);
-    std::vector<std::vector<float>> fields;
+    // The fields first: their storage bounds the grid's size before anything else is allocated.
+    std::vector<std::vector<double>> fields;
     for (const auto& c : channels)
       fields.push_back(readField(group.get(), path, groupName, c.name, g.dims));
+    const auto covered = coveredCells(g, grids, table);
 
     const auto level = static_cast<std::uint8_t>(finest - g.level);
     std::size_t index = 0;
@@ -425,12 +501,22 @@ bricks::AmrField readEnzo(const fs::path& file) {
           if (covered[index]) continue;
           lowers.push_back(g.lower + glm::ivec3(i, j, k) * g.width);
           levels.push_back(level);
-          for (std::size_t c = 0; c < channels.size(); ++c)
-            channels[c].values.push_back(fields[c][index]);
+          for (std::size_t c = 0; c < channels.size(); ++c) {
+            const double value = fields[c][index];
+            if (const auto problem = unusableFieldValue(value))
+              throw InputError(path.string(),
+                               fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
+                                           "{}) is {}",
+                                           groupName, channels[c].name, value, i, j, k, *problem));
+            channels[c].values.push_back(static_cast<float>(value));
+          }
         }
   }
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
-                         bricks::WorldTransform{domain.left, finestDx}, file.string());
+  const bricks::WorldTransform transform{domain.left, finestDx};
+  if (const auto problem = unrepresentablePositions(transform, lowers, levels))
+    throw InputError(table.string(), "the grids cannot be placed: " + *problem);
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
+                         file.string());
   field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
   return field;
 }

@@ -7,10 +7,15 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <fstream>
+#include <limits>
+#include <span>
 #include <sstream>
 
+#include "cell_checks.hpp"
+#include "file_set_writer.hpp"
+#include "input_bytes.hpp"
+#include "text_numbers.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -20,31 +25,29 @@ static_assert(std::endian::native == std::endian::little,
 
 namespace {
 
-std::vector<char> readWholeFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw InputError(path.string(), "cannot open the file");
-  const std::streamsize size = in.tellg();
-  std::vector<char> bytes(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(bytes.data(), size)) throw InputError(path.string(), "cannot read the file");
-  return bytes;
-}
+constexpr std::size_t kCellBytes = 4 * sizeof(std::int32_t);
+constexpr std::uint64_t kMaxCells = std::uint64_t{1} << 31;
 
 struct ExaConfig {
   std::filesystem::path cells;
   std::vector<std::pair<std::string, std::filesystem::path>> scalars;
   bricks::WorldTransform transform;
+  int originLine = 0, spacingLine = 0;  // 0: not in the file, the default
   bricks::DatasetInfo info;
 };
 
-constexpr const char* kDirectives = "cells, scalar, bricks, origin, spacing, time, periodic, "
-                                    "length-unit or time-unit";
+constexpr const char* kDirectives =
+    "cells, scalar, bricks, origin, spacing, time, periodic, "
+    "length-unit or time-unit";
 
 glm::dvec3 readVector(std::istringstream& words, const std::string& where,
                       const std::string& what) {
   glm::dvec3 v;
-  if (!(words >> v.x >> v.y >> v.z))
-    throw InputError(where, fmt::format("'{}' needs three numbers", what));
+  for (int a = 0; a < 3; ++a) {
+    std::string word;
+    if (!(words >> word)) throw InputError(where, fmt::format("'{}' needs three numbers", what));
+    v[a] = parseFinite(word, where, fmt::format("'{}' {}", what, "xyz"[a]));
+  }
   return v;
 }
 
@@ -55,7 +58,7 @@ double readTime(std::istringstream& words, const std::string& where) {
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), time);
   if (word.empty() || error != std::errc() || end != word.data() + word.size() ||
       !std::isfinite(time))
-    throw InputError(where, fmt::format("'time' needs one finite number, got '{}'", word));
+    throw InputError(where, fmt::format("'time' needs one finite number, got '{}'", excerpt(word)));
   return time;
 }
 
@@ -86,8 +89,8 @@ std::string readText(std::istringstream& words, const std::string& where,
 }
 
 ExaConfig parseConfig(const std::filesystem::path& config) {
-  std::ifstream in(config);
-  if (!in) throw InputError(config.string(), "cannot open the config file");
+  const std::string text = readWholeFile(config, "the config file");
+  std::istringstream in(text);
   const std::filesystem::path dir = config.parent_path();
   ExaConfig result;
   std::string line;
@@ -97,6 +100,8 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
     std::string keyword;
     if (!(words >> keyword)) continue;
     const std::string where = fmt::format("{}:{}", config.string(), number);
+    if (line.find('\0') != std::string::npos)
+      throw InputError(where, "the line holds a NUL byte: not a text config");
     std::string name, file;
     if (keyword == "cells") {
       if (!(words >> file)) throw InputError(where, "'cells' needs a file name");
@@ -109,10 +114,16 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
       if (!(words >> file)) throw InputError(where, "'bricks' needs a file name");
     } else if (keyword == "origin") {
       result.transform.origin = readVector(words, where, keyword);
+      result.originLine = number;
     } else if (keyword == "spacing") {
-      result.transform.spacing = readVector(words, where, keyword);
-      if (glm::any(glm::lessThanEqual(result.transform.spacing, glm::dvec3(0.0))))
-        throw InputError(where, "'spacing' must be positive");
+      const glm::dvec3 spacing = readVector(words, where, keyword);
+      for (int a = 0; a < 3; ++a)
+        if (!(spacing[a] > 0) || !std::isnormal(spacing[a]))
+          throw InputError(where, fmt::format("'spacing' must be positive and not subnormal, got "
+                                              "{} along {}",
+                                              spacing[a], "xyz"[a]));
+      result.transform.spacing = spacing;
+      result.spacingLine = number;
     } else if (keyword == "time") {
       result.info.time = readTime(words, where);
     } else if (keyword == "periodic") {
@@ -123,55 +134,89 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
     } else if (keyword == "time-unit") {
       result.info.timeUnit = readText(words, where, keyword);
     } else {
-      throw InputError(where,
-                       fmt::format("unknown directive '{}' (expected {})", keyword, kDirectives));
+      throw InputError(where, fmt::format("unknown directive '{}' (expected {})", excerpt(keyword),
+                                          kDirectives));
     }
     if (words >> name)
-      throw InputError(where, fmt::format("unexpected '{}' after '{}'", name, keyword));
+      throw InputError(where, fmt::format("unexpected '{}' after '{}'", excerpt(name), keyword));
   }
   if (result.cells.empty())
     throw InputError(config.string(), "no 'cells FILE' line: amrstream needs the cells file");
   return result;
 }
 
+// The cells file: int32 x, y, z, level per cell, checked before they become a field.
+void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lowers,
+               std::vector<std::uint8_t>& levels) {
+  std::ifstream in;
+  const std::uint64_t size = openRegularFile(in, path, "the cells file");
+  if (size % kCellBytes != 0)
+    throw InputError(path.string(),
+                     fmt::format("size {} bytes is not a multiple of {} (int32 x, y, z, level per "
+                                 "cell); the file is truncated or not a .cells file",
+                                 size, kCellBytes));
+  const std::uint64_t n = size / kCellBytes;
+  if (n > kMaxCells)
+    throw InputError(path.string(),
+                     fmt::format("holds {} cells, more than the {} accepted", n, kMaxCells));
+  std::vector<std::int32_t> records(4 * n);
+  readExactly(in, path, 0, reinterpret_cast<char*>(records.data()), size, "the cells file");
+  lowers.resize(n);
+  levels.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t* cell = &records[4 * i];
+    if (cell[3] < 0 || cell[3] > bricks::kMaxLevel)
+      throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
+                                                  i, cell[3], bricks::kMaxLevel));
+    lowers[i] = glm::ivec3(cell[0], cell[1], cell[2]);
+    levels[i] = static_cast<std::uint8_t>(cell[3]);
+  }
+  requireCellsWithinExtent(lowers, levels, path.string());
+}
+
+// One float32 per cell; the size is checked before anything is allocated.
+bricks::Channel readScalars(const std::string& name, const std::filesystem::path& path,
+                            const std::filesystem::path& cellsPath,
+                            std::span<const glm::ivec3> lowers) {
+  const std::size_t n = lowers.size();
+  std::ifstream in;
+  const std::uint64_t size = openRegularFile(in, path, "the scalars file");
+  if (size != n * sizeof(float))
+    throw InputError(path.string(),
+                     fmt::format("holds {} bytes ({} float32 values) but {} has {} cells", size,
+                                 double(size) / sizeof(float), cellsPath.string(), n));
+  bricks::Channel channel{name, std::vector<float>(n)};
+  readExactly(in, path, 0, reinterpret_cast<char*>(channel.values.data()), size,
+              "the scalars file");
+  for (std::size_t i = 0; i < n; ++i)
+    if (const auto problem = unusableFieldValue(channel.values[i]))
+      throw InputError(path.string(),
+                       fmt::format("channel '{}': the value of cell {} (lower corner {}, {}, {}) "
+                                   "is {}",
+                                   name, i, lowers[i].x, lowers[i].y, lowers[i].z, *problem));
+  return channel;
+}
+
+std::string lineOf(int line) {
+  return line == 0 ? std::string("the default") : fmt::format("line {}", line);
+}
+
 }  // namespace
 
 bricks::AmrField readExa(const std::filesystem::path& config) {
   const ExaConfig exa = parseConfig(config);
-
-  constexpr std::size_t kCellBytes = 4 * sizeof(std::int32_t);
-  const std::vector<char> cellBytes = readWholeFile(exa.cells);
-  if (cellBytes.size() % kCellBytes != 0)
-    throw InputError(exa.cells.string(),
-                     fmt::format("size {} bytes is not a multiple of {} (int32 x, y, z, level per "
-                                 "cell); the file is truncated or not a .cells file",
-                                 cellBytes.size(), kCellBytes));
-  const std::size_t n = cellBytes.size() / kCellBytes;
-  std::vector<glm::ivec3> lowers(n);
-  std::vector<std::uint8_t> levels(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::int32_t cell[4];
-    std::memcpy(cell, cellBytes.data() + i * kCellBytes, kCellBytes);
-    if (cell[3] < 0 || cell[3] > bricks::kMaxLevel)
-      throw InputError(exa.cells.string(), fmt::format("cell {} has level {}; levels must be in "
-                                                       "0..{}",
-                                                       i, cell[3], bricks::kMaxLevel));
-    lowers[i] = glm::ivec3(cell[0], cell[1], cell[2]);
-    levels[i] = static_cast<std::uint8_t>(cell[3]);
-  }
+  std::vector<glm::ivec3> lowers;
+  std::vector<std::uint8_t> levels;
+  readCells(exa.cells, lowers, levels);
+  if (lowers.empty()) throw InputError(exa.cells.string(), "the cells file holds no cells");
+  if (const auto problem = unrepresentablePositions(exa.transform, lowers, levels))
+    throw InputError(config.string(),
+                     fmt::format("origin ({}) and spacing ({}) cannot place the cells: {}",
+                                 lineOf(exa.originLine), lineOf(exa.spacingLine), *problem));
 
   std::vector<bricks::Channel> channels;
-  for (const auto& [name, path] : exa.scalars) {
-    const std::vector<char> bytes = readWholeFile(path);
-    if (bytes.size() != n * sizeof(float))
-      throw InputError(
-          path.string(),
-          fmt::format("holds {} bytes ({} float32 values) but {} has {} cells", bytes.size(),
-                      double(bytes.size()) / sizeof(float), exa.cells.string(), n));
-    bricks::Channel channel{name, std::vector<float>(n)};
-    std::memcpy(channel.values.data(), bytes.data(), bytes.size());
-    channels.push_back(std::move(channel));
-  }
+  for (const auto& [name, path] : exa.scalars)
+    channels.push_back(readScalars(name, path, exa.cells, lowers));
   bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), exa.transform,
                          config.string());
   bricks::DatasetInfo info = exa.info;
@@ -189,11 +234,18 @@ std::optional<double> readExaTime(const std::filesystem::path& config) {
 
 namespace {
 
-void writeBytes(const std::filesystem::path& path, const void* data, std::size_t size) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path.string(), "cannot create the file");
-  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-  if (!out.flush()) throw InputError(path.string(), "write failed (disk full?)");
+std::span<const std::byte> bytesOf(const void* data, std::size_t size) {
+  return {static_cast<const std::byte*>(data), size};
+}
+
+// A name the .exa's whitespace-separated lines and a file name can hold.
+void requireWritableName(const std::string& name, const std::string& what,
+                         const std::filesystem::path& exaPath) {
+  if (name.empty() || name.find_first_of(" \t\r\n#/") != std::string::npos)
+    throw InputError(exaPath.string(),
+                     fmt::format("the {} '{}' is empty or holds a blank, '#' or '/', which a .exa "
+                                 "line or file name cannot hold",
+                                 what, name));
 }
 
 // The `time`, `time-unit`, `length-unit` and `periodic` lines for what the field's info knows.
@@ -223,7 +275,11 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
   const std::filesystem::path dir = prefix.parent_path();
   const auto file = [&](const std::string& suffix) { return base + suffix; };
   const std::filesystem::path exaPath = dir / file(".exa");
-  const std::string info = infoLines(field.info(), exaPath);  // checked before writing anything
+  // Everything a line must hold is checked before any file is written.
+  const std::string info = infoLines(field.info(), exaPath);
+  requireWritableName(base, "file name prefix", exaPath);
+  for (const bricks::Channel& channel : field.channels())
+    requireWritableName(channel.name, "channel name", exaPath);
 
   std::vector<std::int32_t> cells(4 * field.cellCount());
   for (std::size_t i = 0; i < field.cellCount(); ++i) {
@@ -233,14 +289,15 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
     cells[4 * i + 2] = lower.z;
     cells[4 * i + 3] = field.levels()[i];
   }
-  writeBytes(dir / file(".cells"), cells.data(), cells.size() * sizeof(std::int32_t));
+  FileSetWriter files;
+  files.add(dir / file(".cells"), bytesOf(cells.data(), cells.size() * sizeof(std::int32_t)));
 
   std::ostringstream config;
   config << "# amrstream ExaBricks export of " << field.source() << "\n";
   config << "cells " << file(".cells") << "\n";
   for (const bricks::Channel& channel : field.channels()) {
     const std::string name = file("." + channel.name + ".scalars");
-    writeBytes(dir / name, channel.values.data(), channel.values.size() * sizeof(float));
+    files.add(dir / name, bytesOf(channel.values.data(), channel.values.size() * sizeof(float)));
     config << "scalar " << channel.name << " " << name << "\n";
   }
   const bricks::WorldTransform& t = field.transform();
@@ -248,7 +305,8 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
   config << fmt::format("spacing {:.17g} {:.17g} {:.17g}\n", t.spacing.x, t.spacing.y, t.spacing.z);
   config << info;
   const std::string text = config.str();
-  writeBytes(exaPath, text.data(), text.size());
+  files.add(exaPath, bytesOf(text.data(), text.size()));  // last: it names the others
+  files.commit();
   return exaPath;
 }
 

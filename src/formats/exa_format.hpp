@@ -22,9 +22,12 @@
 
 namespace amrstream::formats {
 
-// Throws InputError naming the offending file (and line) and the problem (missing file, bad size,
-// malformed directive, ...). The field's DatasetInfo holds the optional lines above and ExaBricks
-// level numbering (0 = finest).
+// Throws InputError naming the offending file (and line) and the problem: a missing file or one
+// that is not a regular file, a size that does not match, a malformed directive or number, cells
+// beyond 32-bit or the supported extent, an origin and spacing that do not give finite, distinct
+// positions (spacing must be positive and not subnormal), or a non-finite value (naming the
+// .scalars file, the channel and the first such cell). The field's DatasetInfo holds the optional
+// lines above and ExaBricks level numbering (0 = finest).
 bricks::AmrField readExa(const std::filesystem::path& config);
 
 // The `time` line's value (nullopt without one), reading only the config: its lines are checked
@@ -32,8 +35,11 @@ bricks::AmrField readExa(const std::filesystem::path& config);
 std::optional<double> readExaTime(const std::filesystem::path& config);
 
 // Writes PREFIX.cells, PREFIX.NAME.scalars for every channel and PREFIX.exa, with the optional
-// lines for what the field's DatasetInfo knows; returns the .exa path. A unit text holding '#' or
-// a line break cannot be written and throws InputError naming the .exa before any file is written.
+// lines for what the field's DatasetInfo knows; returns the .exa path. The files appear together
+// or not at all (file_set_writer.hpp): a failed write throws InputError naming the file and leaves
+// none of them. A unit text holding '#' or a line break, or a channel name or prefix holding a
+// blank, '#' or '/', cannot be written and throws InputError naming the .exa before any file is
+// written.
 std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesystem::path& prefix);
 
 }  // namespace amrstream::formats

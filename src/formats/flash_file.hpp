@@ -1,51 +1,25 @@
 #pragma once
-// Read access to the datasets of a FLASH HDF5 file: numeric arrays, fixed-length string lists and
-// the {name, value} compound lists (`integer scalars`, `real runtime parameters`, ...). Every
-// failure throws InputError naming the file and the dataset. Used only inside src/formats.
+// Read access to the datasets of a FLASH HDF5 file: numeric arrays, string lists and the
+// {name, value} compound lists (`integer scalars`, `real runtime parameters`, ...). Every
+// failure throws InputError naming the file and the dataset; no dataset is allocated before its
+// declared size is known to be stored in the file. Used only inside src/formats.
 
 #include <fmt/format.h>
 #include <hdf5.h>
 
+#include <cstdint>
 #include <filesystem>
-#include <functional>
-#include <numeric>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "hdf5_checks.hpp"
+#include "hdf5_handle.hpp"
+
 namespace amrstream::formats::flash {
 
-// Owns an HDF5 identifier and closes it with the matching H5?close.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle() = default;
-  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
-  Handle(Handle&& other) noexcept { *this = std::move(other); }
-  Handle& operator=(Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = std::exchange(other.id_, H5I_INVALID_HID);
-      close_ = other.close_;
-    }
-    return *this;
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { reset(); }
-
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  void reset() {
-    if (id_ >= 0 && close_ != nullptr) close_(id_);
-    id_ = H5I_INVALID_HID;
-  }
-  hid_t id_ = H5I_INVALID_HID;
-  Closer close_ = nullptr;
-};
+using Handle = Hdf5Handle;
 
 template <typename T>
 struct Array {
@@ -69,12 +43,14 @@ class FlashFile {
   template <typename T>
   Array<T> read(const std::string& name, const std::string& why = "") const;
 
-  // Fixed-length strings, trimmed of blanks and NULs.
+  // Strings, fixed length (any padding) or variable length, cut at the first NUL and trimmed of
+  // blanks.
   std::vector<std::string> readStrings(const std::string& name) const;
 
   // A {name, value} compound list such as `integer scalars` or `string runtime parameters`, with
-  // T = int, double or std::string and names and string values trimmed of trailing blanks;
-  // empty when the dataset is absent.
+  // T = int, double or std::string and names and string values (fixed length of any padding, or
+  // variable length) cut at the first NUL and trimmed of trailing blanks; empty when the dataset
+  // is absent.
   template <typename T>
   std::vector<std::pair<std::string, T>> readPairs(const std::string& name) const;
 
@@ -101,8 +77,7 @@ Array<T> FlashFile::read(const std::string& name, const std::string& why) const 
                              static_cast<int>(cls), size));
     memType = std::is_same_v<T, float> ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
   }
-  const hsize_t count =
-      std::accumulate(result.dims.begin(), result.dims.end(), hsize_t{1}, std::multiplies<>());
+  const std::uint64_t count = requireStoredValues(set.get(), path_, name);
   result.values.resize(count);
   if (count > 0 &&
       H5Dread(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, result.values.data()) < 0)

@@ -8,13 +8,14 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cell_checks.hpp"
 #include "flash_file.hpp"
 #include "flash_info.hpp"
+#include "hdf5_checks.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -23,6 +24,13 @@ namespace {
 using flash::Array;
 using flash::FlashFile;
 using flash::Handle;
+
+constexpr int kMaxCellsPerBlockAxis = 4096;
+constexpr std::size_t kMaxCells = std::size_t{1} << 31;
+// A 2D slab repeats a fine leaf cell 2^(levels below the coarsest leaf) times along z: at most
+// this many cells per leaf cell in the file (leaves 8 levels finer than the coarsest, at most),
+// so that the cells stay within a small multiple of the data the file stores.
+constexpr std::size_t kMaxSlabGrowth = 256;
 
 std::string shapeText(const std::vector<hsize_t>& dims) {
   return fmt::format("[{}]", fmt::join(dims, ", "));
@@ -83,11 +91,12 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
     if (d.size() != 4 || d[0] != nb)
       file.fail(first, fmt::format("shape {} is not [{}, nzb, nyb, nxb]", shapeText(d), nb));
     for (int a = 0; a < 3; ++a)
-      if (shape.n[a] == 0) shape.n[a] = static_cast<int>(d[3 - a]);
+      if (shape.n[a] == 0) shape.n[a] = static_cast<int>(std::min<hsize_t>(d[3 - a], 1 << 30));
   }
   for (int a = 0; a < 3; ++a)
-    if (shape.n[a] < 1 || shape.n[a] > 4096)
-      file.fail(fmt::format("cells per block along axis {} is {}", a, shape.n[a]));
+    if (shape.n[a] < 1 || shape.n[a] > kMaxCellsPerBlockAxis)
+      file.fail(fmt::format("cells per block along axis {} is {} (expected 1 to {})", a, shape.n[a],
+                            kMaxCellsPerBlockAxis));
   if (shape.dimensionality == 0) shape.dimensionality = shape.n[2] == 1 ? 2 : 3;
   if (shape.dimensionality == 1 || shape.n[1] == 1) file.fail("1D FLASH files are not supported");
   if (shape.dimensionality != 2 && shape.dimensionality != 3)
@@ -95,6 +104,18 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
   if (shape.dimensionality == 2 && shape.n[2] != 1)
     file.fail(fmt::format("2D file with nzb = {} (expected 1)", shape.n[2]));
   const int axes = shape.dimensionality;
+  const std::vector<hsize_t> expected{nb, static_cast<hsize_t>(shape.n[2]),
+                                      static_cast<hsize_t>(shape.n[1]),
+                                      static_cast<hsize_t>(shape.n[0])};
+  // Every variable's shape before anything is allocated for the cells.
+  for (const std::string& name : names) {
+    const Handle set = file.open(name, " (listed in 'unknown names')");
+    const auto d = file.dims(name, set);
+    if (d != expected)
+      file.fail(name, fmt::format("shape {} is not [nblocks, nzb, nyb, nxb] = {}", shapeText(d),
+                                  shapeText(expected)));
+    requireStoredValues(set.get(), file.path(), name);
+  }
 
   // Leaves, finest refine level, finest cell size and domain lower corner.
   std::vector<std::size_t> leafBlocks;
@@ -106,12 +127,14 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
   for (std::size_t b = 0; b < nb; ++b) {
     if (nodeType.values[b] != 1) continue;
     leafBlocks.push_back(b);
-    if (refine.values[b] < 1)
-      file.fail("refine level", fmt::format("block {} has refine level {}", b, refine.values[b]));
+    if (refine.values[b] < 1 || refine.values[b] > bricks::kMaxLevel + 1)
+      file.fail("refine level", fmt::format("block {} has refine level {} (expected 1 to {})", b,
+                                            refine.values[b], bricks::kMaxLevel + 1));
     rmax = std::max(rmax, refine.values[b]);
     for (int a = 0; a < 3; ++a) {
       const double extent = hi(b, a) - lo(b, a);
-      if (!std::isfinite(lo(b, a)) || !std::isfinite(hi(b, a)) || (a < axes && !(extent > 0)))
+      if (!std::isfinite(lo(b, a)) || !std::isfinite(hi(b, a)) || !std::isfinite(extent) ||
+          (a < axes && !(extent > 0)))
         file.fail("bounding box",
                   fmt::format("block {} axis {} spans [{}, {}]", b, a, lo(b, a), hi(b, a)));
       const double size = blockSize.values[b * 3 + a];
@@ -123,16 +146,17 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
     }
   }
   if (leafBlocks.empty()) file.fail("node type", "no leaf blocks (node type 1)");
-  if (rmax - 1 > bricks::kMaxLevel)
-    file.fail("refine level",
-              fmt::format("{} refine levels exceed the supported {}", rmax, bricks::kMaxLevel + 1));
   // The bounding boxes carry rounding noise: spread the domain evenly over its finest cells.
   for (int a = 0; a < axes; ++a) {
     double domainHi = -std::numeric_limits<double>::infinity();
     for (std::size_t b : leafBlocks) domainHi = std::max(domainHi, hi(b, a));
     const double cells = std::round((domainHi - domainLo[a]) / dxf[a]);
-    if (cells >= 1 && cells <= std::ldexp(1.0, bricks::kMaxExtentBits))
-      dxf[a] = (domainHi - domainLo[a]) / cells;
+    if (!std::isnormal(dxf[a]) || !std::isfinite(domainHi - domainLo[a]) || !(cells >= 1))
+      file.fail("bounding box",
+                fmt::format("the leaves span [{}, {}] along axis {} with finest cells {} wide, "
+                            "which positions cannot resolve",
+                            domainLo[a], domainHi, a, dxf[a]));
+    if (cells <= std::ldexp(1.0, bricks::kMaxExtentBits)) dxf[a] = (domainHi - domainLo[a]) / cells;
   }
   if (axes == 2) dxf.z = dxf.x;
 
@@ -144,17 +168,17 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
     const double width = std::ldexp(1.0, leaf.level);
     for (int a = 0; a < axes; ++a) {
       const double cellWidth = (hi(b, a) - lo(b, a)) / shape.n[a] / dxf[a];
-      if (std::abs(cellWidth - width) > 1e-3 * width)
+      if (!(std::abs(cellWidth - width) <= 1e-3 * width))
         file.fail("bounding box",
                   fmt::format("block {} at refine level {} has cells {} finest cells wide along "
                               "axis {}, expected {}",
                               b, refine.values[b], cellWidth, a, width));
       const double corner = (lo(b, a) - domainLo[a]) / dxf[a];
-      if (corner + shape.n[a] * width > std::ldexp(1.0, bricks::kMaxExtentBits))
+      if (!(corner + shape.n[a] * width <= std::ldexp(1.0, bricks::kMaxExtentBits)))
         file.fail("bounding box", fmt::format("block {} ends beyond 2^{} finest cells along "
                                               "axis {}",
                                               b, bricks::kMaxExtentBits, a));
-      if (std::abs(corner - std::round(corner)) > 1e-3)
+      if (!(std::abs(corner - std::round(corner)) <= 1e-3))
         file.fail("bounding box", fmt::format("block {} lower corner {} along axis {} is not on "
                                               "the finest grid",
                                               b, lo(b, a), a));
@@ -164,13 +188,19 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
     leaves.push_back(leaf);
   }
 
-  // Cells in block order, z-y-x within a block (the datasets' [nb][nzb][nyb][nxb] order).
+  // Cells in block order, z-y-x within a block (the datasets' [nb][nzb][nyb][nxb] order). A 2D
+  // slab copies fine cells, so its cell count is bounded by the file's leaf cells too.
   const std::size_t perBlock = static_cast<std::size_t>(shape.n[0]) * shape.n[1] * shape.n[2];
+  const std::size_t leafCells = leaves.size() * perBlock;
   std::size_t total = 0;
-  for (const Leaf& leaf : leaves) total += perBlock << (axes == 2 ? coarsest - leaf.level : 0);
-  if (total > (std::size_t{1} << 31))
-    file.fail(
-        fmt::format("{} cells after stacking 2D cells into a uniform slab is too many", total));
+  for (const Leaf& leaf : leaves) {
+    total += perBlock << (axes == 2 ? coarsest - leaf.level : 0);
+    if (total > kMaxCells || total > kMaxSlabGrowth * leafCells)
+      file.fail(
+          fmt::format("{} leaf cells become more than {} cells after stacking 2D cells "
+                      "into a uniform slab: too many",
+                      leafCells, std::min(kMaxCells, kMaxSlabGrowth * leafCells)));
+  }
   std::vector<glm::ivec3> lowers;
   std::vector<std::uint8_t> levels;
   std::vector<std::size_t> source;  // index into a variable's data
@@ -194,28 +224,29 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
         }
   }
 
+  const bricks::WorldTransform transform{domainLo, dxf};
+  if (const auto problem = unrepresentablePositions(transform, lowers, levels))
+    file.fail("bounding box", "the leaves cannot be placed: " + *problem);
+
   std::vector<bricks::Channel> channels;
-  const std::vector<hsize_t> expected{nb, static_cast<hsize_t>(shape.n[2]),
-                                      static_cast<hsize_t>(shape.n[1]),
-                                      static_cast<hsize_t>(shape.n[0])};
   for (const std::string& name : names) {
     const auto data = file.read<double>(name, " (listed in 'unknown names')");
-    if (data.dims != expected)
-      file.fail(name, fmt::format("shape {} is not [nblocks, nzb, nyb, nxb] = {}",
-                                  shapeText(data.dims), shapeText(expected)));
     bricks::Channel channel{name, std::vector<float>(source.size())};
     for (std::size_t c = 0; c < source.size(); ++c) {
       const double v = data.values[source[c]];
-      if (std::isfinite(v) && std::abs(v) > std::numeric_limits<float>::max())
-        file.fail(name, fmt::format("value {} in block {} exceeds the float range", v,
-                                    source[c] / perBlock));
+      if (const auto problem = unusableFieldValue(v)) {
+        const std::size_t block = source[c] / perBlock, at = source[c] % perBlock;
+        file.fail(name, fmt::format("value {} of block {} cell (i, j, k) = ({}, {}, {}) is {}", v,
+                                    block, at % shape.n[0], at / shape.n[0] % shape.n[1],
+                                    at / shape.n[0] / shape.n[1], *problem));
+      }
       channel.values[c] = static_cast<float>(v);
     }
     channels.push_back(std::move(channel));
   }
 
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
-                         bricks::WorldTransform{domainLo, dxf}, path.string());
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
+                         path.string());
   field.setInfo(flash::readFlashInfo(file, rmax, axes));
   return field;
 }

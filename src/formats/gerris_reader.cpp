@@ -14,6 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "cell_checks.hpp"
+#include "input_bytes.hpp"
+#include "text_numbers.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -27,18 +30,6 @@ struct Columns {
   int x = -1, y = -1, z = -1, level = -1;
   std::optional<double> time;  // the header's last number
 };
-
-std::vector<std::string_view> splitWords(std::string_view line) {
-  std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    std::size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
 
 std::optional<double> parseNumber(std::string_view word) {
   if (!word.empty() && word.front() == '+') word.remove_prefix(1);
@@ -61,17 +52,19 @@ Columns parseHeader(const std::string& line, const std::string& where) {
       break;
     }
     if (colon == std::string_view::npos)
-      throw InputError(where, fmt::format("garbled header column '{}' (expected N:NAME)", word));
+      throw InputError(where,
+                       fmt::format("garbled header column '{}' (expected N:NAME)", excerpt(word)));
     int number = 0;
     auto [end, error] = std::from_chars(word.data(), word.data() + colon, number);
     const std::string name(word.substr(colon + 1));
     if (error != std::errc() || end != word.data() + colon || name.empty())
-      throw InputError(where, fmt::format("garbled header column '{}' (expected N:NAME)", word));
+      throw InputError(where,
+                       fmt::format("garbled header column '{}' (expected N:NAME)", excerpt(word)));
     if (number != static_cast<int>(columns.names.size()) + 1)
-      throw InputError(where, fmt::format("header column '{}' should be number {}", word,
+      throw InputError(where, fmt::format("header column '{}' should be number {}", excerpt(word),
                                           columns.names.size() + 1));
     if (std::find(columns.names.begin(), columns.names.end(), name) != columns.names.end())
-      throw InputError(where, fmt::format("header names column '{}' twice", name));
+      throw InputError(where, fmt::format("header names column '{}' twice", excerpt(name)));
     const int index = static_cast<int>(columns.names.size());
     if (name == "x") columns.x = index;
     if (name == "y") columns.y = index;
@@ -90,12 +83,15 @@ Columns parseHeader(const std::string& line, const std::string& where) {
   return columns;
 }
 
-// Parses the first line of `in`, opened on `file`, leaving `in` at the first row.
-Columns readHeader(std::ifstream& in, const std::filesystem::path& file) {
+// Opens `file` on `in` and parses its first line, leaving `in` at the first row. `consumed`
+// counts the bytes read, line breaks included.
+Columns readHeader(std::ifstream& in, const std::filesystem::path& file, std::uint64_t& size,
+                   std::uint64_t& consumed) {
   const std::string source = file.string();
-  if (!in) throw InputError(source, "cannot open the Gerris file");
+  size = openRegularFile(in, file, "the Gerris file");
   std::string line;
   if (!std::getline(in, line)) throw InputError(source, "the file is empty (no Gerris header)");
+  consumed = line.size() + 1;
   return parseHeader(line, source + ":1");
 }
 
@@ -109,8 +105,9 @@ struct Leaf {
 
 bricks::AmrField readGerris(const std::filesystem::path& file) {
   const std::string source = file.string();
-  std::ifstream in(file);
-  const Columns columns = readHeader(in, file);
+  std::ifstream in;
+  std::uint64_t size = 0, consumed = 0;
+  const Columns columns = readHeader(in, file, size, consumed);
   std::string line;
 
   std::vector<bricks::Channel> channels;
@@ -124,6 +121,7 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
   std::vector<Leaf> leaves;
   std::vector<double> row(columns.names.size());
   for (int number = 2; std::getline(in, line); ++number) {
+    consumed += line.size() + 1;
     const std::vector<std::string_view> words = splitWords(line);
     if (words.empty()) continue;
     const std::string where = fmt::format("{}:{}", source, number);
@@ -133,8 +131,8 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
     for (std::size_t c = 0; c < words.size(); ++c) {
       const std::optional<double> value = parseNumber(words[c]);
       if (!value)
-        throw InputError(
-            where, fmt::format("column '{}' is not a number: '{}'", columns.names[c], words[c]));
+        throw InputError(where, fmt::format("column '{}' is not a number: '{}'",
+                                            excerpt(columns.names[c]), excerpt(words[c])));
       row[c] = *value;
     }
     const double level = row[columns.level];
@@ -151,9 +149,19 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
                                             "xyz"[axis], leaf.centre[axis], leaf.level, size));
     }
     leaves.push_back(leaf);
-    for (std::size_t c = 0; c < channels.size(); ++c)
-      channels[c].values.push_back(static_cast<float>(row[channelColumns[c]]));
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+      const double value = row[channelColumns[c]];
+      if (const auto problem = unusableFieldValue(value))
+        throw InputError(where, fmt::format("column '{}' is {}: '{}'", excerpt(channels[c].name),
+                                            *problem, excerpt(words[channelColumns[c]])));
+      channels[c].values.push_back(static_cast<float>(value));
+    }
   }
+  // `consumed` counts a line break after the last line too, which the file may lack.
+  if (in.bad() || consumed < size)
+    throw InputError(source, fmt::format("read {} of its {} bytes; the file is shorter than it "
+                                         "was a moment ago (changed while being read?)",
+                                         std::min(consumed, size), size));
   if (leaves.empty()) throw InputError(source, "the file has a header but no cells");
 
   int finest = 0, coarsest = kMaxGerrisLevel;
@@ -186,8 +194,11 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
     lowers.emplace_back(corner);
     levels.push_back(static_cast<std::uint8_t>(finest - leaf.level));
   }
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels),
-                         {origin, glm::dvec3(finestSize)}, source);
+  const bricks::WorldTransform transform{origin, glm::dvec3(finestSize)};
+  if (const auto problem = unrepresentablePositions(transform, lowers, levels))
+    throw InputError(source, "the cells cannot be placed: " + *problem);
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
+                         source);
   bricks::DatasetInfo info;
   info.format = "Gerris";
   info.time = columns.time;
@@ -199,8 +210,9 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
 }
 
 std::optional<double> readGerrisTime(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  return readHeader(in, file).time;
+  std::ifstream in;
+  std::uint64_t size = 0, consumed = 0;
+  return readHeader(in, file, size, consumed).time;
 }
 
 }  // namespace amrstream::formats

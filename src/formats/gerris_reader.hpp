@@ -20,7 +20,9 @@
 
 namespace amrstream::formats {
 
-// Throws InputError naming the file (and the line) on a malformed or inconsistent dump.
+// Throws InputError naming the file (and the line) on a malformed or inconsistent dump, a path that
+// is not a regular file, a value that is not finite or beyond the float range, or a file that
+// shrinks while it is read.
 bricks::AmrField readGerris(const std::filesystem::path& file);
 
 // The header's time alone (nullopt when the header ends without one), reading only the header

@@ -1,7 +1,8 @@
 #include "load_input.hpp"
 
-#include <array>
-#include <cstring>
+#include <fmt/format.h>
+#include <hdf5.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -10,7 +11,9 @@
 #include "exa_format.hpp"
 #include "flash_reader.hpp"
 #include "gerris_reader.hpp"
+#include "hdf5_handle.hpp"
 #include "util/input_error.hpp"
+#include "util/input_file.hpp"
 
 namespace amrstream::formats {
 
@@ -18,7 +21,17 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr std::string_view kBuiltinPrefix = "builtin:";
+constexpr std::string_view kFormatsTried =
+    "tried builtin:KIND, ExaBricks (a .exa config), AMReX (a plotfile directory with a HyperCLaw "
+    "Header), Enzo (a parameter file with a .hierarchy beside it, or its .hierarchy, .harrays or "
+    ".cpuNNNN), FLASH (HDF5 with an 'unknown names' dataset) and Gerris (a text dump starting "
+    "'# 1:')";
 
+[[noreturn]] void notRecognised(const std::string& input, const std::string& why) {
+  throw InputError(input, fmt::format("format not recognised: {}; {}", why, kFormatsTried));
+}
+
+// The first `n` bytes of a regular file (fewer when it is shorter).
 std::string firstBytes(const fs::path& path, std::size_t n) {
   std::ifstream in(path, std::ios::binary);
   std::string bytes(n, '\0');
@@ -29,11 +42,27 @@ std::string firstBytes(const fs::path& path, std::size_t n) {
 
 bool isHdf5(const fs::path& path) { return firstBytes(path, 8) == "\x89HDF\r\n\x1a\n"; }
 
+// FLASH files, plotfiles and checkpoints alike, list their variables in 'unknown names'.
+bool isFlash(const fs::path& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid())
+    throw InputError(path.string(), "an HDF5 file that HDF5 cannot open (truncated or corrupt?)");
+  return H5Lexists(file.get(), "unknown names", H5P_DEFAULT) > 0;
+}
+
 // Enzo writes PREFIX (parameters), PREFIX.hierarchy, PREFIX.harrays and PREFIX.cpuNNNN.
 bool isEnzo(const fs::path& path) {
   const std::string ext = path.extension().string();
   if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) return true;
-  return fs::exists(path.string() + ".hierarchy");
+  std::error_code error;
+  return fs::exists(path.string() + ".hierarchy", error);
+}
+
+bool isAmrexPlotfile(const fs::path& directory) {
+  std::error_code error;
+  const fs::path header = directory / "Header";
+  return fs::is_regular_file(header, error) && firstBytes(header, 9) == "HyperCLaw";
 }
 
 }  // namespace
@@ -59,21 +88,22 @@ std::string_view formatName(Format format) {
 Format detectFormat(const std::string& input) {
   if (input.starts_with(kBuiltinPrefix)) return Format::Builtin;
   const fs::path path(input);
-  if (!fs::exists(path)) throw InputError(input, "no such file");
-  if (fs::is_directory(path)) {
-    if (firstBytes(path / "Header", 9) == "HyperCLaw") return Format::Amrex;
+  std::error_code error;
+  if (fs::is_directory(path, error)) {
+    if (isAmrexPlotfile(path)) return Format::Amrex;
     throw InputError(input,
                      "a directory, but not an AMReX plotfile (no Header starting with "
                      "HyperCLaw)");
   }
+  regularFileSize(path);  // a missing path, a FIFO or a device is refused before it is opened
   if (path.extension() == ".exa") return Format::ExaBricks;
   if (isEnzo(path)) return Format::Enzo;
-  if (isHdf5(path)) return Format::Flash;
+  if (isHdf5(path)) {
+    if (isFlash(path)) return Format::Flash;
+    notRecognised(input, "an HDF5 file without FLASH's 'unknown names' dataset");
+  }
   if (firstBytes(path, 4) == "# 1:") return Format::Gerris;
-  throw InputError(input,
-                   "unknown input format (expected builtin:NAME, an ExaBricks .exa "
-                   "config, an AMReX plotfile directory, an Enzo dataset, a FLASH HDF5 "
-                   "file or a Gerris text dump)");
+  notRecognised(input, "no known extension or signature");
 }
 
 bricks::AmrField loadInput(const std::string& input,

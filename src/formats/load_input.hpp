@@ -15,7 +15,8 @@ enum class Format { Builtin, ExaBricks, Amrex, Enzo, Flash, Gerris };
 
 std::string_view formatName(Format format);
 
-// Throws InputError when the input does not exist or is in no known format.
+// Throws InputError when the input does not exist, is not a regular file or directory (a FIFO,
+// a device), or is in no known format ("format not recognised", naming the formats tried).
 Format detectFormat(const std::string& input);
 
 // `generatorOptions` sizes builtin datasets. Throws InputError for unknown formats or kinds.

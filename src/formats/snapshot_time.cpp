@@ -38,11 +38,13 @@ double builtinTime(const std::string& input) {
   return 0.0;
 }
 
-// Without its parameter file an Enzo dataset states no time, as readEnzo finds.
+// Without its parameter file an Enzo dataset states no time, as readEnzo finds; a parameter file
+// that is not a regular file (a FIFO) is refused by name, as readEnzo refuses it.
 std::optional<double> enzoTime(const std::string& input) {
   const fs::path parameterFile = enzoParameterFile(input);
   std::error_code error;
-  if (!fs::is_regular_file(parameterFile, error)) return std::nullopt;
+  if (!fs::exists(parameterFile, error) || fs::is_directory(parameterFile, error))
+    return std::nullopt;
   return readEnzoTime(EnzoParameters(parameterFile));
 }
 

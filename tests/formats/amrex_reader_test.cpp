@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -16,12 +17,14 @@
 
 #include "formats/amrex_info.hpp"
 #include "input_error_of.hpp"
+#include "special_files.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -134,7 +137,18 @@ class AmrexReader : public testing::TempDirTest {
     out << in.rdbuf();
     return out.str();
   }
+  // Replaces the first `from` in `path` by `to`.
+  static void replaceIn(const fs::path& path, const std::string& from, const std::string& to) {
+    std::string bytes = readBytes(path);
+    const std::size_t at = bytes.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bytes.replace(at, from.size(), to);
+    writeFile(path, bytes);
+  }
 };
+
+constexpr const char* kFloat64Little = "(8, (64 11 52 0 1 12 0 1023)),(8, (8 7 6 5 4 3 2 1))";
+constexpr const char* kFloat32Little = "(4, (32 8 23 0 1 9 0 127)),(4, (4 3 2 1))";
 
 void expectSyntheticLeaves(const bricks::AmrField& field) {
   ASSERT_EQ(field.channels().size(), 2u);
@@ -210,6 +224,114 @@ TEST_F(AmrexReader, RejectsComponentCountMismatch) {
   EXPECT_THAT(errorOf(), ::testing::AllOf(HasSubstr(cellH.string()), HasSubstr("3 components")));
 }
 
+// ---- hardening: domains, boxes, FAB declarations, values, paths that are not files ---------
+
+TEST_F(AmrexReader, BoxesOutsideTheirLevelsDomainAreRefused) {
+  const fs::path cellH = dir_ / "Level_1" / "Cell_H";
+  replaceIn(cellH, "((8,0,0) (11,7,7) (0,0,0))", "((14,0,0) (17,7,7) (0,0,0))");
+  EXPECT_THAT(errorOf(), AllOf(HasSubstr(cellH.string()),
+                               HasSubstr("box 1 (14,0,0)-(17,7,7) lies outside the level-1 domain "
+                                         "(0,0,0)-(15,15,15)")));
+}
+
+TEST_F(AmrexReader, HugeDomainsAndBoxCountsAreRefusedWithoutOverflow) {
+  const fs::path header = dir_ / "Header";
+  const std::string original = readBytes(header);
+  replaceIn(header, "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))",
+            "((0,0,0) (1073741823,7,7) (0,0,0)) ((0,0,0) (1073741823,15,15) (0,0,0))");
+  EXPECT_THAT(errorOf(), AllOf(HasSubstr(header.string()),
+                               HasSubstr("the level-0 domain (0,0,0)-(1073741823,7,7) spans "
+                                         "1073741824 cells along axis x; at most 2097151")));
+  writeFile(header, original);
+  replaceIn(header, "((0,0,0) (15,15,15) (0,0,0))", "((0,0,0) (2147483647,15,15) (0,0,0))");
+  EXPECT_THAT(errorOf(), HasSubstr("in a level domain box = 2147483647 is outside [-1073741824, "
+                                   "1073741824]"));
+  writeFile(header, original);
+  replaceIn(header, "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))",
+            "((-1073741824,0,0) (1073741823,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))");
+  EXPECT_THAT(errorOf(), AllOf(HasSubstr(header.string()),
+                               HasSubstr("the level-0 domain (-1073741824,0,0)-(1073741823,7,7) "
+                                         "spans 2147483648 cells along axis x; at most 2097151")));
+  writeFile(header, original);
+  replaceIn(header, "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))",
+            "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,17) (0,0,0))");
+  EXPECT_THAT(errorOf(), HasSubstr("the level-1 domain (0,0,0)-(15,15,17) is not the level-0 "
+                                   "domain (0,0,0)-(7,7,7) refined by 2"));
+  // 2^30 grids: their extents are read one by one (3 * 2^30 overflowed an int before).
+  writeFile(header, original);
+  replaceIn(header, "0 2 0.5\n", "0 1073741824 0.5\n");
+  EXPECT_THAT(errorOf(), AllOf(HasSubstr(header.string()),
+                               HasSubstr("expected a number (a grid's lower extent)")));
+}
+
+TEST_F(AmrexReader, AFabHeaderClaimingFloat32OverFloat64DataIsRefused) {
+  const fs::path file = dir_ / "Level_0" / "Cell_D_00000";
+  replaceIn(file, kFloat64Little, kFloat32Little);
+  const std::string bytes = readBytes(file);
+  const std::size_t dataStart = bytes.find('\n') + 1;
+  ASSERT_EQ(bytes.size() - dataStart, 512u * 8u);  // 4 x 8 x 8 cells, 2 components, float64
+  EXPECT_THAT(errorOf(),
+              AllOf(HasSubstr(file.string() + " (FAB at byte 0)"),
+                    HasSubstr("the header declares float32 little endian values: 512 x 4 bytes = "
+                              "2048 bytes from byte " +
+                              std::to_string(dataStart) + ", but the FAB's data runs to byte " +
+                              std::to_string(bytes.size()) +
+                              " (the end of the file); the declared value type does not match "
+                              "the data")));
+}
+
+TEST_F(AmrexReader, AFabHeaderClaimingFloat64OverFloat32DataIsRefusedAtTheNextFab) {
+  // Level 1's file holds box 1's FAB, then box 0's: box 1's is float32 data declared float64.
+  const SynthBox box0{{4, 0, 0}, {7, 7, 7}}, box1{{8, 0, 0}, {11, 7, 7}};
+  std::string fab1 = fabBytes(box1, 1, Real::kFloat32Little);
+  fab1.replace(fab1.find(kFloat32Little), std::strlen(kFloat32Little), kFloat64Little);
+  const std::string fab0 = fabBytes(box0, 1);
+  const fs::path file = dir_ / "Level_1" / "Cell_D_00000";
+  writeFile(file, fab1 + fab0);
+  writeFile(dir_ / "Level_1" / "Cell_H", "1\n1\n2\n0\n(2 0\n" + boxText(box0) + "\n" +
+                                             boxText(box1) + "\n)\n2\nFabOnDisk: Cell_D_00000 " +
+                                             std::to_string(fab1.size()) +
+                                             "\nFabOnDisk: Cell_D_00000 0\n");
+  const std::size_t dataStart = fab1.find('\n') + 1;
+  ASSERT_EQ(fab1.size() - dataStart, 512u * 4u);
+  EXPECT_THAT(errorOf(),
+              AllOf(HasSubstr(file.string() + " (FAB at byte 0)"),
+                    HasSubstr("declares float64 little endian values: 512 x 8 bytes = "
+                              "4096 bytes from byte " +
+                              std::to_string(dataStart) + ", but the FAB's data runs to byte " +
+                              std::to_string(fab1.size()) + " (where the next FAB starts)")));
+}
+
+TEST_F(AmrexReader, NonFiniteValuesNameTheFileTheVariableAndTheCell) {
+  const fs::path file = dir_ / "Level_0" / "Cell_D_00000";
+  std::string bytes = readBytes(file);
+  const std::size_t data = bytes.find('\n') + 1;
+  const double nan = std::nan("");
+  // Component 1 (B) of cell (1, 2, 3) in the box (0..3, 0..7, 0..7): not under level 1.
+  std::memcpy(&bytes[data + 8 * (256 + (3 * 8 + 2) * 4 + 1)], &nan, 8);
+  writeFile(file, bytes);
+  EXPECT_THAT(errorOf(), HasSubstr(file.string() + ": FAB at byte 0: variable 'B' at level-0 cell "
+                                                   "(1, 2, 3) is not a number (nan)"));
+}
+
+TEST_F(AmrexReader, DirectoriesFifosAndEscapingPathsAreRefusedByName) {
+  const fs::path fab = dir_ / "Level_0" / "Cell_D_00001";
+  fs::remove(fab);
+  fs::create_directory(fab);
+  EXPECT_THAT(errorOf(), HasSubstr(fab.string() + ": is a directory, not a file"));
+
+  const fs::path header = dir_ / "Header";
+  const std::string original = readBytes(header);
+  replaceIn(header, "Level_0/Cell", "../Level_0/Cell");
+  EXPECT_THAT(errorOf(), AllOf(HasSubstr(header.string()),
+                               HasSubstr("level path '../Level_0/Cell' leads outside the "
+                                         "plotfile")));
+  fs::remove(header);
+  testing::makeFifo(header);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(header, [&] { readAmrexPlotfile(dir_); }),
+              HasSubstr(header.string() + ": is a FIFO"));
+}
+
 // ---- what the plotfile says about itself ----------------------------------------------------
 
 TEST_F(AmrexReader, TimeFromTheHeaderLevelsCountFromTheCoarsestPeriodicityUnknown) {
@@ -255,8 +377,8 @@ TEST_F(AmrexReader, RejectsAMalformedPeriodicLineNamingJobInfoAndTheLine) {
 
 TEST(AmrexInfo, RatiosOtherThanTwoNumberEachLevel) {
   // Three levels with ratios 4 and 4: cell widths 16, 4 and 1 finest cells.
-  const bricks::DatasetInfo info = readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile",
-                                                 0.0, {4, 2, 0});
+  const bricks::DatasetInfo info =
+      readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile", 0.0, {4, 2, 0});
   EXPECT_EQ(info.fileLevel(0), 2);
   EXPECT_EQ(info.fileLevel(2), 1);
   EXPECT_EQ(info.fileLevel(4), 0);

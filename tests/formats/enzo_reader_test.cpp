@@ -9,11 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "hdf5_read.hpp"
+#include "special_files.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -265,6 +267,16 @@ class EnzoSyntheticTest : public ::testing::Test {
     }
   }
 
+  // Replaces the first `from` in `file` (in dir_) by `to`.
+  void replaceText(const std::string& file, const std::string& from, const std::string& to) {
+    std::ifstream in(dir_ / file);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::ofstream(dir_ / file) << text;
+  }
+
   fs::path dir_;
 };
 
@@ -334,6 +346,106 @@ TEST_F(EnzoSyntheticTest, RejectsAbsentInput) {
   expectRejected(dir_ / "nothing", (dir_ / "nothing").string(), "no such file");
   fs::remove(dir_ / "sim.hierarchy");
   expectRejected(dir_ / "sim", (dir_ / "sim").string(), "sim.hierarchy");
+}
+
+// ---- hardening: numbers from text, overflow, declared sizes, paths that are not files -------
+
+TEST_F(EnzoSyntheticTest, NumbersFromTextFilesAreNamedWhenMalformed) {
+  replaceText("sim", "RefineBy = 2", "RefineBy = two");
+  expectRejected(dir_ / "sim", (dir_ / "sim").string(),
+                 "RefineBy is not an integer in [1, 1073741824]: 'two'");
+  writeSynthetic(dir_);
+  replaceText("sim.hierarchy", "Grid = 2\nGridRank          = 3",
+              "Grid = 2\nGridRank = 3\nLevel = one");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 2 Level is not an integer in [0, 2147483647]: 'one'");
+  writeSynthetic(dir_);
+  replaceText("sim.hierarchy", "GridLeftEdge      = 0.25", "GridLeftEdge      = 0.2.5");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 2 GridLeftEdge is not a finite number: '0.2.5'");
+  writeSynthetic(dir_);
+  replaceText("sim.hierarchy", "Pointer: Grid[3]->NextGridThisLevel = 0",
+              "Pointer: Grid[3]->NextGridThisLevel = 99999999999");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string() + ":",
+                 "a pointer's target grid is not an integer in [0, 2147483647]: '99999999999'");
+}
+
+TEST_F(EnzoSyntheticTest, IndicesNearIntMinAndMaxAreRefusedWithoutOverflow) {
+  replaceText("sim.hierarchy", "GridStartIndex    = 3 3 3", "GridStartIndex    = -2147483648 3 3");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 1 GridStartIndex is not an integer in [0, 2147483647]: '-2147483648'");
+  writeSynthetic(dir_);
+  replaceText(
+      "sim.hierarchy",
+      "GridDimension     = 10 10 10 \nGridStartIndex    = 3 3 3 \nGridEndIndex      = 6 6 6",
+      "GridDimension     = 2147483647 10 10 \nGridStartIndex    = 0 3 3 \nGridEndIndex      = "
+      "2147483646 6 6");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 1 has 2147483647 active zones along axis x (expected 1 to 2097152)");
+}
+
+// The grid table claims a 2^20-cubed root grid: refused before anything is allocated for it.
+TEST_F(EnzoSyntheticTest, AHugeRootGridIsRefusedBeforeAllocating) {
+  replaceText("sim", "TopGridDimensions = 4 4 4", "TopGridDimensions = 1048576 1048576 1048576");
+  replaceText(
+      "sim.hierarchy",
+      "GridDimension     = 10 10 10 \nGridStartIndex    = 3 3 3 \nGridEndIndex      = 6 6 6",
+      "GridDimension     = 1048582 1048582 1048582 \nGridStartIndex    = 3 3 3 \n"
+      "GridEndIndex      = 1048578 1048578 1048578");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 1 has 1048576 x 1048576 x 1048576 = 1152921504606846976 active zones, "
+                 "more than the 2147483648 accepted");
+}
+
+TEST_F(EnzoSyntheticTest, FieldsWhoseDeclaredSizeTheFileDoesNotStoreAreRefused) {
+  editGroup("sim.cpu0000", 2, [](hid_t g) {
+    ASSERT_GE(H5Ldelete(g, "Density", H5P_DEFAULT), 0);
+    const hsize_t dims[3] = {4, 4, 4}, chunk[3] = {1, 1, 1};
+    const hid_t space = H5Screate_simple(3, dims, nullptr);
+    const hid_t create = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_chunk(create, 3, chunk);
+    const hid_t set =
+        H5Dcreate2(g, "Density", H5T_IEEE_F32BE, space, H5P_DEFAULT, create, H5P_DEFAULT);
+    ASSERT_GE(set, 0);
+    H5Dclose(set);
+    H5Pclose(create);
+    H5Sclose(space);
+  });
+  expectRejected(dir_ / "sim", (dir_ / "sim.cpu0000").string(),
+                 "dataset '/Grid00000002/Density': declares 64 values of 4 bytes (256 bytes) but "
+                 "the file stores 0 bytes");
+}
+
+TEST_F(EnzoSyntheticTest, NonFiniteValuesNameTheDatasetAndTheZone) {
+  editGroup("sim.cpu0001", 4, [](hid_t g) {
+    ASSERT_GE(H5Ldelete(g, "Density", H5P_DEFAULT), 0);
+    std::vector<float> values(16, 1.0f);
+    values[(1 * 4 + 2) * 2 + 0] = std::numeric_limits<float>::infinity();  // (i, j, k) = (0, 2, 1)
+    writeFloats(g, "Density", {2, 4, 2}, values);
+  });
+  expectRejected(dir_ / "sim", (dir_ / "sim.cpu0001").string(),
+                 "dataset /Grid00000004/Density: value inf at zone (i, j, k) = (0, 2, 1) is "
+                 "infinite");
+}
+
+TEST_F(EnzoSyntheticTest, DirectoriesAndFifosAreRefusedByNameBeforeOpening) {
+  fs::remove(dir_ / "sim.cpu0001");
+  fs::create_directory(dir_ / "sim.cpu0001");
+  expectRejected(dir_ / "sim", (dir_ / "sim.cpu0001").string(), "is a directory, not a file");
+
+  writeSynthetic(dir_);
+  fs::remove(dir_ / "sim.hierarchy");
+  testing::makeFifo(dir_ / "sim.hierarchy");
+  EXPECT_THAT(
+      testing::inputErrorWithoutHanging(dir_ / "sim.hierarchy", [&] { readEnzo(dir_ / "sim"); }),
+      HasSubstr((dir_ / "sim.hierarchy").string() + ": is a FIFO"));
+
+  writeSynthetic(dir_);
+  fs::remove(dir_ / "sim");
+  testing::makeFifo(dir_ / "sim");
+  EXPECT_THAT(
+      testing::inputErrorWithoutHanging(dir_ / "sim", [&] { readEnzo(dir_ / "sim.hierarchy"); }),
+      HasSubstr((dir_ / "sim").string() + ": is a FIFO"));
 }
 
 }  // namespace

@@ -8,18 +8,24 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <vector>
 
 #include "formats/load_input.hpp"
 #include "input_error_of.hpp"
 #include "random_amr.hpp"
+#include "special_files.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -34,6 +40,25 @@ class ExaFormat : public testing::TempDirTest {
   }
   static std::string errorOf(const fs::path& config) {
     return testing::inputErrorOf([&] { readExa(config); });
+  }
+  // A config naming `cells` (x, y, z, level per cell) written beside it, and one scalar channel.
+  fs::path writeCells(const std::vector<std::array<std::int32_t, 4>>& cells,
+                      const std::string& transformLines = "") {
+    std::ofstream(dir_ / "raw.cells", std::ios::binary)
+        .write(reinterpret_cast<const char*>(cells.data()),
+               std::streamsize(cells.size() * sizeof(cells[0])));
+    const std::vector<float> values(cells.size(), 1.0f);
+    std::ofstream(dir_ / "raw.v.scalars", std::ios::binary)
+        .write(reinterpret_cast<const char*>(values.data()),
+               std::streamsize(values.size() * sizeof(float)));
+    writeText(dir_ / "raw.exa", "cells raw.cells\nscalar v raw.v.scalars\n" + transformLines);
+    return dir_ / "raw.exa";
+  }
+  // Writes `value` as the float32 of cell `cell` in `scalars`.
+  static void poke(const fs::path& scalars, std::size_t cell, float value) {
+    std::fstream f(scalars, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(std::streamoff(cell * sizeof(float)));
+    f.write(reinterpret_cast<const char*>(&value), sizeof value);
   }
 };
 
@@ -130,7 +155,9 @@ TEST_F(ExaFormat, RejectsMalformedConfigWithLineNumbers) {
   writeText(config, "scalar vx sample.vx.scalars\n");
   EXPECT_THAT(errorOf(config), HasSubstr("no 'cells FILE' line"));
   writeText(config, "cells missing.cells\n");
-  EXPECT_THAT(errorOf(config), HasSubstr("missing.cells: cannot open the file"));
+  EXPECT_THAT(errorOf(config), HasSubstr("missing.cells: no such file"));
+  writeText(config, std::string("cells sample.cells\ncells \0\0@\n", 29));
+  EXPECT_THAT(errorOf(config), HasSubstr(":2: the line holds a NUL byte"));
 }
 
 // ---- what the dataset says about itself: time, periodic, length-unit, time-unit -------------
@@ -188,8 +215,8 @@ TEST_F(ExaFormat, RejectsMalformedInfoLinesWithLineNumbers) {
   writeSample();
   const fs::path config = dir_ / "bad.exa";
   writeText(config, "cells sample.cells\nperiodic 1 0\n");
-  EXPECT_THAT(errorOf(config),
-              HasSubstr(config.string() + ":2: 'periodic' needs three flags 0 or 1 (x y z), got 2"));
+  EXPECT_THAT(errorOf(config), HasSubstr(config.string() +
+                                         ":2: 'periodic' needs three flags 0 or 1 (x y z), got 2"));
   writeText(config, "cells sample.cells\nperiodic 1 0 2\n");
   EXPECT_THAT(errorOf(config), HasSubstr(config.string() + ":2: 'periodic' needs three flags"));
   writeText(config, "cells sample.cells\n\ntime soon\n");
@@ -230,8 +257,144 @@ TEST_F(ExaFormat, LoadInputDispatchesAndRejectsUnknownInputs) {
     loadInput((dir_ / "data.xyz").string(), {});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown input format"));
+    EXPECT_THAT(e.what(), HasSubstr("format not recognised"));
   }
+}
+
+// ---- hardening: paths that are not files, sizes, overflow, transforms, values, writes --------
+
+TEST_F(ExaFormat, DirectoriesAndFifosAreRefusedByNameBeforeOpening) {
+  const fs::path config = writeSample();
+  const fs::path scalars = dir_ / "sample.vy.scalars";
+  fs::remove(scalars);
+  fs::create_directory(scalars);
+  EXPECT_THAT(errorOf(config), HasSubstr(scalars.string() + ": is a directory, not a file"));
+  fs::remove(scalars);
+  testing::makeFifo(scalars);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(scalars, [&] { readExa(config); }),
+              HasSubstr(scalars.string() + ": is a FIFO (named pipe), not a regular file"));
+
+  const fs::path cells = dir_ / "sample.cells";
+  fs::remove(cells);
+  testing::makeFifo(cells);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(cells, [&] { readExa(config); }),
+              HasSubstr(cells.string() + ": is a FIFO"));
+  const fs::path fifoConfig = dir_ / "fifo.exa";
+  testing::makeFifo(fifoConfig);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(fifoConfig, [&] { readExa(fifoConfig); }),
+              HasSubstr(fifoConfig.string() + ": is a FIFO"));
+}
+
+// Sparse files: their sizes claim a terabyte; the reader must refuse them from the size alone.
+TEST_F(ExaFormat, SizesAreCheckedBeforeAnythingIsAllocated) {
+  const fs::path config = writeSample();
+  const std::size_t cells = testing::randomAmr(7).cellCount();
+  const fs::path scalars = dir_ / "sample.vx.scalars";
+  const std::uintmax_t terabyte = std::uintmax_t{1} << 40;
+  fs::resize_file(scalars, terabyte);
+  EXPECT_THAT(errorOf(config), AllOf(HasSubstr(scalars.string()),
+                                     HasSubstr("holds " + std::to_string(terabyte) + " bytes"),
+                                     HasSubstr("has " + std::to_string(cells) + " cells")));
+  fs::resize_file(dir_ / "sample.cells", terabyte);
+  EXPECT_THAT(errorOf(config), AllOf(HasSubstr((dir_ / "sample.cells").string()),
+                                     HasSubstr("holds 68719476736 cells, more than the "
+                                               "2147483648 accepted")));
+}
+
+TEST_F(ExaFormat, CellsNearIntMaxAreRefusedWithoutOverflow) {
+  const std::int32_t intMax = std::numeric_limits<std::int32_t>::max();
+  const std::int32_t intMin = std::numeric_limits<std::int32_t>::min();
+  fs::path config = writeCells({{0, 0, 0, 0}, {intMax, 0, 0, 0}});
+  EXPECT_THAT(errorOf(config),
+              AllOf(HasSubstr((dir_ / "raw.cells").string()),
+                    HasSubstr("cell 1 at (2147483647, 0, 0), 1 finest cells wide, reaches past "
+                              "2^31 - 1")));
+  config = writeCells({{intMin, 0, 0, 0}, {intMax - 1, 0, 0, 0}});
+  EXPECT_THAT(errorOf(config),
+              AllOf(HasSubstr((dir_ / "raw.cells").string()),
+                    HasSubstr("the cells span 4294967295 finest cells along axis x")));
+  // Aligned, in range and far from the origin: read as they are.
+  config = writeCells({{intMax - 1, 0, 0, 0}, {intMax - 3, 0, 0, 1}});
+  const bricks::AmrField field = readExa(config);
+  EXPECT_EQ(field.bounds().lower, glm::ivec3(intMax - 3, 0, 0));
+  EXPECT_EQ(field.bounds().upper, glm::ivec3(intMax, 2, 2));
+}
+
+TEST_F(ExaFormat, TransformMustPlaceCellsAtFiniteDistinctPositions) {
+  const std::vector<std::array<std::int32_t, 4>> cells{{0, 0, 0, 0}, {1, 0, 0, 0}};
+  fs::path config = writeCells(cells, "origin 1e308 0 0\n");
+  EXPECT_THAT(errorOf(config), AllOf(HasSubstr(config.string()), HasSubstr("origin (line 3)"),
+                                     HasSubstr("along x reaches 1e+308")));
+  config = writeCells(cells, "spacing 1e300 1 1\n");
+  EXPECT_THAT(errorOf(config), AllOf(HasSubstr("spacing (line 3)"),
+                                     HasSubstr("the spacing along x is 1e+300, outside")));
+  config = writeCells(cells, "origin 9e36 0 0\nspacing 1e36 1 1\n");
+  EXPECT_THAT(errorOf(config), HasSubstr("along x reaches 1.1e+37, beyond the 1e+37 that float32 "
+                                         "positions can hold"));
+  config = writeCells(cells, "spacing 1 1e-320 1\n");
+  EXPECT_THAT(errorOf(config),
+              AllOf(HasSubstr(config.string() + ":3: 'spacing' must be positive and not "
+                                                "subnormal, got 1e-320 along y")));
+  config = writeCells(cells, "origin 1e12 0 0\nspacing 1e-6 1 1\n");
+  EXPECT_THAT(errorOf(config), HasSubstr("neighbouring cells would share a position"));
+  config = writeCells(cells, "origin 0 nan 0\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":3: 'origin' y is not a finite number: 'nan'"));
+  config = writeCells(cells, "origin 1e400 0 0\n");
+  EXPECT_THAT(errorOf(config), HasSubstr(":3: 'origin' x is not a finite number: '1e400'"));
+  config = writeCells(cells, "origin -1e30 0 0\nspacing 1e25 1 1\n");
+  EXPECT_EQ(readExa(config).transform().spacing.x, 1e25);
+}
+
+TEST_F(ExaFormat, NonFiniteValuesNameTheFileTheChannelAndTheCell) {
+  const fs::path config = writeSample();
+  const fs::path scalars = dir_ / "sample.vy.scalars";
+  const bricks::AmrField field = testing::randomAmr(7);
+  const glm::ivec3 corner = field.lowers()[5];
+  poke(scalars, 5, std::numeric_limits<float>::quiet_NaN());
+  EXPECT_THAT(errorOf(config),
+              AllOf(HasSubstr(scalars.string() +
+                              ": channel 'vy': the value of cell 5 (lower "
+                              "corner " +
+                              std::to_string(corner.x) + ", " + std::to_string(corner.y) + ", " +
+                              std::to_string(corner.z) + ") is not a number")));
+  poke(scalars, 5, 0.5f);
+  poke(scalars, 9, -std::numeric_limits<float>::infinity());
+  EXPECT_THAT(errorOf(config), HasSubstr("the value of cell 9"));
+  EXPECT_THAT(errorOf(config), HasSubstr("is infinite"));
+}
+
+TEST_F(ExaFormat, AFailedWriteLeavesNoFile) {
+  const bricks::AmrField field = testing::randomAmr(7);
+  // The .exa comes last: a directory in its place fails the set after the data files were done.
+  fs::create_directory(dir_ / "out.exa");
+  EXPECT_THAT(testing::inputErrorOf([&] { writeExa(field, dir_ / "out"); }),
+              HasSubstr((dir_ / "out.exa").string() + ": cannot write the file"));
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir_))
+    left.push_back(entry.path().filename().string());
+  EXPECT_THAT(left, ::testing::ElementsAre("out.exa"));
+  EXPECT_TRUE(fs::is_directory(dir_ / "out.exa"));
+
+  // A channel whose file name is too long fails after the cells file was begun.
+  fs::remove(dir_ / "out.exa");
+  bricks::AmrField longName({field.lowers().begin(), field.lowers().end()},
+                            {field.levels().begin(), field.levels().end()},
+                            {{std::string(300, 'v'), field.channels()[0].values}},
+                            field.transform(), "long");
+  EXPECT_THAT(testing::inputErrorOf([&] { writeExa(longName, dir_ / "out"); }),
+              HasSubstr("cannot write the file: File name too long"));
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(ExaFormat, RefusesNamesThatTheConfigCannotHoldBeforeWriting) {
+  const bricks::AmrField field = testing::randomAmr(7);
+  bricks::AmrField spaced({field.lowers().begin(), field.lowers().end()},
+                          {field.levels().begin(), field.levels().end()},
+                          {{"x velocity", field.channels()[0].values}}, field.transform(), "s");
+  EXPECT_THAT(testing::inputErrorOf([&] { writeExa(spaced, dir_ / "out"); }),
+              AllOf(HasSubstr((dir_ / "out.exa").string()),
+                    HasSubstr("the channel name 'x velocity' is empty or holds a blank")));
+  EXPECT_TRUE(fs::is_empty(dir_));
 }
 
 }  // namespace

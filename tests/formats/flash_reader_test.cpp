@@ -19,6 +19,7 @@
 
 #include "hdf5_read.hpp"
 #include "input_error_of.hpp"
+#include "special_files.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
@@ -69,7 +70,12 @@ const std::vector<std::pair<std::string, std::function<double(glm::dvec3)>>> kFu
     {"velx", velx}, {"vely", vely}, {"velz", velz}, {"dens", dens}};
 constexpr double kParentValue = -999.0;
 
+// How `unknown names` stores its strings: FLASH's Fortran writes them exactly 4 wide; h5py pads
+// with NULs, others with blanks or a terminating NUL, or writes variable-length strings.
+enum class NameStorage { kExactWidth, kNullPadded, kSpacePadded, kNullTerminated, kVariable };
+
 struct Corruption {
+  NameStorage nameStorage = NameStorage::kExactWidth;
   bool omitNodeType = false;
   bool wrongShapeDens = false;
   bool listAbsentVariable = false;
@@ -87,6 +93,36 @@ void writeArray(hid_t file, const char* name, hid_t type, const std::vector<hsiz
   H5Sclose(space);
 }
 
+void writeNames(hid_t file, const std::vector<std::string>& names, NameStorage storage) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  const hsize_t count = names.size();
+  if (storage == NameStorage::kVariable) {
+    H5Tset_size(type, H5T_VARIABLE);
+    std::vector<const char*> pointers;
+    for (const std::string& name : names) pointers.push_back(name.c_str());
+    writeArray(file, "unknown names", type, {count, 1}, pointers.data());
+    H5Tclose(type);
+    return;
+  }
+  // h5py's numpy 'S4' names are null-padded exactly 4 wide: a NUL-terminated memory type of
+  // width 4 would keep 3 characters of each.
+  const std::size_t width = storage == NameStorage::kNullTerminated ? 5
+                            : storage == NameStorage::kSpacePadded  ? 8
+                                                                    : 4;
+  H5Tset_size(type, width);
+  H5Tset_strpad(type, storage == NameStorage::kNullPadded    ? H5T_STR_NULLPAD
+                      : storage == NameStorage::kSpacePadded ? H5T_STR_SPACEPAD
+                                                             : H5T_STR_NULLTERM);
+  std::string bytes;
+  for (const std::string& name : names) {
+    std::string padded = name;
+    padded.resize(width, storage == NameStorage::kSpacePadded ? ' ' : '\0');
+    bytes += padded;
+  }
+  writeArray(file, "unknown names", type, {count, 1}, bytes.data());
+  H5Tclose(type);
+}
+
 struct IntScalar {
   char name[80];
   int value;
@@ -99,13 +135,10 @@ void writeFlash(const fs::path& path, int dim, const std::vector<Block>& blocks,
   ASSERT_GE(file, 0);
   const hsize_t nb = blocks.size();
 
-  std::string names;
-  for (const auto& [name, f] : kFunctions) names += name;
-  if (bad.listAbsentVariable) names += "pres";
-  const hid_t strType = H5Tcopy(H5T_C_S1);
-  H5Tset_size(strType, 4);
-  writeArray(file, "unknown names", strType, {names.size() / 4, 1}, names.data());
-  H5Tclose(strType);
+  std::vector<std::string> names;
+  for (const auto& [name, f] : kFunctions) names.push_back(name);
+  if (bad.listAbsentVariable) names.push_back("pres");
+  writeNames(file, names, bad.nameStorage);
 
   if (!bad.omitScalars) {
     const hid_t nameType = H5Tcopy(H5T_C_S1);
@@ -203,8 +236,7 @@ void addMetadata(const fs::path& path, const std::vector<std::pair<std::string, 
     blankPadded(stringPairs[i].value, strings[i].second);
   }
   if (!strings.empty())
-    writeArray(file, "string runtime parameters", stringType, {strings.size()},
-               stringPairs.data());
+    writeArray(file, "string runtime parameters", stringType, {strings.size()}, stringPairs.data());
   H5Tclose(stringType);
   H5Tclose(realType);
   H5Tclose(text);
@@ -346,9 +378,13 @@ TEST_F(FlashReader, TimeUnitsAndPeriodicAxesComeFromScalarsAndRuntimeParameters)
 TEST_F(FlashReader, TwoDimensionalFilesIgnoreTheZBoundary) {
   const fs::path path = dir_ / "flat_described";
   writeFlash(path, 2, makeTree(2, kLo, kHi));
-  addMetadata(path, {}, {{"xl_boundary_type", "outflow"}, {"xr_boundary_type", "outflow"},
-                         {"yl_boundary_type", "periodic"}, {"yr_boundary_type", "periodic"},
-                         {"zl_boundary_type", "periodic"}, {"zr_boundary_type", "periodic"}});
+  addMetadata(path, {},
+              {{"xl_boundary_type", "outflow"},
+               {"xr_boundary_type", "outflow"},
+               {"yl_boundary_type", "periodic"},
+               {"yr_boundary_type", "periodic"},
+               {"zl_boundary_type", "periodic"},
+               {"zr_boundary_type", "periodic"}});
   const bricks::DatasetInfo info = readFlash(path).info();
   EXPECT_TRUE(info.periodicKnown);
   EXPECT_THAT(info.periodic, ElementsAre(false, true, false));
@@ -373,6 +409,153 @@ TEST_F(FlashReader, MissingFileAndNonHdf5FileAreRejected) {
   const fs::path text = dir_ / "text";
   std::ofstream(text) << "not hdf5\n";
   EXPECT_THAT(inputErrorOf([&] { readFlash(text); }), HasSubstr(text.string()));
+}
+
+// ---- hardening: string storage, paths that are not files, declared sizes, values -----------
+
+TEST_F(FlashReader, VariableNamesAreReadWhateverTheirStringStorage) {
+  for (const NameStorage storage :
+       {NameStorage::kNullPadded, NameStorage::kSpacePadded, NameStorage::kNullTerminated,
+        NameStorage::kVariable, NameStorage::kExactWidth}) {
+    const fs::path path = dir_ / ("names" + std::to_string(int(storage)));
+    writeFlash(path, 3, makeTree(3, kLo, kHi), {.nameStorage = storage});
+    const bricks::AmrField field = readFlash(path);
+    std::vector<std::string> names;
+    for (const auto& channel : field.channels()) names.push_back(channel.name);
+    EXPECT_THAT(names, ElementsAre("velx", "vely", "velz", "dens")) << int(storage);
+    EXPECT_EQ(field.cellCount(), 15u * 64u) << int(storage);
+  }
+}
+
+// h5py writes a Python str as a variable-length string, in compound members too.
+TEST_F(FlashReader, VariableLengthRuntimeParametersAreRead) {
+  const fs::path path = dir_ / "vlen_parameters";
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  struct Pair {
+    const char* name;
+    const char* value;
+  };
+  const hid_t file = H5Fopen(path.string().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t text = H5Tcopy(H5T_C_S1);
+  H5Tset_size(text, H5T_VARIABLE);
+  const hid_t type = H5Tcreate(H5T_COMPOUND, sizeof(Pair));
+  H5Tinsert(type, "name", HOFFSET(Pair, name), text);
+  H5Tinsert(type, "value", HOFFSET(Pair, value), text);
+  const std::vector<Pair> pairs{{"yl_boundary_type", "periodic"},
+                                {"yr_boundary_type", "periodic   "},
+                                {"pc_unitsbase", "MKS"}};
+  writeArray(file, "string runtime parameters", type, {pairs.size()}, pairs.data());
+  H5Tclose(type);
+  H5Tclose(text);
+  H5Fclose(file);
+  const bricks::DatasetInfo info = readFlash(path).info();
+  EXPECT_THAT(info.periodic, ElementsAre(false, true, false));
+  EXPECT_EQ(info.lengthUnit, "m");
+}
+
+TEST_F(FlashReader, DirectoriesAndFifosAreRefusedByNameBeforeOpening) {
+  const fs::path directory = dir_ / "plt_dir";
+  fs::create_directory(directory);
+  EXPECT_THAT(inputErrorOf([&] { readFlash(directory); }),
+              HasSubstr(directory.string() + ": is a directory, not a file"));
+  const fs::path fifo = dir_ / "plt_fifo";
+  testing::makeFifo(fifo);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(fifo, [&] { readFlash(fifo); }),
+              HasSubstr(fifo.string() + ": is a FIFO (named pipe), not a regular file"));
+}
+
+// Replaces dataset `name` by a chunked one of shape `dims` whose chunks are never written: the
+// file is small, the declared size huge.
+void replaceWithUnwritten(const fs::path& path, const char* name, hid_t type,
+                          const std::vector<hsize_t>& dims) {
+  const hid_t file = H5Fopen(path.string().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Ldelete(file, name, H5P_DEFAULT), 0);
+  const hid_t space = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
+  const hid_t create = H5Pcreate(H5P_DATASET_CREATE);
+  const std::vector<hsize_t> chunk(dims.size(), 1);
+  ASSERT_GE(H5Pset_chunk(create, int(chunk.size()), chunk.data()), 0);
+  const hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, create, H5P_DEFAULT);
+  ASSERT_GE(set, 0);
+  H5Dclose(set);
+  H5Pclose(create);
+  H5Sclose(space);
+  H5Fclose(file);
+}
+
+TEST_F(FlashReader, DeclaredShapesAreCheckedAgainstTheStoredDataBeforeAllocating) {
+  const fs::path path = dir_ / "huge";
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  replaceWithUnwritten(path, "refine level", H5T_NATIVE_INT, {hsize_t{1} << 40});
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              AllOf(HasSubstr(path.string() + ": dataset 'refine level': declares 1099511627776 "
+                                              "values, more than the 2147483648 accepted")));
+  replaceWithUnwritten(path, "refine level", H5T_NATIVE_INT, {hsize_t{1} << 20});
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr("dataset 'refine level': declares 1048576 values of 4 bytes (4194304 "
+                        "bytes) but the file stores 0 bytes"));
+
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  replaceWithUnwritten(path, "dens", H5T_NATIVE_FLOAT, {17, 4, 4, 4});
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr("dataset 'dens': declares 1088 values of 4 bytes (4352 bytes) but the "
+                        "file stores 0 bytes"));
+
+  // Without `integer scalars` the block shape comes from the first variable: 4096^3 per block.
+  writeFlash(path, 3, makeTree(3, kLo, kHi), {.omitScalars = true});
+  for (const char* name : {"velx", "vely", "velz", "dens"})
+    replaceWithUnwritten(path, name, H5T_NATIVE_DOUBLE, {17, 4096, 4096, 4096});
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr("dataset 'velx': declares 1168231104512 values, more than the "
+                        "2147483648 accepted"));
+}
+
+// Rewrites one value of `name` (float64, [nb, nzb, nyb, nxb] = [17, 4, 4, 4]).
+void setValue(const fs::path& path, const char* name, std::size_t block, int i, int j, int k,
+              double value) {
+  const hid_t file = H5Fopen(path.string().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  std::vector<double> values = testing::readWholeDataset<double>(file, name, H5T_NATIVE_DOUBLE);
+  values.at(block * 64 + (k * 4 + j) * 4 + i) = value;
+  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+  ASSERT_GE(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  H5Dclose(set);
+  H5Fclose(file);
+}
+
+TEST_F(FlashReader, NonFiniteLeafValuesNameTheDatasetTheBlockAndTheCell) {
+  const fs::path path = dir_ / "nan";
+  writeFlash(path, 3, makeTree(3, kLo, kHi));
+  // Block 0 is the root, a parent: its values become no cell and are not checked.
+  setValue(path, "velx", 0, 0, 0, 0, std::nan(""));
+  EXPECT_EQ(readFlash(path).cellCount(), 15u * 64u);
+  setValue(path, "velx", 2, 3, 2, 1, std::nan(""));
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr(path.string() + ": dataset 'velx': value nan of block 2 cell (i, j, k) = "
+                                        "(3, 2, 1) is not a number"));
+  setValue(path, "velx", 2, 3, 2, 1, 1.0);
+  setValue(path, "vely", 16, 0, 3, 2, 1e300);
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr("dataset 'vely': value 1e+300 of block 16 cell (i, j, k) = (0, 3, 2) is "
+                        "beyond the float range"));
+}
+
+// A coarse 2D leaf and a fine one beside it, `levels` refine levels apart: the slab stacks each
+// fine cell 2^levels times. Up to 256 copies per leaf cell are read, more are refused.
+TEST_F(FlashReader, TwoDimensionalStackingIsBoundedByTheFilesCells) {
+  const auto blocks = [](int levels) {
+    const double fine = std::ldexp(1.0, -levels);
+    return std::vector<Block>{{1, 1, {0, 0, 0}, {1, 1, 0}},
+                              {1 + levels, 1, {1, 0, 0}, {1 + fine, fine, 0}}};
+  };
+  const fs::path path = dir_ / "deep_2d";
+  writeFlash(path, 2, blocks(8));
+  EXPECT_EQ(readFlash(path).cellCount(), 16u + 16u * 256u);
+  writeFlash(path, 2, blocks(9));
+  EXPECT_THAT(inputErrorOf([&] { readFlash(path); }),
+              HasSubstr(path.string() + ": 32 leaf cells become more than 8192 cells after "
+                                        "stacking 2D cells into a uniform slab: too many"));
 }
 
 // ---- the real 2D nanowire plotfile ----------------------------------------------------------

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "input_error_of.hpp"
+#include "special_files.hpp"
 #include "temp_dir_test.hpp"
 #include "util/input_error.hpp"
 
@@ -156,12 +157,40 @@ TEST_F(GerrisReader, RejectsMalformedFiles) {
 
 // ---- what the dump says about itself --------------------------------------------------------
 
+TEST_F(GerrisReader, ValuesThatAreNotFiniteFloatsNameTheLineAndTheColumn) {
+  const std::string header = "# 1:x 2:y 3:z 4:U 5:P 6:Lev 0\n";
+  const std::string first = "0 0 0 1 2 0\n";
+  EXPECT_THAT(testing::inputErrorOf(
+                  [&] { readGerris(write("nan.txt", header + first + "1 0 0 nan 2 0\n")); }),
+              HasSubstr((dir_ / "nan.txt").string() + ":3: column 'U' is not a number: 'nan'"));
+  EXPECT_THAT(testing::inputErrorOf(
+                  [&] { readGerris(write("inf.txt", header + first + "1 0 0 1 -inf 0\n")); }),
+              HasSubstr(":3: column 'P' is infinite: '-inf'"));
+  EXPECT_THAT(testing::inputErrorOf(
+                  [&] { readGerris(write("huge.txt", header + first + "1 0 0 1e300 2 0\n")); }),
+              HasSubstr(":3: column 'U' is beyond the float range: '1e300'"));
+}
+
+TEST_F(GerrisReader, DirectoriesAndFifosAreRefusedByNameBeforeOpening) {
+  fs::create_directory(dir_ / "dump");
+  EXPECT_THAT(testing::inputErrorOf([&] { readGerris(dir_ / "dump"); }),
+              HasSubstr((dir_ / "dump").string() + ": is a directory, not a file"));
+  testing::makeFifo(dir_ / "fifo.txt");
+  EXPECT_THAT(
+      testing::inputErrorWithoutHanging(dir_ / "fifo.txt", [&] { readGerris(dir_ / "fifo.txt"); }),
+      HasSubstr((dir_ / "fifo.txt").string() + ": is a FIFO"));
+  EXPECT_THAT(testing::inputErrorWithoutHanging(dir_ / "fifo.txt",
+                                                [&] { readGerrisTime(dir_ / "fifo.txt"); }),
+              HasSubstr((dir_ / "fifo.txt").string() + ": is a FIFO"));
+}
+
 TEST_F(GerrisReader, TimeIsTheHeadersLastNumberAndLevelsAreGerrisLevels) {
   std::vector<glm::dvec3> centres;
   std::vector<int> levels;
-  const bricks::DatasetInfo info = readGerris(write("two.txt", twoLevelDump(&centres, &levels))).info();
+  const bricks::DatasetInfo info =
+      readGerris(write("two.txt", twoLevelDump(&centres, &levels))).info();
   EXPECT_EQ(info.format, "Gerris");
-  EXPECT_EQ(info.time, 0.25);  // the header ends with 0.25
+  EXPECT_EQ(info.time, 0.25);       // the header ends with 0.25
   EXPECT_EQ(info.fileLevel(0), 2);  // the dump's Lev 2 cells are the finest
   EXPECT_EQ(info.fileLevel(1), 1);
   EXPECT_FALSE(info.periodicKnown);
@@ -187,7 +216,7 @@ TEST(GerrisRealData, RingDumpTimeAndLevels) {
     GTEST_SKIP() << "real data " << kRealFile << " is absent (a clone without ../shared/data)";
   const bricks::AmrField field = readGerris(kRealFile);
   EXPECT_EQ(field.info().time, headerTime(kRealFile));
-  EXPECT_EQ(field.info().time, 1.0);  // ring.gfs runs to TEND = 1.0 and dumps at the end
+  EXPECT_EQ(field.info().time, 1.0);        // ring.gfs runs to TEND = 1.0 and dumps at the end
   EXPECT_EQ(field.info().fileLevel(0), 7);  // README: octree levels 3..7
   EXPECT_EQ(field.info().fileLevel(field.coarsestLevel()), 3);
 }

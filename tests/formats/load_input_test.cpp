@@ -5,17 +5,22 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "input_error_of.hpp"
+#include "special_files.hpp"
 #include "temp_dir_test.hpp"
 
 namespace amrstream::formats {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -26,6 +31,25 @@ class DetectFormat : public testing::TempDirTest {
     std::ofstream(dir_ / name, std::ios::binary) << bytes;
     return (dir_ / name).string();
   }
+  // An HDF5 file holding one small integer dataset per name.
+  std::string writeHdf5(const std::string& name, const std::vector<std::string>& datasets) {
+    const fs::path path = dir_ / name;
+    fs::create_directories(path.parent_path());
+    const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(file, 0);
+    const hsize_t dims[1] = {2};
+    const int values[2] = {1, 2};
+    for (const std::string& dataset : datasets) {
+      const hid_t space = H5Screate_simple(1, dims, nullptr);
+      const hid_t set = H5Dcreate2(file, dataset.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT,
+                                   H5P_DEFAULT, H5P_DEFAULT);
+      EXPECT_GE(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values), 0);
+      H5Dclose(set);
+      H5Sclose(space);
+    }
+    H5Fclose(file);
+    return path.string();
+  }
 };
 
 TEST_F(DetectFormat, RecognisesEveryFormat) {
@@ -33,9 +57,8 @@ TEST_F(DetectFormat, RecognisesEveryFormat) {
   EXPECT_EQ(detectFormat(write("a.exa", "cells a.cells\n")), Format::ExaBricks);
   write("plt/Header", "HyperCLaw-V1.1\n38\n");
   EXPECT_EQ(detectFormat((dir_ / "plt").string()), Format::Amrex);
-  EXPECT_EQ(
-      detectFormat(write("flash_hdf5_plt_cnt_0001", std::string("\x89HDF\r\n\x1a\n", 8) + "x")),
-      Format::Flash);
+  EXPECT_EQ(detectFormat(writeHdf5("flash_hdf5_plt_cnt_0001", {"unknown names", "refine level"})),
+            Format::Flash);
   const std::string enzo = write("DD0001/data0001", "InitialTime = 0\n");
   write("DD0001/data0001.hierarchy", "Grid = 1\n");
   EXPECT_EQ(detectFormat(enzo), Format::Enzo);
@@ -49,9 +72,40 @@ TEST_F(DetectFormat, NamesTheInputWhenItIsNotRecognised) {
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "missing").string()); }),
               HasSubstr("missing: no such file"));
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(write("notes.txt", "hello\n")); }),
-              HasSubstr("notes.txt: unknown input format"));
+              AllOf(HasSubstr("notes.txt: format not recognised: no known extension or "
+                              "signature; tried builtin:KIND, ExaBricks"),
+                    HasSubstr("FLASH (HDF5 with an 'unknown names' dataset) and Gerris")));
   fs::create_directories(dir_ / "empty");
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "empty").string()); }),
+              HasSubstr("not an AMReX plotfile"));
+}
+
+// Only FLASH files are HDF5 files with 'unknown names': any other HDF5 file is not taken for one.
+TEST_F(DetectFormat, AnUnknownHdf5FileIsNotTakenForFlash) {
+  const std::string chombo = writeHdf5("chombo.hdf5", {"level_0_boxes", "level_0_data"});
+  const std::string boundary =
+      writeHdf5("DD0010/moving7_0010.boundary.hdf", {"BoundaryDimension", "BoundaryValue"});
+  for (const std::string& input : {chombo, boundary})
+    EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(input); }),
+                AllOf(HasSubstr(input + ": format not recognised: an HDF5 file without FLASH's "
+                                        "'unknown names' dataset; tried builtin:KIND"),
+                      HasSubstr("Enzo"), HasSubstr("AMReX"), HasSubstr("Gerris")))
+        << input;
+  const std::string corrupt =
+      write("corrupt_hdf5_plt_cnt_0001", std::string("\x89HDF\r\n\x1a\n", 8) + "x");
+  EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(corrupt); }),
+              HasSubstr(corrupt + ": an HDF5 file that HDF5 cannot open (truncated or corrupt?)"));
+}
+
+TEST_F(DetectFormat, AFifoIsRefusedByNameBeforeItIsOpened) {
+  const fs::path fifo = dir_ / "input.fifo";
+  testing::makeFifo(fifo);
+  EXPECT_THAT(testing::inputErrorWithoutHanging(fifo, [&] { detectFormat(fifo.string()); }),
+              HasSubstr(fifo.string() + ": is a FIFO (named pipe), not a regular file"));
+  fs::create_directories(dir_ / "plt");
+  testing::makeFifo(dir_ / "plt" / "Header");
+  EXPECT_THAT(testing::inputErrorWithoutHanging(dir_ / "plt" / "Header",
+                                                [&] { detectFormat((dir_ / "plt").string()); }),
               HasSubstr("not an AMReX plotfile"));
 }
 

@@ -213,7 +213,7 @@ TEST_F(SnapshotTime, ErrorsNameTheFileAndTheProblem) {
 
   const std::string unknown = write("notes.txt", "plain text\n").string();
   EXPECT_THAT(inputErrorOf([&] { snapshotTime(unknown); }),
-              HasSubstr(unknown + ": unknown input format"));
+              HasSubstr(unknown + ": format not recognised"));
 
   // The header's last word is neither a column N:NAME nor a number.
   const std::string gerris = write("bad.txt", "# 1:x 2:y 3:z 4:U 5:Lev t=0.5\n").string();

@@ -1,0 +1,33 @@
+#pragma once
+// What the HDF5 readers check before allocating for a dataset, and how they read its strings.
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace amrstream::formats {
+
+// No dataset the readers use holds more values than this (16 GiB of float64).
+inline constexpr std::uint64_t kMaxDatasetValues = std::uint64_t{1} << 31;
+// A filtered (compressed) dataset may store its bytes this many times smaller, no more: zlib
+// stays under 1032:1.
+inline constexpr std::uint64_t kMaxCompressionRatio = 4096;
+
+// The number of values dataset `set` declares, once it is known that they are really stored:
+// throws InputError(file, "dataset 'NAME': ...") when their count exceeds kMaxDatasetValues, when
+// the file stores fewer bytes for them than they need (unfiltered) or than
+// 1 / kMaxCompressionRatio of that (filtered), or when HDF5 cannot tell. A declared shape that
+// the file does not back is refused before any allocation.
+std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std::string& name);
+
+// The strings of dataset `set`: each element, or the compound member `member` of each element,
+// of file type `stringType` (an H5T_STRING), `count` of them, whatever their storage: fixed
+// length null-terminated, null-padded or space-padded, or variable length. Each string is cut at
+// its first NUL; blanks are kept. nullopt when HDF5 cannot read them.
+std::optional<std::vector<std::string>> readHdf5Strings(hid_t set, hid_t stringType,
+                                                        const char* member, std::uint64_t count);
+
+}  // namespace amrstream::formats

@@ -1,0 +1,95 @@
+#include "text_numbers.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::formats {
+
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && isBlank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && isBlank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+// from_chars refuses the leading '+' that text files may write.
+std::string_view withoutPlus(std::string_view word) {
+  if (word.size() > 1 && word.front() == '+' && word[1] != '-') word.remove_prefix(1);
+  return word;
+}
+
+}  // namespace
+
+std::string excerpt(std::string_view text) {
+  constexpr std::size_t kShown = 60;
+  std::string shown;
+  for (const char c : text.substr(0, kShown)) {
+    const auto byte = static_cast<unsigned char>(c);
+    shown += byte >= 0x20 && byte < 0x7f ? std::string(1, c) : fmt::format("\\x{:02x}", byte);
+  }
+  return text.size() <= kShown ? shown : shown + "...";
+}
+
+std::vector<std::string_view> splitWords(std::string_view text) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && isBlank(text[i])) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && !isBlank(text[i])) ++i;
+    if (i > start) words.push_back(text.substr(start, i - start));
+  }
+  return words;
+}
+
+std::int64_t parseInteger(std::string_view text, const std::string& where, const std::string& what,
+                          std::int64_t low, std::int64_t high) {
+  const std::string_view word = withoutPlus(trimmed(text));
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (word.empty() || error != std::errc() || end != word.data() + word.size() || value < low ||
+      value > high)
+    throw InputError(where, fmt::format("{} is not an integer in [{}, {}]: '{}'", what, low, high,
+                                        excerpt(text)));
+  return value;
+}
+
+double parseFinite(std::string_view text, const std::string& where, const std::string& what) {
+  const std::string_view word = withoutPlus(trimmed(text));
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (word.empty() || error != std::errc() || end != word.data() + word.size() ||
+      !std::isfinite(value))
+    throw InputError(where, fmt::format("{} is not a finite number: '{}'", what, excerpt(text)));
+  return value;
+}
+
+std::array<std::int64_t, 3> parseThreeIntegers(std::string_view text, const std::string& where,
+                                               const std::string& what, std::int64_t low,
+                                               std::int64_t high) {
+  const std::vector<std::string_view> words = splitWords(text);
+  if (words.size() != 3)
+    throw InputError(where, fmt::format("{} needs 3 integers, got '{}'", what, excerpt(text)));
+  std::array<std::int64_t, 3> values{};
+  for (int a = 0; a < 3; ++a) values[a] = parseInteger(words[a], where, what, low, high);
+  return values;
+}
+
+std::array<double, 3> parseThreeFinite(std::string_view text, const std::string& where,
+                                       const std::string& what) {
+  const std::vector<std::string_view> words = splitWords(text);
+  if (words.size() != 3)
+    throw InputError(where, fmt::format("{} needs 3 numbers, got '{}'", what, excerpt(text)));
+  std::array<double, 3> values{};
+  for (int a = 0; a < 3; ++a) values[a] = parseFinite(words[a], where, what);
+  return values;
+}
+
+}  // namespace amrstream::formats

@@ -1,0 +1,49 @@
+#pragma once
+// Paths that are not regular files, for the readers' refusal tests: a FIFO (named pipe) and a
+// call of a reader on it that cannot hang the test. A reader must refuse a FIFO before opening
+// it; one that opens it instead blocks until a writer comes, so the call gives it one that closes
+// at once (the reader then sees end of file) and fails the test.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <future>
+#include <string>
+#include <thread>
+
+#include "input_error_of.hpp"
+
+namespace amrstream::testing {
+
+inline void makeFifo(const std::filesystem::path& path) {
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0) << path << ": " << std::strerror(errno);
+}
+
+// The InputError message of `read`, which runs on another thread. When it has not returned after
+// `patience`, the test fails and `fifo` gets a writer that closes at once, once a second until
+// `read` returns.
+inline std::string inputErrorWithoutHanging(
+    const std::filesystem::path& fifo, const std::function<void()>& read,
+    std::chrono::seconds patience = std::chrono::seconds(10)) {
+  std::packaged_task<std::string()> task([read] { return inputErrorOf(read); });
+  std::future<std::string> result = task.get_future();
+  std::thread reader(std::move(task));
+  if (result.wait_for(patience) != std::future_status::ready) {
+    ADD_FAILURE() << "the reader blocked on the FIFO " << fifo << " instead of refusing it";
+    do {
+      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+      if (fd >= 0) ::close(fd);
+    } while (result.wait_for(std::chrono::seconds(1)) != std::future_status::ready);
+  }
+  reader.join();
+  return result.get();
+}
+
+}  // namespace amrstream::testing
