@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <memory>
 #include <stdexcept>
 
 #include "util/input_error.hpp"
@@ -38,21 +37,24 @@ std::string joinParts(const std::vector<std::string>& parts) {
 
 namespace {
 
-fs::path* scratch = nullptr;
+// Never destroyed: removeScratch runs at exit, after static objects may have been destroyed.
+const fs::path* scratch = nullptr;
 
 void removeScratch() {
-  if (scratch == nullptr) return;
   std::error_code ignored;
   fs::remove_all(*scratch, ignored);
 }
 
-fs::path makeScratch() {
-  std::string pattern = (fs::temp_directory_path() / "amrstream-fuzz-XXXXXX").string();
-  if (::mkdtemp(pattern.data()) == nullptr)
-    throw std::runtime_error("cannot create the fuzz scratch directory " + pattern);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  std::atexit(removeScratch);
-  return pattern;
+const fs::path& scratchDirectory() {
+  if (scratch == nullptr) {
+    std::string pattern = (fs::temp_directory_path() / "amrstream-fuzz-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("cannot create the fuzz scratch directory " + pattern);
+    scratch = new fs::path(pattern);
+    std::atexit(removeScratch);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  return *scratch;
 }
 
 }  // namespace
@@ -60,8 +62,7 @@ fs::path makeScratch() {
 const fs::path& freshScratchDirectory() {
   // One thread: runs are reproducible and AmrField's parallel checks stay cheap.
   static tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
-  static fs::path directory = makeScratch();
-  scratch = &directory;
+  const fs::path& directory = scratchDirectory();
   for (const auto& entry : fs::directory_iterator(directory)) fs::remove_all(entry.path());
   return directory;
 }
