@@ -28,6 +28,7 @@
 #include "formats/hdf5_handle.hpp"
 #include "fuzz_files.hpp"
 #include "hdf5_recipe.hpp"
+#include "output/seed_file_writer.hpp"
 #include "output/vtp_writer.hpp"
 #include "random_amr.hpp"
 #include "util/input_error.hpp"
@@ -468,7 +469,7 @@ void seedFileSeeds(const fs::path& corpus, const fs::path& scratch) {
   flow::SeedList seeds;
   seeds.points = {{0.1, 0.2, 0.3}, {-1e-3, 5.0, 1e10}};
   seeds.origins = {"a", "b"};
-  flow::writeSeedFile(scratch / "seeds.txt", seeds);
+  output::writeSeedFile(scratch / "seeds.txt", seeds);
   writeSeed(corpus, "seeds", "written", readFile(scratch / "seeds.txt"));
   writeSeed(corpus, "seeds", "hand_made",
             "# rake\n0.5, 0.5, 0.5\n\t1\t2\t3  # tabs\n\n-0 +1e-3 2.5e+2\r\n");

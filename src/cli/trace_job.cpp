@@ -10,6 +10,7 @@
 #include "dataset_files.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
+#include "output/seed_file_writer.hpp"
 #include "progress.hpp"
 #include "util/host_memory.hpp"
 #include "util/input_error.hpp"
@@ -89,7 +90,7 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   input.seeds = chooseSeeds(o.seeds, domainOf(volume), &cells, input.seedDescription);
   flow::SeedList& seeds = input.seeds;
   placeSeeds(volume, seeds);
-  if (!o.seedsOut.empty()) flow::writeSeedFile(o.seedsOut, seeds);
+  if (!o.seedsOut.empty()) output::writeSeedFile(o.seedsOut, seeds);
 
   input.options = traceOptions(o.trace, volume);
   const flow::TraceOptions& options = input.options;

@@ -1,14 +1,10 @@
 #include "seeds.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <string>
@@ -80,34 +76,6 @@ SeedList readSeedFile(const std::filesystem::path& path) {
   }
   if (seeds.points.empty()) throw InputError(path.string(), "the seeds file holds no seeds");
   return seeds;
-}
-
-void writeSeedFile(const std::filesystem::path& path, const SeedList& seeds) {
-  // A hidden temporary beside `path`, renamed over it once complete and on disk, so that `path`
-  // is never left half written (as AtomicFile does for the other outputs, in a library that
-  // this one does not link).
-  static std::atomic<unsigned> counter{0};
-  const std::filesystem::path temporary =
-      path.parent_path() / fmt::format(".{}.{}-{}.tmp", path.filename().string(),
-                                       static_cast<long>(::getpid()), counter++);
-  std::FILE* file = std::fopen(temporary.c_str(), "wx");
-  if (file == nullptr)
-    throw InputError(path.string(),
-                     fmt::format("cannot create the seeds file ({})", std::strerror(errno)));
-  errno = 0;
-  std::fprintf(file, "# amrstream seeds: x y z in physical coordinates\n");
-  for (const glm::dvec3& p : seeds.points)
-    std::fprintf(file, "%.17g %.17g %.17g\n", p.x, p.y, p.z);  // as {:.17g}: reads back the same
-  const bool written =
-      std::fflush(file) == 0 && !std::ferror(file) && ::fsync(::fileno(file)) == 0;
-  int error = written ? 0 : (errno != 0 ? errno : EIO);
-  if (std::fclose(file) != 0 && error == 0) error = errno;
-  if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
-  if (error != 0) {
-    std::remove(temporary.c_str());
-    throw InputError(path.string(),
-                     fmt::format("cannot write the seeds file ({})", std::strerror(error)));
-  }
 }
 
 SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,

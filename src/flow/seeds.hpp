@@ -19,13 +19,8 @@ struct SeedList {
 // One "x y z" per line, separated by spaces, tabs or commas; '#' starts a comment; blank lines
 // are skipped. Throws InputError naming the file and line of anything else, and naming the file
 // when it is no regular file (a FIFO or a device is refused before it is opened), larger than
-// 3/4 of the memory, or changes while it is read.
+// 3/4 of the memory, or changes while it is read. output::writeSeedFile writes this format.
 SeedList readSeedFile(const std::filesystem::path& path);
-
-// Writes one "x y z" line per seed with 17 significant digits, so that reading the file back gives
-// the same doubles, to a temporary file renamed over `path` once complete: `path` is never left
-// half written. Throws InputError naming the path when it cannot write.
-void writeSeedFile(const std::filesystem::path& path, const SeedList& seeds);
 
 // `count` points uniformly distributed in [lower, upper), reproducible for a given `seed`.
 SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,

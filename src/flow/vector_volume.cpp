@@ -56,35 +56,47 @@ std::string channelList(const bricks::AmrField& field) {
 
 }  // namespace
 
-VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
-                               const VolumeOptions& options, VolumeBuildTimes* times) {
-  checkArithmeticRange(field, vector, options.pointData);
-  VolumeBuildTimes local;
+VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions& options,
+                             VolumeBuildTimes* times) {
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
-  const std::size_t originals = brickSet.bricks.size();
+  VectorVolume volume;
+  volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {
     const std::vector<shared::Brick> images =
         periodicImages(brickSet.bricks, field.bounds(), options.periodic);
     brickSet.bricks.insert(brickSet.bricks.end(), images.begin(), images.end());
   }
-  local.bricks = clock.seconds();
+  if (times) times->bricks = clock.seconds();
 
   clock.restart();
-  VectorVolume volume;
   volume.regions = bricks::buildRegions(brickSet.bricks);
-  local.regions = clock.seconds();
+  if (times) times->regions = clock.seconds();
 
-  clock.restart();
+  volume.bricks = std::move(brickSet.bricks);
+  volume.cellIds = std::move(brickSet.cellIds);
+  volume.domain = field.bounds();
+  volume.periodic = options.periodic;
+  volume.transform = field.transform();
+  return volume;
+}
+
+VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
+                               const VolumeOptions& options, VolumeBuildTimes* times) {
+  checkArithmeticRange(field, vector, options.pointData);
+  VolumeBuildTimes local;
+  VectorVolume volume = buildCellLayout(field, options, &local);
+
+  Stopwatch clock;
   const bricks::Channel* channels[3];
   for (int c = 0; c < 3; ++c) channels[c] = &field.channel(vector.channels[c]);
   std::vector<const bricks::Channel*> pointData;
   for (const std::string& name : options.pointData) pointData.push_back(&field.channel(name));
-  const std::size_t slots = brickSet.cellIds.size(), channelCount = pointData.size();
+  const std::size_t slots = volume.cellIds.size(), channelCount = pointData.size();
   volume.values.resize(slots);
   volume.channelValues.resize(slots * channelCount);
   tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
-    const std::uint32_t cell = brickSet.cellIds[slot];
+    const std::uint32_t cell = volume.cellIds[slot];
     volume.values[slot] =
         glm::vec3(channels[0]->values[cell], channels[1]->values[cell], channels[2]->values[cell]);
     for (std::size_t c = 0; c < channelCount; ++c)
@@ -92,13 +104,7 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
   });
   local.gather = clock.seconds();
 
-  volume.bricks = std::move(brickSet.bricks);
-  volume.originalBrickCount = originals;
-  volume.cellIds = std::move(brickSet.cellIds);
   volume.channelNames = options.pointData;
-  volume.domain = field.bounds();
-  volume.periodic = options.periodic;
-  volume.transform = field.transform();
   volume.vectorName = vector.name;
   if (options.interpolant == Interpolant::Linear) {
     clock.restart();

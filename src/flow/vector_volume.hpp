@@ -70,6 +70,12 @@ struct VolumeBuildTimes {
   double gradients = 0.0;  // linear interpolant only
 };
 
+// The cells' layout alone: the bricks (with the images across `options.periodic` axes), their
+// regions, the cell of each value slot, the domain and the transform; no values, so it locates
+// points (insideACell, randomSeedsInCells) but cannot be sampled. buildVectorVolume starts here.
+VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions& options = {},
+                             VolumeBuildTimes* times = nullptr);
+
 // Throws InputError (listing the channels) when a point-data channel is absent.
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const VolumeOptions& options = {},

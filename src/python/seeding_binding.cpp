@@ -42,6 +42,20 @@ py::array seedsFor(const SeedRequest& request, const Domain& domain, const Datas
   return toNumpy(seeds);
 }
 
+// Random seeds in the target's cells, never in holes of its domain, as the command line draws
+// them: a Dataset's cell layout is built for the draw, a Field has its own.
+py::array randomSeedsFor(const SeedRequest& request, py::handle target) {
+  if (!py::isinstance<Dataset>(target)) return seedsFor(request, domainOfTarget(target), nullptr);
+  const Dataset& cells = target.cast<const Dataset&>();
+  flow::VectorVolume layout;
+  {
+    py::gil_scoped_release unlocked;
+    checkSeedRequest(request);
+    layout = flow::buildCellLayout(cells);
+  }
+  return seedsFor(request, domainOf(layout), nullptr);
+}
+
 }  // namespace
 
 void bindSeeding(py::module_& m) {
@@ -53,11 +67,12 @@ void bindSeeding(py::module_& m) {
         r.count = count;
         r.box = boxOf(box);
         r.seed = seed;
-        return seedsFor(r, domainOfTarget(target), nullptr);
+        return randomSeedsFor(r, target);
       },
       py::arg("target"), py::arg("count") = 256, py::kw_only(), py::arg("box") = py::none(),
       py::arg("seed") = 1,
-      "(count, 3) random points in box (x0, y0, z0, x1, y1, z1; default: the domain).");
+      "(count, 3) random points in the cells within box (x0, y0, z0, x1, y1, z1; default: the "
+      "domain), never in holes between the cells.");
   m.def(
       "seeds_grid",
       [](py::handle target, std::array<int, 3> counts, std::optional<std::vector<double>> box) {

@@ -1,4 +1,4 @@
-// Seeding strategies: rakes, grids, the densest cells, and writing seeds that read back exactly.
+// Seeding strategies: random seeds in cells, rakes, grids and the densest cells.
 
 #include "flow/seed_strategies.hpp"
 
@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
 #include "flow_test_support.hpp"
 #include "input_error_of.hpp"
@@ -147,16 +146,6 @@ TEST(SeedStrategies, DensestCellsRejectsBadOptions) {
                 seedsInDensestCells(field, {"vx", 0.0, true});
               }),
               HasSubstr("needs positive values"));
-}
-
-TEST(SeedFile, WrittenSeedsReadBackExactly) {
-  const SeedList seeds = randomSeedsInBox({-1e-4, 0.1, 3e5}, {2e-4, 0.7, 4e5}, 500, 9);
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "amrstream-seeds-out.txt";
-  writeSeedFile(path, seeds);
-  EXPECT_EQ(readSeedFile(path).points, seeds.points);
-  EXPECT_THAT(testing::inputErrorOf([&] { writeSeedFile("/nonexistent/dir/s.txt", seeds); }),
-              HasSubstr("/nonexistent/dir/s.txt: cannot create"));
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -77,26 +76,6 @@ TEST(SeedFile, AFileThatChangesWhileItIsReadFailsByName) {
   EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile("/proc/self/status"); }),
               HasSubstr("/proc/self/status: the file changed while it was read: 0 bytes when "
                         "opened, more read"));
-}
-
-// The file is written beside the target and renamed over it: another name of the old file (a
-// hard link) keeps the old contents, and no temporary is left.
-TEST(SeedFile, WritingReplacesTheFileInsteadOfWritingIntoIt) {
-  const fs::path dir = fs::temp_directory_path() / "amrstream-seeds-replace";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "old.txt") << "1 2 3\n";
-  fs::create_hard_link(dir / "old.txt", dir / "seeds.txt");
-  SeedList seeds;
-  seeds.points = {{0.1, 0.2, 0.3}, {4, 5, 6}};
-  writeSeedFile(dir / "seeds.txt", seeds);
-  EXPECT_EQ(readSeedFile(dir / "seeds.txt").points, seeds.points);
-  EXPECT_EQ(readSeedFile(dir / "old.txt").points, std::vector<glm::dvec3>{glm::dvec3(1, 2, 3)});
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-  std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"old.txt", "seeds.txt"}));
-  fs::remove_all(dir);
 }
 
 TEST(SeedBox, IsReproducibleAndInsideTheBox) {
