@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
       seeds.push_back({0.3 + 0.4 * unit(rng), 0.3 + 0.4 * unit(rng), 0.3 + 0.4 * unit(rng)});
     }
   }
-  Runs r{volume, seeds};
+  Runs r{volume, seeds, {}, 0.0f, 0.0, std::nullopt, nullptr};
   if (request.backend != "cpu") {
     const BackendChoice choice = chooseBackend(request, BackendUse::Trace);
     r.context.emplace(createContext(request, choice));

@@ -8,6 +8,7 @@
 
 #include "shared/amr_types.h"
 #include "shared/round_params.h"
+#include "include/cell_point.glsl"
 
 layout(push_constant, scalar) uniform PointDataBlock { PointDataParams pc; };
 layout(scalar, set = 0, binding = 0) readonly buffer BrickBuffer { Brick bricks[]; };
@@ -31,8 +32,8 @@ layout(local_size_x = AMRSTREAM_POINT_DATA_GROUP) in;
 const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 #define kNaN uintBitsToFloat(0x7fc00000u)
 
-// The 2x2x2 cells of one brick around p, in the order every reconstruction sums them: the
-// brick's local coordinates once, then tentCell() per corner.
+// The 2x2x2 cells of one brick around the point anchor + p, in the order every reconstruction
+// sums them: the brick's local coordinates once, then tentCell() per corner.
 struct TentBrick {
   Brick brick;
   float width;
@@ -40,11 +41,11 @@ struct TentBrick {
   ivec3 lo;
 };
 
-TentBrick tentBrick(uint brickId, vec3 p) {
+TentBrick tentBrick(uint brickId, ivec3 anchor, vec3 p) {
   TentBrick t;
   t.brick = bricks[brickId];
   t.width = float(1 << t.brick.level);
-  precise const vec3 local = (p - vec3(t.brick.lower)) / t.width - 0.5;
+  precise const vec3 local = (vec3(anchor - t.brick.lower) + p) / t.width - 0.5;
   const vec3 base = floor(local);
   precise const vec3 frac = local - base;
   t.frac = frac;
@@ -66,6 +67,11 @@ bool tentCell(TentBrick t, int corner, out uint slot, out vec3 axisWeight, out v
   return true;
 }
 
+// The anchor of a point in `region` (line_state.h): its corner, or the origin.
+ivec3 anchorOf(Region region) {
+  return pc.regionRelative != 0u ? regionCorner(region.lower) : ivec3(0);
+}
+
 void sampleChannels(uint point, int regionId, vec3 p) {
   const uint count = pc.channelCount;
   for (uint first = 0; first < count; first += 4) {
@@ -74,7 +80,7 @@ void sampleChannels(uint point, int regionId, vec3 p) {
     if (regionId >= 0) {
       const Region region = regions[regionId];
       for (uint k = 0; k < region.brickCount; ++k) {
-        const TentBrick t = tentBrick(regionBricks[region.brickOffset + k], p);
+        const TentBrick t = tentBrick(regionBricks[region.brickOffset + k], anchorOf(region), p);
         for (int corner = 0; corner < 8; ++corner) {
           uint slot;
           vec3 a, offset;
@@ -107,7 +113,7 @@ vec3 sampleVorticity(int regionId, vec3 p) {
   precise vec3 weightedModelGradient[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
   const Region region = regions[regionId];
   for (uint k = 0; k < region.brickCount; ++k) {
-    const TentBrick t = tentBrick(regionBricks[region.brickOffset + k], p);
+    const TentBrick t = tentBrick(regionBricks[region.brickOffset + k], anchorOf(region), p);
     for (int corner = 0; corner < 8; ++corner) {
       uint slot;
       vec3 a, offset;

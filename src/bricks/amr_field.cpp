@@ -8,7 +8,9 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <set>
+#include <unordered_set>
 
 #include "util/input_error.hpp"
 
@@ -74,6 +76,70 @@ class ConcurrentKeySet {
 
   std::vector<std::atomic<std::uint64_t>> slots_;
   std::size_t mask_ = 0;
+};
+
+// The corners of one level's cells, keyed by their index in the level's grid within the box of
+// the level's corners: 64-bit keys in a ConcurrentKeySet when that box holds fewer than 2^62
+// cells, else (a level's cells scattered over a box of more, possible beyond 2^21 finest cells
+// per axis) a set of the corners themselves, split into locked shards.
+class LevelCornerSet {
+ public:
+  LevelCornerSet(std::size_t expected, int level, glm::ivec3 lower, glm::ivec3 upper)
+      : level_(level), lower_(lower) {
+    const glm::i64vec3 counts = ((glm::i64vec3(upper) - glm::i64vec3(lower)) >> std::int64_t(level)) +
+                                std::int64_t(1);
+    counts_ = counts;
+    const double cells = double(counts.x) * double(counts.y) * double(counts.z);
+    if (cells < 0x1p62)
+      keys_ = std::make_unique<ConcurrentKeySet>(expected);
+    else
+      shards_ = std::make_unique<Shard[]>(kShards);
+  }
+
+  // False when the corner was already present.
+  bool insert(glm::ivec3 corner) {
+    if (keys_) return keys_->insert(key(corner));
+    Shard& shard = shards_[shardOf(corner)];
+    const std::lock_guard lock(shard.mutex);
+    return shard.corners.insert(corner).second;
+  }
+
+  // Whether a corner aligned to the level's grid is present.
+  bool contains(glm::ivec3 corner) const {
+    if (glm::any(glm::lessThan(corner, lower_))) return false;
+    const glm::i64vec3 index = (glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_);
+    if (glm::any(glm::greaterThanEqual(index, counts_))) return false;
+    if (keys_) return keys_->contains(key(corner));
+    Shard& shard = shards_[shardOf(corner)];
+    const std::lock_guard lock(shard.mutex);
+    return shard.corners.count(corner) > 0;
+  }
+
+ private:
+  struct CornerHash {
+    std::size_t operator()(glm::ivec3 c) const {
+      return std::hash<std::uint64_t>()((std::uint64_t(std::uint32_t(c.x)) << 32) ^
+                                        (std::uint64_t(std::uint32_t(c.y)) << 16) ^
+                                        std::uint32_t(c.z));
+    }
+  };
+  struct Shard {
+    std::mutex mutex;
+    std::unordered_set<glm::ivec3, CornerHash> corners;
+  };
+  static constexpr std::size_t kShards = 64;
+
+  std::uint64_t key(glm::ivec3 corner) const {  // corner within the box
+    const glm::u64vec3 index((glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_));
+    return 1 + index.x + std::uint64_t(counts_.x) * (index.y + std::uint64_t(counts_.y) * index.z);
+  }
+  std::size_t shardOf(glm::ivec3 corner) const { return CornerHash()(corner) % kShards; }
+
+  int level_;
+  glm::ivec3 lower_;
+  glm::i64vec3 counts_;
+  std::unique_ptr<ConcurrentKeySet> keys_;
+  std::unique_ptr<Shard[]> shards_;
 };
 
 // Levels as the input numbers them.
@@ -201,7 +267,7 @@ void AmrField::validate() {
     upper = glm::max(upper, glm::i64vec3(lowers_[i]) + std::int64_t(cellWidth(levels_[i])));
   }
   const glm::i64vec3 extent = upper - lower;
-  const std::int64_t maxExtent = (std::int64_t(1) << kMaxExtentBits) - 1;
+  const std::int64_t maxExtent = std::int64_t(1) << kMaxExtentBits;
   if (glm::any(glm::greaterThan(extent, glm::i64vec3(maxExtent))))
     throw InputError(source_, fmt::format("the cells span {}x{}x{} finest cells; at most {} per "
                                           "axis are supported",
@@ -218,14 +284,18 @@ void AmrField::validate() {
   // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
   // inside a coarser one finds that cell's aligned corner in the coarser level's set.
   const std::vector<std::size_t> perLevel = cellsPerLevel();
-  std::vector<std::unique_ptr<ConcurrentKeySet>> sets(perLevel.size());
+  std::vector<glm::ivec3> levelLower(perLevel.size(), glm::ivec3(std::numeric_limits<int>::max())),
+      levelUpper(perLevel.size(), glm::ivec3(std::numeric_limits<int>::min()));
+  for (std::size_t i = 0; i < n; ++i) {
+    levelLower[levels_[i]] = glm::min(levelLower[levels_[i]], lowers_[i]);
+    levelUpper[levels_[i]] = glm::max(levelUpper[levels_[i]], lowers_[i]);
+  }
+  std::vector<std::unique_ptr<LevelCornerSet>> sets(perLevel.size());
   for (std::size_t level = 0; level < perLevel.size(); ++level)
-    if (perLevel[level] > 0) sets[level] = std::make_unique<ConcurrentKeySet>(perLevel[level]);
-  const auto key = [&](glm::ivec3 lower) {
-    const glm::u64vec3 r = glm::u64vec3(lower - box.lower);
-    return 1 + (r.x | (r.y << kMaxExtentBits) | (r.z << (2 * kMaxExtentBits)));
-  };
-  const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(key(lowers_[i])); };
+    if (perLevel[level] > 0)
+      sets[level] = std::make_unique<LevelCornerSet>(perLevel[level], int(level), levelLower[level],
+                                                     levelUpper[level]);
+  const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(lowers_[i]); };
   if (std::size_t i = firstFailing(n, duplicated); i < n)
     throw InputError(
         source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
@@ -237,9 +307,7 @@ void AmrField::validate() {
       // Corners of coarser cells are aligned in absolute coordinates, so align before shifting.
       const glm::ivec3 aligned =
           glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
-      if (glm::all(glm::greaterThanEqual(aligned, box.lower)) &&
-          sets[level]->contains(key(aligned)))
-        return int(level);
+      if (sets[level]->contains(aligned)) return int(level);
     }
     return -1;
   };

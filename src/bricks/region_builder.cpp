@@ -17,8 +17,17 @@ namespace {
 
 using detail::RegionChunk;
 
-// Doubled coordinates up to this magnitude stay exact as floats after halving.
-constexpr int kMaxDoubled = 1 << 24;
+// The domain of a brick on the region lattice, in 64 bits: periodic images may lie a period away.
+struct DomainBox64 {
+  glm::i64vec3 lower, upper;
+};
+
+DomainBox64 doubledDomain64(const shared::Brick& b) {
+  const std::int64_t width = std::int64_t(1) << b.level;
+  const glm::i64vec3 lower(b.lower);
+  return {std::int64_t(2) * lower - width,
+          std::int64_t(2) * (lower + glm::i64vec3(b.size) * width) + width};
+}
 
 // Where a chunk's output goes in the concatenated arrays. Its root fills the parent's stub node;
 // its other nodes, local 1..n-1, go to nodeBase..nodeBase+n-2.
@@ -87,39 +96,53 @@ void concatenate(const RegionChunk& root, RegionSet& out) {
 
 }  // namespace
 
-RegionSet buildRegions(const std::vector<shared::Brick>& bricks) {
+RegionSet buildRegions(const std::vector<shared::Brick>& bricks, std::optional<CellBox> domain) {
   RegionSet out;
   if (bricks.empty()) {
-    out.tree.push_back({0.0f, AMRSTREAM_TREE_LEAF, AMRSTREAM_NO_REGION});
+    out.tree.push_back({0, AMRSTREAM_TREE_LEAF, AMRSTREAM_NO_REGION});
     return out;
   }
   if (bricks.size() > std::size_t(UINT32_MAX))
     throw std::length_error("buildRegions: more than 2^32 - 1 bricks");
 
   // Bounds of the domains in 64 bits first, so that far-off bricks cannot overflow.
-  glm::i64vec3 lower(INT64_MAX), upper(INT64_MIN);
-  for (const shared::Brick& b : bricks) {
-    const std::int64_t width = std::int64_t(1) << b.level;
-    const glm::i64vec3 brickLower(b.lower);
-    lower = glm::min(lower, std::int64_t(2) * brickLower - width);
-    upper = glm::max(upper, std::int64_t(2) * (brickLower + glm::i64vec3(b.size) * width) + width);
+  DomainBox64 clip{glm::i64vec3(INT64_MIN), glm::i64vec3(INT64_MAX)};
+  if (domain) {
+    int widest = 0;
+    for (const shared::Brick& b : bricks) widest = std::max(widest, b.level);
+    const std::int64_t width = std::int64_t(1) << widest;
+    clip = {std::int64_t(2) * glm::i64vec3(domain->lower) - width,
+            std::int64_t(2) * glm::i64vec3(domain->upper) + width};
   }
-  if (glm::any(glm::lessThan(lower, glm::i64vec3(-kMaxDoubled))) ||
-      glm::any(glm::greaterThan(upper, glm::i64vec3(kMaxDoubled))))
+  std::vector<DomainBox64> domains(bricks.size());
+  glm::i64vec3 lower(INT64_MAX), upper(INT64_MIN);
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    const DomainBox64 d = doubledDomain64(bricks[i]);
+    domains[i] = {glm::max(d.lower, clip.lower), glm::min(d.upper, clip.upper)};
+    if (!glm::all(glm::lessThan(domains[i].lower, domains[i].upper))) continue;
+    lower = glm::min(lower, domains[i].lower);
+    upper = glm::max(upper, domains[i].upper);
+  }
+  if (glm::any(glm::greaterThan(lower, upper))) lower = upper = glm::i64vec3(0);
+  if (glm::any(glm::lessThan(lower, glm::i64vec3(INT32_MIN))) ||
+      glm::any(glm::greaterThan(upper, glm::i64vec3(INT32_MAX))))
     throw std::invalid_argument(
-        "buildRegions: brick domains must lie within +-2^23 finest cells of the origin so that "
-        "region bounds are exact floats");
+        "buildRegions: brick domains must lie within +-2^30 finest cells of the origin so that "
+        "region lattice coordinates fit 32 bits");
   const CellBox root{glm::ivec3(lower), glm::ivec3(upper)};
 
   detail::RegionInputs inputs{std::vector<CellBox>(bricks.size()),
                               std::vector<float>(bricks.size())};
   tbb::parallel_for(std::size_t(0), bricks.size(), [&](std::size_t i) {
-    inputs.domains[i] = brickDomainDoubled(bricks[i]);
+    inputs.domains[i] = {glm::ivec3(glm::min(domains[i].lower, domains[i].upper)),
+                         glm::ivec3(domains[i].upper)};
     inputs.cellWidths[i] = float(AmrField::cellWidth(bricks[i].level));
   });
 
-  std::vector<std::uint32_t> ids(bricks.size());
-  std::iota(ids.begin(), ids.end(), 0u);
+  std::vector<std::uint32_t> ids;  // the bricks whose clipped domain is not empty
+  ids.reserve(bricks.size());
+  for (std::uint32_t i = 0; i < bricks.size(); ++i)
+    if (glm::all(glm::lessThan(domains[i].lower, domains[i].upper))) ids.push_back(i);
   RegionChunk chunk;
   tbb::task_group tasks;
   try {
@@ -131,18 +154,17 @@ RegionSet buildRegions(const std::vector<shared::Brick>& bricks) {
   }
   tasks.wait();  // rethrows what a task threw
   concatenate(chunk, out);
-  out.lower = glm::vec3(root.lower) * 0.5f;
-  out.upper = glm::vec3(root.upper) * 0.5f;
+  out.lower = root.lower;
+  out.upper = root.upper;
   return out;
 }
 
-std::int32_t RegionSet::locate(glm::vec3 p) const {
-  // Written so that NaN coordinates fail the test too.
-  if (!glm::all(glm::greaterThanEqual(p, lower)) || !glm::all(glm::lessThan(p, upper))) return -1;
+std::int32_t RegionSet::locate(glm::ivec3 k) const {
+  if (!glm::all(glm::greaterThanEqual(k, lower)) || !glm::all(glm::lessThan(k, upper))) return -1;
   std::uint32_t index = 0;
   while (tree[index].axis != AMRSTREAM_TREE_LEAF) {
     const shared::RegionTreeNode& node = tree[index];
-    index = node.child + (p[int(node.axis)] < node.split ? 0u : 1u);
+    index = node.child + (k[int(node.axis)] < node.split ? 0u : 1u);
   }
   const std::uint32_t region = tree[index].child;
   return region == AMRSTREAM_NO_REGION ? -1 : std::int32_t(region);

@@ -91,7 +91,7 @@ class ChunkBuilder {
     ids_.resize(item.begin);
 
     const auto child = std::uint32_t(chunk_.nodes.size());
-    chunk_.nodes[item.node] = {float(face.at) * 0.5f, std::uint32_t(face.axis), child};
+    chunk_.nodes[item.node] = {face.at, std::uint32_t(face.axis), child};
     chunk_.nodes.resize(child + 2);
     CellBox lowerBox = item.box, upperBox = item.box;
     lowerBox.upper[face.axis] = face.at;
@@ -100,7 +100,7 @@ class ChunkBuilder {
     if (spawn) {
       auto sub = std::make_unique<RegionChunk>();
       sub->stubInParent = child + 1;
-      chunk_.nodes[child + 1] = {0.0f, kChunkStubAxis, std::uint32_t(chunk_.children.size())};
+      chunk_.nodes[child + 1] = {0, kChunkStubAxis, std::uint32_t(chunk_.children.size())};
       RegionChunk* target = sub.get();
       chunk_.children.push_back(std::move(sub));
       tasks_.run(
@@ -120,7 +120,7 @@ class ChunkBuilder {
   // Lists are sorted by brick id: the root's is, and splitting keeps the order.
   void makeLeaf(const Pending& item) {
     shared::RegionTreeNode& node = chunk_.nodes[item.node];
-    node = {0.0f, AMRSTREAM_TREE_LEAF, AMRSTREAM_NO_REGION};
+    node = {0, AMRSTREAM_TREE_LEAF, AMRSTREAM_NO_REGION};
     if (ids_.size() > item.begin) {
       const auto first = ids_.begin() + std::ptrdiff_t(item.begin);
       assert(std::is_sorted(first, ids_.end()));
@@ -129,8 +129,8 @@ class ChunkBuilder {
         width = std::min(width, inputs_.cellWidths[*it]);
       node.child = std::uint32_t(chunk_.regions.size());
       chunk_.regions.push_back(
-          {glm::vec3(item.box.lower) * 0.5f, std::uint32_t(chunk_.regionBricks.size()),
-           glm::vec3(item.box.upper) * 0.5f, std::uint32_t(ids_.end() - first), width});
+          {item.box.lower, std::uint32_t(chunk_.regionBricks.size()), item.box.upper,
+           std::uint32_t(ids_.end() - first), width});
       chunk_.regionBricks.insert(chunk_.regionBricks.end(), first, ids_.end());
     }
     ids_.resize(item.begin);

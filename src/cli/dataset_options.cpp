@@ -23,10 +23,10 @@ constexpr double kLeastBytesPerCell = sizeof(glm::ivec3) + 1 + 3 * sizeof(float)
 }  // namespace
 
 void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
-                         const std::string& seedFlag) {
+                         const std::string& seedFlag, int maxLevels) {
   command.add_option("--levels", options.levels, "AMR levels of a generated dataset")
       ->capture_default_str()
-      ->check(countIn(1, synth::kMaxGeneratorLevels));
+      ->check(countIn(1, maxLevels));
   command
       .add_option("--root-blocks", options.rootBlocks,
                   "root blocks (of 8^3 cells) per axis of a generated dataset")
@@ -46,10 +46,14 @@ void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
 void checkGeneratorSize(const synth::GeneratorOptions& generator) {
   const double side =
       double(generator.rootBlocks) * 8.0 * std::ldexp(1.0, std::max(0, generator.levels - 1));
-  const double cells = std::min(double(generator.targetCells), side * side * side);
+  checkGeneratedCells(std::min(double(generator.targetCells), side * side * side),
+                      "--target-cells");
+}
+
+void checkGeneratedCells(double cells, const std::string& option) {
   const double limit = kTraceMemoryShare * physicalMemoryBytes();
   if (limit > 0.0 && cells * kLeastBytesPerCell > limit)
-    throw InputError("--target-cells",
+    throw InputError(option,
                      fmt::format("{:.0f} cells need at least {:.1f} GiB ({:.0f} bytes each), more "
                                  "than the {:.1f} GiB (3/4 of the memory) this machine allows",
                                  cells, cells * kLeastBytesPerCell / 0x1p30, kLeastBytesPerCell,
@@ -71,7 +75,7 @@ void addDatasetOptions(CLI::App& command, DatasetOptions& options, const std::st
                   "text dump, an ExaBricks .exa file, or builtin:" +
                       kinds)
       ->required();
-  addGeneratorOptions(command, options.generator, seedFlag);
+  addGeneratorOptions(command, options.generator, seedFlag, synth::kMaxGeneratorLevels);
 }
 
 std::string withCommas(std::size_t n) {

@@ -2,14 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <memory>
+#include <vector>
 
 #include "dataset_options.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
 #include "output_paths.hpp"
 #include "formats/exa_format.hpp"
+#include "synth/block_refiner.hpp"
 #include "synth/generators.hpp"
+#include "synth/nest_generator.hpp"
+#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
@@ -20,14 +25,32 @@ struct GenOptions {
   std::string kind;
   std::string out;
   synth::GeneratorOptions generator;
-  int series = 0;         // snapshots; 0: one dataset named by --out alone
-  double interval = 0.1;  // time between snapshots
+  synth::NestOptions nest;  // kind nest: its levels and time are the generator's
+  std::vector<double> centre;  // kind nest: x,y,z; empty: NestOptions' default
+  int series = 0;           // snapshots; 0: one dataset named by --out alone
+  double interval = 0.1;    // time between snapshots
 };
 
-void writeOne(const std::string& kind, const synth::GeneratorOptions& generator,
-              const std::string& out) {
+bool isNest(const GenOptions& o) { return o.kind == "nest"; }
+
+synth::NestOptions nestOptions(const GenOptions& o, double time) {
+  synth::NestOptions nest = o.nest;
+  if (o.centre.size() == 3) nest.centre = glm::dvec3(o.centre[0], o.centre[1], o.centre[2]);
+  nest.levels = o.generator.levels;
+  nest.time = time;
+  return nest;
+}
+
+bricks::AmrField generate(const GenOptions& o, double time) {
+  if (isNest(o)) return synth::generateNest(nestOptions(o, time));
+  synth::GeneratorOptions generator = o.generator;
+  generator.time = time;
+  return synth::generate(o.kind, generator);
+}
+
+void writeOne(const GenOptions& o, double time, const std::string& out) {
   Stopwatch clock;
-  const bricks::AmrField field = synth::generate(kind, generator);
+  const bricks::AmrField field = generate(o, time);
   const double generateSeconds = clock.seconds();
   clock.restart();
   const std::filesystem::path exa = formats::writeExa(field, out);
@@ -38,22 +61,41 @@ void writeOne(const std::string& kind, const synth::GeneratorOptions& generator,
              clock.seconds());
 }
 
+// nest and the other kinds take different sizes: a size given to a kind that does not take it
+// is refused rather than ignored, and only nest takes more than kMaxGeneratorLevels levels.
+void checkKindOptions(const CLI::App& command, const GenOptions& o) {
+  for (const char* flag : {"--root-cells", "--block-cells", "--centre"})
+    if (!isNest(o) && command.count(flag) > 0)
+      throw InputError(flag, fmt::format("sizes kind nest only, not {}", o.kind));
+  for (const char* flag : {"--root-blocks", "--target-cells", "--seed"})
+    if (isNest(o) && command.count(flag) > 0)
+      throw InputError(flag,
+                       "does not apply to kind nest (sized by --levels, --root-cells and "
+                       "--block-cells)");
+  if (!isNest(o) && o.generator.levels > synth::kMaxGeneratorLevels)
+    throw InputError("--levels", fmt::format("{} is outside the range 1 to {} of kind {} (nest "
+                                             "takes up to {})",
+                                             o.generator.levels, synth::kMaxGeneratorLevels, o.kind,
+                                             synth::kMaxNestLevels));
+}
+
 // gen reads nothing and names every file apart: what is left to check before the work is the
 // size and that the first file can be written (its directory exists, it is no directory).
 void checkOutputs(const GenOptions& o) {
-  checkGeneratorSize(o.generator);
+  if (isNest(o))
+    checkGeneratedCells(synth::nestCellCount(nestOptions(o, o.generator.time)), "--root-cells");
+  else
+    checkGeneratorSize(o.generator);
   const std::string first = o.series == 0 ? o.out + ".exa" : fmt::format("{}_0000.exa", o.out);
   RunFiles().checkOutput("--out", first);
 }
 
-void runGen(const GenOptions& o) {
+void runGen(const CLI::App& command, const GenOptions& o) {
+  checkKindOptions(command, o);
   checkOutputs(o);
-  if (o.series == 0) return writeOne(o.kind, o.generator, o.out);
-  for (int i = 0; i < o.series; ++i) {
-    synth::GeneratorOptions snapshot = o.generator;
-    snapshot.time = o.generator.time + i * o.interval;
-    writeOne(o.kind, snapshot, fmt::format("{}_{:04d}", o.out, i));
-  }
+  if (o.series == 0) return writeOne(o, o.generator.time, o.out);
+  for (int i = 0; i < o.series; ++i)
+    writeOne(o, o.generator.time + i * o.interval, fmt::format("{}_{:04d}", o.out, i));
 }
 
 }  // namespace
@@ -66,7 +108,24 @@ void addGenCommand(CLI::App& app) {
   command->add_option("kind", options->kind, "dataset kind: " + kinds)->required();
   command->add_option("--out", options->out, "output prefix: writes PREFIX.exa, PREFIX.cells, ...")
       ->required();
-  addGeneratorOptions(*command, options->generator, "--seed");
+  addGeneratorOptions(*command, options->generator, "--seed", synth::kMaxNestLevels);
+  command
+      ->add_option("--root-cells", options->nest.rootCells,
+                   "nest: coarsest cells per axis over the domain")
+      ->capture_default_str()
+      ->check(countIn(1, std::numeric_limits<int>::max()));
+  command
+      ->add_option("--block-cells", options->nest.blockCells,
+                   "nest: cells per axis of each finer level's cube (even, at least 4)")
+      ->capture_default_str()
+      ->check(countIn(1, std::numeric_limits<int>::max()));
+  command
+      ->add_option("--centre", options->centre,
+                   "nest: x,y,z, the nest's centre as a fraction of the unit domain [default "
+                   "0.45,0.55,0.47]")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(finiteFloat());
   command
       ->add_option("--series", options->series,
                    "write N snapshots PREFIX_0000.exa, ... at --time, --time + --interval, ...")
@@ -74,7 +133,7 @@ void addGenCommand(CLI::App& app) {
   command->add_option("--interval", options->interval, "time between the snapshots of --series")
       ->capture_default_str()
       ->check(positiveDouble());
-  command->callback([options] { runGen(*options); });
+  command->callback([command, options] { runGen(*command, *options); });
 }
 
 }  // namespace amrstream::cli

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <memory>
+#include <span>
 
-#include "bricks/brick_builder.hpp"
-#include "bricks/region_builder.hpp"
+#include "flow/vector_volume.hpp"
 #include "dataset_options.hpp"
 #include "formats/load_input.hpp"
 #include "util/stopwatch.hpp"
@@ -62,19 +62,18 @@ void runInfo(const DatasetOptions& options) {
     fmt::print("  {:<16} [{:g}, {:g}]\n", c.name, *min, *max);
   }
 
-  clock.restart();
-  const bricks::BrickSet bricks = bricks::buildBricks(field);
-  const double brickSeconds = clock.seconds();
+  flow::VolumeBuildTimes times;
+  const flow::VectorVolume layout = flow::buildCellLayout(field, {}, &times);
+  const std::span<const shared::Brick> bricks(layout.bricks);
   std::size_t maxCells = 0;
-  for (const shared::Brick& b : bricks.bricks)
+  for (const shared::Brick& b : bricks)
     maxCells = std::max<std::size_t>(maxCells, std::size_t(b.size.x) * b.size.y * b.size.z);
   fmt::print("bricks     {} (avg {:.1f} cells, max {}) built in {:.3f} s\n",
-             withCommas(bricks.bricks.size()),
-             double(field.cellCount()) / double(bricks.bricks.size()), maxCells, brickSeconds);
+             withCommas(bricks.size()), double(field.cellCount()) / double(bricks.size()),
+             maxCells, times.bricks);
 
-  clock.restart();
-  const bricks::RegionSet regions = bricks::buildRegions(bricks.bricks);
-  const double regionSeconds = clock.seconds();
+  const bricks::RegionSet& regions = layout.regions;
+  const double regionSeconds = times.regions;
   std::uint32_t maxBricks = 0;
   for (const shared::Region& r : regions.regions) maxBricks = std::max(maxBricks, r.brickCount);
   fmt::print("regions    {} (avg {:.2f} bricks, max {}; {} tree nodes) built in {:.3f} s\n",

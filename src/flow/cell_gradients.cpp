@@ -1,5 +1,7 @@
 #include "cell_gradients.hpp"
 
+#include "sampler.hpp"
+
 #include <tbb/parallel_for.h>
 
 #include <array>
@@ -24,7 +26,7 @@ glm::dvec3 cellCentre(const shared::Brick& brick, glm::ivec3 cell) {
 // The original brick cell containing q (inside the domain), with its centre.
 std::optional<std::pair<std::uint32_t, glm::dvec3>> cellAt(const VectorVolume& volume,
                                                            glm::dvec3 q) {
-  const std::int32_t region = volume.regions.locate(glm::vec3(q));
+  const std::int32_t region = locateRegion(volume, toCellPoint(q));
   if (region < 0) return std::nullopt;
   const shared::Region& r = volume.regions.regions[std::size_t(region)];
   for (std::uint32_t k = 0; k < r.brickCount; ++k) {

@@ -16,7 +16,7 @@ namespace {
 
 // A point as the line tracer emits it, before its point data.
 struct EmittedPoint {
-  glm::vec3 position;  // cell units
+  CellPoint position;
   float time;
   glm::vec3 vector;
   std::int32_t region;
@@ -39,7 +39,7 @@ RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& par
     std::vector<EmittedPoint>& points = emitted[i];
     points.reserve(params.pointsPerLine);
     block.lines[i] = advanceLine(volume, params, live[i],
-                                 [&](glm::vec3 x, float time, const VectorSample& s) {
+                                 [&](const CellPoint& x, float time, const VectorSample& s) {
                                    points.push_back({x, time, s.value, s.region});
                                  });
     if (block.lines[i].reason != AMRSTREAM_REASON_RUNNING) lineEnded();
@@ -49,6 +49,8 @@ RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& par
   for (std::size_t i = 0; i < live.size(); ++i) first[i + 1] = first[i] + emitted[i].size();
   const std::size_t points = first.back(), channels = volume.channelCount();
   block.positions.resize(points);
+  const bool precise = volume.deepPositions();
+  if (precise) block.positionsLow.resize(points);
   block.times.resize(points);
   block.vectors.resize(points);
   block.channels.resize(points * channels);
@@ -57,7 +59,14 @@ RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& par
     for (std::size_t k = 0; k < emitted[i].size(); ++k) {
       const EmittedPoint& p = emitted[i][k];
       const std::size_t at = first[i] + k;
-      block.positions[at] = glm::vec3(volume.transform.toPhysical(glm::dvec3(p.position)));
+      const glm::dvec3 physical = volume.transform.toPhysical(toCellUnits(p.position));
+      if (precise) {
+        const SplitPosition split = splitPosition(physical);
+        block.positions[at] = split.high;
+        block.positionsLow[at] = split.low;
+      } else {
+        block.positions[at] = glm::vec3(physical);
+      }
       block.times[at] = p.time;
       block.vectors[at] = p.vector;
       sampleChannels(volume, p.region, p.position,
@@ -114,7 +123,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.physicalCellWidth = float(glm::min(spacing.x, glm::min(spacing.y, spacing.z)));
   params.spacing = glm::vec3(spacing);
   params.stepMode = static_cast<int>(options.stepMode);
-  params.period = glm::vec3(volume.period());
+  params.period = volume.period();
   for (int a = 0; a < 3; ++a) params.periodicAxes |= volume.periodic[a] ? 1u << a : 0u;
   params.stepSize = options.stepSize;
   params.integrator = static_cast<int>(options.integrator);
@@ -127,6 +136,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.maxTime = options.maxTime;
   params.keepHistory = options.keepHistory ? 1u : 0u;
   params.linearInterpolant = volume.interpolant == Interpolant::Linear ? 1u : 0u;
+  params.regionRelative = volume.deepPositions() ? 1u : 0u;
   return params;
 }
 

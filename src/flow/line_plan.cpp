@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cell_point.hpp"
+
 namespace amrstream::flow {
 
 LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,
@@ -13,8 +15,8 @@ LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds
   for (const float sign : signs)
     for (std::size_t seed = 0; seed < seeds.size(); ++seed) {
       const auto line = static_cast<std::uint32_t>(plan.states.size());
-      const glm::vec3 cell(volume.transform.toCellUnits(seeds[seed]));
-      plan.states.push_back({cell, 0.0f, 0.0f, 0u, line, sign});
+      const CellPoint start = toCellPoint(volume.transform.toCellUnits(seeds[seed]));
+      plan.states.push_back({start.offset, 0.0f, 0.0f, 0u, line, sign, 0.0f, start.anchor});
       plan.layout.seedIds.push_back(static_cast<std::uint32_t>(seed));
       plan.layout.directions.push_back(sign);
     }
@@ -26,6 +28,7 @@ TraceSet traceShape(const VectorVolume& volume, const TraceOptions& options) {
   shape.vectorName = volume.vectorName;
   shape.channelNames = volume.channelNames;
   shape.withVorticity = options.vorticity;
+  shape.precisePositions = volume.deepPositions();
   shape.periodic = {volume.periodic, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
                     volume.transform.toPhysical(glm::dvec3(volume.domain.upper))};
   return shape;

@@ -46,35 +46,35 @@ float stepFactor(float errorSquared, float limitSquared, float displacementSquar
   return std::clamp(0.9f * std::min(byError, byDisplacement), 0.2f, 5.0f);
 }
 
-StepOutcome fixedStep(int integrator, glm::vec3 x, const VectorSample& s, float h,
+StepOutcome fixedStep(int integrator, const CellPoint& x, const VectorSample& s, float h,
                       const StageSampler& sample, const StageVector& stage) {
   StepOutcome out;
   out.step = out.nextStep = h;
   const glm::vec3 k1 = stage(s, h);
   if (integrator == AMRSTREAM_INTEGRATOR_EULER) {
-    out.unwrapped = x + k1;
+    out.unwrapped = moved(x, k1);
   } else if (integrator == AMRSTREAM_INTEGRATOR_RK2) {
-    const VectorSample s2 = sample(x + 0.5f * k1);
+    const VectorSample s2 = sample(moved(x, 0.5f * k1));
     if ((out.reason = sampleFailure(s2))) return out;
-    out.unwrapped = x + stage(s2, h);
+    out.unwrapped = moved(x, stage(s2, h));
   } else {
-    const VectorSample s2 = sample(x + 0.5f * k1);
+    const VectorSample s2 = sample(moved(x, 0.5f * k1));
     if ((out.reason = sampleFailure(s2))) return out;
     const glm::vec3 k2 = stage(s2, h);
-    const VectorSample s3 = sample(x + 0.5f * k2);
+    const VectorSample s3 = sample(moved(x, 0.5f * k2));
     if ((out.reason = sampleFailure(s3))) return out;
     const glm::vec3 k3 = stage(s3, h);
-    const VectorSample s4 = sample(x + k3);
+    const VectorSample s4 = sample(moved(x, k3));
     if ((out.reason = sampleFailure(s4))) return out;
     const glm::vec3 k4 = stage(s4, h);
-    out.unwrapped = x + (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f;
+    out.unwrapped = moved(x, (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f);
   }
-  out.next = sample(out.unwrapped);
+  out.next = sample(normalized(out.unwrapped));
   out.reason = sampleFailure(out.next);
   return out;
 }
 
-StepOutcome dormandPrinceStep(const shared::TraceParams& params, glm::vec3 x, const VectorSample& s,
+StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint& x, const VectorSample& s,
                               float h, const StageSampler& sample, const StageVector& stage) {
   // Dormand and Prince (1980): the fifth-order solution is propagated, the fourth-order one only
   // estimates the error; the last stage is the sample at the end point (first same as last).
@@ -84,29 +84,29 @@ StepOutcome dormandPrinceStep(const shared::TraceParams& params, glm::vec3 x, co
   const float limitSquared = params.toleranceSquared * capSquared;
   for (int attempt = 0;; ++attempt) {
     const glm::vec3 k1 = stage(s, h);
-    const VectorSample s2 = sample(x + AMRSTREAM_DP_A21 * k1);
+    const VectorSample s2 = sample(moved(x, AMRSTREAM_DP_A21 * k1));
     if ((out.reason = sampleFailure(s2))) return out;
     const glm::vec3 k2 = stage(s2, h);
-    const VectorSample s3 = sample(x + (AMRSTREAM_DP_A31 * k1 + AMRSTREAM_DP_A32 * k2));
+    const VectorSample s3 = sample(moved(x, (AMRSTREAM_DP_A31 * k1 + AMRSTREAM_DP_A32 * k2)));
     if ((out.reason = sampleFailure(s3))) return out;
     const glm::vec3 k3 = stage(s3, h);
     const VectorSample s4 =
-        sample(x + (AMRSTREAM_DP_A41 * k1 + AMRSTREAM_DP_A42 * k2 + AMRSTREAM_DP_A43 * k3));
+        sample(moved(x, (AMRSTREAM_DP_A41 * k1 + AMRSTREAM_DP_A42 * k2 + AMRSTREAM_DP_A43 * k3)));
     if ((out.reason = sampleFailure(s4))) return out;
     const glm::vec3 k4 = stage(s4, h);
-    const VectorSample s5 = sample(x + (AMRSTREAM_DP_A51 * k1 + AMRSTREAM_DP_A52 * k2 +
-                                        AMRSTREAM_DP_A53 * k3 + AMRSTREAM_DP_A54 * k4));
+    const VectorSample s5 = sample(moved(x, (AMRSTREAM_DP_A51 * k1 + AMRSTREAM_DP_A52 * k2 +
+                                        AMRSTREAM_DP_A53 * k3 + AMRSTREAM_DP_A54 * k4)));
     if ((out.reason = sampleFailure(s5))) return out;
     const glm::vec3 k5 = stage(s5, h);
     const VectorSample s6 =
-        sample(x + (AMRSTREAM_DP_A61 * k1 + AMRSTREAM_DP_A62 * k2 + AMRSTREAM_DP_A63 * k3 +
-                    AMRSTREAM_DP_A64 * k4 + AMRSTREAM_DP_A65 * k5));
+        sample(moved(x, (AMRSTREAM_DP_A61 * k1 + AMRSTREAM_DP_A62 * k2 + AMRSTREAM_DP_A63 * k3 +
+                    AMRSTREAM_DP_A64 * k4 + AMRSTREAM_DP_A65 * k5)));
     if ((out.reason = sampleFailure(s6))) return out;
     const glm::vec3 k6 = stage(s6, h);
     const glm::vec3 displacement = AMRSTREAM_DP_B1 * k1 + AMRSTREAM_DP_B3 * k3 +
                                    AMRSTREAM_DP_B4 * k4 + AMRSTREAM_DP_B5 * k5 +
                                    AMRSTREAM_DP_B6 * k6;
-    const VectorSample end = sample(x + displacement);
+    const VectorSample end = sample(normalized(moved(x, displacement)));
     if ((out.reason = sampleFailure(end))) return out;
     const glm::vec3 k7 = stage(end, h);
     const glm::vec3 error = AMRSTREAM_DP_E1 * k1 + AMRSTREAM_DP_E3 * k3 + AMRSTREAM_DP_E4 * k4 +
@@ -120,7 +120,7 @@ StepOutcome dormandPrinceStep(const shared::TraceParams& params, glm::vec3 x, co
                            displacementSquared <= capSquared * AMRSTREAM_RK45_CAP_SQUARED_MARGIN) ||
                           h <= params.minStep || attempt + 1 == AMRSTREAM_RK45_MAX_ATTEMPTS;
     if (accepted) {
-      out.unwrapped = x + displacement;
+      out.unwrapped = moved(x, displacement);
       out.next = end;
       out.step = h;
       out.nextStep = std::clamp(h * factor, params.minStep, params.maxStep);

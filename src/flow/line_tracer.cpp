@@ -34,15 +34,15 @@ int sampleFailure(const VectorSample& s) {
 }
 
 // wrapPeriodic() with the round's parameters, as the kernels do it.
-glm::vec3 wrap(const shared::TraceParams& params, glm::vec3 p) {
+CellPoint wrap(const shared::TraceParams& params, CellPoint p) {
+  if (params.periodicAxes == 0 || !isNear(p)) return p;
+  const glm::ivec3 cell = cellOf(p);
   for (int a = 0; a < 3; ++a) {
     if ((params.periodicAxes & (1u << a)) == 0) continue;
-    const float lower = float(params.domainLower[a]), upper = float(params.domainUpper[a]);
-    if (p[a] >= upper)
-      p[a] -= params.period[a];
-    else if (p[a] < lower)
-      p[a] += params.period[a];
-    if (p[a] >= upper) p[a] = lower;
+    if (cell[a] >= params.domainUpper[a])
+      p.anchor[a] -= params.period[a];
+    else if (cell[a] < params.domainLower[a])
+      p.anchor[a] += params.period[a];
   }
   return p;
 }
@@ -52,9 +52,11 @@ glm::vec3 wrap(const shared::TraceParams& params, glm::vec3 p) {
 shared::LineRound advanceLine(const VectorVolume& volume, const shared::TraceParams& params,
                               shared::LineState& state, const PointEmitter& emit) {
   RegionCache cache;
-  const auto sample = [&](glm::vec3 p) { return sampleVector(volume, wrap(params, p), &cache); };
+  const auto sample = [&](const CellPoint& p) {
+    return sampleVector(volume, wrap(params, p), &cache);
+  };
   const float sign = state.direction;
-  glm::vec3 x = state.position;
+  CellPoint x{state.anchor, state.offset};
   float time = state.time, length = state.arcLength;
   std::uint32_t steps = state.steps, emitted = 0;
   float nextStep = state.stepSize;
@@ -98,12 +100,11 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
                                       : fixedStep(params.integrator, x, s, h, sample, stage);
     if ((reason = step.reason)) break;
     endsOnMaxTime = endsOnMaxTime && step.step == h;
-    const glm::vec3 unwrapped = step.unwrapped;
-    const glm::vec3 next = wrap(params, unwrapped);
+    const CellPoint unwrapped = step.unwrapped;  // the same anchor as x
     const VectorSample sNext = step.next;
 
     if (params.maxLength > 0.0f) {
-      const float stepLength = glm::length(params.spacing * (unwrapped - x));
+      const float stepLength = glm::length(params.spacing * (unwrapped.offset - x.offset));
       if (length + stepLength > params.maxLength) {
         reason = AMRSTREAM_REASON_MAX_LENGTH;
         break;
@@ -113,7 +114,7 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     time =
         endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(params, s, step.step);
     nextStep = step.nextStep;
-    x = next;
+    x = normalized(wrap(params, unwrapped));
     s = sNext;
     ++steps;
     if (params.keepHistory) {
@@ -125,7 +126,7 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     emit(x, time, s);
     ++emitted;
   }
-  state = {x, time, length, steps, state.line, sign, nextStep};
+  state = {x.offset, time, length, steps, state.line, sign, nextStep, x.anchor};
   return {state.line, emitted, steps, reason};
 }
 

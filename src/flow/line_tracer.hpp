@@ -13,11 +13,10 @@
 
 namespace amrstream::flow {
 
-// Receives each point the line emits: position in cell units, IntegrationTime and the sample
-// there. With history: the seed (in the line's first round) and the end of every step; without:
+// Receives each point the line emits: its position, IntegrationTime and the sample there. With history: the seed (in the line's first round) and the end of every step; without:
 // the last point, once the line ends.
 using PointEmitter =
-    std::function<void(glm::vec3 position, float time, const VectorSample& sample)>;
+    std::function<void(const CellPoint& position, float time, const VectorSample& sample)>;
 
 // Advances `state` in place and returns what the round did; the line goes on in a later round
 // while the reason is AMRSTREAM_REASON_RUNNING.

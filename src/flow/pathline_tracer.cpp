@@ -20,7 +20,8 @@ namespace {
 constexpr double kSliverFraction = 1e-4;
 
 glm::vec3 cellOf(const VectorVolume& volume, glm::vec3 x) {
-  return wrapPeriodic(volume, glm::vec3(volume.transform.toCellUnits(glm::dvec3(x))));
+  return glm::vec3(toCellUnits(
+      wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(glm::dvec3(x))))));
 }
 
 // x moved by whole periods into the volume's domain along its periodic axes.
@@ -35,7 +36,7 @@ void sampleSnapshot(const Snapshot& snapshot, std::span<const glm::vec3> cells,
                     std::span<RegionCache* const> caches, std::span<VectorSample> out) {
   if (snapshot.sampler) return snapshot.sampler(cells, out);
   tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t i) {
-    out[i] = sampleVector(*snapshot.volume, cells[i], caches[i]);
+    out[i] = sampleVector(*snapshot.volume, toCellPoint(glm::dvec3(cells[i])), caches[i]);
   });
 }
 
@@ -180,8 +181,8 @@ void PathlineTracer::storePoint(std::size_t particle, std::uint32_t slot, const 
   thread_local std::vector<float> va, vb;
   va.resize(channels);
   vb.resize(channels);
-  sampleChannels(*a.volume, s.regionA, s.cellA, va);
-  sampleChannels(*b.volume, s.regionB, s.cellB, vb);
+  sampleChannels(*a.volume, s.regionA, toCellPoint(glm::dvec3(s.cellA)), va);
+  sampleChannels(*b.volume, s.regionB, toCellPoint(glm::dvec3(s.cellB)), vb);
   for (std::size_t c = 0; c < channels; ++c) out[c] = va[c] + s.weightB * (vb[c] - va[c]);
 }
 
@@ -300,9 +301,14 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
 void PathlineTracer::advance(Snapshot a, Snapshot b) {
   if (!(b.time > a.time))
     throw std::invalid_argument("pathlines: an interval must go forward in time");
-  for (const Snapshot* s : {&a, &b})
+  for (const Snapshot* s : {&a, &b}) {
     if (s->volume->channelNames != channelNames_)
       throw std::invalid_argument("pathlines: every snapshot needs the same point-data channels");
+    if (s->volume->deepPositions())
+      throw InputError("pathlines", "a snapshot spans more than 2^21 finest cells on an axis; "
+                                    "pathlines keep float positions, which cannot resolve its "
+                                    "finest cells (streamlines with `trace` can)");
+  }
   const double until = std::min(b.time, options_.endTime);
   const bool aWasB = a.volume == lastB_;  // the caches hold regions of the volumes they name
   for (Particle& p : particles_) {

@@ -20,7 +20,8 @@ struct LinePoints {
 
 struct RoundBlock {
   std::vector<shared::LineRound> lines;
-  Column<glm::vec3> positions;  // physical coordinates
+  Column<glm::vec3> positions;     // physical coordinates
+  Column<glm::vec3> positionsLow;  // empty, or one per point: see TraceSet::precisePositions
   Column<float> times;
   Column<glm::vec3> vectors;
   Column<float> channels;       // channelCount values per point

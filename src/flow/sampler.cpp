@@ -8,14 +8,14 @@ namespace amrstream::flow {
 
 namespace {
 
-bool insideDomain(const VectorVolume& volume, glm::vec3 p) {
-  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
-  return glm::all(glm::greaterThanEqual(p, lower)) && glm::all(glm::lessThan(p, upper));
+// Whether lattice point k lies in the domain: [2 lower, 2 upper) on the lattice.
+bool insideDomain(const VectorVolume& volume, glm::ivec3 k) {
+  return glm::all(glm::greaterThanEqual(k, 2 * volume.domain.lower)) &&
+         glm::all(glm::lessThan(k, 2 * volume.domain.upper));
 }
 
-bool insideBox(const shared::Region& region, glm::vec3 p) {
-  return glm::all(glm::greaterThanEqual(p, region.lower)) &&
-         glm::all(glm::lessThan(p, region.upper));
+bool insideBox(const shared::Region& region, glm::ivec3 k) {
+  return glm::all(glm::greaterThanEqual(k, region.lower)) && glm::all(glm::lessThan(k, region.upper));
 }
 
 // The 2x2x2 cells of one brick around p with a non-zero tent weight
@@ -23,9 +23,9 @@ bool insideBox(const shared::Region& region, glm::vec3 p) {
 // visit(slot, axisWeights, offset, width, p - c_i) for each such cell inside the brick, in the
 // order every reconstruction sums them.
 template <typename Visit>
-void forEachTentCell(const shared::Brick& brick, glm::vec3 p, Visit&& visit) {
+void forEachTentCell(const shared::Brick& brick, const CellPoint& p, Visit&& visit) {
   const float width = float(1 << brick.level);
-  const glm::vec3 local = (p - glm::vec3(brick.lower)) / width - 0.5f;
+  const glm::vec3 local = (glm::vec3(p.anchor - brick.lower) + p.offset) / width - 0.5f;
   const glm::vec3 base = glm::floor(local);
   const glm::vec3 frac = local - base;
   const glm::ivec3 lo(base);
@@ -43,8 +43,8 @@ void forEachTentCell(const shared::Brick& brick, glm::vec3 p, Visit&& visit) {
 }
 
 template <typename Visit>
-void forEachRegionTentCell(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
-                           Visit&& visit) {
+void forEachRegionTentCell(const VectorVolume& volume, const shared::Region& region,
+                           const CellPoint& p, Visit&& visit) {
   for (std::uint32_t k = 0; k < region.brickCount; ++k)
     forEachTentCell(volume.bricks[volume.regions.regionBricks[region.brickOffset + k]], p, visit);
 }
@@ -53,7 +53,7 @@ void forEachRegionTentCell(const VectorVolume& volume, const shared::Region& reg
 // `weighted` to the weighted sum of the brick-ordered `values`. The weights are computed once per
 // cell and applied to all components.
 template <typename Value>
-float reconstruct(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
+float reconstruct(const VectorVolume& volume, const shared::Region& region, const CellPoint& p,
                   std::span<const Value> values, Value& weighted) {
   float weightSum = 0.0f;
   weighted = Value(0.0f);
@@ -68,7 +68,7 @@ float reconstruct(const VectorVolume& volume, const shared::Region& region, glm:
 }
 
 // The linear interpolant: the same weights over each cell's linear model v_i + G_i (p - c_i).
-float reconstructLinear(const VectorVolume& volume, const shared::Region& region, glm::vec3 p,
+float reconstructLinear(const VectorVolume& volume, const shared::Region& region, const CellPoint& p,
                         glm::vec3& weighted) {
   float weightSum = 0.0f;
   weighted = glm::vec3(0.0f);
@@ -86,11 +86,13 @@ float reconstructLinear(const VectorVolume& volume, const shared::Region& region
 }
 
 // The region containing p, trying the cache's region first; -1 outside the domain and regions.
-std::int32_t findRegion(const VectorVolume& volume, glm::vec3 p, RegionCache* cache) {
-  if (!insideDomain(volume, p)) return -1;
+std::int32_t findRegion(const VectorVolume& volume, const CellPoint& p, RegionCache* cache) {
+  if (!isNear(p)) return -1;
+  const glm::ivec3 k = latticeOf(p);
+  if (!insideDomain(volume, k)) return -1;
   std::int32_t regionId = cache ? cache->id : -1;
-  if (regionId < 0 || !insideBox(volume.regions.regions[regionId], p)) {
-    regionId = volume.regions.locate(p);
+  if (regionId < 0 || !insideBox(volume.regions.regions[regionId], k)) {
+    regionId = volume.regions.locate(k);
     if (regionId >= 0 && cache) cache->id = regionId;
   }
   return regionId;
@@ -100,25 +102,27 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 }  // namespace
 
-glm::vec3 wrapPeriodic(const VectorVolume& volume, glm::vec3 p) {
+CellPoint wrapPeriodic(const VectorVolume& volume, CellPoint p) {
+  if (!isNear(p)) return p;
+  const glm::ivec3 cell = cellOf(p);
   for (int a = 0; a < 3; ++a) {
     if (!volume.periodic[a]) continue;
-    const float lower = float(volume.domain.lower[a]), upper = float(volume.domain.upper[a]);
-    const float period = upper - lower;
-    if (p[a] >= upper)
-      p[a] -= period;
-    else if (p[a] < lower)
-      p[a] += period;
-    if (p[a] >= upper) p[a] = lower;  // a point just below the lower face rounded onto the upper
+    const int lower = volume.domain.lower[a], upper = volume.domain.upper[a];
+    if (cell[a] >= upper)
+      p.anchor[a] -= upper - lower;
+    else if (cell[a] < lower)
+      p.anchor[a] += upper - lower;
   }
   return p;
 }
 
-std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p) {
-  return insideDomain(volume, p) ? volume.regions.locate(p) : -1;
+std::int32_t locateRegion(const VectorVolume& volume, const CellPoint& p) {
+  if (!isNear(p)) return -1;
+  const glm::ivec3 k = latticeOf(p);
+  return insideDomain(volume, k) ? volume.regions.locate(k) : -1;
 }
 
-VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache) {
+VectorSample sampleVector(const VectorVolume& volume, const CellPoint& p, RegionCache* cache) {
   VectorSample sample;
   const std::int32_t regionId = findRegion(volume, p, cache);
   if (regionId < 0) return sample;
@@ -139,7 +143,7 @@ VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* 
 }
 
 std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
-                                  glm::vec3 p, RegionCache* cache,
+                                  const CellPoint& p, RegionCache* cache,
                                   std::span<const glm::vec3> gradients) {
   const std::int32_t regionId = findRegion(volume, p, cache);
   if (regionId < 0) return std::nullopt;
@@ -158,7 +162,7 @@ std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const fl
   return value;
 }
 
-void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p,
+void sampleChannels(const VectorVolume& volume, std::int32_t region, const CellPoint& p,
                     std::span<float> out) {
   const std::size_t channels = out.size();
   if (channels == 0) return;
@@ -179,7 +183,7 @@ void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p
   for (float& value : out) value = weightSum > kMinWeightSum ? value / weightSum : kNaN;
 }
 
-glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p) {
+glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, const CellPoint& p) {
   if (region < 0) return glm::vec3(kNaN);
   const bool linear = volume.interpolant == Interpolant::Linear;
   float weightSum = 0.0f;

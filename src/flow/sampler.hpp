@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 
+#include "cell_point.hpp"
 #include "vector_volume.hpp"
 
 namespace amrstream::flow {
@@ -23,11 +24,12 @@ struct VectorSample {
   std::int32_t region = -1;  // p's region when located
 };
 
-// p moved by whole periods into the domain along its periodic axes; unchanged otherwise.
-glm::vec3 wrapPeriodic(const VectorVolume& volume, glm::vec3 p);
+// p moved by a whole period into the domain along its periodic axes (its anchor shifted, so
+// exactly); unchanged otherwise.
+CellPoint wrapPeriodic(const VectorVolume& volume, CellPoint p);
 
-// Region containing p (finest-cell units), or -1 outside the domain or in empty space.
-std::int32_t locateRegion(const VectorVolume& volume, glm::vec3 p);
+// Region containing p, or -1 outside the domain or in empty space.
+std::int32_t locateRegion(const VectorVolume& volume, const CellPoint& p);
 
 // The region of a trace's previous sample. Consecutive samples mostly share a region, and
 // regions are disjoint half-open boxes, so a point inside the domain and inside that box is in
@@ -38,19 +40,20 @@ struct RegionCache {
 
 // p must already be wrapped (wrapPeriodic). With a cache, tries its region first and stores the
 // region found.
-VectorSample sampleVector(const VectorVolume& volume, glm::vec3 p, RegionCache* cache = nullptr);
+VectorSample sampleVector(const VectorVolume& volume, const CellPoint& p,
+                          RegionCache* cache = nullptr);
 
 // The same reconstruction for a scalar gathered in brick order (gatherScalar()): the value at p,
 // or none outside the domain and regions, where the weights vanish, or when it is not finite.
 // With `gradients` (cellGradients() of the scalars) each cell contributes its linear model
 // instead of its value: the linear interpolant.
 std::optional<float> sampleScalar(const VectorVolume& volume, std::span<const float> scalars,
-                                  glm::vec3 p, RegionCache* cache = nullptr,
+                                  const CellPoint& p, RegionCache* cache = nullptr,
                                   std::span<const glm::vec3> gradients = {});
 
 // The point-data channels at p in `region` (where p's vector sample was located): one value per
 // channel into `out`, NaN for all when region is -1 or the weights vanish.
-void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p,
+void sampleChannels(const VectorVolume& volume, std::int32_t region, const CellPoint& p,
                     std::span<float> out);
 
 // The curl of the reconstructed vector at p in `region`, in the vector's units per physical
@@ -58,6 +61,6 @@ void sampleChannels(const VectorVolume& volume, std::int32_t region, glm::vec3 p
 // sums, B = S_v / S_1, so dB/dp = (dS_v/dp - B dS_1/dp) / S_1 with the tents' piecewise-constant
 // derivatives; with the linear interpolant v_i is the cell's model v_i + G_i (p - c_i), whose
 // own derivative G_i adds S_G / S_1.
-glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, glm::vec3 p);
+glm::vec3 sampleVorticity(const VectorVolume& volume, std::int32_t region, const CellPoint& p);
 
 }  // namespace amrstream::flow

@@ -42,7 +42,7 @@ SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts) {
 }
 
 bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits) {
-  const std::int32_t region = locateRegion(volume, glm::vec3(cellUnits));
+  const std::int32_t region = locateRegion(volume, toCellPoint(cellUnits));
   if (region < 0) return false;
   const shared::Region& r = volume.regions.regions[std::size_t(region)];
   for (std::uint32_t i = 0; i < r.brickCount; ++i) {

@@ -110,7 +110,7 @@ void closeUpperFaces(const VectorVolume& volume, SeedList& seeds) {
 void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {
   for (std::size_t i = 0; i < seeds.points.size(); ++i) {
     const glm::dvec3 p = seeds.points[i];
-    const VectorSample sample = sampleVector(volume, glm::vec3(volume.transform.toCellUnits(p)));
+    const VectorSample sample = sampleVector(volume, toCellPoint(volume.transform.toCellUnits(p)));
     if (sample.valid) continue;
     if (sample.located)
       throw InputError(seeds.origins[i],

@@ -13,6 +13,8 @@ const float* columnData(const RoundBlock& block, PointColumn column) {
   switch (column) {
     case PointColumn::Positions:
       return reinterpret_cast<const float*>(block.positions.data());
+    case PointColumn::PositionsLow:
+      return reinterpret_cast<const float*>(block.positionsLow.data());
     case PointColumn::Times:
       return block.times.data();
     case PointColumn::Vectors:
@@ -67,6 +69,7 @@ TraceSet StoredTraces::assemble() && {
   TraceSet out = std::move(lines_);
   const std::uint64_t points = out.pointCount();
   const auto gather = [&](auto& target, PointColumn column, auto member) {
+    if (!holdsColumn(out, column)) return;
     const std::size_t width = columnWidth(out, column);
     target.resize(points * width / (sizeof(target[0]) / sizeof(float)));
     float* destination = reinterpret_cast<float*>(target.data());
@@ -82,10 +85,11 @@ TraceSet StoredTraces::assemble() && {
     for (RoundBlock& round : rounds_) release(round.*member);
   };
   gather(out.positions, PointColumn::Positions, &RoundBlock::positions);
+  gather(out.positionsLow, PointColumn::PositionsLow, &RoundBlock::positionsLow);
   gather(out.times, PointColumn::Times, &RoundBlock::times);
   gather(out.vectors, PointColumn::Vectors, &RoundBlock::vectors);
   gather(out.channels, PointColumn::Channels, &RoundBlock::channels);
-  if (out.withVorticity) gather(out.vorticity, PointColumn::Vorticity, &RoundBlock::vorticity);
+  gather(out.vorticity, PointColumn::Vorticity, &RoundBlock::vorticity);
   rounds_.clear();
   runs_.clear();
   runOffsets_.assign(1, 0);
@@ -98,7 +102,7 @@ std::span<const float> StoredTraces::column(PointColumn column, std::size_t line
   const std::uint64_t begin = runOffsets_[line], end = runOffsets_[line + 1];
   std::uint64_t points = 0;
   for (std::uint64_t r = begin; r < end; ++r) points += runs_[r].count;
-  if (points == 0 || width == 0) return {};
+  if (points == 0 || width == 0 || !holdsColumn(lines_, column)) return {};
   const auto runValues = [&](const Run& run) {
     return columnData(rounds_[run.round], column) + run.first * width;
   };

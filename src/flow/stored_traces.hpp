@@ -13,9 +13,10 @@ namespace amrstream::flow {
 
 class StoredTraces final : public TraceView {
  public:
-  // `lines` holds every line's seed id, direction, steps, reason and offsets (its point columns
-  // are ignored); runs[r] names, in order, the lines that round r's points belong to (the rounds'
-  // own LineRounds are not read, and may have been dropped).
+  // `lines` holds every line's seed id, direction, steps, reason and offsets, and says which
+  // columns the rounds hold (withVorticity, precisePositions; its point columns are ignored);
+  // runs[r] names, in order, the lines that round r's points belong to (the rounds' own
+  // LineRounds are not read, and may have been dropped).
   StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds,
                std::vector<std::vector<LinePoints>> runs);
 

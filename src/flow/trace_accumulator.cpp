@@ -23,6 +23,7 @@ TraceAccumulator::TraceAccumulator(LineLayout lines, const TraceSet& shape)
   result_.channelNames = shape.channelNames;
   result_.periodic = shape.periodic;
   result_.withVorticity = shape.withVorticity;
+  result_.precisePositions = shape.precisePositions;
   result_.steps.assign(lineCount(), 0);
   result_.reasons.assign(lineCount(), AMRSTREAM_REASON_RUNNING);
 }
@@ -31,13 +32,16 @@ void TraceAccumulator::add(RoundBlock&& round) {
   const std::size_t channels = result_.channelCount();
   std::uint64_t points = 0;
   for (const shared::LineRound& r : round.lines) points += r.points;
+  // Unless the shape says so, the first round with points tells whether positions are precise.
+  const bool precise = result_.precisePositions || (points_ == 0 && !round.positionsLow.empty());
   if (round.positions.size() != points || round.times.size() != points ||
       round.vectors.size() != points || round.channels.size() != points * channels ||
-      round.vorticity.size() != (result_.withVorticity ? points : 0))
+      round.vorticity.size() != (result_.withVorticity ? points : 0) ||
+      round.positionsLow.size() != (precise ? points : 0))
     throw std::invalid_argument("TraceAccumulator: a round's arrays do not match its lines");
 
   const std::uint64_t bytes =
-      (points_ + points) * TraceSet::bytesPerPoint(channels, result_.withVorticity);
+      (points_ + points) * TraceSet::bytesPerPoint(channels, result_.withVorticity, precise);
   if (maxBytes_ > 0 && bytes > maxBytes_)
     throw InputError("traces", fmt::format("the traces grew past {:.1f} GiB, the limit for this "
                                            "machine, with {} of {} lines finished; trace fewer "
@@ -57,6 +61,7 @@ void TraceAccumulator::add(RoundBlock&& round) {
     }
   }
   points_ += points;
+  result_.precisePositions = precise;
   std::vector<shared::LineRound>().swap(round.lines);  // 16 bytes a line a round: keep 8
   rounds_.push_back(std::move(round));
   runs_.push_back(std::move(runs));

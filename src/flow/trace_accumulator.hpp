@@ -21,11 +21,15 @@ struct LineLayout {
 
 class TraceAccumulator {
  public:
-  // `shape` gives the names and the periodic box; its arrays are ignored.
+  // `shape` gives the names, the periodic box, withVorticity and precisePositions; its arrays are
+  // ignored.
   TraceAccumulator(LineLayout lines, const TraceSet& shape);
 
-  // Takes the round's points; lines whose reason is no longer RUNNING are finished. Throws
-  // InputError when the points collected pass `maxBytes` (see setMemoryLimit).
+  // Takes the round's points; lines whose reason is no longer RUNNING are finished. Rounds hold
+  // positionsLow for every point, or for none: the shape's precisePositions requires them, else
+  // the first round with points decides for all. Throws std::invalid_argument for a round whose
+  // columns do not match its lines, InputError when the points collected pass `maxBytes` (see
+  // setMemoryLimit).
   void add(RoundBlock&& round);
   // 0: no limit.
   void setMemoryLimit(std::uint64_t maxBytes) { maxBytes_ = maxBytes; }

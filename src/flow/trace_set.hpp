@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "column.hpp"
+#include "precise_position.hpp"
 
 namespace amrstream::flow {
 
@@ -25,10 +26,9 @@ struct PeriodicBox {
 
   bool any() const { return axes[0] || axes[1] || axes[2]; }
   // Whether the segment a -> b crosses a periodic face (jumps by more than half a period).
-  bool wraps(glm::vec3 a, glm::vec3 b) const {
+  bool wraps(glm::dvec3 a, glm::dvec3 b) const {
     for (int axis = 0; axis < 3; ++axis)
-      if (axes[axis] && std::abs(double(b[axis]) - double(a[axis])) >
-                            0.5 * (upper[axis] - lower[axis]))
+      if (axes[axis] && std::abs(b[axis] - a[axis]) > 0.5 * (upper[axis] - lower[axis]))
         return true;
     return false;
   }
@@ -47,11 +47,13 @@ struct TraceSet {
   std::vector<std::uint64_t> offsets{0};  // lineCount() + 1 entries, offsets[0] == 0
 
   // Per point.
-  Column<glm::vec3> positions;  // physical coordinates
-  Column<float> times;          // IntegrationTime: negative along backward lines
-  Column<glm::vec3> vectors;    // the traced vector sampled at the point
-  Column<float> channels;       // channelNames.size() values per point
-  Column<glm::vec3> vorticity;  // one per point with withVorticity, else empty
+  Column<glm::vec3> positions;     // physical coordinates
+  Column<glm::vec3> positionsLow;  // one per point with precisePositions, else empty
+  bool precisePositions = false;   // point i is at joinPosition(positions[i], positionsLow[i])
+  Column<float> times;             // IntegrationTime: negative along backward lines
+  Column<glm::vec3> vectors;       // the traced vector sampled at the point
+  Column<float> channels;          // channelNames.size() values per point
+  Column<glm::vec3> vorticity;     // one per point with withVorticity, else empty
   bool withVorticity = false;
 
   std::size_t lineCount() const { return seedIds.size(); }
@@ -60,10 +62,12 @@ struct TraceSet {
   std::uint64_t firstPoint(std::size_t line) const { return offsets[line]; }
   std::size_t channelCount() const { return channelNames.size(); }
 
-  // Host bytes per stored point: position, IntegrationTime, vector, channels, vorticity.
-  static std::size_t bytesPerPoint(std::size_t channelCount, bool vorticity) {
+  // Host bytes per stored point: position, IntegrationTime, vector, channels, vorticity, and the
+  // low part of a precise position.
+  static std::size_t bytesPerPoint(std::size_t channelCount, bool vorticity,
+                                   bool precisePositions = false) {
     return 2 * sizeof(glm::vec3) + sizeof(float) + channelCount * sizeof(float) +
-           (vorticity ? sizeof(glm::vec3) : 0);
+           (vorticity ? sizeof(glm::vec3) : 0) + (precisePositions ? sizeof(glm::vec3) : 0);
   }
 };
 

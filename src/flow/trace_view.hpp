@@ -11,10 +11,13 @@
 
 namespace amrstream::flow {
 
-enum class PointColumn { Positions, Times, Vectors, Channels, Vorticity };
+enum class PointColumn { Positions, PositionsLow, Times, Vectors, Channels, Vorticity };
 
-// Floats per point of a column: 3, 1, 3, the channel count, 3.
+// Floats per point of a column: 3, 3, 1, 3, the channel count, 3.
 std::size_t columnWidth(const TraceSet& lines, PointColumn column);
+// Whether the traces hold the column: PositionsLow only with precisePositions, Vorticity only
+// withVorticity. A column they do not hold reads as empty.
+bool holdsColumn(const TraceSet& lines, PointColumn column);
 
 class TraceView {
  public:
@@ -27,6 +30,11 @@ class TraceView {
   virtual std::span<const float> column(PointColumn column, std::size_t line,
                                         std::vector<float>& scratch) const = 0;
 };
+
+// The positions along `line`, x, y, z per point: joinPosition of the two columns when the traces
+// are precise, else the stored floats. Valid until the next call with the same scratch.
+std::span<const double> exactPositions(const TraceView& traces, std::size_t line,
+                                       std::vector<double>& scratch);
 
 // A TraceSet as a TraceView, without copies. The TraceSet must outlive it.
 class TraceSetView final : public TraceView {

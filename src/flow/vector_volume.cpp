@@ -30,22 +30,45 @@ std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bric
         for (int a = 0; a < 3; ++a) allowed = allowed && (s[a] == 0 || periodic[a]);
         if (allowed) shifts.push_back(s);
       }
-  const glm::ivec3 period = domain.upper - domain.lower;
-  const glm::ivec3 lowerDoubled = 2 * domain.lower, upperDoubled = 2 * domain.upper;
+  const glm::i64vec3 period(domain.upper - domain.lower);
+  const glm::i64vec3 lowerDoubled = std::int64_t(2) * glm::i64vec3(domain.lower),
+                     upperDoubled = std::int64_t(2) * glm::i64vec3(domain.upper);
   std::vector<shared::Brick> images;
   for (const shared::Brick& brick : bricks) {
     const bricks::CellBox d = bricks::brickDomainDoubled(brick);
     for (const glm::ivec3& s : shifts) {
-      const glm::ivec3 offset = 2 * s * period;
-      if (glm::all(glm::lessThan(d.lower + offset, upperDoubled)) &&
-          glm::all(glm::greaterThan(d.upper + offset, lowerDoubled))) {
+      const glm::i64vec3 offset = std::int64_t(2) * glm::i64vec3(s) * period;
+      if (glm::all(glm::lessThan(glm::i64vec3(d.lower) + offset, upperDoubled)) &&
+          glm::all(glm::greaterThan(glm::i64vec3(d.upper) + offset, lowerDoubled))) {
         shared::Brick image = brick;
-        image.lower += s * period;
+        image.lower += s * glm::ivec3(period);
         images.push_back(image);
       }
     }
   }
   return images;
+}
+
+// Cell coordinates as the field has them when they lie within 2^20 of the origin; otherwise moved
+// so that the domain is centred on it, where the region lattice (doubled coordinates) fits 32
+// bits at any depth and float positions in cell units keep the most precision. The transform
+// moves by the same whole cells, so physical positions are unchanged.
+struct CentredCells {
+  bricks::CellBox domain;
+  bricks::WorldTransform transform;
+};
+
+CentredCells centreCells(const bricks::AmrField& field, std::vector<shared::Brick>& bricks) {
+  const bricks::CellBox bounds = field.bounds();
+  constexpr int kNear = 1 << 20;
+  if (glm::all(glm::greaterThanEqual(bounds.lower, glm::ivec3(-kNear))) &&
+      glm::all(glm::lessThanEqual(bounds.upper, glm::ivec3(kNear))))
+    return {bounds, field.transform()};
+  const glm::ivec3 centre = bounds.lower + (bounds.upper - bounds.lower) / 2;
+  for (shared::Brick& brick : bricks) brick.lower -= centre;
+  bricks::WorldTransform transform = field.transform();
+  transform.origin += transform.spacing * glm::dvec3(centre);
+  return {{bounds.lower - centre, bounds.upper - centre}, transform};
 }
 
 std::string channelList(const bricks::AmrField& field) {
@@ -60,24 +83,25 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
                              VolumeBuildTimes* times) {
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
+  const CentredCells centred = centreCells(field, brickSet.bricks);
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {
     const std::vector<shared::Brick> images =
-        periodicImages(brickSet.bricks, field.bounds(), options.periodic);
+        periodicImages(brickSet.bricks, centred.domain, options.periodic);
     brickSet.bricks.insert(brickSet.bricks.end(), images.begin(), images.end());
   }
   if (times) times->bricks = clock.seconds();
 
   clock.restart();
-  volume.regions = bricks::buildRegions(brickSet.bricks);
+  volume.regions = bricks::buildRegions(brickSet.bricks, centred.domain);
   if (times) times->regions = clock.seconds();
 
   volume.bricks = std::move(brickSet.bricks);
   volume.cellIds = std::move(brickSet.cellIds);
-  volume.domain = field.bounds();
+  volume.domain = centred.domain;
   volume.periodic = options.periodic;
-  volume.transform = field.transform();
+  volume.transform = centred.transform;
   return volume;
 }
 

@@ -46,7 +46,9 @@ struct VectorVolume {
   std::vector<glm::vec3> channelGradients;
   bricks::RegionSet regions;
   // Points outside the cells' bounding box [lower, upper) are out of the domain, even where the
-  // half-cell padding of the brick domains reaches beyond it.
+  // half-cell padding of the brick domains reaches beyond it. Cell units are the field's, or,
+  // when the field's reach beyond 2^20 of the origin, centred on the domain (buildCellLayout
+  // moves the cells, and the transform with them).
   bricks::CellBox domain;
   PeriodicAxes periodic{};
   bricks::WorldTransform transform;
@@ -54,6 +56,13 @@ struct VectorVolume {
 
   glm::ivec3 period() const { return domain.upper - domain.lower; }
   std::size_t channelCount() const { return channelNames.size(); }
+  // Whether a float in cell units (centred on the domain) misses finest cells somewhere in the
+  // domain: wider than 2^21 finest cells on some axis. The GPU then hands positions over as
+  // offsets from their regions (line_state.h).
+  bool deepPositions() const {
+    const glm::ivec3 extent = period();
+    return glm::any(glm::greaterThan(extent, glm::ivec3(1 << 21)));
+  }
 };
 
 struct VolumeOptions {

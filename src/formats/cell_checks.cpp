@@ -39,10 +39,10 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
   const glm::i64vec3 extent = upper - lower;
   const std::int64_t limit = std::int64_t{1} << bricks::kMaxExtentBits;
   for (int a = 0; a < 3 && !lowers.empty(); ++a)
-    if (extent[a] >= limit)
+    if (extent[a] > limit)
       throw InputError(source, fmt::format("the cells span {} finest cells along axis {} (from {} "
                                            "to {}); at most {} are supported",
-                                           extent[a], "xyz"[a], lower[a], upper[a], limit - 1));
+                                           extent[a], "xyz"[a], lower[a], upper[a], limit));
 }
 
 std::optional<std::string> unrepresentablePositions(const bricks::WorldTransform& transform,

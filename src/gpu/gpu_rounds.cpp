@@ -6,6 +6,8 @@
 #include <cstring>
 
 #include "../../shaders/glsl/shared/round_params.h"
+#include "flow/cell_point.hpp"
+#include "flow/precise_position.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
@@ -66,7 +68,8 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
     : ctx_(&ctx), trace_(&trace), kernels_(&kernels), device_(&device), volume_(&volume),
       options_(options), params_(flow::makeTraceParams(volume, options)), buffers_(buffers),
       pool_(ctx, 5, kPerSet), live_(lines.size()), round_(ctx), copy_(ctx) {
-  if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity))
+  if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity,
+                   volume.deepPositions()))
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
   buffers.setStates(ctx, lines);
   const RoundBuffers& b = buffers_;
@@ -135,7 +138,7 @@ void GpuRounds::submitRound(std::uint32_t steps) {
   const shared::PointDataParams pointData{params_.cellsPerPhysical,
                                           static_cast<std::uint32_t>(volume_->channelCount()),
                                           options_.vorticity ? 1u : 0u,
-                                          params_.linearInterpolant};
+                                          params_.linearInterpolant, params_.regionRelative};
   round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.
@@ -226,6 +229,8 @@ void GpuRounds::submitCopy(const shared::RoundSummary& summary) {
     copyRange(cmd, b.denseVectors, b.vectorsOut, points * sizeof(glm::vec3));
     copyRange(cmd, b.channels, b.channelsOut, points * channels * sizeof(float));
     if (options_.vorticity) copyRange(cmd, b.vorticity, b.vorticityOut, points * sizeof(glm::vec3));
+    if (b.withRegionIds)
+      copyRange(cmd, b.denseRegionIds, b.regionIdsOut, points * sizeof(std::int32_t));
     vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
   });
 }
@@ -243,14 +248,31 @@ flow::RoundBlock GpuRounds::finishCopy(const shared::RoundSummary& summary, std:
   block.vectors = copyOut<flow::Column<glm::vec3>>(b.vectorsOut, points);
   block.channels = copyOut<flow::Column<float>>(b.channelsOut, points * channels);
   if (options_.vorticity) block.vorticity = copyOut<flow::Column<glm::vec3>>(b.vorticityOut, points);
-  // Kernels work in cell units; convert in double precision like the CPU path.
+  // Kernels work in cell units, or offsets from regions' corners (line_state.h); convert in
+  // double precision like the CPU path.
   b.positionsOut.invalidateMapped();
   const glm::vec3* cells = reinterpret_cast<const glm::vec3*>(b.positionsOut.mapped().data());
   block.positions.resize(points);
   const bricks::WorldTransform& transform = volume_->transform;
-  tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
-    block.positions[i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
-  });
+  if (b.withRegionIds) {  // deep positions: offsets from the regions' corners, kept precise
+    b.regionIdsOut.invalidateMapped();
+    const auto* ids = reinterpret_cast<const std::int32_t*>(b.regionIdsOut.mapped().data());
+    const std::vector<shared::Region>& regions = volume_->regions.regions;
+    block.positionsLow.resize(points);
+    tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
+      const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
+                                    ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
+                                    : glm::ivec3(0);
+      const flow::SplitPosition split = flow::splitPosition(
+          transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
+      block.positions[i] = split.high;
+      block.positionsLow[i] = split.low;
+    });
+  } else {
+    tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
+      block.positions[i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
+    });
+  }
   times_.unpackSeconds += clock.seconds();
   return block;
 }

@@ -25,7 +25,8 @@ std::vector<shared::LineState> threadOrder(std::span<const shared::LineState> li
   std::vector<shared::LineState> ordered(lines.begin(), lines.end());
   if (!spatial) return ordered;
   std::vector<glm::vec3> positions(lines.size());
-  for (std::size_t i = 0; i < lines.size(); ++i) positions[i] = lines[i].position;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    positions[i] = glm::vec3(lines[i].anchor) + lines[i].offset;
   const std::vector<std::uint32_t> order = mortonOrder(positions);
   for (std::size_t k = 0; k < order.size(); ++k) ordered[k] = lines[order[k]];
   return ordered;
@@ -68,7 +69,8 @@ const TraceKernel& GpuTracer::kernelFor(const flow::TraceOptions& options) {
 }
 
 std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const {
-  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity);
+  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity,
+                                                         volume_->deepPositions());
   const VkPhysicalDeviceLimits& limits = ctx_->limits();
   // A batch's smallest round (2 slots per line with history) must fit the storage buffer range.
   const std::uint64_t slotsPerLine = options.keepHistory ? 2 : 1;
@@ -85,7 +87,8 @@ std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::siz
 
 std::uint64_t GpuTracer::pointSlots(const flow::TraceOptions& options,
                                     std::size_t batchLines) const {
-  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity);
+  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity,
+                                                         volume_->deepPositions());
   const std::uint64_t widest =
       std::max<std::uint64_t>(sizeof(glm::vec3), volume_->channelCount() * sizeof(float));
   const std::uint64_t byRange = ctx_->limits().maxStorageBufferRange / widest;
@@ -118,10 +121,12 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     Stopwatch clock;
     const std::uint64_t slots = pointSlots(options, count);
     const std::size_t channels = volume_->channelCount();
-    if (!roundBuffers_ || !roundBuffers_->fits(count, slots, channels, options.vorticity)) {
+    const bool regionIds = volume_->deepPositions();
+    if (!roundBuffers_ ||
+        !roundBuffers_->fits(count, slots, channels, options.vorticity, regionIds)) {
       roundBuffers_.reset();
-      roundBuffers_ =
-          std::make_unique<RoundBuffers>(*ctx_, count, slots, channels, options.vorticity);
+      roundBuffers_ = std::make_unique<RoundBuffers>(*ctx_, count, slots, channels,
+                                                     options.vorticity, regionIds);
     }
     lastRun_.buffersSeconds += clock.seconds();
     clock.restart();
@@ -163,7 +168,8 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
   const std::vector<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
   auto buffers =
       std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
-                                     volume_->channelCount(), options.vorticity);
+                                     volume_->channelCount(), options.vorticity,
+                                     volume_->deepPositions());
   return std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
                                      ordered, options, std::move(buffers), timeKernels_);
 }

@@ -32,18 +32,19 @@ std::uint64_t blocksOf(std::size_t lines) {
 
 }  // namespace
 
-flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
+flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity, bool regionIds) {
   const std::uint64_t pointData = channelCount * sizeof(float) + (vorticity ? sizeof(glm::vec3) : 0);
   const std::uint64_t emitted = 2 * sizeof(glm::vec3) + sizeof(float) + sizeof(std::int32_t);
-  const std::uint64_t copied = 2 * sizeof(glm::vec3) + sizeof(float) + pointData;
+  const std::uint64_t copied = 2 * sizeof(glm::vec3) + sizeof(float) + pointData +
+                               (regionIds ? sizeof(std::int32_t) : 0);
   return {2 * sizeof(shared::LineState) + 3 * sizeof(shared::LineRound) + sizeof(glm::uvec2),
           2 * emitted + pointData + copied};
 }
 
 RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
-                           std::size_t channelsPerPoint, bool vorticityToo)
+                           std::size_t channelsPerPoint, bool vorticityToo, bool regionIdsToo)
     : lineCapacity(lines), pointCapacity(pointSlots), channelCount(channelsPerPoint),
-      withVorticity(vorticityToo) {
+      withVorticity(vorticityToo), withRegionIds(regionIdsToo) {
   const std::uint64_t n = lineCapacity, p = pointCapacity;
   params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                               "round params");
@@ -64,7 +65,7 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint6
   densePositions = device(ctx, p * sizeof(glm::vec3), "dense positions", kCopied);
   denseTimes = device(ctx, p * sizeof(float), "dense times", kCopied);
   denseVectors = device(ctx, p * sizeof(glm::vec3), "dense vectors", kCopied);
-  denseRegionIds = device(ctx, p * sizeof(std::int32_t), "dense region ids");
+  denseRegionIds = device(ctx, p * sizeof(std::int32_t), "dense region ids", kCopied);
   channels = device(ctx, p * channelCount * sizeof(float), "dense channels", kCopied);
   vorticity = device(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "dense vorticity", kCopied);
 
@@ -75,12 +76,13 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint6
   vectorsOut = host(ctx, p * sizeof(glm::vec3), "vectors (host)");
   channelsOut = host(ctx, p * channelCount * sizeof(float), "channels (host)");
   vorticityOut = host(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "vorticity (host)");
+  regionIdsOut = host(ctx, withRegionIds ? p * sizeof(std::int32_t) : 0, "region ids (host)");
 }
 
 bool RoundBuffers::fits(std::size_t lines, std::uint64_t pointSlots, std::size_t channelsPerPoint,
-                        bool vorticityToo) const {
+                        bool vorticityToo, bool regionIdsToo) const {
   return lines <= lineCapacity && pointSlots <= pointCapacity && channelsPerPoint == channelCount &&
-         vorticityToo == withVorticity;
+         vorticityToo == withVorticity && regionIdsToo == withRegionIds;
 }
 
 void RoundBuffers::setStates(const vk::Context& ctx, std::span<const shared::LineState> lines) {

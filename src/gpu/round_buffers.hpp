@@ -25,22 +25,25 @@ class Context;
 namespace amrstream::gpu {
 
 struct RoundBuffers {
+  // `regionIds`: the points' region ids come back too, for positions relative to their regions
+  // (VectorVolume::deepPositions).
   RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
-               std::size_t channelsPerPoint, bool vorticity);
+               std::size_t channelsPerPoint, bool vorticity, bool regionIds);
 
   // Whether these buffers serve a batch of this size and point data.
   bool fits(std::size_t lines, std::uint64_t pointSlots, std::size_t channelsPerPoint,
-            bool vorticity) const;
+            bool vorticity, bool regionIds) const;
   // The batch's starting states, copied into `states` (and the submission waited for).
   void setStates(const vk::Context& ctx, std::span<const shared::LineState> lines);
 
   // The bytes the fields below take per line and per output slot, for budgeting.
-  static flow::RoundCosts costs(std::size_t channelCount, bool vorticity);
+  static flow::RoundCosts costs(std::size_t channelCount, bool vorticity, bool regionIds);
 
   std::size_t lineCapacity;
   std::uint64_t pointCapacity;
   std::size_t channelCount;
   bool withVorticity;
+  bool withRegionIds;
 
   vk::Buffer params;  // shared::TraceParams, host-written before each round
   vk::Buffer states;
@@ -58,7 +61,7 @@ struct RoundBuffers {
   // Host-visible copies.
   vk::Buffer summaryOut;
   vk::Buffer lineRoundsOut;
-  vk::Buffer positionsOut, timesOut, vectorsOut, channelsOut, vorticityOut;
+  vk::Buffer positionsOut, timesOut, vectorsOut, channelsOut, vorticityOut, regionIdsOut;
 };
 
 }  // namespace amrstream::gpu

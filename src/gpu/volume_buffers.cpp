@@ -2,6 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
 
@@ -11,11 +16,31 @@ namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 
+// Half a lattice coordinate (a finest-cell position) as a float, rounded down or up, and one ulp
+// further when inexact: the kernels probe a lattice point k at the float centre of its lattice
+// cell (probeOrigin in region_containment.glsl), which may round by an ulp past an inexact face.
+float boundBelow(int lattice) {
+  const double exact = 0.5 * lattice;
+  const float f = float(exact);
+  if (double(f) == exact) return f;
+  return std::nextafter(double(f) > exact ? std::nextafter(f, -INFINITY) : f, -INFINITY);
+}
+
+float boundAbove(int lattice) {
+  const double exact = 0.5 * lattice;
+  const float f = float(exact);
+  if (double(f) == exact) return f;
+  return std::nextafter(double(f) < exact ? std::nextafter(f, INFINITY) : f, INFINITY);
+}
+
+// The regions' boxes in finest-cell units, exact while the lattice is below 2^24 and rounded
+// outward beyond: the kernels test every candidate exactly on the lattice.
 std::vector<VkAabbPositionsKHR> regionBoxes(const bricks::RegionSet& regions) {
   std::vector<VkAabbPositionsKHR> boxes(regions.regions.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const shared::Region& r = regions.regions[i];
-    boxes[i] = {r.lower.x, r.lower.y, r.lower.z, r.upper.x, r.upper.y, r.upper.z};
+    boxes[i] = {boundBelow(r.lower.x), boundBelow(r.lower.y), boundBelow(r.lower.z),
+                boundAbove(r.upper.x), boundAbove(r.upper.y), boundAbove(r.upper.z)};
   }
   return boxes;
 }
@@ -35,6 +60,14 @@ std::vector<glm::vec3> linearCells(const flow::VectorVolume& volume) {
 
 VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
                              const flow::VectorVolume& volume, TracerSetup& setup) {
+  // The pipeline's intersection shader sees only the ray's float origin (locate_pipeline.glsl).
+  const glm::ivec3 extent = volume.period();
+  if (backend == Backend::Pipeline && glm::any(glm::greaterThan(extent, glm::ivec3(1 << 22))))
+    throw InputError("--backend pipeline",
+                     fmt::format("the domain spans {}x{}x{} finest cells; the pipeline backend "
+                                 "locates points in float coordinates, exact up to 2^22 finest "
+                                 "cells per axis: use --backend compute or rayquery",
+                                 extent.x, extent.y, extent.z));
   Stopwatch clock;
   bricks = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
   values = vk::uploadToDeviceLocal(ctx, volume.values, kStorage, "vector values");

@@ -575,6 +575,12 @@ std::vector<float> VtkXmlFile::floats(const XmlElement& dataArray,
   return values<float>(dataArray, tuples, components, what);
 }
 
+std::vector<double> VtkXmlFile::doubles(const XmlElement& dataArray,
+                                        std::optional<std::uint64_t> tuples, int components,
+                                        const std::string& what) const {
+  return values<double>(dataArray, tuples, components, what);
+}
+
 std::vector<std::int64_t> VtkXmlFile::integers(const XmlElement& dataArray,
                                                std::optional<std::uint64_t> tuples, int components,
                                                const std::string& what) const {

@@ -67,6 +67,8 @@ class VtkXmlFile {
   // of float become infinities. Integers: values must be whole and fit in int64.
   std::vector<float> floats(const XmlElement& dataArray, std::optional<std::uint64_t> tuples,
                             int components, const std::string& what) const;
+  std::vector<double> doubles(const XmlElement& dataArray, std::optional<std::uint64_t> tuples,
+                              int components, const std::string& what) const;
   std::vector<std::int64_t> integers(const XmlElement& dataArray,
                                      std::optional<std::uint64_t> tuples, int components,
                                      const std::string& what) const;

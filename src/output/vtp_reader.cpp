@@ -120,21 +120,53 @@ Lines readLines(const VtkXmlFile& file, const XmlElement& piece, const PieceCoun
   return out;
 }
 
-std::vector<glm::vec3> readPositions(const VtkXmlFile& file, const XmlElement& piece,
-                                     std::uint64_t pointCount) {
-  if (pointCount == 0) return {};
+// The DataArray of <Points>, or nullptr.
+const XmlElement* pointsDataArray(const XmlElement& piece) {
   const XmlElement* points = piece.child("Points");
-  const XmlElement* array = points ? points->child("DataArray") : nullptr;
+  return points ? points->child("DataArray") : nullptr;
+}
+
+// Float64 points are precise positions (TraceSet::precisePositions).
+bool holdsPrecisePositions(const XmlElement* points) {
+  const std::string* type = points ? points->attribute("type") : nullptr;
+  return type != nullptr && *type == "Float64";
+}
+
+// The file's points as a TraceSet keeps them: `high`, and for precise positions `low`.
+struct FilePositions {
+  std::vector<glm::vec3> high, low;
+
+  bool same(std::size_t a, std::size_t b) const {
+    return high[a] == high[b] && (low.empty() || low[a] == low[b]);
+  }
+};
+
+FilePositions readPositions(const VtkXmlFile& file, const XmlElement* array,
+                            std::uint64_t pointCount) {
+  if (pointCount == 0) return {};
   if (array == nullptr) file.fail("<Points> has no DataArray");
-  const std::vector<float> xyz = file.floats(*array, pointCount, 3, "Points");
-  std::vector<glm::vec3> positions(xyz.size() / 3);
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    positions[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) ||
-        !std::isfinite(positions[i].z)) {
-      file.fail(fmt::format("point {} has a non-finite position ({}, {}, {})", i, positions[i].x,
-                            positions[i].y, positions[i].z));
+  FilePositions positions;
+  if (holdsPrecisePositions(array)) {
+    const std::vector<double> xyz = file.doubles(*array, pointCount, 3, "Points");
+    positions.high.resize(xyz.size() / 3);
+    positions.low.resize(xyz.size() / 3);
+    for (std::size_t i = 0; i < positions.high.size(); ++i) {
+      const flow::SplitPosition split =
+          flow::splitPosition({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+      positions.high[i] = split.high;
+      positions.low[i] = split.low;
     }
+  } else {
+    const std::vector<float> xyz = file.floats(*array, pointCount, 3, "Points");
+    positions.high.resize(xyz.size() / 3);
+    for (std::size_t i = 0; i < positions.high.size(); ++i)
+      positions.high[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  }
+  // A finite high part has a finite low part.
+  for (std::size_t i = 0; i < positions.high.size(); ++i) {
+    const glm::vec3 p = positions.high[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      file.fail(fmt::format("point {} has a non-finite position ({}, {}, {})", i, p.x, p.y, p.z));
   }
   return positions;
 }
@@ -174,19 +206,19 @@ std::vector<std::int32_t> readLineInts(const VtkXmlFile& file, const XmlElement&
 // The writer stores a trace that ends at its seed as a 2-point line repeating the point (see
 // vtp_writer.hpp): such a line is one point.
 std::uint32_t storedPoints(std::int64_t begin, std::int64_t end, const Lines& lines,
-                           const std::vector<glm::vec3>& positions,
-                           const std::vector<float>& times) {
+                           const FilePositions& positions, const std::vector<float>& times) {
   const std::int64_t count = end - begin;
   if (count != 2) return static_cast<std::uint32_t>(count);
   const auto a = static_cast<std::size_t>(lines.connectivity[static_cast<std::size_t>(begin)]);
   const auto b = static_cast<std::size_t>(lines.connectivity[static_cast<std::size_t>(begin) + 1]);
   const bool sameTime = times.empty() || times[a] == times[b];
-  return positions[a] == positions[b] && sameTime ? 1 : 2;
+  return positions.same(a, b) && sameTime ? 1 : 2;
 }
 
 // Like the trace command's check of --count and --steps: the traces must fit in 3/4 of memory.
-void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t points) {
-  const double bytes = double(points) * double(flow::TraceSet::bytesPerPoint(0, false));
+void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t points, bool precisePositions) {
+  const double bytes =
+      double(points) * double(flow::TraceSet::bytesPerPoint(0, false, precisePositions));
   const double memory = physicalMemoryBytes();
   if (memory > 0 && bytes > kTraceMemoryShare * memory)
     file.fail(fmt::format("its {} points need {:.1f} GiB, more than 3/4 of this machine's {:.1f} "
@@ -202,13 +234,15 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
   const PieceCounts counts = countsOf(file, piece);
   const XmlElement* pointData = piece.child("PointData");
   const XmlElement* vectorsArray = vectorArray(file, pointData);
+  const XmlElement* positionArray = pointsDataArray(piece);
 
   flow::TraceSet traces;
   if (vectorsArray != nullptr) traces.vectorName = *vectorsArray->attribute("Name");
+  traces.precisePositions = holdsPrecisePositions(positionArray);
   if (counts.lines == 0) return traces;
 
   const Lines lines = readLines(file, piece, counts);
-  const std::vector<glm::vec3> positions = readPositions(file, piece, counts.points);
+  const FilePositions positions = readPositions(file, positionArray, counts.points);
   const XmlElement* timeArray = pointData ? pointData->dataArray("IntegrationTime") : nullptr;
   const std::vector<float> times =
       timeArray ? file.floats(*timeArray, counts.points, 1, "PointData/IntegrationTime")
@@ -227,10 +261,11 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
     traces.offsets[line + 1] =
         traces.offsets[line] + storedPoints(begin, lines.ends[line], lines, positions, times);
   }
-  checkFitsInMemory(file, traces.pointCount());
+  checkFitsInMemory(file, traces.pointCount(), traces.precisePositions);
 
   const std::uint64_t points = traces.pointCount();
   traces.positions.resize(points);
+  traces.positionsLow.resize(traces.precisePositions ? points : 0);
   traces.times.assign(points, 0.0f);
   traces.vectors.assign(points, glm::vec3(0.0f));
   for (std::size_t line = 0; line < lineCount; ++line) {
@@ -239,7 +274,8 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
     for (std::uint64_t p = 0; p < traces.pointCount(line); ++p) {
       const auto id = static_cast<std::size_t>(lines.connectivity[begin + p]);
       const std::uint64_t to = traces.offsets[line] + p;
-      traces.positions[to] = positions[id];
+      traces.positions[to] = positions.high[id];
+      if (traces.precisePositions) traces.positionsLow[to] = positions.low[id];
       if (!times.empty()) traces.times[to] = times[id];
       if (!vectors.empty()) traces.vectors[to] = vectors[id];
       backward = backward || traces.times[to] < 0.0f;

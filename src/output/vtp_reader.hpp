@@ -4,7 +4,8 @@
 // compressed with zlib or LZ4.
 //
 // Mapping (one polyline of the file's <Lines> = one line of the TraceSet, in file order):
-// - positions from <Points>, gathered through the lines' connectivity;
+// - positions from <Points>, gathered through the lines' connectivity; Float64 points are read
+//   as precise positions (precisePositions, positions and positionsLow: splitPosition of each);
 // - times from the point array IntegrationTime (1 component), else 0; a line with a negative time
 //   is a backward line (direction -1);
 // - vectors from the point array that <PointData Vectors="..."> names (3 components), else the

@@ -11,6 +11,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -51,12 +52,13 @@ void checkPoints(const std::filesystem::path& path, const flow::TraceSet& traces
   if (traces.positions.size() != points || traces.times.size() != points ||
       traces.vectors.size() != points ||
       traces.channels.size() != points * traces.channelCount() ||
-      traces.vorticity.size() != (traces.withVorticity ? points : 0))
+      traces.vorticity.size() != (traces.withVorticity ? points : 0) ||
+      traces.positionsLow.size() != (traces.precisePositions ? points : 0))
     inconsistent(path, fmt::format("{} points but {} positions, {} times, {} vectors, {} channel "
-                                   "values, {} vorticity values",
+                                   "values, {} vorticity values, {} low parts of positions",
                                    points, traces.positions.size(), traces.times.size(),
                                    traces.vectors.size(), traces.channels.size(),
-                                   traces.vorticity.size()));
+                                   traces.vorticity.size(), traces.positionsLow.size()));
 }
 
 // One polyline of the file: points [first, first + count) of line `line` (counted along it).
@@ -74,14 +76,16 @@ std::vector<Piece> piecesOf(const flow::TraceView& traces, PeriodicLines periodi
   const flow::TraceSet& lines = traces.lines();
   const bool split = periodicLines == PeriodicLines::Split && lines.periodic.any();
   std::vector<Piece> pieces;
-  std::vector<float> scratch;
+  std::vector<double> scratch;
   for (std::uint32_t line = 0; line < lines.lineCount(); ++line) {
     const std::uint64_t count = lines.pointCount(line);
     if (count == 0) continue;
     std::uint64_t first = 0;
     if (split) {
-      const std::span<const float> p = traces.column(PointColumn::Positions, line, scratch);
-      const auto at = [&](std::uint64_t k) { return glm::vec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]); };
+      const std::span<const double> p = flow::exactPositions(traces, line, scratch);
+      const auto at = [&](std::uint64_t k) {
+        return glm::dvec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]);
+      };
       for (std::uint64_t k = 1; k < count; ++k)
         if (lines.periodic.wraps(at(k - 1), at(k))) {
           pieces.push_back({line, first, k - first, false});
@@ -107,24 +111,24 @@ PieceTable pieceTable(std::vector<Piece> pieces) {
   return table;
 }
 
-// Bytes [first, first + out.size()) of the point array `name`, `width` floats per written point,
-// whose values along a line `lineValues(line, scratch)` gives; each piece takes its part of its
-// line (a 1-point piece its values twice). Thread-safe when lineValues is. Throws
-// std::runtime_error naming the array and the point for a value that is not finite: no inf or
-// NaN is ever written (the file is then not made).
-template <typename LineValues>
+// Bytes [first, first + out.size()) of the point array `name`, `width` values of type T (float or
+// double) per written point, whose values along a line `lineValues(line, scratch)` gives; each
+// piece takes its part of its line (a 1-point piece its values twice). Thread-safe when
+// lineValues is. Throws std::runtime_error naming the array and the point for a value that is not
+// finite: no inf or NaN is ever written (the file is then not made).
+template <typename T, typename LineValues>
 void fillPoints(const PieceTable& table, std::size_t width, const LineValues& lineValues,
                 const std::string& name, std::uint64_t first, std::span<std::byte> out) {
-  const std::uint64_t pointBytes = width * sizeof(float);
+  const std::uint64_t pointBytes = width * sizeof(T);
   const std::uint64_t begin = first / pointBytes;
   const std::uint64_t end = (first + out.size() + pointBytes - 1) / pointBytes;
-  std::vector<float> values((end - begin) * width), scratch;
+  std::vector<T> values((end - begin) * width), scratch;
   std::size_t k = std::upper_bound(table.firstWritten.begin(), table.firstWritten.end(), begin) -
                   table.firstWritten.begin() - 1;
-  float* to = values.data();
+  T* to = values.data();
   for (std::uint64_t w = begin; w < end; ++k) {
     const Piece& piece = table.pieces[k];
-    const std::span<const float> line = lineValues(piece.line, scratch);
+    const std::span<const T> line = lineValues(piece.line, scratch);
     const std::uint64_t stop = std::min(end, table.firstWritten[k + 1]);
     for (; w < stop; ++w) {
       const std::uint64_t point = piece.first + std::min(w - table.firstWritten[k], piece.count - 1);
@@ -140,14 +144,17 @@ void fillPoints(const PieceTable& table, std::size_t width, const LineValues& li
               out.size());
 }
 
-// A Float32 point array of `components` values per point, made in parallel by fillPoints.
-template <typename LineValues>
+// A Float32 (T = float) or Float64 (T = double) point array of `components` values per point,
+// made in parallel by fillPoints.
+template <typename T = float, typename LineValues>
 AppendedArray pointArray(std::string name, int components, const PieceTable& table,
                          LineValues lineValues) {
+  static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
+  const std::string_view type = std::is_same_v<T, float> ? "Float32" : "Float64";
   const std::size_t width = static_cast<std::size_t>(components);
-  return {name, "Float32", components, table.points() * width * sizeof(float), {},
+  return {name, type, components, table.points() * width * sizeof(T), {},
           [&table, width, lineValues, name](std::uint64_t first, std::span<std::byte> out) {
-            fillPoints(table, width, lineValues, name, first, out);
+            fillPoints<T>(table, width, lineValues, name, first, out);
           }};
 }
 
@@ -224,26 +231,44 @@ auto rotationColumn(const flow::TraceView& traces) {
   };
 }
 
-// Positions continued across periodic faces: each wrap adds or removes one period.
+// Precise positions, joined.
+auto exactPositionColumn(const flow::TraceView& traces) {
+  return [&traces](std::uint32_t line, std::vector<double>& scratch) {
+    return flow::exactPositions(traces, line, scratch);
+  };
+}
+
+// Positions continued across periodic faces: each wrap adds or removes one period. Found from the
+// exact positions, written as T.
+template <typename T>
 auto unwrappedPositionColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
+  return [&traces](std::uint32_t line, std::vector<T>& scratch) {
     const flow::PeriodicBox& box = traces.lines().periodic;
-    std::vector<float> stored;
-    const std::span<const float> p = traces.column(PointColumn::Positions, line, stored);
+    std::vector<double> exact;
+    const std::span<const double> p = flow::exactPositions(traces, line, exact);
     scratch.assign(p.begin(), p.end());
     const glm::dvec3 period = box.upper - box.lower;
     glm::dvec3 shift(0.0);
     for (std::size_t k = 1; k < p.size() / 3; ++k) {
       for (int a = 0; a < 3; ++a) {
         if (!box.axes[a]) continue;
-        const double jump = double(p[3 * k + a]) - p[3 * (k - 1) + a];
+        const double jump = p[3 * k + a] - p[3 * (k - 1) + a];
         if (jump > 0.5 * period[a]) shift[a] -= period[a];
         if (jump < -0.5 * period[a]) shift[a] += period[a];
-        scratch[3 * k + a] = static_cast<float>(double(p[3 * k + a]) + shift[a]);
+        scratch[3 * k + a] = static_cast<T>(p[3 * k + a] + shift[a]);
       }
     }
-    return std::span<const float>(scratch);
+    return std::span<const T>(scratch);
   };
+}
+
+// <Points>: Float64 for precise positions, else Float32 as stored.
+AppendedArray pointsArray(const flow::TraceView& traces, const PieceTable& table, bool unwrap) {
+  if (traces.lines().precisePositions)
+    return unwrap ? pointArray<double>("Points", 3, table, unwrappedPositionColumn<double>(traces))
+                  : pointArray<double>("Points", 3, table, exactPositionColumn(traces));
+  return unwrap ? pointArray("Points", 3, table, unwrappedPositionColumn<float>(traces))
+                : pointArray("Points", 3, table, storedColumn(traces, PointColumn::Positions));
 }
 
 // Array names must differ; a traced vector or channel named like one of ours gets a suffix.
@@ -310,9 +335,7 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
                                 for (const Piece& piece : pieces)
                                   out.put(static_cast<std::int32_t>(lines.seedIds[piece.line]));
                               }};
-  const AppendedArray points =
-      unwrap ? pointArray("Points", 3, table, unwrappedPositionColumn(traces))
-             : pointArray("Points", 3, table, storedColumn(traces, PointColumn::Positions));
+  const AppendedArray points = pointsArray(traces, table, unwrap);
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
   const AppendedArray connectivity{

@@ -3,7 +3,9 @@
 // vtkStreamTracer's output: one polyline per line of the TraceSet (with both directions, the
 // forward lines of all seeds, then the backward ones, each starting at its seed); point arrays
 // the traced vector, the point-data channels, IntegrationTime, with vorticity Vorticity, Rotation
-// and AngularVelocity, and Speed; cell arrays ReasonForTermination and SeedIds.
+// and AngularVelocity, and Speed; cell arrays ReasonForTermination and SeedIds. <Points> is
+// Float32, or Float64 when the traces have precise positions (TraceSet::precisePositions: each
+// point written as joinPosition of its two parts).
 //
 // Periodic domains: positions are wrapped into the domain, so a line that crosses a periodic face
 // jumps by the period. By default (PeriodicLines::Split) such a line is written as several

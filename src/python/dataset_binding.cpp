@@ -208,7 +208,8 @@ void bindDataset(py::module_& m) {
       py::arg("root_blocks") = py::none(), py::arg("target_cells") = py::none(),
       py::arg("gen_seed") = py::none(),
       "Loads a FLASH, Enzo, AMReX, Gerris or ExaBricks file, or builtin:NAME (rotation, abc, "
-      "cloud; sized by levels, root_blocks, target_cells).");
+      "cloud, swirl; sized by levels, root_blocks, target_cells; or nest, sized by levels "
+      "alone).");
 
   m.def("from_arrays", &fromArrays, py::arg("corners"), py::arg("levels"), py::arg("fields"),
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),

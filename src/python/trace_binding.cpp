@@ -38,6 +38,19 @@ std::size_t lineIndex(const Traces& t, py::ssize_t i) {
   return std::size_t(i);
 }
 
+// Points [first, first + count) as an (count, 3) array: a float32 view of the stored positions,
+// or for precise positions a new float64 array of the joined ones.
+py::array pointsOf(const flow::TraceSet& lines, std::uint64_t first, std::uint64_t count,
+                   py::handle owner) {
+  if (!lines.precisePositions) return view3(lines.positions.data() + first, count, owner);
+  py::array_t<double> joined({py::ssize_t(count), py::ssize_t(3)});
+  auto* out = reinterpret_cast<glm::dvec3*>(joined.mutable_data());
+  static_assert(sizeof(glm::dvec3) == 3 * sizeof(double));
+  for (std::uint64_t i = 0; i < count; ++i)
+    out[i] = flow::joinPosition(lines.positions[first + i], lines.positionsLow[first + i]);
+  return readOnly(joined);
+}
+
 // Calls a Python progress(done, total) at most ten times a second and once at the end, from
 // whichever thread reports; its exceptions (KeyboardInterrupt) stop the trace. The tracer copies
 // the function without the GIL, so the Python object sits behind a shared pointer; the caller's
@@ -213,15 +226,16 @@ void bindTraces(py::module_& m) {
           [](py::object self, py::ssize_t i) {
             const Traces& t = self.cast<const Traces&>();
             const std::size_t line = lineIndex(t, i);
-            return view3(t.lines.positions.data() + t.lines.firstPoint(line),
-                         t.lines.pointCount(line), self);
+            return pointsOf(t.lines, t.lines.firstPoint(line), t.lines.pointCount(line), self);
           },
-          "(n_i, 3) float32 points of line i")
-      .def_property_readonly("points",
-                             [](py::object self) {
-                               const Traces& t = self.cast<const Traces&>();
-                               return view3(t.lines.positions.data(), t.lines.pointCount(), self);
-                             })
+          "(n_i, 3) points of line i: float32, float64 for precise positions")
+      .def_property_readonly(
+          "points",
+          [](py::object self) {
+            const Traces& t = self.cast<const Traces&>();
+            return pointsOf(t.lines, 0, t.lines.pointCount(), self);
+          },
+          "(M, 3) points of all lines: float32, float64 for precise positions")
       .def_property_readonly("offsets",
                              [](py::object self) {
                                const Traces& t = self.cast<const Traces&>();

@@ -47,7 +47,8 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
   tbb::parallel_for(std::size_t(0), traces.lineCount(), [&](std::size_t line) {
     flow::RegionCache cache;
     for (std::uint64_t i = traces.offsets[line]; i < traces.offsets[line + 1]; ++i) {
-      const glm::vec3 cell(volume.transform.toCellUnits(glm::dvec3(traces.positions[i])));
+      const flow::CellPoint cell =
+          flow::toCellPoint(volume.transform.toCellUnits(glm::dvec3(traces.positions[i])));
       colour.values[i] = flow::sampleScalar(volume, scalars, cell, &cache, channel.gradients)
                              .value_or(std::numeric_limits<float>::quiet_NaN());
     }

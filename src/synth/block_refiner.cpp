@@ -68,13 +68,18 @@ void validateGeneratorOptions(const GeneratorOptions& options, const std::string
   if (options.rootBlocks < 1)
     throw InputError(
         source, fmt::format("option rootBlocks is {}; it must be at least 1", options.rootBlocks));
-  const std::int64_t axisLimit = (std::int64_t(1) << bricks::kMaxExtentBits) - 1;
+  const std::int64_t axisLimit = std::int64_t(1) << bricks::kMaxExtentBits;
   if (finestCellsPerAxis(options) > axisLimit)
     throw InputError(source, fmt::format("option rootBlocks is {}; with {} levels the domain would "
                                          "span {} finest cells per axis, at most {} are supported",
                                          options.rootBlocks, options.levels,
                                          finestCellsPerAxis(options), axisLimit));
   const double rootCells = std::pow(double(options.rootBlocks), 3) * kBlockCells;
+  if (rootCells > double(std::numeric_limits<std::int32_t>::max()))
+    throw InputError(source, fmt::format("option rootBlocks is {}; the root grid of {}^3 blocks "
+                                         "would have {:.3g} cells, more than the 2^31 - 1 cells "
+                                         "supported",
+                                         options.rootBlocks, options.rootBlocks, rootCells));
   if (double(options.targetCells) < rootCells)
     throw InputError(source, fmt::format("option targetCells is {}; the root grid of {}^3 blocks "
                                          "alone has {} cells",

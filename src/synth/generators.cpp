@@ -6,7 +6,9 @@
 #include "abc_field.hpp"
 #include "block_emitter.hpp"
 #include "block_refiner.hpp"
+#include "builtin_info.hpp"
 #include "cloud_field.hpp"
+#include "nest_generator.hpp"
 #include "rotation_field.hpp"
 #include "swirl_field.hpp"
 #include "util/input_error.hpp"
@@ -27,33 +29,19 @@ BlockSampler velocitySampler(Velocity velocity) {
   };
 }
 
-// Steady flows on the unit cube in their own dimensionless units; the generator's levels count
-// from the root blocks (0) to the finest possible level (levels - 1).
-bricks::DatasetInfo builtinInfo(const GeneratorOptions& options, bool periodic) {
-  bricks::DatasetInfo info;
-  info.format = "builtin";
-  info.time = options.time;
-  info.periodic = {periodic, periodic, periodic};
-  info.periodicKnown = true;
-  info.finestFileLevel = options.levels - 1;
-  info.levelsCountDown = true;
-  info.levelName = "builtin level (0 = coarsest)";
-  return info;
-}
-
 bricks::AmrField build(const GeneratorOptions& options, const std::string& source,
                        const RefinementPriority& priority, const std::vector<std::string>& channels,
                        const BlockSampler& sampler, bool periodic) {
   const std::vector<Block> leaves = refineBlocks(options, source, priority);
   bricks::AmrField field =
       emitCells(leaves, generatorTransform(options), channels, sampler, source);
-  field.setInfo(builtinInfo(options, periodic));
+  field.setInfo(builtinInfo(options.levels, options.time, periodic));
   return field;
 }
 
 }  // namespace
 
-std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud", "swirl"}; }
+std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud", "swirl", "nest"}; }
 
 bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options) {
   const std::string source = fmt::format("builtin:{}", kind);
@@ -86,6 +74,12 @@ bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options
           }
         },
         false);
+  }
+  if (kind == "nest") {
+    NestOptions nest;
+    nest.levels = options.levels;
+    nest.time = options.time;
+    return generateNest(nest);
   }
   throw InputError(source, fmt::format("unknown generator kind '{}' (kinds: {})", kind,
                                        fmt::join(generatorKinds(), ", ")));

@@ -15,7 +15,7 @@
 namespace amrstream::synth {
 
 struct GeneratorOptions {
-  int levels = 5;                       // number of AMR levels (1 = uniform grid), at most 8
+  int levels = 5;                       // AMR levels (1 = uniform grid), at most 8 (nest 30)
   int rootBlocks = 4;                   // root blocks per axis (each 8^3 coarsest cells)
   std::size_t targetCells = 1'000'000;  // refinement stops before the cell count passes this
   std::uint64_t seed = 1;               // random choices (filament placement, ...)
@@ -26,8 +26,11 @@ struct GeneratorOptions {
 // velx vely velz), "abc" (Arnold-Beltrami-Childress flow, velx vely velz), "cloud" (magnetised
 // filament cloud: dens, magx magy magz), "swirl" (unsteady: a pulsing rotation with a vertical
 // drift at options.time, refined around a feature the flow carries, so refinement moves between
-// times; velx vely velz temp; swirl_field.hpp). Throws InputError naming the kind and listing the
-// kinds. DatasetInfo: format "builtin", time options.time (0 for the steady kinds), units unknown (dimensionless), periodic on every axis for
+// times; velx vely velz temp; swirl_field.hpp), "nest" (generateNest() with options.levels and
+// options.time and its other defaults, the other options unused: a deep nest of cubes about an
+// off-centre point with a spiral flow about it; velx vely velz; nest_generator.hpp). Throws
+// InputError naming the kind and listing the kinds. DatasetInfo: format "builtin", time
+// options.time (0 for the steady kinds), units unknown (dimensionless), periodic on every axis for
 // abc (one full period over the unit cube) and on none for the others, levels numbered 0 = the
 // root blocks' (coarsest) level up to levels - 1.
 bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options);

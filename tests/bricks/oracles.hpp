@@ -33,6 +33,10 @@ bricks::AmrField levelJumpOfThree();
 // Exact check on a voxel grid of half-finest-cell voxels: regions are disjoint, tile the union
 // of the domains, list exactly the bricks whose domains cover them and the right finest width;
 // the tree's leaves are exactly the regions' boxes and the empty space.
+// The region containing p (cell units), located on the region lattice; -1 for none or a point
+// that is not finite.
+std::int32_t locateCellUnits(const bricks::RegionSet& regions, glm::vec3 p);
+
 ::testing::AssertionResult regionsAreValid(const std::vector<shared::Brick>& bricks,
                                            const bricks::RegionSet& regions);
 

@@ -25,7 +25,7 @@ RegionSet checkLayout(const bricks::AmrField& field, int maxSide, std::uint64_t 
 }
 
 std::vector<std::uint32_t> bricksAt(const RegionSet& regions, glm::vec3 p) {
-  const std::int32_t r = regions.locate(p);
+  const std::int32_t r = locateCellUnits(regions, p);
   if (r < 0) return {};
   const shared::Region& region = regions.regions[r];
   return {regions.regionBricks.begin() + region.brickOffset,
@@ -33,7 +33,7 @@ std::vector<std::uint32_t> bricksAt(const RegionSet& regions, glm::vec3 p) {
 }
 
 float finestWidthAt(const RegionSet& regions, glm::vec3 p) {
-  const std::int32_t r = regions.locate(p);
+  const std::int32_t r = locateCellUnits(regions, p);
   return r < 0 ? -1.0f : regions.regions[r].finestCellWidth;
 }
 
@@ -42,12 +42,12 @@ TEST(BuildRegions, SingleCellIsOneRegion) {
   const RegionSet regions = checkLayout(field, 8, 1);
   ASSERT_EQ(regions.regions.size(), 1u);
   ASSERT_EQ(regions.tree.size(), 1u);
-  EXPECT_EQ(regions.lower, glm::vec3(-6, 6, 10));
-  EXPECT_EQ(regions.upper, glm::vec3(2, 14, 18));
+  EXPECT_EQ(regions.lower, glm::ivec3(-12, 12, 20));  // the region lattice: doubled
+  EXPECT_EQ(regions.upper, glm::ivec3(4, 28, 36));
   EXPECT_EQ(regions.regions[0].finestCellWidth, 4.0f);
-  EXPECT_EQ(regions.locate({-6, 6, 10}), 0);
-  EXPECT_EQ(regions.locate({1.99f, 13.99f, 17.99f}), 0);
-  EXPECT_EQ(regions.locate({2, 10, 14}), -1);  // the upper face is outside
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-6, 6, 10}), 0);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{1.99f, 13.99f, 17.99f}), 0);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{2, 10, 14}), -1);  // the upper face is outside
 }
 
 TEST(BuildRegions, LevelJumpOfThreeAcrossAFace) {
@@ -61,8 +61,8 @@ TEST(BuildRegions, LevelJumpOfThreeAcrossAFace) {
   EXPECT_EQ(finestWidthAt(regions, {7.5f, 4, 4}), 1.0f);
   EXPECT_EQ(finestWidthAt(regions, {7.25f, 4, 4}), 8.0f);
   EXPECT_EQ(bricksAt(regions, {12, 4, 4}).size(), 1u);
-  EXPECT_EQ(regions.locate({16.5f, 4, 4}), -1);
-  EXPECT_EQ(regions.locate({14, 10, 4}), -1);  // above the fine block, outside all domains
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{16.5f, 4, 4}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{14, 10, 4}), -1);  // above the fine block, outside all domains
 }
 
 TEST(BuildRegions, FineCellsOnTheDomainBoundary) {
@@ -76,12 +76,12 @@ TEST(BuildRegions, FineCellsOnTheDomainBoundary) {
         levels.push_back(0);
       }
   const RegionSet regions = checkLayout(makeField(lowers, levels), 8, 3, 2000);
-  EXPECT_EQ(regions.lower, glm::vec3(-0.5f, -2, -2));  // the coarse cell pads y and z by 2
-  EXPECT_EQ(regions.upper, glm::vec3(10, 6, 6));
-  EXPECT_GE(regions.locate({-0.5f, 0, 0}), 0);  // the root box's lower face is inside
-  EXPECT_EQ(regions.locate({-0.5f, 0, 0}), regions.locate({-0.25f, 0.25f, 0.25f}));
-  EXPECT_EQ(regions.locate({-0.5f, -1, 0}), -1);  // in the root box but in no domain
-  EXPECT_EQ(regions.locate({10, 1, 1}), -1);
+  EXPECT_EQ(regions.lower, glm::ivec3(-1, -4, -4));  // the coarse cell pads y and z by 2
+  EXPECT_EQ(regions.upper, glm::ivec3(20, 12, 12));
+  EXPECT_GE(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}), 0);  // the root box's lower face is inside
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}), locateCellUnits(regions, glm::vec3{-0.25f, 0.25f, 0.25f}));
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, -1, 0}), -1);  // in the root box but in no domain
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{10, 1, 1}), -1);
 }
 
 TEST(BuildRegions, HoleLeavesEmptySpace) {
@@ -97,14 +97,14 @@ TEST(BuildRegions, HoleLeavesEmptySpace) {
   const auto field = makeField(lowers, std::vector<std::uint8_t>(lowers.size(), 0));
   for (const int maxSide : {1, 2, 5}) {
     const RegionSet regions = checkLayout(field, maxSide, 4, 2000);
-    EXPECT_EQ(regions.locate({2.5f, 2.5f, 2.5f}), -1);
-    EXPECT_EQ(regions.locate({1.5f, 1.5f, 1.5f}), -1);
-    EXPECT_GE(regions.locate({1.49f, 2.5f, 2.5f}), 0);
+    EXPECT_EQ(locateCellUnits(regions, glm::vec3{2.5f, 2.5f, 2.5f}), -1);
+    EXPECT_EQ(locateCellUnits(regions, glm::vec3{1.5f, 1.5f, 1.5f}), -1);
+    EXPECT_GE(locateCellUnits(regions, glm::vec3{1.49f, 2.5f, 2.5f}), 0);
   }
   // Two clusters far apart: the gap between them is in no region.
   const auto apart = makeField({{0, 0, 0}, {64, 0, 0}, {64, 64, 64}}, {3, 3, 2});
   const RegionSet regions = checkLayout(apart, 8, 5, 2000);
-  EXPECT_EQ(regions.locate({32, 4, 4}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{32, 4, 4}), -1);
 }
 
 TEST(BuildRegions, RandomLayoutsTileTheDomains) {
@@ -150,28 +150,37 @@ TEST(BuildRegions, FarApartBricksInAHugeBox) {
   const RegionSet regions = buildRegions(set.bricks);
   EXPECT_TRUE(
       locateMatchesBruteForce(set.bricks, regions, probePoints(set.bricks, regions, 6, 4000)));
-  EXPECT_EQ(regions.locate({1000, 1000, 1000}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{1000, 1000, 1000}), -1);
 }
 
-TEST(BuildRegions, RejectsDomainsBeyondExactFloats) {
-  const shared::Brick inRange{{(1 << 23) - 2, 0, 0}, 0, {1, 1, 1}, 0};
-  EXPECT_NO_THROW(buildRegions({inRange}));
-  const shared::Brick beyond{{1 << 23, 0, 0}, 0, {1, 1, 1}, 0};
+TEST(BuildRegions, LatticeFitsThirtyTwoBitsOrIsRefused) {
+  // Doubled coordinates: a corner at 2^30 - 2 pads to just under 2^31.
+  const shared::Brick inRange{{(1 << 30) - 2, 0, 0}, 0, {1, 1, 1}, 0};
+  const RegionSet near = buildRegions({inRange});
+  EXPECT_EQ(near.upper.x, (1 << 30) * 2 - 1);
+  EXPECT_EQ(locateCellUnits(near, glm::vec3{0, 0, 0}), -1);
+  const shared::Brick beyond{{1 << 30, 0, 0}, 0, {1, 1, 1}, 0};
   EXPECT_THROW(buildRegions({beyond}), std::invalid_argument);
   const shared::Brick farBelow{{-(1 << 30), 0, 0}, 4, {1, 1, 1}, 0};
   EXPECT_THROW(buildRegions({farBelow}), std::invalid_argument);
+  // Clipped to a domain, a periodic image a period away keeps the part that reaches in.
+  const shared::Brick image{{1 << 29, 0, 0}, 28, {2, 1, 1}, 0};
+  const bricks::CellBox domain{{-(1 << 29), 0, 0}, {1 << 29, 1 << 28, 1 << 28}};
+  const RegionSet clipped = buildRegions({image}, domain);
+  EXPECT_EQ(clipped.lower.x, 2 * (1 << 29) - (1 << 28));
+  EXPECT_EQ(clipped.upper.x, 2 * (1 << 29) + (1 << 28));
 }
 
 TEST(BuildRegions, NoBricksAndBadPointsLocateNothing) {
   const RegionSet empty = buildRegions({});
-  EXPECT_EQ(empty.locate({0, 0, 0}), -1);
+  EXPECT_EQ(locateCellUnits(empty, glm::vec3{0, 0, 0}), -1);
   EXPECT_TRUE(empty.regions.empty());
 
   const RegionSet regions = buildRegions(buildBricks(makeField({{0, 0, 0}}, {1})).bricks);
-  EXPECT_EQ(regions.locate({NAN, 0.5f, 0.5f}), -1);
-  EXPECT_EQ(regions.locate({INFINITY, 0.5f, 0.5f}), -1);
-  EXPECT_EQ(regions.locate({-1e30f, 0.5f, 0.5f}), -1);
-  EXPECT_EQ(regions.locate({0.5f, 0.5f, 0.5f}), 0);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{NAN, 0.5f, 0.5f}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{INFINITY, 0.5f, 0.5f}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-1e30f, 0.5f, 0.5f}), -1);
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{0.5f, 0.5f, 0.5f}), 0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include "flow/cell_point.hpp"
 #include "oracles.hpp"
 
 namespace amrstream::testing {
@@ -34,8 +35,10 @@ bool containsPoint(const CellBox& doubled, const double (&p2)[3]) {
          p2[1] < doubled.upper.y && p2[2] >= doubled.lower.z && p2[2] < doubled.upper.z;
 }
 
-CellBox doubledBox(glm::vec3 lower, glm::vec3 upper) {
-  return {glm::ivec3(2.0f * lower), glm::ivec3(2.0f * upper)};
+glm::vec3 cellUnits(glm::ivec3 lattice) { return 0.5f * glm::vec3(lattice); }
+
+CellBox latticeBox(glm::ivec3 lower, glm::ivec3 upper) {
+  return {lower, upper};
 }
 
 // Half-finest-cell voxels over a box in doubled coordinates.
@@ -89,15 +92,14 @@ float finestWidth(const std::vector<shared::Brick>& bricks, const std::vector<st
         return AssertionFailure() << "leaf " << index << " names region " << node.child;
       regionSeen[node.child] = 1;
       const shared::Region& r = regions.regions[node.child];
-      const CellBox rb = doubledBox(r.lower, r.upper);
+      const CellBox rb = latticeBox(r.lower, r.upper);
       if (rb.lower != box.lower || rb.upper != box.upper)
         return AssertionFailure() << "region " << node.child << " differs from its leaf's box";
       continue;
     }
     const int a = int(node.axis);
-    const int split = int(2.0f * node.split);
-    if (a > 2 || float(split) != 2.0f * node.split || split <= box.lower[a] ||
-        split >= box.upper[a])
+    const int split = node.split;
+    if (a > 2 || split <= box.lower[a] || split >= box.upper[a])
       return AssertionFailure() << "node " << index << " has a bad axis or split";
     CellBox lower = box, upper = box;
     lower.upper[a] = split;
@@ -139,11 +141,16 @@ float finestWidth(const std::vector<shared::Brick>& bricks, const std::vector<st
 
 }  // namespace
 
+std::int32_t locateCellUnits(const bricks::RegionSet& regions, glm::vec3 p) {
+  const flow::CellPoint point(p);
+  return flow::isNear(point) ? regions.locate(flow::latticeOf(point)) : -1;
+}
+
 ::testing::AssertionResult regionsAreValid(const std::vector<shared::Brick>& bricks,
                                            const bricks::RegionSet& regions) {
   const CellBox root = unionOfDomains(bricks);
-  if (doubledBox(regions.lower, regions.upper).lower != root.lower ||
-      doubledBox(regions.lower, regions.upper).upper != root.upper)
+  if (latticeBox(regions.lower, regions.upper).lower != root.lower ||
+      latticeBox(regions.lower, regions.upper).upper != root.upper)
     return AssertionFailure() << "root box differs from the bounds of the domains";
   const VoxelGrid grid(root);
   std::vector<int> cover(grid.size(), 0), owner(grid.size(), -1);
@@ -152,9 +159,8 @@ float finestWidth(const std::vector<shared::Brick>& bricks, const std::vector<st
 
   for (std::size_t r = 0; r < regions.regions.size(); ++r) {
     const shared::Region& region = regions.regions[r];
-    const CellBox box = doubledBox(region.lower, region.upper);
-    if (glm::vec3(box.lower) != 2.0f * region.lower ||
-        glm::vec3(box.upper) != 2.0f * region.upper || !contains(root, box) ||
+    const CellBox box = latticeBox(region.lower, region.upper);
+    if (!contains(root, box) ||
         glm::any(glm::lessThanEqual(box.upper, box.lower)))
       return AssertionFailure() << "region " << r << " has a bad box";
     if (region.brickCount == 0 ||
@@ -194,7 +200,7 @@ float finestWidth(const std::vector<shared::Brick>& bricks, const std::vector<st
   if (::testing::AssertionResult formed = treeIsWellFormed(regions); !formed) return formed;
   std::vector<CellBox> regionBoxes, domains;
   for (const shared::Region& r : regions.regions)
-    regionBoxes.push_back(doubledBox(r.lower, r.upper));
+    regionBoxes.push_back(latticeBox(r.lower, r.upper));
   for (const shared::Brick& b : bricks) domains.push_back(bricks::brickDomainDoubled(b));
   for (const glm::vec3 p : points) {
     const double p2[3] = {2.0 * p.x, 2.0 * p.y, 2.0 * p.z};
@@ -205,7 +211,7 @@ float finestWidth(const std::vector<shared::Brick>& bricks, const std::vector<st
         return AssertionFailure() << "point in regions " << expected << " and " << r;
       expected = std::int32_t(r);
     }
-    const std::int32_t found = regions.locate(p);
+    const std::int32_t found = locateCellUnits(regions, p);
     if (found != expected)
       return AssertionFailure() << "locate(" << p.x << "," << p.y << "," << p.z << ") = " << found
                                 << ", brute force " << expected;
@@ -235,14 +241,15 @@ std::vector<glm::vec3> probePoints(const std::vector<shared::Brick>& bricks,
   const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   std::vector<glm::vec3> points;
   for (int corner = 0; corner < 8; ++corner)
-    points.push_back(glm::vec3(corner & 1 ? regions.upper.x : regions.lower.x,
-                               corner & 2 ? regions.upper.y : regions.lower.y,
-                               corner & 4 ? regions.upper.z : regions.lower.z));
+    points.push_back(cellUnits(glm::ivec3(corner & 1 ? regions.upper.x : regions.lower.x,
+                                          corner & 2 ? regions.upper.y : regions.lower.y,
+                                          corner & 4 ? regions.upper.z : regions.lower.z)));
+  const glm::vec3 rootLower = cellUnits(regions.lower), rootUpper = cellUnits(regions.upper);
   for (int a = 0; a < 3; ++a) {  // centres of the root box's lower and upper faces
-    glm::vec3 p = 0.5f * (regions.lower + regions.upper);
-    p[a] = regions.lower[a];
+    glm::vec3 p = 0.5f * (rootLower + rootUpper);
+    p[a] = rootLower[a];
     points.push_back(p);
-    p[a] = regions.upper[a];
+    p[a] = rootUpper[a];
     points.push_back(p);
   }
   for (int i = 0; i < count / 4 && !bricks.empty(); ++i) {
@@ -258,17 +265,16 @@ std::vector<glm::vec3> probePoints(const std::vector<shared::Brick>& bricks,
   }
   for (int i = 0; i < count / 8 && !regions.regions.empty(); ++i) {
     const shared::Region& r = regions.regions[pick(0, int(regions.regions.size()) - 1)];
-    points.push_back(r.lower);
-    points.push_back(r.upper);
+    points.push_back(cellUnits(r.lower));
+    points.push_back(cellUnits(r.upper));
   }
-  const glm::ivec3 lo4 = glm::ivec3(4.0f * regions.lower), hi4 = glm::ivec3(4.0f * regions.upper);
+  const glm::ivec3 lo4 = 2 * regions.lower, hi4 = 2 * regions.upper;
   for (int i = 0; i < count / 2; ++i)  // quarter-cell points in and around the root box
     points.push_back(0.25f * glm::vec3(pick(lo4.x - 4, hi4.x + 4), pick(lo4.y - 4, hi4.y + 4),
                                        pick(lo4.z - 4, hi4.z + 4)));
   std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
   for (int i = 0; i < count / 8; ++i)
-    points.push_back(regions.lower +
-                     (regions.upper - regions.lower) * glm::vec3(unit(rng), unit(rng), unit(rng)));
+    points.push_back(rootLower + (rootUpper - rootLower) * glm::vec3(unit(rng), unit(rng), unit(rng)));
   return points;
 }
 

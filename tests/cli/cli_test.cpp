@@ -64,6 +64,28 @@ TEST_F(Cli, GenWritesExaFilesThatInfoAndTraceRead) {
   EXPECT_THAT(r.output, HasSubstr("seeds      2 from"));
 }
 
+// gen nest goes past the other kinds' 8 levels, and each kind refuses the other's sizes.
+TEST_F(Cli, GenNestWritesDeepLevelsAndKindsRefuseEachOthersSizes) {
+  Outcome r = run("gen nest --levels 14 --root-cells 7 --out " + path("nest"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("builtin:nest: 6,167 cells, levels 0..13"));
+  r = run("info " + path("nest.exa"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("levels     14 used"));
+  EXPECT_THAT(r.output, HasSubstr("[57344,57344,57344]"));
+
+  r = run("gen rotation --block-cells 8 --out " + path("x"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--block-cells: sizes kind nest only, not rotation"));
+  r = run("gen nest --root-blocks 2 --out " + path("x"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--root-blocks: does not apply to kind nest"));
+  r = run("gen nest --block-cells 9 --out " + path("x"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("option blockCells is 9; it must be even"));
+  EXPECT_FALSE(fs::exists(path("x.exa")));
+}
+
 TEST_F(Cli, MissingInputFailsNamingTheFile) {
   const Outcome r = run("trace " + path("nothing.exa") + " --out " + path("t.vtp"));
   EXPECT_EQ(r.status, 2);

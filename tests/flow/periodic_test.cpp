@@ -74,11 +74,13 @@ TEST(Periodic, WrapMovesPointsByWholePeriodsOntoTheHalfOpenDomain) {
   const VectorVolume volume =
       buildVectorVolume(testing::randomAmr(1, layout), {{"vx", "vy", "vz"}, "v"},
                         testing::periodicVolume(flow::PeriodicAxes{true, false, false}));
-  EXPECT_EQ(wrapPeriodic(volume, {8.25f, 1.0f, 1.0f}), glm::vec3(0.25f, 1.0f, 1.0f));
-  EXPECT_EQ(wrapPeriodic(volume, {-0.5f, 1.0f, 1.0f}), glm::vec3(7.5f, 1.0f, 1.0f));
-  EXPECT_EQ(wrapPeriodic(volume, {8.0f, 5.0f, -1.0f}), glm::vec3(0.0f, 5.0f, -1.0f));
-  // Just below the lower face rounds onto the upper, open face: it belongs to the lower one.
-  EXPECT_EQ(wrapPeriodic(volume, {-1e-7f, 1.0f, 1.0f}).x, 0.0f);
+  const auto wrapped = [&](glm::vec3 p) { return toCellUnits(wrapPeriodic(volume, p)); };
+  EXPECT_EQ(wrapped({8.25f, 1.0f, 1.0f}), glm::dvec3(0.25, 1.0, 1.0));
+  EXPECT_EQ(wrapped({-0.5f, 1.0f, 1.0f}), glm::dvec3(7.5, 1.0, 1.0));
+  EXPECT_EQ(wrapped({8.0f, 5.0f, -1.0f}), glm::dvec3(0.0, 5.0, -1.0));
+  // Just below the lower face: the anchor moves by the period, so the point stays exact, inside
+  // the half-open domain.
+  EXPECT_EQ(wrapped({-1e-7f, 1.0f, 1.0f}).x, 8.0 + double(-1e-7f));
 }
 
 // RK4 in double on the analytic ABC field, in the generator's coordinates (unit cube).

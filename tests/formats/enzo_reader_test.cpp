@@ -381,7 +381,7 @@ TEST_F(EnzoSyntheticTest, IndicesNearIntMinAndMaxAreRefusedWithoutOverflow) {
       "GridDimension     = 2147483647 10 10 \nGridStartIndex    = 0 3 3 \nGridEndIndex      = "
       "2147483646 6 6");
   expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
-                 "grid 1 has 2147483647 active zones along axis x (expected 1 to 2097152)");
+                 "grid 1 has 2147483647 active zones along axis x (expected 1 to 1073741824)");
 }
 
 // The grid table claims a 2^20-cubed root grid: refused before anything is allocated for it.

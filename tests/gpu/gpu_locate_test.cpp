@@ -20,8 +20,9 @@ std::int32_t bruteForceLocate(const flow::VectorVolume& volume, glm::vec3 p) {
   std::int32_t found = -1;
   for (std::size_t r = 0; r < volume.regions.regions.size(); ++r) {
     const shared::Region& region = volume.regions.regions[r];
-    if (glm::all(glm::greaterThanEqual(p, region.lower)) &&
-        glm::all(glm::lessThan(p, region.upper))) {
+    const glm::dvec3 lower = 0.5 * glm::dvec3(region.lower), upper = 0.5 * glm::dvec3(region.upper);
+    if (glm::all(glm::greaterThanEqual(glm::dvec3(p), lower)) &&
+        glm::all(glm::lessThan(glm::dvec3(p), upper))) {
       EXPECT_EQ(found, -1) << "regions overlap at " << p.x << "," << p.y << "," << p.z;
       found = std::int32_t(r);
     }
@@ -34,7 +35,8 @@ std::int32_t bruteForceLocate(const flow::VectorVolume& volume, glm::vec3 p) {
 std::vector<glm::vec3> probePoints(const flow::VectorVolume& volume) {
   std::vector<glm::vec3> points;
   for (const shared::Region& r : volume.regions.regions) {
-    const glm::vec3 lo = r.lower, hi = r.upper, mid = 0.5f * (lo + hi);
+    const glm::vec3 lo = 0.5f * glm::vec3(r.lower), hi = 0.5f * glm::vec3(r.upper),
+                    mid = 0.5f * (lo + hi);
     for (int corner = 0; corner < 8; ++corner)
       points.push_back(
           glm::mix(lo, hi, glm::vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1)));

@@ -6,7 +6,8 @@ Run with Debian's /usr/bin/python3 (python3-vtk9):
   check_vtp_with_vtk.py FILE --points N --lines M \
       [--point-array NAME:COMPONENTS]... [--cell-array NAME:COMPONENTS]... \
       [--line-lengths 3,2,5,2] [--repeated-lines 1,...] [--scalars NAME] [--vectors NAME] \
-      [--speed-of NAME] [--seed-ids] [--both-directions SEEDS] [--field-text NAME=VALUE]...
+      [--speed-of NAME] [--seed-ids] [--both-directions SEEDS] [--field-text NAME=VALUE]... \
+      [--points-type Float32|Float64] [--points-file POINTS]
 
 Fails (exit 1, one line per problem) when vtkXMLPolyDataReader reports an error or warning,
 when the counts differ, when an array is missing or has other components, when a line has fewer
@@ -17,7 +18,8 @@ that vector array, with --seed-ids, when the cell array SeedIds is not 0 .. line
 --both-directions SEEDS, when the lines are not vtkStreamTracer's BOTH layout: SeedIds 0 .. SEEDS-1
 for the forward lines (IntegrationTime >= 0), then again for the backward ones (<= 0), each line
 starting at IntegrationTime 0; with --field-text, when the FieldData string array NAME does not
-hold VALUE.
+hold VALUE; with --points-type, when VTK holds the points in another type; with --points-file,
+when the points are not exactly those of POINTS, one "x y z" line each.
 
 Lines of 0 or 1 point are reported without asking VTK for their points: vtkPolyData refuses to
 build its cell map for them ("Invalid cell size for lines") and VTK 9.1 then crashes in
@@ -33,6 +35,9 @@ try:
 except ImportError as error:
     sys.exit(f"check_vtp_with_vtk: cannot import vtk ({error}); "
              "run scripts/install_deps.sh (python3-vtk9) and use /usr/bin/python3")
+
+
+POINT_TYPES = {"Float32": vtk.VTK_FLOAT, "Float64": vtk.VTK_DOUBLE}
 
 
 def array_spec(text):
@@ -62,6 +67,9 @@ def parse_arguments():
                         help="a FieldData string array and its value")
     parser.add_argument("--both-directions", type=int, metavar="SEEDS",
                         help="lines are SEEDS forward lines, then SEEDS backward ones")
+    parser.add_argument("--points-type", choices=sorted(POINT_TYPES),
+                        help="the type VTK must hold the points in")
+    parser.add_argument("--points-file", help="the exact points, one 'x y z' line each")
     return parser.parse_args()
 
 
@@ -126,6 +134,26 @@ def check_both_directions(output, seeds):
             problems.append(f"line {line} ({'backward' if backward else 'forward'}) has "
                             f"IntegrationTime {line_times[:5]}...")
             break
+    return problems
+
+
+def check_points(output, points_type, points_file):
+    problems = []
+    points = output.GetPoints()
+    if points_type is not None:
+        found = points.GetData().GetDataTypeAsString() if points is not None else None
+        if points is None or points.GetDataType() != POINT_TYPES[points_type]:
+            problems.append(f"points held as {found!r}, expected {points_type}")
+    if points_file is not None:
+        with open(points_file) as lines:
+            expected = [tuple(float(v) for v in line.split()) for line in lines if line.strip()]
+        found = [output.GetPoint(i) for i in range(output.GetNumberOfPoints())]
+        if len(found) != len(expected):
+            problems.append(f"{len(found)} points, {points_file} has {len(expected)}")
+        for i, (point, wanted) in enumerate(zip(found, expected)):
+            if point != wanted:
+                problems.append(f"point {i} is {point!r}, expected {wanted!r}")
+                break
     return problems
 
 
@@ -224,6 +252,7 @@ def check(args):
             problems.append(f"SeedIds {values[:20]}, expected 0 .. {args.lines - 1}")
     if args.both_directions is not None:
         problems += check_both_directions(output, args.both_directions)
+    problems += check_points(output, args.points_type, args.points_file)
     for spec in args.field_text:
         name, _, value = spec.partition("=")
         field = output.GetFieldData().GetAbstractArray(name)

@@ -1,6 +1,5 @@
 #include "sample_traces.hpp"
 
-
 #include "shaders/glsl/shared/trace_codes.h"
 
 namespace amrstream::testing {
@@ -42,6 +41,30 @@ flow::TraceSet sampleTraces(const std::vector<std::uint32_t>& pointCounts, const
     }
   }
   return traces;
+}
+
+glm::dvec3 precisePosition(std::uint32_t seed, std::uint32_t point) {
+  return {0.37123456789012345 + 1e-9 * point, 0.5 - 1e-9 * point - 1e-7 * seed,
+          0.25 + 1e-11 * seed * point};
+}
+
+flow::TraceSet preciseSampleTraces(const std::vector<std::uint32_t>& pointCounts,
+                                   const char* vectorName) {
+  flow::TraceSet traces = sampleTraces(pointCounts, vectorName);
+  traces.precisePositions = true;
+  traces.positionsLow.resize(traces.pointCount());
+  for (std::uint32_t line = 0; line < pointCounts.size(); ++line)
+    for (std::uint32_t point = 0; point < pointCounts[line]; ++point) {
+      const flow::SplitPosition split = flow::splitPosition(precisePosition(line, point));
+      traces.positions[at(traces, line, point)] = split.high;
+      traces.positionsLow[at(traces, line, point)] = split.low;
+    }
+  return traces;
+}
+
+glm::dvec3 exactPosition(const flow::TraceSet& traces, std::uint64_t point) {
+  if (!traces.precisePositions) return glm::dvec3(traces.positions[point]);
+  return flow::joinPosition(traces.positions[point], traces.positionsLow[point]);
 }
 
 }  // namespace amrstream::testing

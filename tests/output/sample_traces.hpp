@@ -18,6 +18,15 @@ float sampleTime(std::uint32_t seed, std::uint32_t point);
 glm::vec3 sampleVector(std::uint32_t seed, std::uint32_t point);
 std::int32_t sampleReason(std::uint32_t seed);
 
+// A position float32 cannot resolve: the points of a line lie 1e-9 apart around 0.3712, where
+// float32 positions are 3e-8 apart.
+glm::dvec3 precisePosition(std::uint32_t seed, std::uint32_t point);
+// sampleTraces with precise positions: point p of line s split from precisePosition(s, p).
+flow::TraceSet preciseSampleTraces(const std::vector<std::uint32_t>& pointCounts,
+                                   const char* vectorName = "velocity");
+// Point i's position: joinPosition of its parts when precise, else the stored float.
+glm::dvec3 exactPosition(const flow::TraceSet& traces, std::uint64_t point);
+
 // The set write_sample_vtp writes: 4 lines of 3, 1, 5 and 2 points.
 inline const std::vector<std::uint32_t> kSamplePointCounts{3, 1, 5, 2};
 

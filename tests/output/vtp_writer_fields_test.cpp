@@ -155,5 +155,50 @@ TEST_F(VtpWriterFields, UnwrappedPeriodicLinesContinuePastTheFaces) {
   for (int i = 0; i < 5; ++i) EXPECT_FLOAT_EQ(points[i].x, expected[i]) << "point " << i;
 }
 
+// wrappingLine() with precise positions: each point moved along x by (i + 1) 1e-10, which float32
+// cannot hold.
+flow::TraceSet preciseWrappingLine() {
+  flow::TraceSet t = wrappingLine();
+  t.precisePositions = true;
+  t.positionsLow.resize(t.positions.size());
+  for (std::size_t i = 0; i < t.positions.size(); ++i) {
+    const flow::SplitPosition split =
+        flow::splitPosition(glm::dvec3(t.positions[i]) + glm::dvec3(1e-10 * double(i + 1), 0, 0));
+    t.positions[i] = split.high;
+    t.positionsLow[i] = split.low;
+  }
+  return t;
+}
+
+TEST_F(VtpWriterFields, PreciseLinesAreSplitAtTheSameWrapsWithFloat64Pieces) {
+  const flow::TraceSet t = preciseWrappingLine();
+  const VtpFile vtp = writeAndRead(t);
+  EXPECT_EQ(vtp.array("Lines", "offsets").values<std::int64_t>(),
+            (std::vector<std::int64_t>{2, 4, 6}));
+  const VtpArray& points = vtp.array("Points", "Points");
+  EXPECT_EQ(points.type(), "Float64");
+  const auto values = points.values<glm::dvec3>();
+  const std::size_t source[] = {0, 1, 2, 3, 4, 4};
+  ASSERT_EQ(values.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i)
+    EXPECT_EQ(values[i], exactPosition(t, source[i])) << "written point " << i;
+}
+
+TEST_F(VtpWriterFields, UnwrappedPreciseLinesContinuePastTheFacesInFloat64) {
+  const flow::TraceSet t = preciseWrappingLine();
+  output::VtpWriteOptions options;
+  options.periodicLines = output::PeriodicLines::Unwrapped;
+  const VtpFile vtp = writeAndRead(t, options);
+  const VtpArray& points = vtp.array("Points", "Points");
+  EXPECT_EQ(points.type(), "Float64");
+  const auto values = points.values<glm::dvec3>();
+  const double shift[] = {0.0, 0.0, 1.0, 1.0, 0.0};
+  ASSERT_EQ(values.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(values[i].x, exactPosition(t, i).x + shift[i]) << "point " << i;
+    EXPECT_EQ(values[i].y, exactPosition(t, i).y) << "point " << i;
+  }
+}
+
 }  // namespace
 }  // namespace amrstream::testing

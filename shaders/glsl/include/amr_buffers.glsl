@@ -5,6 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "../shared/amr_types.h"
+#include "cell_point.glsl"
 #include "../shared/line_state.h"
 #include "../shared/trace_codes.h"
 #include "../shared/trace_params.h"

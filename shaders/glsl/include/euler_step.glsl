@@ -2,6 +2,6 @@
 StepOutcome eulerStep(vec3 x, VectorSample s, float h, float scale) {
   precise const vec3 k1 = scale * direction(s, h);
   precise const vec3 unwrapped = x + k1;
-  const VectorSample next = sampleStage(unwrapped);
+  const VectorSample next = sampleEnd(unwrapped);
   return StepOutcome(sampleFailure(next), unwrapped, next, h, h);
 }

@@ -29,7 +29,22 @@ int sampleFailure(VectorSample s) {
   return AMRSTREAM_REASON_RUNNING;
 }
 
-VectorSample sampleStage(vec3 unwrapped) { return sampleVector(wrapPeriodic(unwrapped)); }
+// The anchor of the line being advanced: the steps work on offsets from it, and it moves only
+// between steps (cell_point.glsl).
+ivec3 lineAnchor;
+
+VectorSample sampleStage(vec3 unwrapped) {
+  return sampleVector(wrapPeriodic(lineAnchor, unwrapped), unwrapped);
+}
+
+// A step's end point, sampled where the next step starts from it: with the offset's whole cells
+// moved into the anchor (twin of normalized()).
+VectorSample sampleEnd(vec3 unwrapped) {
+  if (!isNear(unwrapped)) return sampleStage(unwrapped);
+  const vec3 whole = floor(unwrapped);
+  precise const vec3 offset = unwrapped - whole;
+  return sampleVector(wrapPeriodic(lineAnchor + ivec3(whole), offset), offset);
+}
 
 // What one step did; twin of flow::StepOutcome (src/flow/line_steps.hpp).
 struct StepOutcome {
@@ -50,9 +65,14 @@ layout(constant_id = 2) const int kIntegrator = AMRSTREAM_INTEGRATOR_RK4;
 
 // Outputs are point-major: point k of thread t is at slot k * lineCount + t, so the invocations
 // of a subgroup write one step's points to neighbouring slots. The compaction kernels gather them.
+// Positions leave in cell units, or as offsets from their regions' corners (line_state.h).
 void emitPoint(uint thread, uint k, vec3 x, float time, VectorSample s) {
   const uint slot = k * params.lineCount + thread;
-  outPositions[slot] = x;
+  const ivec3 corner = params.regionRelative != 0u && s.region >= 0
+                           ? regionCorner(regions[s.region].lower)
+                           : ivec3(0);
+  precise const vec3 position = vec3(lineAnchor - corner) + x;
+  outPositions[slot] = position;
   outTimes[slot] = time;
   outVectors[slot] = s.value;
   outRegions[slot] = s.region;
@@ -61,12 +81,13 @@ void emitPoint(uint thread, uint k, vec3 x, float time, VectorSample s) {
 void advanceLine(uint thread) {
   const LineState state = statesIn[thread];
   const float sign = state.direction;
-  precise vec3 x = state.position;
+  lineAnchor = state.anchor;
+  precise vec3 x = state.offset;
   precise float time = state.time, traceLength = state.arcLength;
   uint steps = state.steps, emitted = 0;
   // rk45's next step; the fixed-step kernels keep none, so it holds no register there.
   float nextStep = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 ? state.stepSize : 0.0;
-  VectorSample s = sampleVector(wrapPeriodic(x));
+  VectorSample s = sampleStage(x);
   if (steps == 0 && params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
 
   int reason = sampleFailure(s);
@@ -120,7 +141,7 @@ void advanceLine(uint thread) {
       if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
       precise const vec3 k4 = scale * direction(s4, h);
       unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
-      sNext = sampleStage(unwrapped);
+      sNext = sampleEnd(unwrapped);
       if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
     } else {
       const StepOutcome step = kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, h, scale)
@@ -133,7 +154,6 @@ void advanceLine(uint thread) {
       nextStep = step.nextStep;
       endsOnMaxTime = endsOnMaxTime && step.step == h;
     }
-    precise const vec3 next = wrapPeriodic(unwrapped);
 
     if (params.maxLength > 0.0) {
       precise const float stepLength = length(params.spacing * (unwrapped - x));
@@ -144,13 +164,16 @@ void advanceLine(uint thread) {
       traceLength += stepLength;
     }
     time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, stepTaken);
-    x = next;
+    lineAnchor = wrapPeriodic(lineAnchor, unwrapped);
+    const vec3 whole = floor(unwrapped);
+    lineAnchor += ivec3(whole);
+    x = unwrapped - whole;
     s = sNext;
     ++steps;
     if (params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
   }
   if (params.keepHistory == 0 && reason != AMRSTREAM_REASON_RUNNING)
     emitPoint(thread, emitted++, x, time, s);  // endpoints only: the last point, written once
-  statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign, nextStep);
+  statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign, nextStep, lineAnchor);
   lineRounds[thread] = LineRound(state.line, emitted, steps, reason);
 }

@@ -14,11 +14,13 @@ layout(location = 0) rayPayloadEXT int locatedRegion;
 // geometry, so such a ray costs a launch and a miss.
 #define AMRSTREAM_LOCATE_EVERY_SAMPLE
 
-int locateInRegionsMasked(vec3 p, uint cullMask) {
+// The intersection shader recovers k from the ray's origin (latticeOfProbe), which is exact
+// while |k| < 2^23: the backend refuses domains wider than 2^22 finest cells.
+int locateInRegionsMasked(ivec3 k, uint cullMask) {
   locatedRegion = -1;
-  traceRayEXT(regionScene, gl_RayFlagsTerminateOnFirstHitEXT, cullMask, 0, 0, 0, p, 0.0,
-              kProbeDirection, kProbeTMax, 0);
+  traceRayEXT(regionScene, gl_RayFlagsTerminateOnFirstHitEXT, cullMask, 0, 0, 0, probeOrigin(k),
+              0.0, kProbeDirection, kProbeTMax, 0);
   return locatedRegion;
 }
 
-int locateInRegions(vec3 p) { return locateInRegionsMasked(p, 0xFFu); }
+int locateInRegions(ivec3 k) { return locateInRegionsMasked(k, 0xFFu); }

@@ -5,7 +5,7 @@
 // found (-1 for none) goes to outRegions and the vector to outVectors, NaN where the sample is
 // located but invalid.
 void probeLocation(uint pointIndex) {
-  const VectorSample s = sampleVector(probePoints[pointIndex]);
+  const VectorSample s = sampleVector(ivec3(0), probePoints[pointIndex]);
   outRegions[pointIndex] = s.located ? s.region : -1;
   outVectors[pointIndex] = s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
 }

@@ -4,9 +4,10 @@
 
 layout(set = 0, binding = AMRSTREAM_LOCATE_BINDING) uniform accelerationStructureEXT regionScene;
 
-int locateInRegions(vec3 p) {
+int locateInRegions(ivec3 k) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, regionScene, gl_RayFlagsNoneEXT, 0xFF, p, 0.0, kProbeDirection,
+  rayQueryInitializeEXT(query, regionScene, gl_RayFlagsNoneEXT, 0xFF, probeOrigin(k), 0.0,
+                        kProbeDirection,
                         kProbeTMax);
   int found = -1;
   while (rayQueryProceedEXT(query)) {
@@ -14,7 +15,7 @@ int locateInRegions(vec3 p) {
       continue;
     const uint id = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
                     uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false));
-    if (regionContains(id, p)) {
+    if (regionContains(id, k)) {
       found = int(id);
       rayQueryTerminateEXT(query);
     }

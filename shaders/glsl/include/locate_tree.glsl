@@ -8,11 +8,11 @@
 #endif
 layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
 
-int locateInRegions(vec3 p) {
+int locateInRegions(ivec3 k) {
   uint node = 0;
   while (tree[node].axis != AMRSTREAM_TREE_LEAF) {
     const RegionTreeNode n = tree[node];
-    node = p[n.axis] < n.split ? n.child : n.child + 1;
+    node = k[n.axis] < n.split ? n.child : n.child + 1;
   }
   return tree[node].child == AMRSTREAM_NO_REGION ? -1 : int(tree[node].child);
 }

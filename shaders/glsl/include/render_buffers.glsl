@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "../shared/amr_types.h"
+#include "cell_point.glsl"
 #include "../shared/render_types.h"
 
 layout(scalar, set = 0, binding = 0) uniform RenderParamsBlock { RenderParams params; };

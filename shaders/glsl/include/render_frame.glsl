@@ -101,16 +101,17 @@ vec4 marchVolume(vec3 o, vec3 d, float tEnd) {
   Region region;
   for (uint i = 0; i < kMaxMarchSteps && t < tStop && result.a < 0.99; ++i) {
     const vec3 p = o + t * d;
-    if (regionId < 0 || any(lessThan(p, region.lower)) || any(greaterThanEqual(p, region.upper))) {
-      regionId = locateInRegions(p);
+    const ivec3 k = latticeOf(ivec3(0), p);  // the ray stays within the domain's box
+    if (regionId < 0 || any(lessThan(k, region.lower)) || any(greaterThanEqual(k, region.upper))) {
+      regionId = locateInRegions(k);
       if (regionId >= 0) region = regions[regionId];
     }
     const float step = (regionId >= 0 ? region.finestCellWidth : 1.0) * params.volumeStepScale;
     if (regionId >= 0) {
       float weighted;
       const float weightSum = (params.flags & AMRSTREAM_RENDER_LINEAR_VOLUME) != 0
-                                  ? reconstructScalarLinear(region, p, weighted)
-                                  : reconstructScalar(region, p, weighted);
+                                  ? reconstructScalarLinear(region, ivec3(0), p, weighted)
+                                  : reconstructScalar(region, ivec3(0), p, weighted);
       float value = weightSum > kMinWeightSum ? weighted / weightSum : 0.0;
       if ((params.flags & AMRSTREAM_RENDER_LOG_VOLUME) != 0) value = log(max(value, 1e-30)) / log(10.0);
       const float span01 = params.volumeMax - params.volumeMin;

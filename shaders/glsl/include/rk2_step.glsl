@@ -9,7 +9,7 @@ StepOutcome rk2Step(vec3 x, VectorSample s, float h, float scale) {
   precise const vec3 k2 = scale * direction(s2, h);
   precise const vec3 unwrapped = x + k2;
   result.unwrapped = unwrapped;
-  result.next = sampleStage(unwrapped);
+  result.next = sampleEnd(unwrapped);
   result.reason = sampleFailure(result.next);
   return result;
 }

@@ -64,7 +64,7 @@ StepOutcome dormandPrinceStep(vec3 x, VectorSample s, float h0, float scale) {
                                       AMRSTREAM_DP_B4 * k4 + AMRSTREAM_DP_B5 * k5 +
                                       AMRSTREAM_DP_B6 * k6;
     precise const vec3 unwrapped = x + displacement;
-    const VectorSample end = sampleStage(unwrapped);
+    const VectorSample end = sampleEnd(unwrapped);
     if ((result.reason = sampleFailure(end)) != AMRSTREAM_REASON_RUNNING) return result;
     precise const vec3 k7 = scale * direction(end, h);
     precise const vec3 error = AMRSTREAM_DP_E1 * k1 + AMRSTREAM_DP_E3 * k3 +

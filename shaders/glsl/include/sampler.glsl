@@ -1,7 +1,8 @@
 // Basis-function reconstruction (docs/architecture.md, "Sampling"); twin of
 // src/flow/sampler.cpp.
-// Needs: the buffers of amr_buffers.glsl, params, and `int locateInRegions(vec3 p)` from the
-// backend's locate_*.glsl, included before this file.
+// Needs: the buffers of amr_buffers.glsl, params, and `int locateInRegions(ivec3 k)` (k on the
+// region lattice) from the backend's locate_*.glsl, included before this file. A point is an
+// anchor and an offset (cell_point.glsl).
 
 const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
@@ -45,46 +46,45 @@ struct VectorSample {
   int region;  // AMRSTREAM_NO_REGION_ID unless located
 };
 
-// p moved by whole periods into the domain along the periodic axes; twin of wrapPeriodic().
-vec3 wrapPeriodic(vec3 p) {
-  if (params.periodicAxes == 0u) return p;
-  precise vec3 q = p;
+// The anchor moved by a whole period along the periodic axes where anchor + p left the domain;
+// twin of wrapPeriodic().
+ivec3 wrapPeriodic(ivec3 anchor, vec3 p) {
+  if (params.periodicAxes == 0u || !isNear(p)) return anchor;
+  const ivec3 cell = cellOf(anchor, p);
   for (int a = 0; a < 3; ++a) {
     if ((params.periodicAxes & (1u << a)) == 0u) continue;
-    const float lower = float(params.domainLower[a]), upper = float(params.domainUpper[a]);
-    if (q[a] >= upper)
-      q[a] -= params.period[a];
-    else if (q[a] < lower)
-      q[a] += params.period[a];
-    if (q[a] >= upper) q[a] = lower;  // a point just below the lower face rounded onto the upper
+    if (cell[a] >= params.domainUpper[a])
+      anchor[a] -= params.period[a];
+    else if (cell[a] < params.domainLower[a])
+      anchor[a] += params.period[a];
   }
-  return q;
+  return anchor;
 }
 
-bool insideDomain(vec3 p) {
-  return all(greaterThanEqual(p, vec3(params.domainLower))) &&
-         all(lessThan(p, vec3(params.domainUpper)));
+// Whether lattice point k lies in the domain, [2 domainLower, 2 domainUpper) on the lattice.
+bool insideDomain(ivec3 k) {
+  return all(greaterThanEqual(k, 2 * params.domainLower)) && all(lessThan(k, 2 * params.domainUpper));
 }
-
-int locateRegion(vec3 p) { return insideDomain(p) ? locateInRegions(p) : -1; }
 
 // The region of this invocation's last sample. Consecutive samples of a trace mostly fall in the
 // same region, and regions are disjoint half-open boxes, so a point inside the domain and inside
-// this box is in this region: the test gives locateRegion()'s answer without its tree descent or
-// ray. It must come after the domain test, since a region's box may reach past the domain.
-// Specialization constant 1 turns this hint off: every sample then runs the point location.
+// this box is in this region: the test gives the point location's answer without its tree
+// descent or ray. It must come after the domain test, since a region's box may reach past the
+// domain. Specialization constant 1 turns this hint off: every sample then runs the location.
 layout(constant_id = 1) const bool kUseRegionHint = true;
 int cachedRegionId = -1;
 Region cachedRegion;
 
-VectorSample sampleVector(vec3 p) {
+VectorSample sampleVector(ivec3 anchor, vec3 p) {
   VectorSample s = VectorSample(false, false, vec3(0.0), 0.0, AMRSTREAM_NO_REGION_ID);
-  if (!insideDomain(p)) return s;
+  if (!isNear(p)) return s;
+  const ivec3 k = latticeOf(anchor, p);
+  if (!insideDomain(k)) return s;
   const bool hinted = kUseRegionHint && cachedRegionId >= 0 &&
-                      all(greaterThanEqual(p, cachedRegion.lower)) &&
-                      all(lessThan(p, cachedRegion.upper));
+                      all(greaterThanEqual(k, cachedRegion.lower)) &&
+                      all(lessThan(k, cachedRegion.upper));
 #ifdef AMRSTREAM_LOCATE_EVERY_SAMPLE  // the pipeline backend: see locate_pipeline.glsl
-  const int located = locateInRegionsMasked(p, hinted ? 0x00u : 0xFFu);
+  const int located = locateInRegionsMasked(k, hinted ? 0x00u : 0xFFu);
   if (!hinted) {
     if (located < 0) return s;
     cachedRegionId = located;
@@ -92,7 +92,7 @@ VectorSample sampleVector(vec3 p) {
   }
 #else
   if (!hinted) {
-    const int regionId = locateInRegions(p);
+    const int regionId = locateInRegions(k);
     if (regionId < 0) return s;
     cachedRegionId = regionId;
     cachedRegion = regions[regionId];
@@ -105,8 +105,8 @@ VectorSample sampleVector(vec3 p) {
 
   precise vec3 weighted;
   precise const float weightSum = params.linearInterpolant != 0u
-                                      ? reconstructVectorLinear(region, p, weighted)
-                                      : reconstructVector(region, p, weighted);
+                                      ? reconstructVectorLinear(region, anchor, p, weighted)
+                                      : reconstructVector(region, anchor, p, weighted);
   if (!(weightSum > kMinWeightSum)) return s;
   precise const vec3 value = weighted / weightSum;
   s.value = value;

@@ -1,12 +1,13 @@
 // The tent basis-function sum over one region's bricks (docs/architecture.md, "Sampling"), for any value type.
 // Include with TENT_TYPE (float or vec3), TENT_VALUE(slot) (the brick-ordered value at a slot)
 // and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers.
-// TENT_FUNCTION(region, p, weighted) returns the sum of the weights and sets `weighted` to the
-// weighted sum of the values; the sample is their quotient. With TENT_MODEL(slot, toP) defined
+// TENT_FUNCTION(region, anchor, p, weighted) returns the sum of the weights at the point
+// anchor + p (cell_point.glsl) and sets `weighted` to the weighted sum of the values; the sample
+// is their quotient. With TENT_MODEL(slot, toP) defined
 // instead of TENT_VALUE, each value is the cell's linear model at p, toP = p - c_i (the linear
 // interpolant).
 
-float TENT_FUNCTION(Region region, vec3 p, out TENT_TYPE weighted) {
+float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted) {
   // `precise` forbids fusing a*b+c into an FMA, which the CPU reference never does: both paths
   // then round the same operations (NVIDIA's compiler fuses by default).
   precise float weightSum = 0.0;
@@ -14,7 +15,7 @@ float TENT_FUNCTION(Region region, vec3 p, out TENT_TYPE weighted) {
   for (uint k = 0; k < region.brickCount; ++k) {
     const Brick brick = bricks[regionBricks[region.brickOffset + k]];
     const float width = float(1 << brick.level);
-    precise const vec3 local = (p - vec3(brick.lower)) / width - 0.5;
+    precise const vec3 local = (vec3(anchor - brick.lower) + p) / width - 0.5;
     const vec3 base = floor(local);
     precise const vec3 frac = local - base;
     const ivec3 lo = ivec3(base);

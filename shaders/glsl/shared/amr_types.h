@@ -1,5 +1,8 @@
 // Buffer structs shared by the C++ host code and the GLSL kernels (scalar block layout).
-// Coordinates are in finest-cell units; level 0 is the finest level, a level-L cell is 2^L wide.
+// Coordinates are in finest-cell units, centred on the domain (docs/architecture.md, "Positions");
+// level 0 is the finest level, a level-L cell is 2^L wide. Region boxes and tree splits are on the
+// region lattice: doubled finest-cell units, where every face of a brick's domain (padded by half
+// a cell) lies on an integer, so containment is exact integer arithmetic at any depth.
 #ifndef AMRSTREAM_SHARED_AMR_TYPES_H
 #define AMRSTREAM_SHARED_AMR_TYPES_H
 
@@ -18,20 +21,20 @@ struct Brick {
 };
 
 // An active brick region: a box in which every point lies in the domains of the same bricks.
-// The box is half-open, [lower, upper).
+// The box is half-open, [lower, upper), on the region lattice.
 struct Region {
-  vec3 lower;
+  ivec3 lower;
   uint brickOffset;  // the region's bricks are regionBricks[brickOffset .. brickOffset + brickCount)
-  vec3 upper;
+  ivec3 upper;
   uint brickCount;
   float finestCellWidth;  // width of the finest cell among the region's bricks
 };
 
 // Node of the kd-tree whose leaves are the regions (and the empty space between them).
-// Interior node: a point p goes to child if p[axis] < split, else to child + 1.
-// Leaf: axis == AMRSTREAM_TREE_LEAF and child is a region id or AMRSTREAM_NO_REGION.
+// Interior node: a point whose lattice coordinate k has k[axis] < split goes to child, else to
+// child + 1. Leaf: axis == AMRSTREAM_TREE_LEAF and child is a region id or AMRSTREAM_NO_REGION.
 struct RegionTreeNode {
-  float split;
+  int split;
   uint axis;
   uint child;
 };

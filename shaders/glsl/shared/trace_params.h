@@ -18,7 +18,7 @@ struct TraceParams {
   float physicalCellWidth;  // smallest spacing: physical width of a finest cell
   vec3 spacing;
   int stepMode;             // AMRSTREAM_STEP_*
-  vec3 period;              // domainUpper - domainLower: the period of periodic axes
+  ivec3 period;             // domainUpper - domainLower: the period of periodic axes
   uint periodicAxes;        // bit a set: axis a is periodic (positions wrap into the domain)
   float stepSize;
   uint maxSteps;
@@ -32,10 +32,11 @@ struct TraceParams {
   float toleranceSquared;   // rk45: the square of the error allowed per step, in cell widths
   float minStep;            // rk45: bounds of the adaptive step, in the units of stepSize
   float maxStep;
+  uint regionRelative;      // 1: points leave as offsets from their regions' corners (line_state.h)
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 128 && offsetof(TraceParams, period) == 64 &&
+static_assert(sizeof(TraceParams) == 132 && offsetof(TraceParams, period) == 64 &&
               offsetof(TraceParams, maxTime) == 96);
 }  // namespace amrstream::shared
 #endif

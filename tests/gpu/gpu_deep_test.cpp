@@ -1,0 +1,79 @@
+// Deep hierarchies on the GPU: the 28-level nest 2^30 finest cells wide (tests/support), traced
+// by the compute and rayquery backends, against the independent double-precision oracle; the
+// pipeline backend, whose intersection shader sees only the float ray origin, refuses it.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "deep_nest.hpp"
+#include "double_tracer.hpp"
+#include "flow/integrator.hpp"
+#include "flow/vector_selection.hpp"
+#include "gpu/gpu_tracer.hpp"
+#include "gpu_test.hpp"
+#include "util/input_error.hpp"
+
+namespace amrstream::gpu {
+namespace {
+
+// Finest cells: the CPU agrees with the oracle to 5e-6 cells over these 400 steps; the GPU's
+// division and square root may round a few ulp more (gpu_tracer_test.cpp), far below this, and
+// float32 cell units there would be 16 cells apart.
+constexpr double kToleranceCells = 1e-3;
+
+class GpuDeepTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
+ protected:
+  vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
+};
+
+flow::TraceOptions nestOptions() {
+  flow::TraceOptions options;
+  options.stepMode = flow::StepMode::Time;
+  options.integrator = flow::Integrator::Rk4;
+  options.stepSize = 1.0f / 128;
+  options.maxSteps = 400;
+  options.direction = flow::Direction::Forward;
+  return options;
+}
+
+TEST_P(GpuDeepTest, TracesANestTwoToTheThirtyCellsWideAsTheDoubleOracle) {
+  const bricks::AmrField field = testing::deepNest();
+  const flow::VectorChannels vector = flow::chooseVectorChannels(field, "");
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector);
+  ASSERT_TRUE(volume.deepPositions());
+  const std::vector<glm::dvec3> seeds = testing::deepNestSeeds(field);
+  const flow::TraceOptions options = nestOptions();
+  if (GetParam() == Backend::Pipeline) {
+    EXPECT_THROW(GpuTracer(ctx(), GetParam(), volume), InputError);
+    return;
+  }
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  const flow::TraceSet gpu = tracer.trace(seeds, options);
+  ASSERT_TRUE(gpu.precisePositions);
+
+  const testing::DoubleTracer oracle(field, vector.channels);
+  const bricks::WorldTransform& transform = field.transform();
+  double worst = 0.0;
+  for (std::size_t line = 0; line < seeds.size(); ++line) {
+    const testing::DoubleTrace exact = oracle.trace(seeds[line], double(options.stepSize), 400);
+    ASSERT_EQ(gpu.steps[line], exact.steps()) << "line " << line;
+    ASSERT_EQ(gpu.pointCount(line), exact.positions.size()) << "line " << line;
+    for (std::size_t k = 0; k < exact.positions.size(); ++k) {
+      const std::size_t at = gpu.firstPoint(line) + k;
+      const glm::dvec3 traced = flow::joinPosition(gpu.positions[at], gpu.positionsLow[at]);
+      worst = std::max(worst, glm::length(transform.toCellUnits(traced) -
+                                          transform.toCellUnits(exact.positions[k])));
+    }
+  }
+  std::printf("%s: largest difference from the oracle %.3g finest cells\n",
+              std::string(backendName(GetParam())).c_str(), worst);
+  EXPECT_LE(worst, kToleranceCells);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuDeepTest,
+                         ::testing::Values(Backend::RayQuery, Backend::Pipeline, Backend::Compute),
+                         [](const auto& info) { return std::string(backendName(info.param)); });
+
+}  // namespace
+}  // namespace amrstream::gpu
