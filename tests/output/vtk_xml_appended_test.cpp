@@ -1,3 +1,4 @@
+#include "every_compression.hpp"
 #include "output/vtk_xml_appended.hpp"
 
 #include <gmock/gmock.h>
@@ -141,11 +142,7 @@ TEST_P(AppendedFile, AProducerThatWritesOtherThanItDeclaredLeavesNoFile) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryCompression, AppendedFile,
-                         ::testing::Values(Compression::None, Compression::ZLib, Compression::LZ4),
-                         [](const auto& info) {
-                           return std::string(output::compressionName(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryCompression, AppendedFile, kEveryCompression, compressionTestName);
 
 }  // namespace
 }  // namespace amrstream::testing

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "every_compression.hpp"
 #include "output/vtp_reader.hpp"
 #include "output/vtp_writer.hpp"
 #include "sample_traces.hpp"
@@ -129,12 +130,7 @@ TEST_P(VtpPrecisePositions, MissingLowPartsAreInconsistentTraces) {
   EXPECT_THROW(write(traces), std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpPrecisePositions,
-                         ::testing::Values(output::Compression::None, output::Compression::ZLib,
-                                           output::Compression::LZ4),
-                         [](const auto& info) {
-                           return std::string(output::compressionName(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpPrecisePositions, kEveryCompression, compressionTestName);
 
 }  // namespace
 }  // namespace amrstream::testing

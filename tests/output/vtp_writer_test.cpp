@@ -1,3 +1,4 @@
+#include "every_compression.hpp"
 #include "output/vtp_writer.hpp"
 
 #include <gmock/gmock.h>
@@ -463,12 +464,7 @@ TEST_P(VtpWriter, ANonFiniteValueIsRefusedAndNoFileIsMade) {
   EXPECT_TRUE(entries().empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpWriter,
-                         ::testing::Values(output::Compression::None, output::Compression::ZLib,
-                                           output::Compression::LZ4),
-                         [](const auto& info) {
-                           return std::string(output::compressionName(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpWriter, kEveryCompression, compressionTestName);
 
 }  // namespace
 }  // namespace amrstream::testing
