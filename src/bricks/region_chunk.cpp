@@ -40,7 +40,7 @@ Face chooseFace(std::span<const std::uint32_t> ids, const std::vector<CellBox>& 
     }
   }
   Face face;
-  const glm::ivec3 extent = box.upper - box.lower;
+  const glm::i64vec3 extent = glm::i64vec3(box.upper) - glm::i64vec3(box.lower);  // past 2^31
   for (int axis = 0; axis < 3; ++axis)
     if (bestDistance[axis] != kNone && (face.axis < 0 || extent[axis] > extent[face.axis]))
       face = {axis, bestAt[axis]};
