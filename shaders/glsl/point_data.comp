@@ -69,7 +69,7 @@ bool tentCell(TentBrick t, int corner, out uint slot, out vec3 axisWeight, out v
 
 // The anchor of a point in `region` (line_state.h): its corner, or the origin.
 ivec3 anchorOf(Region region) {
-  return pc.regionRelative != 0u ? regionCorner(region.lower) : ivec3(0);
+  return pc.deepPositions != 0u ? regionCorner(region.lower) : ivec3(0);
 }
 
 void sampleChannels(uint point, int regionId, vec3 p) {

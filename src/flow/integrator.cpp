@@ -136,7 +136,7 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.maxTime = options.maxTime;
   params.keepHistory = options.keepHistory ? 1u : 0u;
   params.linearInterpolant = volume.interpolant == Interpolant::Linear ? 1u : 0u;
-  params.regionRelative = volume.deepPositions() ? 1u : 0u;
+  params.deepPositions = volume.deepPositions() ? 1u : 0u;
   return params;
 }
 

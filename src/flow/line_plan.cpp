@@ -15,7 +15,10 @@ LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds
   for (const float sign : signs)
     for (std::size_t seed = 0; seed < seeds.size(); ++seed) {
       const auto line = static_cast<std::uint32_t>(plan.states.size());
-      const CellPoint start = toCellPoint(volume.transform.toCellUnits(seeds[seed]));
+      // Without deep positions the anchor stays zero (line_tracer.cpp).
+      const glm::dvec3 cells = volume.transform.toCellUnits(seeds[seed]);
+      const CellPoint start =
+          volume.deepPositions() ? toCellPoint(cells) : CellPoint(glm::vec3(cells));
       plan.states.push_back({start.offset, 0.0f, 0.0f, 0u, line, sign, 0.0f, start.anchor});
       plan.layout.seedIds.push_back(static_cast<std::uint32_t>(seed));
       plan.layout.directions.push_back(sign);

@@ -47,7 +47,8 @@ float stepFactor(float errorSquared, float limitSquared, float displacementSquar
 }
 
 StepOutcome fixedStep(int integrator, const CellPoint& x, const VectorSample& s, float h,
-                      const StageSampler& sample, const StageVector& stage) {
+                      const StageSampler& sample, const StageSampler& sampleEnd,
+                      const StageVector& stage) {
   StepOutcome out;
   out.step = out.nextStep = h;
   const glm::vec3 k1 = stage(s, h);
@@ -69,13 +70,14 @@ StepOutcome fixedStep(int integrator, const CellPoint& x, const VectorSample& s,
     const glm::vec3 k4 = stage(s4, h);
     out.unwrapped = moved(x, (k1 + 2.0f * k2 + 2.0f * k3 + k4) / 6.0f);
   }
-  out.next = sample(normalized(out.unwrapped));
+  out.next = sampleEnd(out.unwrapped);
   out.reason = sampleFailure(out.next);
   return out;
 }
 
-StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint& x, const VectorSample& s,
-                              float h, const StageSampler& sample, const StageVector& stage) {
+StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint& x,
+                              const VectorSample& s, float h, const StageSampler& sample,
+                              const StageSampler& sampleEnd, const StageVector& stage) {
   // Dormand and Prince (1980): the fifth-order solution is propagated, the fourth-order one only
   // estimates the error; the last stage is the sample at the end point (first same as last).
   StepOutcome out;
@@ -106,7 +108,7 @@ StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint
     const glm::vec3 displacement = AMRSTREAM_DP_B1 * k1 + AMRSTREAM_DP_B3 * k3 +
                                    AMRSTREAM_DP_B4 * k4 + AMRSTREAM_DP_B5 * k5 +
                                    AMRSTREAM_DP_B6 * k6;
-    const VectorSample end = sample(normalized(moved(x, displacement)));
+    const VectorSample end = sampleEnd(moved(x, displacement));
     if ((out.reason = sampleFailure(end))) return out;
     const glm::vec3 k7 = stage(end, h);
     const glm::vec3 error = AMRSTREAM_DP_E1 * k1 + AMRSTREAM_DP_E3 * k3 + AMRSTREAM_DP_E4 * k4 +

@@ -3,7 +3,8 @@
 // shaders/glsl/include/{euler,rk2,rk4,rk45}_step.glsl, which the GPU tests compare with them.
 // Positions are CellPoints (wrapped on periodic axes before sampling); a stage vector k is the
 // displacement in finest cells the step would make with that stage's velocity (line_tracer.cpp),
-// added to the offset. A step's end point is sampled normalized(), as the next step starts there.
+// added to the offset. A step's end point is sampled with `sampleEnd`, which samples it where the
+// next step starts (normalized(), with deep positions).
 
 #include <functional>
 #include <glm/glm.hpp>
@@ -28,13 +29,14 @@ struct StepOutcome {
 
 // Euler, RK2 (midpoint) and RK4 with the fixed step h.
 StepOutcome fixedStep(int integrator, const CellPoint& x, const VectorSample& s, float h,
-                      const StageSampler& sample, const StageVector& stage);
+                      const StageSampler& sample, const StageSampler& sampleEnd,
+                      const StageVector& stage);
 
 // Dormand-Prince 5(4) from h, shrinking until the error estimate is within the tolerance and the
 // displacement within one of the start region's finest cells (or h reaches params.minStep).
 StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint& x,
-                              const VectorSample& s,
-                              float h, const StageSampler& sample, const StageVector& stage);
+                              const VectorSample& s, float h, const StageSampler& sample,
+                              const StageSampler& sampleEnd, const StageVector& stage);
 
 // 0.9 (ratio)^(1/5) for ratio = limitSquared / errorSquared, and 0.9 (ratio)^(1/2) for the
 // displacement, from the two squares' binary exponents alone (exact on every device): the

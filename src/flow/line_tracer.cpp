@@ -33,7 +33,22 @@ int sampleFailure(const VectorSample& s) {
   return AMRSTREAM_REASON_RUNNING;
 }
 
-// wrapPeriodic() with the round's parameters, as the kernels do it.
+// Without deep positions the anchor stays zero, and a point that leaves the domain along a
+// periodic axis moves by the period in float; twin of wrapCellUnits() in line_round.glsl.
+glm::vec3 wrapCellUnits(const shared::TraceParams& params, glm::vec3 p) {
+  for (int a = 0; a < 3; ++a) {
+    if ((params.periodicAxes & (1u << a)) == 0) continue;
+    const float lower = float(params.domainLower[a]), upper = float(params.domainUpper[a]);
+    if (p[a] >= upper)
+      p[a] -= float(params.period[a]);
+    else if (p[a] < lower)
+      p[a] += float(params.period[a]);
+    if (p[a] >= upper) p[a] = lower;  // a point just below the lower face rounded onto the upper
+  }
+  return p;
+}
+
+// wrapPeriodic() with the round's parameters, as the kernels do it: the anchor moves.
 CellPoint wrap(const shared::TraceParams& params, CellPoint p) {
   if (params.periodicAxes == 0 || !isNear(p)) return p;
   const glm::ivec3 cell = cellOf(p);
@@ -52,9 +67,14 @@ CellPoint wrap(const shared::TraceParams& params, CellPoint p) {
 shared::LineRound advanceLine(const VectorVolume& volume, const shared::TraceParams& params,
                               shared::LineState& state, const PointEmitter& emit) {
   RegionCache cache;
+  // With deep positions the anchor moves (cell_point.hpp); without, it stays zero and offsets
+  // are float cell units.
+  const bool deep = params.deepPositions != 0;
   const auto sample = [&](const CellPoint& p) {
-    return sampleVector(volume, wrap(params, p), &cache);
+    return deep ? sampleVector(volume, wrap(params, p), &cache)
+                : sampleVector(volume, CellPoint(wrapCellUnits(params, p.offset)), &cache);
   };
+  const auto sampleEnd = [&](const CellPoint& p) { return sample(deep ? normalized(p) : p); };
   const float sign = state.direction;
   CellPoint x{state.anchor, state.offset};
   float time = state.time, length = state.arcLength;
@@ -96,8 +116,9 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     const auto stage = [&](const VectorSample& at, float step) {
       return scale * direction(params, at, step);
     };
-    const StepOutcome step = adaptive ? dormandPrinceStep(params, x, s, h, sample, stage)
-                                      : fixedStep(params.integrator, x, s, h, sample, stage);
+    const StepOutcome step =
+        adaptive ? dormandPrinceStep(params, x, s, h, sample, sampleEnd, stage)
+                 : fixedStep(params.integrator, x, s, h, sample, sampleEnd, stage);
     if ((reason = step.reason)) break;
     endsOnMaxTime = endsOnMaxTime && step.step == h;
     const CellPoint unwrapped = step.unwrapped;  // the same anchor as x
@@ -114,7 +135,8 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     time =
         endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(params, s, step.step);
     nextStep = step.nextStep;
-    x = normalized(wrap(params, unwrapped));
+    x = deep ? normalized(wrap(params, unwrapped))
+             : CellPoint(wrapCellUnits(params, unwrapped.offset));
     s = sNext;
     ++steps;
     if (params.keepHistory) {

@@ -138,7 +138,7 @@ void GpuRounds::submitRound(std::uint32_t steps) {
   const shared::PointDataParams pointData{params_.cellsPerPhysical,
                                           static_cast<std::uint32_t>(volume_->channelCount()),
                                           options_.vorticity ? 1u : 0u,
-                                          params_.linearInterpolant, params_.regionRelative};
+                                          params_.linearInterpolant, params_.deepPositions};
   round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.

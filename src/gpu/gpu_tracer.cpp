@@ -48,8 +48,9 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
       volume_(&volume),
       device_(ctx, gpuBackend(backend), volume, setup_),
       settings_(settings) {
+  settings_.deepPositions = volume.deepPositions();
   Stopwatch clock;
-  kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings);
+  kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
   roundKernels_ = createRoundKernels(ctx);
   setup_.pipelineSeconds = clock.seconds();
 }

@@ -41,23 +41,26 @@ void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
 
 // The kernels' specialization constants: 0 the workgroup size (compute kernels), 1 whether
 // samples test the previous region first (include/sampler.glsl), 2 the integrator
-// (include/line_round.glsl).
+// (include/line_round.glsl), 3 deep positions (include/sampler.glsl).
 struct SpecializationValues {
   std::uint32_t workgroupSize;
   VkBool32 useRegionHint;
   std::int32_t integrator;
+  VkBool32 deepPositions;
 };
-constexpr std::array<VkSpecializationMapEntry, 3> kSpecializationEntries{
+constexpr std::array<VkSpecializationMapEntry, 4> kSpecializationEntries{
     {{0, offsetof(SpecializationValues, workgroupSize), sizeof(std::uint32_t)},
      {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)},
-     {2, offsetof(SpecializationValues, integrator), sizeof(std::int32_t)}}};
+     {2, offsetof(SpecializationValues, integrator), sizeof(std::int32_t)},
+     {3, offsetof(SpecializationValues, deepPositions), sizeof(VkBool32)}}};
 
 void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
                            std::span<const std::uint32_t> code, const KernelSettings& settings) {
   kernel.workgroupSize =
       std::min(kPreferredWorkgroupSize, ctx.limits().maxComputeWorkGroupInvocations);
   const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint,
-                                    static_cast<std::int32_t>(settings.integrator)};
+                                    static_cast<std::int32_t>(settings.integrator),
+                                    settings.deepPositions};
   const VkSpecializationInfo specialization{kSpecializationEntries.size(),
                                             kSpecializationEntries.data(), sizeof(values), &values};
   kernel.pipeline = vk::createComputePipeline(
@@ -69,8 +72,9 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
                               std::span<const std::uint32_t> raygen,
                               const KernelSettings& settings) {
   const SpecializationValues values{0, settings.useRegionHint,
-                                    static_cast<std::int32_t>(settings.integrator)};
-  const VkSpecializationInfo specialization{2, &kSpecializationEntries[1], sizeof(values), &values};
+                                    static_cast<std::int32_t>(settings.integrator),
+                                    settings.deepPositions};
+  const VkSpecializationInfo specialization{3, &kSpecializationEntries[1], sizeof(values), &values};
   vk::RayTracingPipeline created = vk::createProceduralRayTracingPipeline(
       ctx, kernel.pipelineLayout.get(),
       {raygen, spirv(amrstream_spirv_locate_rmiss), spirv(amrstream_spirv_locate_rint),

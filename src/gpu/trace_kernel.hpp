@@ -46,6 +46,9 @@ struct KernelSettings {
   bool useRegionHint = true;
   // The step the kernel takes (include/line_round.glsl): one pipeline per integrator.
   flow::Integrator integrator = flow::Integrator::Rk4;
+  // Anchors follow the lines (VectorVolume::deepPositions; include/line_round.glsl); off, the
+  // anchor stays at zero and the kernel keeps float cell units, as the CPU then does.
+  bool deepPositions = false;
 };
 
 // The settings each backend runs with unless told otherwise: the region hint on everywhere.

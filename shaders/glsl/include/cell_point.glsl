@@ -3,6 +3,12 @@
 #ifndef AMRSTREAM_CELL_POINT_GLSL
 #define AMRSTREAM_CELL_POINT_GLSL
 
+// Specialization constant 3: deep positions (TraceParams::deepPositions). Off (the kernels that
+// do not set it: render, probes), every anchor is zero and offsets are float cell units, so the
+// tent takes p - brick.lower in float, as the CPU then does; on, the anchors follow the lines and
+// the tent takes the exact integer difference first.
+layout(constant_id = 3) const bool kDeepPositions = false;
+
 // Offsets at least this large are outside every domain (at most 2^30 cells, centred).
 const float kFarOffset = 536870912.0;
 

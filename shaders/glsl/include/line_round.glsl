@@ -33,14 +33,32 @@ int sampleFailure(VectorSample s) {
 // between steps (cell_point.glsl).
 ivec3 lineAnchor;
 
+// Without deep positions the anchor stays zero, and a point that leaves the domain along a
+// periodic axis moves by the period in float; twin of wrapCellUnits() in line_tracer.cpp.
+vec3 wrapCellUnits(vec3 p) {
+  if (params.periodicAxes == 0u) return p;
+  precise vec3 q = p;
+  for (int a = 0; a < 3; ++a) {
+    if ((params.periodicAxes & (1u << a)) == 0u) continue;
+    const float lower = float(params.domainLower[a]), upper = float(params.domainUpper[a]);
+    if (q[a] >= upper)
+      q[a] -= float(params.period[a]);
+    else if (q[a] < lower)
+      q[a] += float(params.period[a]);
+    if (q[a] >= upper) q[a] = lower;  // a point just below the lower face rounded onto the upper
+  }
+  return q;
+}
+
 VectorSample sampleStage(vec3 unwrapped) {
+  if (!kDeepPositions) return sampleVector(ivec3(0), wrapCellUnits(unwrapped));
   return sampleVector(wrapPeriodic(lineAnchor, unwrapped), unwrapped);
 }
 
 // A step's end point, sampled where the next step starts from it: with the offset's whole cells
 // moved into the anchor (twin of normalized()).
 VectorSample sampleEnd(vec3 unwrapped) {
-  if (!isNear(unwrapped)) return sampleStage(unwrapped);
+  if (!kDeepPositions || !isNear(unwrapped)) return sampleStage(unwrapped);
   const vec3 whole = floor(unwrapped);
   precise const vec3 offset = unwrapped - whole;
   return sampleVector(wrapPeriodic(lineAnchor + ivec3(whole), offset), offset);
@@ -68,7 +86,7 @@ layout(constant_id = 2) const int kIntegrator = AMRSTREAM_INTEGRATOR_RK4;
 // Positions leave in cell units, or as offsets from their regions' corners (line_state.h).
 void emitPoint(uint thread, uint k, vec3 x, float time, VectorSample s) {
   const uint slot = k * params.lineCount + thread;
-  const ivec3 corner = params.regionRelative != 0u && s.region >= 0
+  const ivec3 corner = params.deepPositions != 0u && s.region >= 0
                            ? regionCorner(regions[s.region].lower)
                            : ivec3(0);
   precise const vec3 position = vec3(lineAnchor - corner) + x;
@@ -81,7 +99,7 @@ void emitPoint(uint thread, uint k, vec3 x, float time, VectorSample s) {
 void advanceLine(uint thread) {
   const LineState state = statesIn[thread];
   const float sign = state.direction;
-  lineAnchor = state.anchor;
+  lineAnchor = kDeepPositions ? state.anchor : ivec3(0);
   precise vec3 x = state.offset;
   precise float time = state.time, traceLength = state.arcLength;
   uint steps = state.steps, emitted = 0;
@@ -164,10 +182,14 @@ void advanceLine(uint thread) {
       traceLength += stepLength;
     }
     time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, stepTaken);
-    lineAnchor = wrapPeriodic(lineAnchor, unwrapped);
-    const vec3 whole = floor(unwrapped);
-    lineAnchor += ivec3(whole);
-    x = unwrapped - whole;
+    if (kDeepPositions) {
+      lineAnchor = wrapPeriodic(lineAnchor, unwrapped);
+      const vec3 whole = floor(unwrapped);
+      lineAnchor += ivec3(whole);
+      x = unwrapped - whole;
+    } else {
+      x = wrapCellUnits(unwrapped);
+    }
     s = sNext;
     ++steps;
     if (params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);

@@ -15,7 +15,8 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
   for (uint k = 0; k < region.brickCount; ++k) {
     const Brick brick = bricks[regionBricks[region.brickOffset + k]];
     const float width = float(1 << brick.level);
-    precise const vec3 local = (vec3(anchor - brick.lower) + p) / width - 0.5;
+    precise const vec3 local =
+        (kDeepPositions ? vec3(anchor - brick.lower) + p : p - vec3(brick.lower)) / width - 0.5;
     const vec3 base = floor(local);
     precise const vec3 frac = local - base;
     const ivec3 lo = ivec3(base);

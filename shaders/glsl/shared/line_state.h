@@ -33,7 +33,7 @@ struct LineRound {
 };
 
 // One emitted point of a round, before the point data: its position in cell units or, with
-// params.regionRelative (domains wider than 2^21 finest cells), as an offset from the lower corner
+// params.deepPositions (domains wider than 2^21 finest cells), as an offset from the lower corner
 // of the region its sample found (regionCorner(), so that it keeps float precision at any depth;
 // from the origin with no region); IntegrationTime; the vector sampled there; and that region.
 #define AMRSTREAM_NO_REGION_ID (-1)

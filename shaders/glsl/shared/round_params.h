@@ -19,7 +19,7 @@ struct PointDataParams {
   uint channelCount;      // scalar channels sampled at every point
   uint computeVorticity;  // 1: the curl of the reconstructed vector as well
   uint linearInterpolant; // 1: tent weights over the cells' linear models (the gradients)
-  uint regionRelative;    // 1: positions are offsets from their regions' corners (line_state.h)
+  uint deepPositions;     // 1: positions are offsets from their regions' corners (line_state.h)
 };
 
 // The totals of a round's compaction, written by the device for the host and for the indirect

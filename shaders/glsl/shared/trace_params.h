@@ -32,7 +32,8 @@ struct TraceParams {
   float toleranceSquared;   // rk45: the square of the error allowed per step, in cell widths
   float minStep;            // rk45: bounds of the adaptive step, in the units of stepSize
   float maxStep;
-  uint regionRelative;      // 1: points leave as offsets from their regions' corners (line_state.h)
+  uint deepPositions;       // 1: domains wider than 2^21 finest cells (VectorVolume::deepPositions):
+                            // anchors follow the lines, points leave as offsets from their regions
 };
 
 #ifdef __cplusplus
