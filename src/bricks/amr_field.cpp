@@ -259,12 +259,20 @@ void AmrField::validate() {
                                    c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
   }
 
-  // In 64 bits: a corner near INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.
+  // The box of each level's corners (in one pass), then of all cells in 64 bits: a corner near
+  // INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.
+  std::vector<glm::ivec3> levelLower(kMaxLevel + 1, glm::ivec3(std::numeric_limits<int>::max())),
+      levelUpper(kMaxLevel + 1, glm::ivec3(std::numeric_limits<int>::min()));
+  for (std::size_t i = 0; i < n; ++i) {
+    levelLower[levels_[i]] = glm::min(levelLower[levels_[i]], lowers_[i]);
+    levelUpper[levels_[i]] = glm::max(levelUpper[levels_[i]], lowers_[i]);
+  }
   glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max());
   glm::i64vec3 upper(std::numeric_limits<std::int64_t>::min());
-  for (std::size_t i = 0; i < n; ++i) {
-    lower = glm::min(lower, glm::i64vec3(lowers_[i]));
-    upper = glm::max(upper, glm::i64vec3(lowers_[i]) + std::int64_t(cellWidth(levels_[i])));
+  for (int level = 0; level <= kMaxLevel; ++level) {
+    if (levelLower[level].x > levelUpper[level].x) continue;  // no cells at this level
+    lower = glm::min(lower, glm::i64vec3(levelLower[level]));
+    upper = glm::max(upper, glm::i64vec3(levelUpper[level]) + std::int64_t(cellWidth(level)));
   }
   const glm::i64vec3 extent = upper - lower;
   const std::int64_t maxExtent = std::int64_t(1) << kMaxExtentBits;
@@ -284,12 +292,6 @@ void AmrField::validate() {
   // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
   // inside a coarser one finds that cell's aligned corner in the coarser level's set.
   const std::vector<std::size_t> perLevel = cellsPerLevel();
-  std::vector<glm::ivec3> levelLower(perLevel.size(), glm::ivec3(std::numeric_limits<int>::max())),
-      levelUpper(perLevel.size(), glm::ivec3(std::numeric_limits<int>::min()));
-  for (std::size_t i = 0; i < n; ++i) {
-    levelLower[levels_[i]] = glm::min(levelLower[levels_[i]], lowers_[i]);
-    levelUpper[levels_[i]] = glm::max(levelUpper[levels_[i]], lowers_[i]);
-  }
   std::vector<std::unique_ptr<LevelCornerSet>> sets(perLevel.size());
   for (std::size_t level = 0; level < perLevel.size(); ++level)
     if (perLevel[level] > 0)

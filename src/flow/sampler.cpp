@@ -117,9 +117,7 @@ CellPoint wrapPeriodic(const VectorVolume& volume, CellPoint p) {
 }
 
 std::int32_t locateRegion(const VectorVolume& volume, const CellPoint& p) {
-  if (!isNear(p)) return -1;
-  const glm::ivec3 k = latticeOf(p);
-  return insideDomain(volume, k) ? volume.regions.locate(k) : -1;
+  return findRegion(volume, p, nullptr);
 }
 
 VectorSample sampleVector(const VectorVolume& volume, const CellPoint& p, RegionCache* cache) {
