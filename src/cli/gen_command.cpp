@@ -64,7 +64,7 @@ void writeOne(const GenOptions& o, double time, const std::string& out) {
 // nest and the other kinds take different sizes: a size given to a kind that does not take it
 // is refused rather than ignored, and only nest takes more than kMaxGeneratorLevels levels.
 void checkKindOptions(const CLI::App& command, const GenOptions& o) {
-  for (const char* flag : {"--root-cells", "--block-cells", "--centre"})
+  for (const char* flag : {"--root-cells", "--block-cells", "--centre", "--max-speed"})
     if (!isNest(o) && command.count(flag) > 0)
       throw InputError(flag, fmt::format("sizes kind nest only, not {}", o.kind));
   for (const char* flag : {"--root-blocks", "--target-cells", "--seed"})
@@ -116,7 +116,8 @@ void addGenCommand(CLI::App& app) {
       ->check(countIn(1, std::numeric_limits<int>::max()));
   command
       ->add_option("--block-cells", options->nest.blockCells,
-                   "nest: cells per axis of each finer level's cube (even, at least 4)")
+                   "nest: cells per axis of each finer level's cube (even; 2: an octree refined "
+                   "towards the centre, at least 4: proper nesting)")
       ->capture_default_str()
       ->check(countIn(1, std::numeric_limits<int>::max()));
   command
@@ -126,6 +127,11 @@ void addGenCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(3)
       ->check(finiteFloat());
+  command
+      ->add_option("--max-speed", options->nest.maxSpeed,
+                   "nest: the spiral's speed capped at S domain widths per unit time [default "
+                   "none]")
+      ->check(positiveDouble());
   command
       ->add_option("--series", options->series,
                    "write N snapshots PREFIX_0000.exa, ... at --time, --time + --interval, ...")

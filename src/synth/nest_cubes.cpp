@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,22 +12,30 @@ namespace amrstream::synth {
 
 namespace {
 
+// Cells of the level above between a cube and the edge of the cube around it: one (proper
+// nesting), none for an octree's cubes of 2 cells.
+std::int64_t marginCells(int blockCells) { return blockCells == 2 ? 0 : 1; }
+
 void validateNestOptions(const NestOptions& o, const std::string& source) {
   if (o.levels < 1 || o.levels > kMaxNestLevels)
     throw InputError(source, fmt::format("option levels is {}; it must be between 1 and {}",
                                          o.levels, kMaxNestLevels));
-  if (o.blockCells < 4 || o.blockCells % 2 != 0)
-    throw InputError(source, fmt::format("option blockCells is {}; it must be even and at least 4 "
-                                         "(a finer cube, blockCells / 2 cells of the level above "
-                                         "wide, needs one of them of margin on each side)",
+  if (o.blockCells < 2 || o.blockCells % 2 != 0)
+    throw InputError(source, fmt::format("option blockCells is {}; it must be even and at least 2 "
+                                         "(a finer cube is blockCells / 2 cells of the level "
+                                         "above wide)",
                                          o.blockCells));
-  const int leastRootCells = o.levels > 1 ? o.blockCells / 2 + 2 : 1;
+  const int leastRootCells =
+      o.levels == 1 ? 1 : std::max(2, o.blockCells / 2 + 2 * int(marginCells(o.blockCells)));
   if (o.rootCells < leastRootCells)
     throw InputError(
         source, fmt::format("option rootCells is {}; with {} levels and blockCells {} "
                             "it must be at least {} (the next level's cube is {} root "
-                            "cells wide, with one root cell of margin on each side)",
-                            o.rootCells, o.levels, o.blockCells, leastRootCells, o.blockCells / 2));
+                            "cells wide{}, and some root cells must stay leaves)",
+                            o.rootCells, o.levels, o.blockCells, leastRootCells, o.blockCells / 2,
+                            marginCells(o.blockCells) > 0
+                                ? ", with one root cell of margin on each side"
+                                : ""));
   const std::int64_t axisLimit = std::int64_t(1) << bricks::kMaxExtentBits;
   if (nestFinestCellsPerAxis(o) > axisLimit)
     throw InputError(source,
@@ -49,6 +58,9 @@ void validateNestOptions(const NestOptions& o, const std::string& source) {
        {std::pair{"rotationRate", o.rotationRate}, std::pair{"expansionRate", o.expansionRate}})
     if (!std::isfinite(rate))
       throw InputError(source, fmt::format("option {} is {}; it must be finite", name, rate));
+  if (!(o.maxSpeed > 0.0))
+    throw InputError(source,
+                     fmt::format("option maxSpeed is {}; it must be positive", o.maxSpeed));
 }
 
 // The cube of `level` centred on `centre` (finest-cell units), its lower corner rounded to the
@@ -64,7 +76,7 @@ NestCube centredCube(int level, std::int64_t cells, glm::dvec3 centre) {
 
 void checkNested(const NestCube& inner, const NestCube& outer, const NestOptions& o,
                  const std::string& source) {
-  const std::int64_t margin = std::int64_t(1) << outer.level;
+  const std::int64_t margin = marginCells(o.blockCells) << outer.level;
   for (int a = 0; a < 3; ++a) {
     if (inner.lower[a] >= outer.lower[a] + margin && inner.upper()[a] <= outer.upper()[a] - margin)
       continue;
@@ -72,8 +84,8 @@ void checkNested(const NestCube& inner, const NestCube& outer, const NestOptions
         source,
         fmt::format("the nest cannot be centred on option centre ({}, {}, {}): the cube of "
                     "level {} (0 = finest) centred on it spans [{}, {}) finest cells "
-                    "along {}, which must lie inside the level-{} cube [{}, {}) with one of its "
-                    "cells ({} finest cells) of margin; move the centre towards the domain's "
+                    "along {}, which must lie inside the level-{} cube [{}, {}) with {} finest "
+                    "cells of margin; move the centre towards the domain's "
                     "middle, or raise rootCells or blockCells",
                     o.centre.x, o.centre.y, o.centre.z, inner.level, inner.lower[a],
                     inner.upper()[a], "xyz"[a], outer.level, outer.lower[a], outer.upper()[a],

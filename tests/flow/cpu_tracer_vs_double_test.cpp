@@ -1,8 +1,9 @@
 // amrstream's CPU tracer (positions as a finest cell plus a float offset, rk4 in `time` steps, the
 // tent interpolant) against the independent double-precision oracle of tests/support: the same
 // reconstruction, the same steps and ends, and positions within kToleranceCells finest cells,
-// along traces that cross level boundaries, on shallow data and on a nest 2^30 finest cells wide,
-// where float32 cell units would be 64 finest cells apart.
+// along traces that cross level boundaries, on shallow data and on two nests 2^30 finest cells
+// wide (28 levels properly nested, 30 levels as an octree), where float32 cell units would be 8
+// to 32 finest cells apart.
 
 #include <gtest/gtest.h>
 
@@ -140,14 +141,27 @@ TEST(CpuTracerVsDouble, AgreeAcrossTheLevelsOfANest) {
 // The deep nest of tests/support: 2^30 finest cells per axis, where float32 cell units would be
 // 16 to 32 finest cells apart at the nest.
 TEST(CpuTracerVsDouble, AgreeAcrossTheLevelsOfANestTwoToTheThirtyCellsWide) {
-  const bricks::AmrField field = testing::deepNest();
-  ASSERT_EQ(field.bounds().upper.x - field.bounds().lower.x, 1 << 30);
-  const std::vector<glm::dvec3> seeds = testing::deepNestSeeds(field);
-  const Agreement agreement = compareWithDouble(field, seeds, 1.0f / 128, 400);
+  const testing::DeepNest nest = testing::deepNest();
+  ASSERT_EQ(nest.field.bounds().upper.x - nest.field.bounds().lower.x, 1 << 30);
+  const Agreement agreement = compareWithDouble(nest.field, nest.seeds, 1.0f / 128, 400);
   std::printf("nest, 28 levels, 2^30 cells wide: largest difference %.3g finest cells\n",
               agreement.worstCells);
   EXPECT_LE(agreement.worstCells, kToleranceCells);
-  EXPECT_EQ(seedsCrossingLevels(agreement), seeds.size());
+  EXPECT_EQ(seedsCrossingLevels(agreement), nest.seeds.size());
+  EXPECT_GE(std::ranges::max(agreement.levelCounts), 3u);
+}
+
+// The 30-level octree nest of tests/support, also 2^30 finest cells per axis, where float32 cell
+// units would be 8 to 16 finest cells apart at the nest.
+TEST(CpuTracerVsDouble, AgreeAcrossTheThirtyLevelsOfAnOctreeNest) {
+  const testing::DeepNest nest = testing::deepOctreeNest();
+  ASSERT_EQ(nest.field.cellsPerLevel().size(), 30u);
+  ASSERT_EQ(nest.field.bounds().upper.x - nest.field.bounds().lower.x, 1 << 30);
+  const Agreement agreement = compareWithDouble(nest.field, nest.seeds, 1.0f / 128, 400);
+  std::printf("octree nest, 30 levels, 2^30 cells wide: largest difference %.3g finest cells\n",
+              agreement.worstCells);
+  EXPECT_LE(agreement.worstCells, kToleranceCells);
+  EXPECT_EQ(seedsCrossingLevels(agreement), nest.seeds.size());
   EXPECT_GE(std::ranges::max(agreement.levelCounts), 3u);
 }
 

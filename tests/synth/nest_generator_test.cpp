@@ -47,7 +47,8 @@ std::vector<std::size_t> expectedCellsPerLevel(const NestOptions& o) {
 }
 
 // The cells of each level and the finer levels fill a cube (the AmrField constructor rejected
-// overlaps), which holds the centre with at least one cell of that level on every side.
+// overlaps), which holds the centre with at least one cell of that level on every side (an
+// octree's cubes of 2 cells: inside).
 void expectCubesAboutTheCentre(const bricks::AmrField& f, const NestOptions& o) {
   const glm::dvec3 centre = centreInCells(o);
   for (int level = 0; level < o.levels; ++level) {
@@ -65,16 +66,20 @@ void expectCubesAboutTheCentre(const bricks::AmrField& f, const NestOptions& o) 
     EXPECT_EQ(extent.x, extent.y);
     EXPECT_EQ(extent.x, extent.z);
     EXPECT_EQ(volume, cube(extent.x)) << "the cells leave holes in their box";
-    const double margin = std::ldexp(1.0, level);
+    const double margin = o.blockCells == 2 ? 0.0 : std::ldexp(1.0, level);
     if (level == o.levels - 1) continue;  // the whole domain
     EXPECT_EQ(extent.x, std::int64_t(o.blockCells) << level);
     EXPECT_TRUE(glm::all(glm::greaterThanEqual(centre - glm::dvec3(lower), glm::dvec3(margin))));
     EXPECT_TRUE(glm::all(glm::greaterThanEqual(glm::dvec3(upper) - centre, glm::dvec3(margin))));
+    if (margin == 0.0) {
+      EXPECT_TRUE(glm::all(glm::lessThan(centre, glm::dvec3(upper))));
+    }
   }
 }
 
 TEST(NestGenerator, CellsPerLevelTileTheUnitDomain) {
-  for (const NestOptions& o : {nest(1), nest(2), nest(6), nest(18), nest(9, 11, 10)}) {
+  for (const NestOptions& o :
+       {nest(1), nest(2), nest(6), nest(18), nest(9, 11, 10), nest(30, 2, 2), nest(12, 3, 2)}) {
     SCOPED_TRACE("levels " + std::to_string(o.levels));
     const bricks::AmrField f = generateNest(o);
     EXPECT_EQ(f.source(), "builtin:nest");
@@ -94,7 +99,8 @@ TEST(NestGenerator, CellsPerLevelTileTheUnitDomain) {
 }
 
 TEST(NestGenerator, EveryLevelsCubeSurroundsTheCentre) {
-  for (const NestOptions& o : {nest(6), nest(18), nest(9, 11, 10), nest(5, 8, 12)}) {
+  for (const NestOptions& o :
+       {nest(6), nest(18), nest(9, 11, 10), nest(5, 8, 12), nest(30, 2, 2), nest(12, 3, 2)}) {
     SCOPED_TRACE("levels " + std::to_string(o.levels));
     expectCubesAboutTheCentre(generateNest(o), o);
   }
@@ -165,8 +171,9 @@ TEST(NestGenerator, BadOptionsNameTheOption) {
   };
   rejects(nest(0), "option levels is 0; it must be between 1 and 30");
   rejects(nest(31), "option levels is 31; it must be between 1 and 30");
-  rejects(nest(6, 6, 7), "option blockCells is 7; it must be even and at least 4");
-  rejects(nest(6, 6, 2), "option blockCells is 2; it must be even and at least 4");
+  rejects(nest(6, 6, 7), "option blockCells is 7; it must be even and at least 2");
+  rejects(nest(6, 6, 0), "option blockCells is 0; it must be even and at least 2");
+  rejects(nest(6, 1, 2), "option rootCells is 1; with 6 levels and blockCells 2 it must be at least 2");
   rejects(nest(6, 5, 8),
           "option rootCells is 5; with 6 levels and blockCells 8 it must be at "
           "least 6");
@@ -187,6 +194,38 @@ TEST(NestGenerator, BadOptionsNameTheOption) {
   o = nest(6);
   o.expansionRate = std::numeric_limits<double>::infinity();
   rejects(o, "option expansionRate is inf; it must be finite");
+  o = nest(6);
+  o.maxSpeed = 0.0;
+  rejects(o, "option maxSpeed is 0; it must be positive");
+  o.maxSpeed = std::numeric_limits<double>::quiet_NaN();
+  rejects(o, "option maxSpeed is nan; it must be positive");
+}
+
+// maxSpeed scales the faster cells' vectors down to it and leaves the slower ones as they were.
+TEST(NestGenerator, MaxSpeedCapsTheSpiral) {
+  NestOptions o = nest(8);
+  const bricks::AmrField free = generateNest(o);
+  o.maxSpeed = 0.05;
+  const bricks::AmrField capped = generateNest(o);
+  std::size_t scaled = 0, kept = 0;
+  for (std::size_t i = 0; i < free.cellCount(); ++i) {
+    glm::dvec3 a, b;
+    for (int c = 0; c < 3; ++c) {
+      const std::string name = std::string("vel") + "xyz"[c];
+      a[c] = free.channel(name).values[i];
+      b[c] = capped.channel(name).values[i];
+    }
+    if (glm::length(a) <= o.maxSpeed) {
+      EXPECT_EQ(a, b);
+      ++kept;
+      continue;
+    }
+    EXPECT_NEAR(glm::length(b), o.maxSpeed, 1e-7);
+    EXPECT_NEAR(glm::dot(a, b) / (glm::length(a) * glm::length(b)), 1.0, 1e-7);
+    ++scaled;
+  }
+  EXPECT_GT(scaled, 0u);
+  EXPECT_GT(kept, 0u);
 }
 
 TEST(NestGenerator, BuiltinNestIsTheDefaultNestWithTheGeneratorsLevelsAndTime) {
