@@ -12,6 +12,8 @@ packages=(
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
   libglfw3-dev libimgui-dev xvfb xauth
+  # MPI: distributed tracing and its tests (mpirun)
+  libopenmpi-dev openmpi-bin
   # clang and its libFuzzer runtime (a recommendation, which --no-install-recommends skips)
   # for scripts/fuzz.sh
   clang libclang-rt-dev

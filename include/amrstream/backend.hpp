@@ -14,6 +14,8 @@ struct BackendRequest {
   std::string backend = "auto";  // auto, rayquery, pipeline, compute or cpu
   std::string device;            // a substring of the device name; empty: the default device
   bool validation = false;       // Vulkan validation layers (debug builds, AMRSTREAM_VALIDATION)
+  // Which of the qualifying devices (vk::ContextBuilder::deviceSlot): an MPI rank's local rank.
+  unsigned deviceSlot = 0;
 };
 
 struct BackendChoice {

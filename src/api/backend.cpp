@@ -81,6 +81,7 @@ vk::Context createContext(const BackendRequest& request, const BackendChoice& ch
       .require(extra)
       .validation(request.validation);
   if (!choice.deviceFilter.empty()) builder.deviceName(choice.deviceFilter);
+  builder.deviceSlot(request.deviceSlot);
   return builder.build();
 }
 

@@ -111,6 +111,7 @@ void writeJson(const std::filesystem::path& path, const BenchReport& report) {
   nlohmann::json doc;
   doc["command"] = report.command;
   doc["host"] = report.host;
+  doc["ranks"] = report.ranks;
   doc["dataset"] = toJson(report.dataset);
   doc["config"] = toJson(report.config);
   doc["setups"] = nlohmann::json::array();

@@ -77,6 +77,34 @@ class RowPlanner {
   std::set<std::string> noted_;
 };
 
+// A row's seeds on this rank: all of the first n without a share.
+std::vector<glm::dvec3> rowSeeds(std::span<const glm::dvec3> seeds, std::size_t n,
+                                 const BenchCallbacks& callbacks) {
+  const std::span<const glm::dvec3> row = seeds.first(n);
+  if (!callbacks.share) return {row.begin(), row.end()};
+  std::vector<glm::dvec3> mine;
+  for (const std::uint32_t i : callbacks.share->indicesOf(row)) mine.push_back(row[i]);
+  return mine;
+}
+
+void startTogether(const BenchCallbacks& callbacks) {
+  if (callbacks.share) callbacks.share->synchronize();
+}
+
+// The row as all ranks measured it.
+BenchRow combined(BenchRow row, const BenchCallbacks& callbacks) {
+  if (!callbacks.share) return row;
+  const RankShare& share = *callbacks.share;
+  row.steps = std::uint64_t(share.sumOf(double(row.steps)));
+  row.wallSeconds = share.maxOf(row.wallSeconds);
+  if (row.kernelSeconds) row.kernelSeconds = share.maxOf(*row.kernelSeconds);
+  if (row.compactionSeconds) row.compactionSeconds = share.maxOf(*row.compactionSeconds);
+  row.deviceBytes = std::uint64_t(share.maxOf(double(row.deviceBytes)));
+  row.chunks = std::size_t(share.maxOf(double(row.chunks)));
+  row.rounds = std::size_t(share.maxOf(double(row.rounds)));
+  return row;
+}
+
 flow::TraceOptions optionsFor(const BenchConfig& config, bool history) {
   flow::TraceOptions options = config.trace;
   options.keepHistory = history;
@@ -90,13 +118,17 @@ void runCpu(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
   for (const bool history : config.historyModes) {
     for (const std::size_t n : config.particles) {
       if (!planner.runs("cpu", history, n)) continue;
+      const std::vector<glm::dvec3> mine = rowSeeds(seeds, n, callbacks);
       std::optional<BenchRow> best;
       for (std::uint32_t r = 0; r < config.repeats; ++r) {
+        startTogether(callbacks);
         Stopwatch clock;
         const flow::StoredTraces stored =
-            flow::traceToRounds(volume, seeds.first(n), optionsFor(config, history));
+            flow::traceToRounds(volume, mine, optionsFor(config, history));
         const flow::TraceSet& traces = stored.lines();
-        keepFaster(best, measuredRow("cpu", device, history, n, traces, config, clock.seconds()));
+        keepFaster(best, combined(measuredRow("cpu", device, history, n, traces, config,
+                                              clock.seconds()),
+                                  callbacks));
       }
       report.rows.push_back(*best);
       if (callbacks.rowDone) callbacks.rowDone(*best);
@@ -112,6 +144,7 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   vk::ContextBuilder builder;
   builder.require(gpu::requiredCapabilities(backend)).validation(config.validation);
   if (!config.deviceFilter.empty()) builder.deviceName(config.deviceFilter);
+  builder.deviceSlot(config.deviceSlot);
   std::optional<vk::Context> ctx;
   try {
     ctx.emplace(builder.build());
@@ -145,11 +178,12 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   for (const bool history : config.historyModes) {
     for (const std::size_t n : config.particles) {
       if (!planner.runs(name, history, n)) continue;
+      const std::vector<glm::dvec3> mine = rowSeeds(seeds, n, callbacks);
       std::optional<BenchRow> best;
       for (std::uint32_t r = 0; r < config.repeats; ++r) {
+        startTogether(callbacks);
         clock.restart();
-        const flow::StoredTraces stored =
-            tracer.traceToRounds(seeds.first(n), optionsFor(config, history));
+        const flow::StoredTraces stored = tracer.traceToRounds(mine, optionsFor(config, history));
         const flow::TraceSet& traces = stored.lines();
         BenchRow row =
             measuredRow(name, setup.device, history, n, traces, config, clock.seconds());
@@ -158,7 +192,7 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
         row.chunks = tracer.lastRun().batches;
         row.rounds = tracer.lastRun().rounds;
         row.deviceBytes = setup.volumeBytes + setup.structureBytes + tracer.lastRun().roundBytes;
-        keepFaster(best, row);
+        keepFaster(best, combined(row, callbacks));
       }
       report.rows.push_back(*best);
       if (callbacks.rowDone) callbacks.rowDone(*best);

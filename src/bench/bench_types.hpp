@@ -23,6 +23,7 @@ struct BenchConfig {
                                          // each backend's default (gpu::defaultKernelSettings)
   bool spatialSeedOrder = true;          // GPU threads take seeds in Morton order (GpuTracer)
   std::string deviceFilter;              // a substring of the Vulkan device's name
+  unsigned deviceSlot = 0;               // which qualifying device (vk::ContextBuilder)
   bool validation = false;
 };
 
@@ -74,6 +75,7 @@ struct DatasetStats {
 struct BenchReport {
   DatasetStats dataset;
   std::string host;  // CPU model and thread count
+  int ranks = 1;     // MPI ranks, each on its own device where the host has several
   std::string command;
   BenchConfig config;
   std::vector<BackendSetup> setups;

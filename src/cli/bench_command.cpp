@@ -10,6 +10,9 @@
 #include "bench/bench_report.hpp"
 #include "bench/bench_runner.hpp"
 #include "dataset_files.hpp"
+#include "dist/mpi_world.hpp"
+#include "dist/rank_agreement.hpp"
+#include "dist/seed_ranges.hpp"
 #include "dataset_options.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
@@ -117,7 +120,14 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   return config;
 }
 
-void runBench(const BenchCommandOptions& o) {
+struct PreparedBench {
+  bench::BenchReport report;
+  flow::VectorVolume volume;
+  flow::SeedList seeds;
+  flow::VolumeBuildTimes times;
+};
+
+PreparedBench prepareBench(const BenchCommandOptions& o) {
   checkBuiltinSize(o.dataset);
   if (!o.particles.empty())
     checkSeedCount(double(*std::max_element(o.particles.begin(), o.particles.end())),
@@ -127,7 +137,8 @@ void runBench(const BenchCommandOptions& o) {
   if (!o.seedsFile.empty()) files.addInput(o.seedsFile);
   files.addOutput("--json", o.json);
 
-  bench::BenchReport report;
+  PreparedBench prepared;
+  bench::BenchReport& report = prepared.report;
   report.command = o.commandLine;
   report.host = bench::hostDescription();
   bench::DatasetStats& data = report.dataset;
@@ -136,10 +147,10 @@ void runBench(const BenchCommandOptions& o) {
   const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
   data.loadSeconds = clock.seconds();
   const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
-  flow::VolumeBuildTimes times;
   flow::VolumeOptions volumeOptions;
   volumeOptions.interpolant = parseInterpolant(o.interpolant);
-  const flow::VectorVolume volume = flow::buildVectorVolume(field, vector, volumeOptions, &times);
+  prepared.volume = flow::buildVectorVolume(field, vector, volumeOptions, &prepared.times);
+  const flow::VectorVolume& volume = prepared.volume;
   data.source = field.source();
   data.cells = field.cellCount();
   data.finestLevel = field.finestLevel();
@@ -147,14 +158,39 @@ void runBench(const BenchCommandOptions& o) {
   data.vector = vector.name;
   data.bricks = volume.bricks.size();
   data.regions = volume.regions.regions.size();
-  data.bricksSeconds = times.bricks;
-  data.regionsSeconds = times.regions;
-  data.gatherSeconds = times.gather;
+  data.bricksSeconds = prepared.times.bricks;
+  data.regionsSeconds = prepared.times.regions;
+  data.gatherSeconds = prepared.times.gather;
   report.config = makeConfig(o, volume);
   const std::size_t maxParticles = report.config.particles.back();
 
-  const flow::SeedList seeds = benchSeeds(o, field, volume, vector, maxParticles, data.seeding);
-  flow::checkSeedsInDomain(volume, seeds);
+  prepared.seeds = benchSeeds(o, field, volume, vector, maxParticles, data.seeding);
+  flow::checkSeedsInDomain(volume, prepared.seeds);
+  return prepared;
+}
+
+// Under mpirun every rank runs every row on its share of the particles (dist::mortonRanges);
+// rank 0 prints and writes the JSON.
+bench::RankShare rankShare(const dist::MpiWorld& world) {
+  bench::RankShare share;
+  share.ranks = world.size();
+  share.indicesOf = [&world](std::span<const glm::dvec3> seeds) {
+    return dist::mortonRanges(seeds, world.size())[std::size_t(world.rank())];
+  };
+  share.synchronize = [&world] { world.barrier(); };
+  share.maxOf = [&world](double v) { return world.maxOverRanks(v); };
+  share.sumOf = [&world](double v) { return world.sumOverRanks(v); };
+  return share;
+}
+
+void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
+  PreparedBench prepared = dist::agreed(world, [&] { return prepareBench(o); });
+  bench::BenchReport& report = prepared.report;
+  const bench::DatasetStats& data = report.dataset;
+  const flow::VectorVolume& volume = prepared.volume;
+  const flow::SeedList& seeds = prepared.seeds;
+  report.ranks = world.size();
+  report.config.deviceSlot = unsigned(world.localRank());
 
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} [{:.2f} s]\n", data.source,
              withCommas(data.cells), data.finestLevel, data.coarsestLevel, data.vector,
@@ -163,7 +199,8 @@ void runBench(const BenchCommandOptions& o) {
              withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions),
              data.regionsSeconds, data.gatherSeconds,
              volume.interpolant == flow::Interpolant::Linear
-                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]", times.gradients)
+                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]",
+                               prepared.times.gradients)
                  : std::string());
   fmt::print("seeds      {} from {}; GPU threads take them in {} order\n",
              withCommas(seeds.points.size()), data.seeding,
@@ -171,9 +208,17 @@ void runBench(const BenchCommandOptions& o) {
   fmt::print("stepping   mode {}, h = {:g}, at most {} steps, {} interpolant; best of {}\n",
              o.stepMode, report.config.trace.stepSize, o.steps, o.interpolant,
              report.config.repeats);
-  fmt::print("host       {}\n\n", report.host);
+  fmt::print("host       {}\n", report.host);
+  if (world.size() > 1)
+    fmt::print("ranks      {}: each row's particles in Morton ranges, one per rank; steps "
+               "summed, times the slowest rank's, device memory the largest rank's\n",
+               world.size());
+  if (const std::string warning = world.bindingWarning(); !warning.empty())
+    fmt::print("note       {}\n", warning);
+  fmt::print("\n");
 
   bench::BenchCallbacks callbacks;
+  if (world.size() > 1) callbacks.share = rankShare(world);
   bool headerPrinted = false;
   callbacks.setupDone = [](const bench::BackendSetup& s) {
     fmt::print("setup      {}", bench::setupLine(s));
@@ -185,18 +230,23 @@ void runBench(const BenchCommandOptions& o) {
     std::fflush(stdout);
     // The runner has appended the row: rewriting the JSON now keeps what an interrupted run
     // measured.
-    bench::writeJson(o.json, report);
+    if (world.isRoot()) bench::writeJson(o.json, report);
   };
   callbacks.note = [](const std::string& note) { fmt::print("note       {}\n", note); };
+  // Rows synchronise the ranks: a failure here ends them all (main), not by agreement.
   bench::runBenchmark(volume, seeds.points, report.config, report, callbacks);
 
-  bench::writeJson(o.json, report);
-  fmt::print("\njson       {} ({} rows)\n", o.json, report.rows.size());
+  dist::agreed(world, [&] {
+    if (!world.isRoot()) return;
+    bench::writeJson(o.json, report);
+    fmt::print("\njson       {} ({} rows)\n", o.json, report.rows.size());
+  });
 }
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, const std::string& commandLine) {
+void addBenchCommand(CLI::App& app, const std::string& commandLine,
+                     const dist::MpiWorld& world) {
   auto options = std::make_shared<BenchCommandOptions>();
   options->commandLine = commandLine;
   CLI::App* command = app.add_subcommand(
@@ -279,7 +329,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine) {
       ->check(CLI::IsMember({"spatial", "given"}));
   command->add_option("--json", options->json, "where to write the results")
       ->capture_default_str();
-  command->callback([options] { runBench(*options); });
+  command->callback([options, &world] { runBench(*options, world); });
 }
 
 }  // namespace amrstream::cli

@@ -13,16 +13,40 @@
 #include "pathlines_command.hpp"
 #include "render_command.hpp"
 #include "trace_command.hpp"
+#include "dist/mpi_world.hpp"
+#include "dist/rank_agreement.hpp"
 #include "util/input_error.hpp"
 #ifdef AMRSTREAM_HAVE_VIEWER
 #include "view_command.hpp"
 #endif
 
+namespace {
+
+// Under mpirun, ranks other than 0 print nothing on stdout: rank 0's summary speaks for all.
+void quietUnlessRoot(const amrstream::dist::MpiWorld& world) {
+  if (!world.isRoot()) std::freopen("/dev/null", "w", stdout);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  const amrstream::dist::MpiWorld world;
+  quietUnlessRoot(world);
+  // An error every rank meets alike (a bad option) is printed once, by rank 0; one that a rank
+  // meets alone outside the points where ranks agree on failures ends them all.
+  const auto fail = [&](const char* message, int code, bool sharedByAllRanks) {
+    if (world.isRoot() || !sharedByAllRanks) {
+      const std::string rank = sharedByAllRanks ? "" : world.rankName();
+      std::fprintf(stderr, "amrstream: error: %s%s%s\n", rank.c_str(), rank.empty() ? "" : ": ",
+                   message);
+    }
+    if (!sharedByAllRanks && world.size() > 1) world.abort(code);
+    return code;
+  };
   CLI::App app("amrstream: streamlines through adaptive-mesh-refinement vector fields");
   app.require_subcommand(1);
   app.set_version_flag("--version", "amrstream 0.1.0");
-  amrstream::cli::addTraceCommand(app);
+  amrstream::cli::addTraceCommand(app, world);
   amrstream::cli::addPathlinesCommand(app);
   amrstream::cli::addInfoCommand(app);
   amrstream::cli::addGenCommand(app);
@@ -34,21 +58,21 @@ int main(int argc, char** argv) {
 #endif
   std::string commandLine = "amrstream";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
-  amrstream::cli::addBenchCommand(app, commandLine);
+  amrstream::cli::addBenchCommand(app, commandLine, world);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ValidationError& e) {
     // A bad option value ("--count: ..."): bad input, reported as the other input errors are.
-    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
-    return 2;
+    return fail(e.what(), 2, true);
   } catch (const CLI::ParseError& e) {
+    if (!world.isRoot()) return e.get_exit_code();
     return app.exit(e);
+  } catch (const amrstream::dist::RankFailure& e) {
+    return fail(e.what(), e.exitCode(), true);
   } catch (const amrstream::InputError& e) {
-    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
-    return 2;
+    return fail(e.what(), 2, world.size() == 1);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "amrstream: error: %s\n", e.what());
-    return 1;
+    return fail(e.what(), 1, world.size() == 1);
   }
   return 0;
 }

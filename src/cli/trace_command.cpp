@@ -6,6 +6,7 @@
 
 #include "output/vtp_writer.hpp"
 #include "amrstream/provenance.hpp"
+#include "distributed_trace.hpp"
 #include "trace_job.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "util/peak_memory.hpp"
@@ -21,17 +22,11 @@ struct TraceCommandOptions {
   std::string compression = "zlib";
   bool endpointsOnly = false;
   std::string periodicLines = "split";
+  std::string distribute = "seeds";
 };
 
-void runTrace(const TraceCommandOptions& o) {
-  jobFiles(o.job).addOutput("--out", o.out);
-  PreparedInput input = prepareInput(o.job);
-  input.releaseField();  // the volume holds the vector and the point data
-  input.options.keepHistory = !o.endpointsOnly;
-  const bool stagePeak = resetStagePeak();
-  // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
-  const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
-
+void writeTraces(const TraceCommandOptions& o, const flow::TraceView& traces,
+                 const PreparedInput& input, bool stagePeak) {
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;
   writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
@@ -52,9 +47,32 @@ void runTrace(const TraceCommandOptions& o) {
                        : std::string());
 }
 
+void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
+  const auto checkFiles = [&] {
+    checkDistributeOption(o.distribute);
+    jobFiles(o.job).addOutput("--out", o.out);
+  };
+  if (world.size() > 1) {
+    const bool stagePeak = resetStagePeak();
+    traceDistributed(world, o.job, !o.endpointsOnly, checkFiles,
+                     [&](const flow::TraceView& traces, PreparedInput& input) {
+                       writeTraces(o, traces, input, stagePeak);
+                     });
+    return;
+  }
+  checkFiles();
+  PreparedInput input = prepareInput(o.job);
+  input.releaseField();  // the volume holds the vector and the point data
+  input.options.keepHistory = !o.endpointsOnly;
+  const bool stagePeak = resetStagePeak();
+  // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
+  const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
+  writeTraces(o, traces, input, stagePeak);
+}
+
 }  // namespace
 
-void addTraceCommand(CLI::App& app) {
+void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
   auto options = std::make_shared<TraceCommandOptions>();
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
   addTraceJobOptions(*command, options->job);
@@ -73,9 +91,10 @@ void addTraceCommand(CLI::App& app) {
                    "domain) or unwrapped (one polyline continuing past the face)")
       ->capture_default_str()
       ->check(CLI::IsMember({"split", "unwrapped"}));
-  command->callback([options] {
+  addDistributeOption(*command, options->distribute);
+  command->callback([options, &world] {
     options->job.backend.validation = validationRequested();
-    runTrace(*options);
+    runTrace(*options, world);
   });
 }
 

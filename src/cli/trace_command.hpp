@@ -2,9 +2,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "dist/mpi_world.hpp"
+
 namespace amrstream::cli {
 
-// `amrstream trace INPUT ... --out traces.vtp`
-void addTraceCommand(CLI::App& app);
+// `amrstream trace INPUT ... --out traces.vtp`; under mpirun, over the ranks of `world`, which
+// must outlive the parse.
+void addTraceCommand(CLI::App& app, const dist::MpiWorld& world);
 
 }  // namespace amrstream::cli

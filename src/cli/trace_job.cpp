@@ -112,34 +112,37 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   return input;
 }
 
-flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
-                             HostValues hostValues) {
+flow::StoredTraces traceSeeds(const TraceJobOptions& o, PreparedInput& input,
+                              HostValues hostValues) {
   const flow::SeedList& seeds = input.seeds;
-  TraceReport& report = input.report;
-  flow::StoredTraces stored = [&] {
-    // Progress counts seeds: lines finished, scaled by the lines per seed.
-    Progress progress("tracing", seeds.points.size());
-    return trace(
-        o.backend, input.volume, seeds.points, input.options,
-        [&](std::size_t done, std::size_t lines) {
-          progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
-        },
-        &report, hostValues, printLine);
-  }();
-  const double traceSeconds = report.traceSeconds;
-  const flow::TraceSet& traces = stored.lines();
+  // Progress counts seeds: lines finished, scaled by the lines per seed.
+  Progress progress("tracing", seeds.points.size());
+  return trace(
+      o.backend, input.volume, seeds.points, input.options,
+      [&](std::size_t done, std::size_t lines) {
+        progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
+      },
+      &input.report, hostValues, printLine);
+}
 
+void printTraceSummary(const flow::TraceSet& traces, const TraceReport& report) {
   std::size_t steps = 0;
   for (const std::uint32_t lineSteps : traces.steps) steps += lineSteps;
   fmt::print("steps      {} taken in {} lines, {:.1f} per line\n", withCommas(steps),
              withCommas(traces.lineCount()),
              double(steps) / double(std::max<std::size_t>(1, traces.lineCount())));
   fmt::print("reasons    {}\n", reasonHistogram(traces.reasons));
-  fmt::print("time       {:.3f} s tracing, {:.3g} particle-steps/s{}\n", traceSeconds,
-             double(steps) / std::max(traceSeconds, 1e-9),
+  fmt::print("time       {:.3f} s tracing, {:.3g} particle-steps/s{}\n", report.traceSeconds,
+             double(steps) / std::max(report.traceSeconds, 1e-9),
              report.setupSeconds > 0.0
                  ? fmt::format(" (device setup {:.2f} s before it)", report.setupSeconds)
                  : std::string());
+}
+
+flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
+                             HostValues hostValues) {
+  flow::StoredTraces stored = traceSeeds(o, input, hostValues);
+  printTraceSummary(stored.lines(), input.report);
   return stored;
 }
 

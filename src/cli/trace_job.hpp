@@ -72,8 +72,15 @@ struct PreparedInput {
 // structure (for traces read from a file).
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
 
-// Traces with the requested backend (with a progress line), prints the steps, reasons and time
-// lines, and records what ran in input.report. The points stay in the rounds that made them
+// Traces with the requested backend (with a progress line) and records what ran in
+// input.report. The points stay in the rounds that made them.
+flow::StoredTraces traceSeeds(const TraceJobOptions& o, PreparedInput& input,
+                              HostValues hostValues = HostValues::Keep);
+
+// The steps, reasons and time lines of a trace.
+void printTraceSummary(const flow::TraceSet& traces, const TraceReport& report);
+
+// traceSeeds(), then printTraceSummary(). The points stay in the rounds that made them
 // (StoredTraces::assemble() gives a TraceSet).
 flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
                              HostValues hostValues = HostValues::Keep);

@@ -42,6 +42,11 @@ ContextBuilder& ContextBuilder::deviceName(std::string substring) {
   return *this;
 }
 
+ContextBuilder& ContextBuilder::deviceSlot(uint32_t slot) {
+  deviceSlot_ = slot;
+  return *this;
+}
+
 ContextBuilder& ContextBuilder::validation(bool enabled) {
   validation_ = enabled;
   return *this;

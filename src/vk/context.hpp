@@ -113,6 +113,10 @@ class ContextBuilder {
   ContextBuilder& deviceIndex(uint32_t index);
   // Use the first device whose name contains `substring` (case-insensitive) and can serve.
   ContextBuilder& deviceName(std::string substring);
+  // Among the devices that qualify (the discrete GPUs if any qualifies, else all), take the one
+  // at `slot` modulo their count instead of the first: ranks of one host pass their local rank
+  // to spread over its GPUs. 0 by default.
+  ContextBuilder& deviceSlot(uint32_t slot);
   // VK_LAYER_KHRONOS_validation plus a messenger that counts errors. Off by default.
   ContextBuilder& validation(bool enabled);
   // The layer's synchronization validation as well (slower); implies validation.
@@ -136,6 +140,7 @@ class ContextBuilder {
   CapabilitySet required_{Capability::Compute};
   std::optional<uint32_t> deviceIndex_;
   std::optional<std::string> deviceName_;
+  uint32_t deviceSlot_ = 0;
   bool validation_ = false;
   bool synchronizationValidation_ = false;
   bool debugNames_ = false;

@@ -47,7 +47,7 @@ std::string listSeen(const std::vector<Candidate>& all) {
 // `surface` is null for a headless context.
 Candidate chooseDevice(VkInstance instance, VkSurfaceKHR surface, CapabilitySet required,
                        const std::optional<uint32_t>& index,
-                       const std::optional<std::string>& name) {
+                       const std::optional<std::string>& name, uint32_t slot) {
   const bool presenting = surface != VK_NULL_HANDLE;
   std::vector<Candidate> all;
   const auto devices = enumeratePhysicalDevices(instance);
@@ -82,15 +82,14 @@ Candidate chooseDevice(VkInstance instance, VkSurfaceKHR surface, CapabilitySet 
     }
   }
 
-  const Candidate* chosen = nullptr;
+  std::vector<const Candidate*> discrete, qualified;
   for (const Candidate* c : pool) {
     if (!reasonAgainst(*c, required, presenting).empty()) continue;
-    if (c->report.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) {
-      chosen = c;
-      break;
-    }
-    if (chosen == nullptr) chosen = c;
+    qualified.push_back(c);
+    if (c->report.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) discrete.push_back(c);
   }
+  const std::vector<const Candidate*>& preferred = discrete.empty() ? qualified : discrete;
+  const Candidate* chosen = preferred.empty() ? nullptr : preferred[slot % preferred.size()];
   if (chosen == nullptr) {
     if (pool.size() == 1) throw ContextError(reasonAgainst(*pool.front(), required, presenting));
     std::string reasons;
@@ -138,7 +137,8 @@ Context ContextBuilder::build() const {
 
   CapabilitySet capabilities = required_.withImplied();
   Candidate chosen =
-      chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_, deviceName_);
+      chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_, deviceName_,
+                   deviceSlot_);
   // Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
   // enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
   // request for them alone enables whichever of the two the device has.

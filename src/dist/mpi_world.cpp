@@ -1,0 +1,81 @@
+#include "mpi_world.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <sched.h>
+
+#include <cstdlib>
+#include <thread>
+#include <stdexcept>
+
+namespace amrstream::dist {
+
+bool launchedByMpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+MpiWorld::MpiWorld() {
+  if (!launchedByMpi()) return;
+  int provided = 0;
+  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
+    throw std::runtime_error("MPI_Init_thread failed");
+  active_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm host;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &host);
+  MPI_Comm_rank(host, &localRank_);
+  MPI_Comm_size(host, &localSize_);
+  MPI_Comm_free(&host);
+}
+
+MpiWorld::~MpiWorld() {
+  if (active_) MPI_Finalize();
+}
+
+std::string MpiWorld::bindingWarning() const {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (size_ == 1 || sched_getaffinity(0, sizeof(set), &set) != 0) return {};
+  const int usable = CPU_COUNT(&set), host = int(std::thread::hardware_concurrency());
+  if (usable * localSize_ >= host || usable > 1) return {};
+  return fmt::format("each rank may use {} of this host's {} cores (mpirun binds ranks to cores): "
+                     "its CPU threads are that few; mpirun --bind-to none lets them share all",
+                     usable, host);
+}
+
+std::string MpiWorld::rankName() const {
+  return size_ > 1 ? fmt::format("rank {} of {}", rank_, size_) : std::string();
+}
+
+void MpiWorld::barrier() const {
+  if (active_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+double MpiWorld::maxOverRanks(double value) const {
+  double result = value;
+  if (active_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return result;
+}
+
+double MpiWorld::sumOverRanks(double value) const {
+  double result = value;
+  if (active_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return result;
+}
+
+std::vector<double> MpiWorld::gatherToRoot(double value) const {
+  std::vector<double> values(isRoot() ? std::size_t(size_) : 0u, value);
+  if (active_) MPI_Gather(&value, 1, MPI_DOUBLE, values.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  return values;
+}
+
+void MpiWorld::abort(int code) const {
+  if (active_ && size_ > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
+}
+
+}  // namespace amrstream::dist

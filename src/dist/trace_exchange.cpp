@@ -1,0 +1,117 @@
+#include "trace_exchange.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+
+namespace amrstream::dist {
+
+namespace {
+
+constexpr int kTag = 7301;
+constexpr std::size_t kMessageBytes = std::size_t(1) << 30;
+
+void sendBytes(const void* data, std::size_t bytes, int to) {
+  const auto* p = static_cast<const char*>(data);
+  for (std::size_t done = 0; done < bytes; done += kMessageBytes) {
+    const int n = int(std::min(kMessageBytes, bytes - done));
+    MPI_Send(p + done, n, MPI_BYTE, to, kTag, MPI_COMM_WORLD);
+  }
+}
+
+void receiveBytes(void* data, std::size_t bytes, int from) {
+  auto* p = static_cast<char*>(data);
+  for (std::size_t done = 0; done < bytes; done += kMessageBytes) {
+    const int n = int(std::min(kMessageBytes, bytes - done));
+    MPI_Recv(p + done, n, MPI_BYTE, from, kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  }
+}
+
+template <typename Container>
+void send(const Container& c, int to) {
+  sendBytes(c.data(), c.size() * sizeof(*c.data()), to);
+}
+
+template <typename Container>
+void receive(Container& c, std::size_t count, int from) {
+  c.resize(count);
+  receiveBytes(c.data(), count * sizeof(*c.data()), from);
+}
+
+// Lines, points, channels, precise positions, vorticity.
+using Header = std::array<std::uint64_t, 5>;
+
+Header headerOf(const flow::TraceSet& t) {
+  return {t.lineCount(), t.pointCount(), t.channelCount(), t.precisePositions ? 1u : 0u,
+          t.withVorticity ? 1u : 0u};
+}
+
+void sendPart(const flow::TraceSet& t) {
+  const Header header = headerOf(t);
+  sendBytes(header.data(), sizeof(header), 0);
+  send(t.seedIds, 0);
+  send(t.directions, 0);
+  send(t.steps, 0);
+  send(t.reasons, 0);
+  send(t.offsets, 0);
+  send(t.positions, 0);
+  if (t.precisePositions) send(t.positionsLow, 0);
+  send(t.times, 0);
+  send(t.vectors, 0);
+  send(t.channels, 0);
+  if (t.withVorticity) send(t.vorticity, 0);
+}
+
+flow::TraceSet receivePart(const flow::TraceSet& root, int from) {
+  Header header{};
+  receiveBytes(header.data(), sizeof(header), from);
+  const auto [lines, points, channels, precise, vorticity] = header;
+  if (channels != root.channelCount() || bool(precise) != root.precisePositions ||
+      bool(vorticity) != root.withVorticity)
+    throw std::runtime_error("rank " + std::to_string(from) +
+                             " traced other point data than rank 0");
+  flow::TraceSet t;
+  t.vectorName = root.vectorName;
+  t.channelNames = root.channelNames;
+  t.periodic = root.periodic;
+  t.precisePositions = root.precisePositions;
+  t.withVorticity = root.withVorticity;
+  receive(t.seedIds, lines, from);
+  receive(t.directions, lines, from);
+  receive(t.steps, lines, from);
+  receive(t.reasons, lines, from);
+  receive(t.offsets, lines + 1, from);
+  receive(t.positions, points, from);
+  if (t.precisePositions) receive(t.positionsLow, points, from);
+  receive(t.times, points, from);
+  receive(t.vectors, points, from);
+  receive(t.channels, points * channels, from);
+  if (t.withVorticity) receive(t.vorticity, points, from);
+  return t;
+}
+
+}  // namespace
+
+std::uint64_t partBytes(const flow::TraceSet& t) {
+  return sizeof(Header) +
+         t.lineCount() * (sizeof(std::uint32_t) * 2 + sizeof(float) + sizeof(std::int32_t)) +
+         (t.lineCount() + 1) * sizeof(std::uint64_t) +
+         t.pointCount() * flow::TraceSet::bytesPerPoint(t.channelCount(), t.withVorticity,
+                                                        t.precisePositions);
+}
+
+std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine) {
+  std::vector<flow::TraceSet> parts;
+  if (!world.isRoot()) {
+    sendPart(mine);
+    return parts;
+  }
+  parts.push_back(std::move(mine));
+  for (int rank = 1; rank < world.size(); ++rank) parts.push_back(receivePart(parts.front(), rank));
+  return parts;
+}
+
+}  // namespace amrstream::dist

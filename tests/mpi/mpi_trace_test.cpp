@@ -1,0 +1,178 @@
+// `mpirun -np N amrstream trace ... --distribute seeds` against one process (no mpirun): the same
+// lines in the same order, steps and reasons exactly, every point array bit for bit on the CPU
+// and on each GPU backend (lavapipe, validation layers on: each line's arithmetic does not depend
+// on which lines share its batch); a rank that fails ends every rank with its error and no output.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "output/vtp_reader.hpp"
+#include "run_amrstream.hpp"
+#include "temp_dir_test.hpp"
+
+namespace amrstream {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Ranks bound to one core each (mpirun's default) would leave lavapipe and the CPU tracer one
+// thread; the tests' processes may share the cores.
+testing::Outcome mpirun(int ranks, const std::string& arguments) {
+  return testing::runAmrstream(
+      arguments, "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+                     std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np " +
+                     std::to_string(ranks));
+}
+
+void expectSameTraces(const flow::TraceSet& one, const flow::TraceSet& many) {
+  ASSERT_EQ(one.lineCount(), many.lineCount());
+  EXPECT_EQ(one.seedIds, many.seedIds);
+  EXPECT_EQ(one.directions, many.directions);
+  EXPECT_EQ(one.steps, many.steps);
+  EXPECT_EQ(one.reasons, many.reasons);
+  EXPECT_EQ(one.offsets, many.offsets);
+  EXPECT_EQ(one.channelNames, many.channelNames);
+  ASSERT_EQ(one.pointCount(), many.pointCount());
+  const auto same = [](const auto& a, const auto& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(*a.data())) == 0;
+  };
+  EXPECT_TRUE(same(one.positions, many.positions));
+  EXPECT_TRUE(same(one.times, many.times));
+  EXPECT_TRUE(same(one.vectors, many.vectors));
+  EXPECT_TRUE(same(one.channels, many.channels));
+}
+
+class MpiTraceTest : public testing::TempDirTest {
+ protected:
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // The traces of `arguments` in one process and on each rank count, compared.
+  void expectRanksAgree(const std::string& arguments, std::initializer_list<int> rankCounts) {
+    const testing::Outcome single = testing::runAmrstream(arguments + " --out " + path("one.vtp"));
+    ASSERT_EQ(single.status, 0) << single.output;
+    const flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
+    for (const int ranks : rankCounts) {
+      SCOPED_TRACE(std::to_string(ranks) + " ranks");
+      const std::string out = path("ranks" + std::to_string(ranks) + ".vtp");
+      const testing::Outcome run = mpirun(ranks, arguments + " --out " + out);
+      ASSERT_EQ(run.status, 0) << run.output;
+      if (ranks > 1) {
+        EXPECT_THAT(run.output, HasSubstr("ranks      " + std::to_string(ranks) + " ("));
+      }
+      // Rank 0 alone prints: one summary.
+      EXPECT_EQ(run.output.find("input "), run.output.rfind("input "));
+      expectSameTraces(one, output::readVtpTraces(out));
+    }
+  }
+};
+
+TEST_F(MpiTraceTest, BothDirectionsWithPointDataOnTheCpu) {
+  expectRanksAgree("trace builtin:cloud --backend cpu --count 150 --steps 600", {1, 2, 3});
+}
+
+TEST_F(MpiTraceTest, ForwardOnAPeriodicFieldFromASeedGrid) {
+  expectRanksAgree("trace builtin:abc --backend cpu --seed-grid 4,3,2 --steps 800 "
+                   "--direction forward --vorticity",
+                   {2, 3});
+}
+
+// More ranks than seeds: some ranks trace nothing.
+TEST_F(MpiTraceTest, RanksWithoutSeeds) {
+  expectRanksAgree("trace builtin:cloud --backend cpu --count 2 --steps 300", {3});
+}
+
+class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(MpiGpuTraceTest, RanksEqualOneProcess) {
+  const std::string arguments =
+      "trace builtin:cloud --backend " + GetParam() + " --count 96 --steps 500";
+  const testing::Outcome single = testing::runAmrstream(
+      arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(single.status, 0) << single.output;
+  // Validation layers on every rank (-x passes the variable on): a validation error fails a run.
+  const testing::Outcome run = testing::runAmrstream(
+      arguments + " --out " + path("two.vtp"),
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 AMRSTREAM_VALIDATION=1 " +
+          std::string(AMRSTREAM_MPIEXEC) +
+          " -x AMRSTREAM_VALIDATION --oversubscribe --bind-to none -np 2");
+  ASSERT_EQ(run.status, 0) << run.output;
+  expectSameTraces(output::readVtpTraces(path("one.vtp")),
+                   output::readVtpTraces(path("two.vtp")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, MpiGpuTraceTest,
+                         ::testing::Values("rayquery", "pipeline", "compute"));
+
+// One rank of three reads a truncated copy of the dataset (an MPMD launch): every rank ends,
+// rank 0 prints that rank's error once, the exit status is bad input's, and no .vtp is written.
+TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
+  ASSERT_EQ(testing::runAmrstream("gen rotation --levels 2 --out " + path("good")).status, 0);
+  for (const std::string suffix : {".cells", ".vely.scalars", ".velz.scalars"})
+    std::filesystem::copy_file(path("good" + suffix), path("bad" + suffix));
+  {
+    std::ifstream in(path("good.exa"));
+    std::ofstream out(path("bad.exa"));
+    for (std::string line; std::getline(in, line);) {
+      for (std::size_t at; (at = line.find("good.")) != std::string::npos;)
+        line.replace(at, 5, "bad.");
+      out << line << '\n';
+    }
+    std::ofstream truncated(path("bad.velx.scalars"), std::ios::binary);
+    truncated << std::string(1000, '\0');
+  }
+  const std::string options = " --backend cpu --count 32 --out " + path("out.vtp");
+  const testing::Outcome run = testing::runAmrstream(
+      "trace " + path("good.exa") + options + " : -np 1 " + AMRSTREAM_BINARY + " trace " +
+          path("bad.exa") + options,
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 " +
+          std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np 2");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 2 of 3: "));
+  EXPECT_THAT(run.output, HasSubstr("bad.velx.scalars: holds 1000 bytes"));
+  EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+  EXPECT_FALSE(std::filesystem::exists(path("out.vtp")));
+}
+
+// bench under mpirun: each row's particles shared out, so its steps sum to one process's.
+TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
+  const std::string arguments =
+      "bench builtin:cloud --backends cpu,compute --particles 100,300 --steps 200 --json ";
+  const testing::Outcome single = testing::runAmrstream(arguments + path("one.json"));
+  ASSERT_EQ(single.status, 0) << single.output;
+  const testing::Outcome run = mpirun(3, arguments + path("three.json"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("ranks      3: each row's particles in Morton ranges"));
+  const auto json = [&](const std::string& name) {
+    return nlohmann::json::parse(std::ifstream(path(name)));
+  };
+  const nlohmann::json one = json("one.json"), three = json("three.json");
+  EXPECT_EQ(one["ranks"], 1);
+  EXPECT_EQ(three["ranks"], 3);
+  ASSERT_EQ(one["rows"].size(), 8u);  // 2 backends x 2 modes x 2 counts
+  ASSERT_EQ(three["rows"].size(), one["rows"].size());
+  for (std::size_t i = 0; i < one["rows"].size(); ++i) {
+    SCOPED_TRACE("row " + std::to_string(i));
+    for (const char* key : {"backend", "mode", "particles", "steps"})
+      EXPECT_EQ(three["rows"][i][key], one["rows"][i][key]) << key;
+  }
+}
+
+TEST_F(MpiTraceTest, DistributingTheDataIsRefusedByName) {
+  const testing::Outcome run =
+      mpirun(2, "trace builtin:cloud --distribute data --out " + path("out.vtp"));
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("--distribute: data (bricks partitioned in space among the "
+                                    "ranks) is not available yet"));
+  EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+}
+
+}  // namespace
+}  // namespace amrstream
