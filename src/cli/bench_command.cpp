@@ -12,7 +12,7 @@
 #include "dataset_files.hpp"
 #include "dist/mpi_world.hpp"
 #include "dist/rank_agreement.hpp"
-#include "dist/seed_ranges.hpp"
+#include "dist/seed_shares.hpp"
 #include "dataset_options.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
@@ -169,13 +169,13 @@ PreparedBench prepareBench(const BenchCommandOptions& o) {
   return prepared;
 }
 
-// Under mpirun every rank runs every row on its share of the particles (dist::mortonRanges);
+// Under mpirun every rank runs every row on its share of the particles (dist::mortonShares);
 // rank 0 prints and writes the JSON.
 bench::RankShare rankShare(const dist::MpiWorld& world) {
   bench::RankShare share;
   share.ranks = world.size();
   share.indicesOf = [&world](std::span<const glm::dvec3> seeds) {
-    return dist::mortonRanges(seeds, world.size())[std::size_t(world.rank())];
+    return dist::mortonShares(seeds, world.size())[std::size_t(world.rank())];
   };
   share.synchronize = [&world] { world.barrier(); };
   share.maxOf = [&world](double v) { return world.maxOverRanks(v); };
@@ -210,7 +210,8 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
              report.config.repeats);
   fmt::print("host       {}\n", report.host);
   if (world.size() > 1)
-    fmt::print("ranks      {}: each row's particles in Morton ranges, one per rank; steps "
+    fmt::print("ranks      {}: each row's particles in blocks of the Morton order dealt round the "
+               "ranks; steps "
                "summed, times the slowest rank's, device memory the largest rank's\n",
                world.size());
   if (const std::string warning = world.bindingWarning(); !warning.empty())

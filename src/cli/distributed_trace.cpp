@@ -7,9 +7,10 @@
 
 #include "dist/gathered_traces.hpp"
 #include "dist/rank_agreement.hpp"
-#include "dist/seed_ranges.hpp"
+#include "dist/seed_shares.hpp"
 #include "dist/trace_exchange.hpp"
 #include "option_checks.hpp"
+#include "output/pvtp_writer.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -35,8 +36,58 @@ std::string perRank(const std::vector<double>& values, const char* format) {
 
 }  // namespace
 
+std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank) {
+  return pvtp.parent_path() / fmt::format("{}_{}.vtp", pvtp.stem().string(), rank);
+}
+
+namespace {
+
+void printWritten(const std::filesystem::path& path, double lines, double points, double seconds,
+                  const std::string& pieces = "") {
+  fmt::print("output     {} ({}{} polylines, {} points) [{:.2f} s]\n", path.string(), pieces,
+             withCommas(std::uint64_t(lines)), withCommas(std::uint64_t(points)), seconds);
+}
+
+// Every rank writes its lines as a piece, rank 0 the .pvtp; a failure anywhere removes them all.
+void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput& input,
+                 const DistributedOutput& output, const std::function<void()>& printSummary) {
+  const std::filesystem::path piece = piecePath(output.path, world.rank());
+  flow::TraceSet lines = dist::withoutPoints(part);
+  try {
+    Stopwatch clock;
+    std::vector<flow::TraceSet> own;
+    own.push_back(std::move(part));
+    const output::VtpCounts counts = dist::agreed(world, [&] {
+      return output.write(piece, dist::GatheredTraces(std::move(own)), input);
+    });
+    const double seconds = world.maxOverRanks(clock.seconds());
+    const double written = world.sumOverRanks(double(counts.lines));
+    const double points = world.sumOverRanks(double(counts.points));
+    std::vector<flow::TraceSet> parts =
+        dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(lines)); });
+    dist::agreed(world, [&] {
+      if (!world.isRoot()) return;
+      const dist::GatheredTraces traces(std::move(parts));
+      printSummary();
+      printTraceSummary(traces.lines(), input.report);
+      std::vector<std::filesystem::path> pieces;
+      for (int rank = 0; rank < world.size(); ++rank) pieces.push_back(piecePath(output.path, rank));
+      output::writePvtp(output.path, pieces);
+      printWritten(output.path, written, points, seconds,
+                   fmt::format("{} pieces {}, ", world.size(),
+                               piecePath(output.path, 0).filename().string() + ".."));
+    });
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(piece, ignored);
+    throw;
+  }
+}
+
+}  // namespace
+
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                      const std::function<void()>& checkFiles, const TracesWriter& write) {
+                      const std::function<void()>& checkFiles, const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   job.backend.deviceSlot = unsigned(world.localRank());
   PreparedInput input = dist::agreed(world, [&] {
@@ -49,9 +100,9 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
 
   if (const std::string warning = world.bindingWarning(); !warning.empty())
     fmt::print("note       {}\n", warning);
-  const std::vector<std::vector<std::uint32_t>> ranges =
-      dist::mortonRanges(input.seeds.points, world.size());
-  const std::vector<std::uint32_t>& mine = ranges[std::size_t(world.rank())];
+  const std::vector<std::vector<std::uint32_t>> shares =
+      dist::mortonShares(input.seeds.points, world.size());
+  const std::vector<std::uint32_t>& mine = shares[std::size_t(world.rank())];
   const std::size_t seedCount = input.seeds.points.size();
   flow::SeedList allSeeds = std::exchange(input.seeds, subset(input.seeds, mine));
 
@@ -67,8 +118,17 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   const std::vector<double> rankSeconds = world.gatherToRoot(input.report.traceSeconds);
   input.report.traceSeconds = world.maxOverRanks(input.report.traceSeconds);
   input.report.setupSeconds = world.maxOverRanks(input.report.setupSeconds);
-  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(part)));
+  const auto printRanks = [&] {
+    const auto [fewest, most] = std::ranges::minmax(
+        shares, {}, [](const std::vector<std::uint32_t>& r) { return r.size(); });
+    fmt::print("ranks      {} ({} seeds, {}..{} a rank in blocks of the Morton order): steps {}, "
+               "tracing {} s\n",
+               world.size(), seedCount, fewest.size(), most.size(), perRank(rankSteps, "{:.3g}"),
+               perRank(rankSeconds, "{:.3f}"));
+  };
+  if (output.pieces) return writePieces(world, std::move(part), input, output, printRanks);
 
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(part)));
   Stopwatch clock;
   std::vector<flow::TraceSet> parts =
       dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(part)); });
@@ -76,22 +136,21 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   dist::agreed(world, [&] {
     if (!world.isRoot()) return;
     const dist::GatheredTraces traces(std::move(parts));
-    const auto [fewest, most] = std::ranges::minmax(
-        ranges, {}, [](const std::vector<std::uint32_t>& r) { return r.size(); });
-    fmt::print("ranks      {} ({} seeds in Morton ranges of {}..{}): steps {}, tracing {} s\n",
-               world.size(), seedCount, fewest.size(), most.size(),
-               perRank(rankSteps, "{:.3g}"), perRank(rankSeconds, "{:.3f}"));
+    printRanks();
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(traces.lines(), input.report);
-    write(traces, input);
+    clock.restart();
+    const output::VtpCounts counts = output.write(output.path, traces, input);
+    printWritten(output.path, double(counts.lines), double(counts.points), clock.seconds());
   });
 }
 
 void addDistributeOption(CLI::App& command, std::string& distribute) {
   command
       .add_option("--distribute", distribute,
-                  "under mpirun: seeds (every rank reads the data and traces a Morton range of "
-                  "the seeds; rank 0 writes the result) or data (not available yet)")
+                  "under mpirun: seeds (every rank reads the data and traces its share of the "
+                  "seeds, blocks of their Morton order; rank 0 writes the result) or data (not "
+                  "available yet)")
       ->capture_default_str()
       ->check(CLI::IsMember({"seeds", "data"}));
 }

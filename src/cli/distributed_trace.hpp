@@ -1,24 +1,37 @@
 #pragma once
 // `trace` on the ranks of an MPI job, the seeds shared among them (--distribute seeds): every
-// rank reads the input and builds the structure, traces one contiguous range of the seeds' Morton
-// order on the GPU its local rank picks, and rank 0 gathers the lines and writes them in the
-// order one process would. Every phase ends with the ranks agreeing on failures, so an error on
-// one rank ends them all with its message.
+// rank reads the input and builds the structure, traces its share of the seeds (blocks of their
+// Morton order dealt round the ranks) on the GPU its local rank picks. Rank 0 gathers the lines
+// and writes them in the order one process would, or (--pieces) every rank writes its own lines
+// as one piece and rank 0 a .pvtp listing the pieces. Every phase ends with the ranks agreeing
+// on failures, so an error on one rank ends them all with its message, and a failed run leaves
+// no piece behind.
 
+#include <filesystem>
 #include <functional>
 
 #include "dist/mpi_world.hpp"
 #include "flow/trace_view.hpp"
+#include "output/vtp_writer.hpp"
 #include "trace_job.hpp"
 
 namespace amrstream::cli {
 
-// Writes the gathered traces; called on rank 0 only.
-using TracesWriter = std::function<void(const flow::TraceView& traces, PreparedInput& input)>;
+struct DistributedOutput {
+  std::filesystem::path path;  // the .vtp, or with pieces the .pvtp
+  bool pieces = false;
+  // Writes traces to one .vtp: the whole on rank 0, or a rank's piece on every rank.
+  std::function<output::VtpCounts(const std::filesystem::path&, const flow::TraceView&,
+                                  const PreparedInput&)>
+      write;
+};
+
+// The piece of `rank` beside the .pvtp: traces.pvtp -> traces_0.vtp, traces_1.vtp, ...
+std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 
 // `checkFiles` runs first on every rank (the run's inputs and outputs, RunFiles).
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                      const std::function<void()>& checkFiles, const TracesWriter& write);
+                      const std::function<void()>& checkFiles, const DistributedOutput& output);
 
 // --distribute: how an MPI job shares the work (only `seeds` exists).
 void addDistributeOption(CLI::App& command, std::string& distribute);

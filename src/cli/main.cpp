@@ -11,6 +11,7 @@
 #include "gen_command.hpp"
 #include "info_command.hpp"
 #include "pathlines_command.hpp"
+#include "progress.hpp"
 #include "render_command.hpp"
 #include "trace_command.hpp"
 #include "dist/mpi_world.hpp"
@@ -22,9 +23,11 @@
 
 namespace {
 
-// Under mpirun, ranks other than 0 print nothing on stdout: rank 0's summary speaks for all.
+// Under mpirun, ranks other than 0 print neither on stdout nor progress: rank 0 speaks for all.
 void quietUnlessRoot(const amrstream::dist::MpiWorld& world) {
-  if (!world.isRoot()) std::freopen("/dev/null", "w", stdout);
+  if (world.isRoot()) return;
+  std::freopen("/dev/null", "w", stdout);
+  amrstream::cli::Progress::silenceAll();
 }
 
 }  // namespace

@@ -2,9 +2,18 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 
 namespace amrstream::cli {
+
+namespace {
+
+std::atomic<bool> silenced{false};
+
+}  // namespace
+
+void Progress::silenceAll() { silenced = true; }
 
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), terminal_(isatty(STDERR_FILENO)) {}
@@ -16,7 +25,7 @@ Progress::~Progress() {
 void Progress::update(std::size_t done) {
   std::lock_guard lock(mutex_);
   const double now = clock_.seconds();
-  if (now < 1.0 || total_ == 0) return;
+  if (now < 1.0 || total_ == 0 || silenced) return;
   const int percent = int(100.0 * double(done) / double(total_));
   if (terminal_) {
     if (now - lastPrint_ < 0.25) return;

@@ -12,6 +12,9 @@ namespace amrstream::cli {
 
 class Progress {
  public:
+  // Silences every Progress of this process from now on (MPI ranks other than 0).
+  static void silenceAll();
+
   Progress(std::string label, std::size_t total);
   ~Progress();
   void update(std::size_t done);

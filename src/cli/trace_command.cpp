@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "output/vtp_writer.hpp"
 #include "amrstream/provenance.hpp"
 #include "distributed_trace.hpp"
+#include "output_paths.hpp"
+#include "util/input_error.hpp"
 #include "trace_job.hpp"
 #include "amrstream/trace_settings.hpp"
 #include "util/peak_memory.hpp"
@@ -23,11 +26,11 @@ struct TraceCommandOptions {
   bool endpointsOnly = false;
   std::string periodicLines = "split";
   std::string distribute = "seeds";
+  bool pieces = false;
 };
 
-void writeTraces(const TraceCommandOptions& o, const flow::TraceView& traces,
-                 const PreparedInput& input, bool stagePeak) {
-  Stopwatch clock;
+output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesystem::path& path,
+                                 const flow::TraceView& traces, const PreparedInput& input) {
   output::VtpWriteOptions writeOptions;
   writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
                                                               : output::PeriodicLines::Split;
@@ -37,9 +40,10 @@ void writeTraces(const TraceCommandOptions& o, const flow::TraceView& traces,
        fmt::format("{} from {}", input.seeds.points.size(), input.seedDescription), input.options,
        input.report},
       input.volume);
-  const output::VtpCounts written = output::writeVtp(o.out, traces, writeOptions);
-  fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
-             withCommas(written.lines), withCommas(written.points), clock.seconds());
+  return output::writeVtp(path, traces, writeOptions);
+}
+
+void printMemory(bool stagePeak) {
   fmt::print("memory     {:.2f} GiB peak resident on the host{}\n",
              double(peakResidentBytes()) / 0x1p30,
              stagePeak ? fmt::format(", {:.2f} GiB while tracing and writing",
@@ -47,17 +51,33 @@ void writeTraces(const TraceCommandOptions& o, const flow::TraceView& traces,
                        : std::string());
 }
 
+// With --pieces, --out names the .pvtp; the pieces lie beside it.
+void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
+  if (!o.pieces) return files.addOutput("--out", o.out);
+  if (std::filesystem::path(o.out).extension() != ".pvtp")
+    throw InputError("--out", fmt::format("'{}': with --pieces, name the .pvtp that lists the "
+                                          "pieces (e.g. traces.pvtp)",
+                                          o.out));
+  files.addOutput("--out", o.out);
+  for (int rank = 0; rank < ranks; ++rank)
+    files.addOutput("--out", piecePath(o.out, rank).string());
+}
+
 void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   const auto checkFiles = [&] {
     checkDistributeOption(o.distribute);
-    jobFiles(o.job).addOutput("--out", o.out);
+    RunFiles files = jobFiles(o.job);
+    addOutputs(files, o, world.size());
   };
-  if (world.size() > 1) {
+  if (world.size() > 1 || o.pieces) {
     const bool stagePeak = resetStagePeak();
-    traceDistributed(world, o.job, !o.endpointsOnly, checkFiles,
-                     [&](const flow::TraceView& traces, PreparedInput& input) {
-                       writeTraces(o, traces, input, stagePeak);
-                     });
+    DistributedOutput output{o.out, o.pieces,
+                             [&](const std::filesystem::path& path, const flow::TraceView& traces,
+                                 const PreparedInput& input) {
+                               return writeTraceFile(o, path, traces, input);
+                             }};
+    traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
+    printMemory(stagePeak);
     return;
   }
   checkFiles();
@@ -67,7 +87,11 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   const bool stagePeak = resetStagePeak();
   // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
   const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
-  writeTraces(o, traces, input, stagePeak);
+  Stopwatch clock;
+  const output::VtpCounts written = writeTraceFile(o, o.out, traces, input);
+  fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
+             withCommas(written.lines), withCommas(written.points), clock.seconds());
+  printMemory(stagePeak);
 }
 
 }  // namespace
@@ -92,6 +116,9 @@ void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
       ->capture_default_str()
       ->check(CLI::IsMember({"split", "unwrapped"}));
   addDistributeOption(*command, options->distribute);
+  command->add_flag("--pieces", options->pieces,
+                    "each rank writes its lines as a piece beside the .pvtp that --out names, "
+                    "which lists them (ParaView opens it); without it rank 0 writes one .vtp");
   command->callback([options, &world] {
     options->job.backend.validation = validationRequested();
     runTrace(*options, world);

@@ -45,7 +45,8 @@ void receive(Container& c, std::size_t count, int from) {
 using Header = std::array<std::uint64_t, 5>;
 
 Header headerOf(const flow::TraceSet& t) {
-  return {t.lineCount(), t.pointCount(), t.channelCount(), t.precisePositions ? 1u : 0u,
+  // Points held: none for a part of lines alone (withoutPoints).
+  return {t.lineCount(), t.positions.size(), t.channelCount(), t.precisePositions ? 1u : 0u,
           t.withVorticity ? 1u : 0u};
 }
 
@@ -101,6 +102,21 @@ std::uint64_t partBytes(const flow::TraceSet& t) {
          (t.lineCount() + 1) * sizeof(std::uint64_t) +
          t.pointCount() * flow::TraceSet::bytesPerPoint(t.channelCount(), t.withVorticity,
                                                         t.precisePositions);
+}
+
+flow::TraceSet withoutPoints(const flow::TraceSet& t) {
+  flow::TraceSet lines;
+  lines.vectorName = t.vectorName;
+  lines.channelNames = t.channelNames;
+  lines.periodic = t.periodic;
+  lines.precisePositions = t.precisePositions;
+  lines.withVorticity = t.withVorticity;
+  lines.seedIds = t.seedIds;
+  lines.directions = t.directions;
+  lines.steps = t.steps;
+  lines.reasons = t.reasons;
+  lines.offsets = t.offsets;
+  return lines;
 }
 
 std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine) {

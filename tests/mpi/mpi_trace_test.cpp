@@ -13,6 +13,7 @@
 #include <fstream>
 #include <string>
 
+#include "dist/gathered_traces.hpp"
 #include "output/vtp_reader.hpp"
 #include "run_amrstream.hpp"
 #include "temp_dir_test.hpp"
@@ -84,6 +85,61 @@ TEST_F(MpiTraceTest, ForwardOnAPeriodicFieldFromASeedGrid) {
                    {2, 3});
 }
 
+// Enough seeds for several blocks of the Morton order on each rank.
+TEST_F(MpiTraceTest, ManyBlocksOfSeedsDealtRoundTheRanks) {
+  expectRanksAgree("trace builtin:rotation --backend cpu --count 13000 --steps 40 "
+                   "--point-data none",
+                   {2, 3});
+}
+
+// --pieces: each rank writes its own lines beside the .pvtp; the pieces hold one process's lines
+// between them, and VTK's parallel reader opens the .pvtp.
+TEST_F(MpiTraceTest, PiecesHoldTheLinesOfOneProcess) {
+  const std::string arguments = "trace builtin:cloud --backend cpu --count 120 --steps 400";
+  ASSERT_EQ(testing::runAmrstream(arguments + " --out " + path("one.vtp")).status, 0);
+  flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
+  // Forward lines, then backward ones (a line of one point has no IntegrationTime to tell its
+  // direction by), in the file and in each piece.
+  const auto directionsByHalves = [](flow::TraceSet& t) {
+    for (std::size_t line = 0; line < t.lineCount(); ++line)
+      t.directions[line] = line < t.lineCount() / 2 ? 1.0f : -1.0f;
+  };
+  directionsByHalves(one);
+  const testing::Outcome run = mpirun(3, arguments + " --pieces --out " + path("lines.pvtp"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("(3 pieces lines_0.vtp.., 240 polylines"));
+  std::vector<flow::TraceSet> pieces;
+  for (int rank = 0; rank < 3; ++rank) {
+    pieces.push_back(output::readVtpTraces(path("lines_" + std::to_string(rank) + ".vtp")));
+    directionsByHalves(pieces.back());
+  }
+  EXPECT_GT(pieces[1].lineCount(), 0u);
+  const dist::GatheredTraces gathered(std::move(pieces));
+  flow::TraceSet merged = gathered.lines();
+  std::vector<float> scratch;
+  for (std::size_t line = 0; line < merged.lineCount(); ++line) {
+    const std::span<const float> p = gathered.column(flow::PointColumn::Positions, line, scratch);
+    for (std::size_t k = 0; k < p.size(); k += 3) merged.positions.push_back({p[k], p[k + 1], p[k + 2]});
+    for (const float t : gathered.column(flow::PointColumn::Times, line, scratch))
+      merged.times.push_back(t);
+    const std::span<const float> v = gathered.column(flow::PointColumn::Vectors, line, scratch);
+    for (std::size_t k = 0; k < v.size(); k += 3) merged.vectors.push_back({v[k], v[k + 1], v[k + 2]});
+    for (const float c : gathered.column(flow::PointColumn::Channels, line, scratch))
+      merged.channels.push_back(c);
+  }
+  expectSameTraces(one, merged);
+
+  const auto readByVtk = [&](const std::string& file) {
+    return testing::runAmrstream("", std::string(AMRSTREAM_VTK_PYTHON) + " " +
+                                         AMRSTREAM_READ_PVTP + " " + path(file) + " #");
+  };
+  const testing::Outcome parallel = readByVtk("lines.pvtp"), single = readByVtk("one.vtp");
+  ASSERT_EQ(parallel.status, 0) << parallel.output;
+  EXPECT_THAT(parallel.output, HasSubstr("240 "));
+  EXPECT_THAT(parallel.output, HasSubstr(" mag,dens,IntegrationTime,Speed\n"));
+  EXPECT_EQ(parallel.output, single.output);
+}
+
 // More ranks than seeds: some ranks trace nothing.
 TEST_F(MpiTraceTest, RanksWithoutSeeds) {
   expectRanksAgree("trace builtin:cloud --backend cpu --count 2 --steps 300", {3});
@@ -128,20 +184,23 @@ TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
     std::ofstream truncated(path("bad.velx.scalars"), std::ios::binary);
     truncated << std::string(1000, '\0');
   }
-  const std::string options = " --backend cpu --count 32 --out " + path("out.vtp");
-  const testing::Outcome run = testing::runAmrstream(
-      "trace " + path("good.exa") + options + " : -np 1 " + AMRSTREAM_BINARY + " trace " +
-          path("bad.exa") + options,
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 " +
-          std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np 2");
-  EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 2 of 3: "));
-  EXPECT_THAT(run.output, HasSubstr("bad.velx.scalars: holds 1000 bytes"));
-  EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
-  EXPECT_FALSE(std::filesystem::exists(path("out.vtp")));
+  for (const std::string out : {"out.vtp", "out.pvtp --pieces"}) {
+    SCOPED_TRACE(out);
+    const std::string options = " --backend cpu --count 32 --out " + path(out);
+    const testing::Outcome run = testing::runAmrstream(
+        "trace " + path("good.exa") + options + " : -np 1 " + AMRSTREAM_BINARY + " trace " +
+            path("bad.exa") + options,
+        "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 " +
+            std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np 2");
+    EXPECT_EQ(run.status, 2) << run.output;
+    EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 2 of 3: "));
+    EXPECT_THAT(run.output, HasSubstr("bad.velx.scalars: holds 1000 bytes"));
+    EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+    for (const char* file : {"out.vtp", "out.pvtp", "out_0.vtp", "out_1.vtp", "out_2.vtp"})
+      EXPECT_FALSE(std::filesystem::exists(path(file))) << file;
+  }
 }
 
-// bench under mpirun: each row's particles shared out, so its steps sum to one process's.
 TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
   const std::string arguments =
       "bench builtin:cloud --backends cpu,compute --particles 100,300 --steps 200 --json ";
@@ -149,7 +208,7 @@ TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
   ASSERT_EQ(single.status, 0) << single.output;
   const testing::Outcome run = mpirun(3, arguments + path("three.json"));
   ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("ranks      3: each row's particles in Morton ranges"));
+  EXPECT_THAT(run.output, HasSubstr("ranks      3: each row's particles in blocks of the Morton order"));
   const auto json = [&](const std::string& name) {
     return nlohmann::json::parse(std::ifstream(path(name)));
   };
