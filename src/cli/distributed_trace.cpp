@@ -148,18 +148,11 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
 void addDistributeOption(CLI::App& command, std::string& distribute) {
   command
       .add_option("--distribute", distribute,
-                  "under mpirun: seeds (every rank reads the data and traces its share of the "
-                  "seeds, blocks of their Morton order; rank 0 writes the result) or data (not "
-                  "available yet)")
+                  "under mpirun: seeds (every rank holds the data and traces its share of the "
+                  "seeds) or data (every rank holds its part of space and traces the lines "
+                  "there, handing them on as they leave; CPU only)")
       ->capture_default_str()
       ->check(CLI::IsMember({"seeds", "data"}));
-}
-
-void checkDistributeOption(const std::string& distribute) {
-  if (distribute == "data")
-    throw InputError("--distribute",
-                     "data (bricks partitioned in space among the ranks) is not available yet; "
-                     "use --distribute seeds");
 }
 
 }  // namespace amrstream::cli

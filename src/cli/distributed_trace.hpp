@@ -33,9 +33,7 @@ std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       const std::function<void()>& checkFiles, const DistributedOutput& output);
 
-// --distribute: how an MPI job shares the work (only `seeds` exists).
+// --distribute: how an MPI job shares the work, seeds or data.
 void addDistributeOption(CLI::App& command, std::string& distribute);
-// Refuses a mode that does not exist yet, naming the option.
-void checkDistributeOption(const std::string& distribute);
 
 }  // namespace amrstream::cli

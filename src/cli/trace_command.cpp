@@ -7,6 +7,7 @@
 
 #include "output/vtp_writer.hpp"
 #include "amrstream/provenance.hpp"
+#include "data_distributed_trace.hpp"
 #include "distributed_trace.hpp"
 #include "output_paths.hpp"
 #include "util/input_error.hpp"
@@ -65,18 +66,20 @@ void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
 
 void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   const auto checkFiles = [&] {
-    checkDistributeOption(o.distribute);
     RunFiles files = jobFiles(o.job);
     addOutputs(files, o, world.size());
   };
-  if (world.size() > 1 || o.pieces) {
+  if (world.size() > 1 || o.pieces || o.distribute == "data") {
     const bool stagePeak = resetStagePeak();
     DistributedOutput output{o.out, o.pieces,
                              [&](const std::filesystem::path& path, const flow::TraceView& traces,
                                  const PreparedInput& input) {
                                return writeTraceFile(o, path, traces, input);
                              }};
-    traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
+    if (o.distribute == "data")
+      traceOverDataDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
+    else
+      traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
     printMemory(stagePeak);
     return;
   }

@@ -4,6 +4,7 @@
 
 #include <atomic>
 
+#include "cpu_round.hpp"
 #include "line_plan.hpp"
 #include "line_tracer.hpp"
 #include "round_tracer.hpp"
@@ -26,12 +27,11 @@ constexpr RoundCosts kCpuCosts{sizeof(shared::LineState) + sizeof(shared::LineRo
                                    sizeof(std::vector<EmittedPoint>),
                                sizeof(EmittedPoint)};
 
-// One round over the live lines: each line's points, then the block in line order with its point
-// data. `live` keeps the lines that go on.
-// `lineEnded` is called from the worker threads as lines end.
-RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& params,
-                      const TraceOptions& options, std::vector<shared::LineState>& live,
-                      const std::function<void()>& lineEnded) {
+}  // namespace
+
+RoundBlock traceCpuRound(const VectorVolume& volume, const shared::TraceParams& params,
+                         const TraceOptions& options, std::vector<shared::LineState>& live,
+                         const std::function<void()>& lineEnded) {
   std::vector<std::vector<EmittedPoint>> emitted(live.size());
   RoundBlock block;
   block.lines.resize(live.size());
@@ -82,6 +82,8 @@ RoundBlock traceRound(const VectorVolume& volume, const shared::TraceParams& par
   return block;
 }
 
+namespace {
+
 class CpuRoundTracer final : public RoundTracer {
  public:
   CpuRoundTracer(const VectorVolume& volume, std::vector<shared::LineState> lines,
@@ -95,7 +97,7 @@ class CpuRoundTracer final : public RoundTracer {
     params_.lineCount = static_cast<std::uint32_t>(live_.size());
     params_.roundSteps = std::max(steps, 1u);
     params_.pointsPerLine = pointsPerLine(options_, params_.roundSteps);
-    return traceRound(*volume_, params_, options_, live_, lineEnded_);
+    return traceCpuRound(*volume_, params_, options_, live_, lineEnded_);
   }
 
  private:

@@ -79,11 +79,33 @@ std::string channelList(const bricks::AmrField& field) {
 
 }  // namespace
 
+namespace {
+
+// Drops the bricks `keep` refuses and their slots; the kept bricks keep their order.
+void keepBricks(bricks::BrickSet& set, const std::function<bool(const shared::Brick&)>& keep) {
+  std::vector<shared::Brick> bricks;
+  std::vector<std::uint32_t> cellIds;
+  for (const shared::Brick& brick : set.bricks) {
+    if (!keep(brick)) continue;
+    const std::size_t slots = std::size_t(brick.size.x) * brick.size.y * brick.size.z;
+    shared::Brick kept = brick;
+    kept.valueOffset = std::uint32_t(cellIds.size());
+    cellIds.insert(cellIds.end(), set.cellIds.begin() + brick.valueOffset,
+                   set.cellIds.begin() + brick.valueOffset + std::ptrdiff_t(slots));
+    bricks.push_back(kept);
+  }
+  set.bricks = std::move(bricks);
+  set.cellIds = std::move(cellIds);
+}
+
+}  // namespace
+
 VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions& options,
                              VolumeBuildTimes* times) {
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
   const CentredCells centred = centreCells(field, brickSet.bricks);
+  if (options.keepBrick) keepBricks(brickSet, options.keepBrick);
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {

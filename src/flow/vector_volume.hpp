@@ -10,6 +10,7 @@
 // the sampler needs no other change. Images never create values and never hold seeds.
 
 #include <array>
+#include <functional>
 #include <glm/glm.hpp>
 #include <string>
 #include <string_view>
@@ -67,6 +68,9 @@ struct VectorVolume {
 
 struct VolumeOptions {
   bricks::BrickBuildOptions bricks;
+  // Keeps only the bricks it accepts (all when empty), in their order, with the whole field's
+  // domain and cell units: an MPI rank's part of the data. Not with periodic axes.
+  std::function<bool(const shared::Brick&)> keepBrick;
   PeriodicAxes periodic{};
   std::vector<std::string> pointData;  // channel names to sample along the traces
   Interpolant interpolant = Interpolant::Tent;

@@ -49,6 +49,7 @@ void expectSameTraces(const flow::TraceSet& one, const flow::TraceSet& many) {
   EXPECT_TRUE(same(one.times, many.times));
   EXPECT_TRUE(same(one.vectors, many.vectors));
   EXPECT_TRUE(same(one.channels, many.channels));
+  EXPECT_TRUE(same(one.vorticity, many.vorticity));
 }
 
 class MpiTraceTest : public testing::TempDirTest {
@@ -56,22 +57,30 @@ class MpiTraceTest : public testing::TempDirTest {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   // The traces of `arguments` in one process and on each rank count, compared.
-  void expectRanksAgree(const std::string& arguments, std::initializer_list<int> rankCounts) {
-    const testing::Outcome single = testing::runAmrstream(arguments + " --out " + path("one.vtp"));
-    ASSERT_EQ(single.status, 0) << single.output;
+  // `oneProcess`: the command without mpirun, when it differs. Returns the last run's output.
+  std::string expectRanksAgree(const std::string& arguments, std::initializer_list<int> rankCounts,
+                               const std::string& oneProcess = "") {
+    const testing::Outcome single = testing::runAmrstream(
+        (oneProcess.empty() ? arguments : oneProcess) + " --out " + path("one.vtp"));
+    EXPECT_EQ(single.status, 0) << single.output;
+    if (single.status != 0) return {};
     const flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
+    std::string last;
     for (const int ranks : rankCounts) {
       SCOPED_TRACE(std::to_string(ranks) + " ranks");
       const std::string out = path("ranks" + std::to_string(ranks) + ".vtp");
       const testing::Outcome run = mpirun(ranks, arguments + " --out " + out);
-      ASSERT_EQ(run.status, 0) << run.output;
+      EXPECT_EQ(run.status, 0) << run.output;
+      if (run.status != 0) continue;
+      last = run.output;
       if (ranks > 1) {
-        EXPECT_THAT(run.output, HasSubstr("ranks      " + std::to_string(ranks) + " ("));
+        EXPECT_THAT(run.output, HasSubstr("ranks      " + std::to_string(ranks) + " "));
       }
       // Rank 0 alone prints: one summary.
       EXPECT_EQ(run.output.find("input "), run.output.rfind("input "));
       expectSameTraces(one, output::readVtpTraces(out));
     }
+    return last;
   }
 };
 
@@ -224,13 +233,68 @@ TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
   }
 }
 
-TEST_F(MpiTraceTest, DistributingTheDataIsRefusedByName) {
-  const testing::Outcome run =
-      mpirun(2, "trace builtin:cloud --distribute data --out " + path("out.vtp"));
-  EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("--distribute: data (bricks partitioned in space among the "
-                                    "ranks) is not available yet"));
-  EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+// --distribute data: each rank holds its part of space and a halo, lines are handed on as they
+// leave a part, and rank 0 joins them: one process's file, bit for bit.
+class MpiDataTraceTest : public MpiTraceTest {
+ protected:
+  std::string expectDataRanksAgree(const std::string& arguments,
+                                   std::initializer_list<int> rankCounts) {
+    return expectRanksAgree(arguments + " --distribute data", rankCounts, arguments);
+  }
+};
+
+// Circles about the middle cross the parts' faces again and again.
+TEST_F(MpiDataTraceTest, CirclesCrossingThePartsManyTimes) {
+  const std::string output =
+      expectDataRanksAgree("trace builtin:rotation --backend cpu --count 40 --steps 2500 "
+                           "--point-data none",
+                           {2, 3, 5});
+  // 80 lines handed on hundreds of times.
+  const std::size_t at = output.find("hand-offs ");
+  ASSERT_NE(at, std::string::npos) << output;
+  EXPECT_GT(std::stoi(output.substr(at + 10)), 100) << output.substr(at, 40);
+}
+
+TEST_F(MpiDataTraceTest, BothDirectionsWithPointDataAndVorticity) {
+  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 100 --steps 600 --vorticity",
+                       {2, 3});
+}
+
+TEST_F(MpiDataTraceTest, CellAndTimeModesAndEndpointsOnly) {
+  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 80 --step-mode cell "
+                       "--direction forward",
+                       {3});
+  expectDataRanksAgree("trace builtin:swirl --backend cpu --count 80 --step-mode time "
+                       "--integrator rk2 --endpoints-only",
+                       {2});
+}
+
+// Seeds on every plane of finest cells across the domain (512 finest cells wide), the parts'
+// faces among them: lines of no step end on the faces, the others start there.
+TEST_F(MpiDataTraceTest, LinesThatStartAndEndOnTheFaces) {
+  for (const char* steps : {"0", "3"})
+    expectDataRanksAgree(std::string("trace builtin:rotation --backend cpu --point-data none "
+                                     "--seed-line 0,0.3,0.5,1,0.3,0.5 --count 513 --steps ") +
+                             steps,
+                         {2, 3});
+}
+
+TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
+  for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
+           {"builtin:cloud --backend compute", "--backend compute over data is not available"},
+           {"builtin:cloud --backend cpu --integrator rk45", "not available with --integrator rk45"},
+           {"builtin:abc --backend cpu", "not available with periodic axes"},
+           {"builtin:cloud --backend cpu --pieces --out " + path("x.pvtp"),
+            "--pieces: is not available with --distribute data"}}) {
+    SCOPED_TRACE(options);
+    const testing::Outcome run = mpirun(2, "trace " + options + " --distribute data" +
+                                               (options.find("--out") == std::string::npos
+                                                    ? " --out " + path("out.vtp")
+                                                    : std::string()));
+    EXPECT_EQ(run.status, 2) << run.output;
+    EXPECT_THAT(run.output, HasSubstr(words));
+    EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+  }
 }
 
 }  // namespace

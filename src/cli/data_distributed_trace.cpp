@@ -1,0 +1,142 @@
+#include "data_distributed_trace.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "dist/data_partition.hpp"
+#include "dist/data_rounds.hpp"
+#include "dist/rank_agreement.hpp"
+#include "dist/run_stitching.hpp"
+#include "dist/trace_exchange.hpp"
+#include "flow/line_plan.hpp"
+#include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+namespace {
+
+// What tracing over data does not cover yet, refused by name before any work.
+void checkDataOptions(const TraceJobOptions& job, const DistributedOutput& output) {
+  if (job.backend.backend != "cpu" && job.backend.backend != "auto")
+    throw InputError("--distribute data",
+                     fmt::format("traces on the CPU; --backend {} over data is not available yet "
+                                 "(use --backend cpu, or --distribute seeds on GPUs)",
+                                 job.backend.backend));
+  if (output.pieces)
+    throw InputError("--pieces", "is not available with --distribute data (rank 0 joins the "
+                                 "lines that crossed parts and writes one file)");
+}
+
+void checkDataVolume(const flow::VectorVolume& volume) {
+  if (std::ranges::any_of(volume.periodic, [](bool p) { return p; }))
+    throw InputError("--distribute data", "is not available with periodic axes (--periodic none "
+                                          "traces without them)");
+  if (volume.deepPositions())
+    throw InputError("--distribute data",
+                     "is not available for domains wider than 2^21 finest cells");
+}
+
+struct RankPart {
+  PreparedInput input;
+  dist::DataPartition partition;
+  flow::LinePlan plan;
+  double halo = 0.0;  // finest cells
+  std::size_t allBricks = 0;
+};
+
+RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory) {
+  RankPart rank;
+  PreparedInput& input = rank.input;
+  input = prepareInput(job);
+  checkDataVolume(input.volume);
+  input.options.keepHistory = keepHistory;
+  const bricks::AmrField& cells = input.field();
+  rank.partition = dist::partitionCells(cells, world.size());
+  float widest = 0.0f;
+  for (const shared::Region& region : input.volume.regions.regions)
+    widest = std::max(widest, region.finestCellWidth);
+  // A round's steps from anywhere in the part, or from the domain's padding next to it.
+  rank.halo = kStepsPerDataRound * dist::stageReach(input.volume, input.options) * 1.01 +
+              0.5 * widest + 2.0;
+  rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
+  rank.allBricks = input.volume.bricks.size();
+
+  const glm::ivec3 lower = rank.partition.lower[std::size_t(world.rank())];
+  const glm::ivec3 upper = rank.partition.upper[std::size_t(world.rank())];
+  flow::VolumeOptions part;
+  part.pointData = input.volume.channelNames;
+  part.keepBrick = [&](const shared::Brick& b) {
+    return dist::brickReaches(b, lower, upper, rank.halo);
+  };
+  input.volume = flow::buildVectorVolume(
+      cells, flow::chooseVectorChannels(cells, job.field.vector), part);
+  input.releaseField();
+  return rank;
+}
+
+std::string perRank(const std::vector<double>& values, const char* format) {
+  std::string text;
+  for (const double v : values)
+    text += (text.empty() ? "" : " / ") + fmt::format(fmt::runtime(format), v);
+  return text;
+}
+
+}  // namespace
+
+void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+                              const std::function<void()>& checkFiles,
+                              const DistributedOutput& output) {
+  if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
+  RankPart rank = dist::agreed(world, [&] {
+    checkFiles();
+    checkDataOptions(job, output);
+    return prepareRank(world, job, keepHistory);
+  });
+  PreparedInput& input = rank.input;
+
+  std::vector<shared::LineState> owned;
+  for (const shared::LineState& s : rank.plan.states)
+    if (rank.partition.ownerOf(dist::cellPointOf(s)) == world.rank()) owned.push_back(s);
+  const double ownedLines = double(owned.size());
+
+  // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
+  dist::DataRoundStats stats;
+  Stopwatch clock;
+  flow::TraceSet runs = dist::traceOverData(world, input.volume, rank.partition, std::move(owned),
+                                            input.options, kStepsPerDataRound, &stats);
+  const double seconds = clock.seconds();
+  input.report.backend = "cpu";
+  input.report.traceSeconds = world.maxOverRanks(seconds);
+  const std::vector<double> rankBricks = world.gatherToRoot(double(input.volume.bricks.size()));
+  const std::vector<double> rankLines = world.gatherToRoot(ownedLines);
+  const std::vector<double> rankSent = world.gatherToRoot(double(stats.linesSent));
+  const std::vector<double> rankTracing = world.gatherToRoot(stats.traceSeconds);
+  const double handOffs = world.sumOverRanks(double(stats.linesSent));
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
+
+  clock.restart();
+  std::vector<flow::TraceSet> parts =
+      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
+  const double gatherSeconds = clock.seconds();
+  dist::agreed(world, [&] {
+    if (!world.isRoot()) return;
+    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
+    fmt::print("ranks      {} over data: bricks held {} of {} (halo {:.0f} finest cells), lines "
+               "starting {}, rounds of {} steps: {}, hand-offs {} ({:.3g} MB), tracing {} s\n",
+               world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
+               perRank(rankLines, "{:.0f}"), kStepsPerDataRound, stats.rounds,
+               perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
+               perRank(rankTracing, "{:.3f}"));
+    fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
+    printTraceSummary(lines, input.report);
+    clock.restart();
+    const output::VtpCounts counts = output.write(output.path, flow::TraceSetView(lines), input);
+    fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", output.path.string(),
+               withCommas(counts.lines), withCommas(counts.points), clock.seconds());
+  });
+}
+
+}  // namespace amrstream::cli

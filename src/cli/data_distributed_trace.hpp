@@ -1,0 +1,20 @@
+#pragma once
+// `trace --distribute data` on the ranks of an MPI job (dist/data_rounds.hpp): space cut among
+// the ranks by cells, each rank holding the bricks of its part and of a halo, lines handed to the
+// rank that owns where they go after every round of a few steps, and rank 0 putting every line
+// back together as one polyline and writing the file one process would. On the CPU.
+
+#include <functional>
+
+#include "distributed_trace.hpp"
+
+namespace amrstream::cli {
+
+// Steps a line takes between hand-offs; the halo is as wide as these steps can reach.
+inline constexpr std::uint32_t kStepsPerDataRound = 16;
+
+void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+                              const std::function<void()>& checkFiles,
+                              const DistributedOutput& output);
+
+}  // namespace amrstream::cli

@@ -1,0 +1,30 @@
+#pragma once
+// Space cut among the ranks for --distribute data: one box per rank (finest-cell units of the
+// volume, half-open), the boxes tiling the domain, found by recursive bisection that balances
+// the leaf cells whose centres lie in each box.
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "../../shaders/glsl/shared/amr_types.h"
+#include "bricks/amr_field.hpp"
+
+namespace amrstream::dist {
+
+struct DataPartition {
+  std::vector<glm::ivec3> lower, upper;  // per rank
+
+  int parts() const { return int(lower.size()); }
+  // The rank whose box holds `cellPoint` (finest-cell units); outside every box (beyond the
+  // domain), the box nearest to it.
+  int ownerOf(glm::dvec3 cellPoint) const;
+};
+
+// Deterministic: every rank computes the same partition from the same cells.
+DataPartition partitionCells(const bricks::AmrField& field, int parts);
+
+// Whether some point within `margin` finest cells of the box [lower, upper) lies in the brick's
+// padded domain (its cells grown by half a cell, where its tents reach).
+bool brickReaches(const shared::Brick& brick, glm::ivec3 lower, glm::ivec3 upper, double margin);
+
+}  // namespace amrstream::dist
