@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <optional>
 
+#include "amrstream/backend.hpp"
 #include "dist/data_partition.hpp"
 #include "dist/data_rounds.hpp"
 #include "dist/rank_agreement.hpp"
 #include "dist/run_stitching.hpp"
 #include "dist/trace_exchange.hpp"
 #include "flow/line_plan.hpp"
+#include "gpu/gpu_tracer.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -19,12 +21,7 @@ namespace amrstream::cli {
 namespace {
 
 // What tracing over data does not cover yet, refused by name before any work.
-void checkDataOptions(const TraceJobOptions& job, const DistributedOutput& output) {
-  if (job.backend.backend != "cpu" && job.backend.backend != "auto")
-    throw InputError("--distribute data",
-                     fmt::format("traces on the CPU; --backend {} over data is not available yet "
-                                 "(use --backend cpu, or --distribute seeds on GPUs)",
-                                 job.backend.backend));
+void checkDataOptions(const DistributedOutput& output) {
   if (output.pieces)
     throw InputError("--pieces", "is not available with --distribute data (rank 0 joins the "
                                  "lines that crossed parts and writes one file)");
@@ -92,7 +89,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   RankPart rank = dist::agreed(world, [&] {
     checkFiles();
-    checkDataOptions(job, output);
+    checkDataOptions(output);
     return prepareRank(world, job, keepHistory);
   });
   PreparedInput& input = rank.input;
@@ -102,14 +99,43 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     if (rank.partition.ownerOf(dist::cellPointOf(s)) == world.rank()) owned.push_back(s);
   const double ownedLines = double(owned.size());
 
+  // The backend, its device and its tracer for this rank's part.
+  job.backend.deviceSlot = unsigned(world.localRank());
+  std::optional<vk::Context> ctx;
+  std::optional<gpu::GpuTracer> gpuTracer;
+  dist::RoundAdvance advance = dist::agreed(world, [&] {
+    const BackendChoice choice = chooseBackend(job.backend, BackendUse::Trace, printLine);
+    input.report.backend = gpu::backendName(choice.backend);
+    if (choice.backend == gpu::Backend::Cpu) {
+      input.report.device = "cpu";
+      return dist::cpuRoundAdvance(input.volume, input.options, kStepsPerDataRound);
+    }
+    Stopwatch setup;
+    ctx.emplace(createContext(job.backend, choice));
+    gpuTracer.emplace(*ctx, choice.backend, input.volume);
+    input.report.device = ctx->deviceName();
+    input.report.setupSeconds = setup.seconds();
+    return dist::RoundAdvance([&](std::vector<shared::LineState>& live) {
+      return gpuTracer->advanceRound(live, input.options, kStepsPerDataRound);
+    });
+  });
+
   // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
   dist::DataRoundStats stats;
   Stopwatch clock;
   flow::TraceSet runs = dist::traceOverData(world, input.volume, rank.partition, std::move(owned),
-                                            input.options, kStepsPerDataRound, &stats);
+                                            input.options, advance, &stats);
   const double seconds = clock.seconds();
-  input.report.backend = "cpu";
+  dist::agreed(world, [&] {
+    if (ctx) checkValidation(*ctx);
+  });
+  const double deviceBytes =
+      gpuTracer ? double(gpuTracer->setup().volumeBytes + gpuTracer->setup().structureBytes +
+                         gpuTracer->lastRun().roundBytes)
+                : 0.0;
+  const std::vector<double> rankDevice = world.gatherToRoot(deviceBytes / 0x1p20);
   input.report.traceSeconds = world.maxOverRanks(seconds);
+  input.report.setupSeconds = world.maxOverRanks(input.report.setupSeconds);
   const std::vector<double> rankBricks = world.gatherToRoot(double(input.volume.bricks.size()));
   const std::vector<double> rankLines = world.gatherToRoot(ownedLines);
   const std::vector<double> rankSent = world.gatherToRoot(double(stats.linesSent));
@@ -130,6 +156,9 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                perRank(rankLines, "{:.0f}"), kStepsPerDataRound, stats.rounds,
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
                perRank(rankTracing, "{:.3f}"));
+    if (gpuTracer)
+      fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
+                 perRank(rankDevice, "{:.1f}"));
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(lines, input.report);
     clock.restart();

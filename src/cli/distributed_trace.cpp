@@ -150,7 +150,7 @@ void addDistributeOption(CLI::App& command, std::string& distribute) {
       .add_option("--distribute", distribute,
                   "under mpirun: seeds (every rank holds the data and traces its share of the "
                   "seeds) or data (every rank holds its part of space and traces the lines "
-                  "there, handing them on as they leave; CPU only)")
+                  "there, handing them on as they leave)")
       ->capture_default_str()
       ->check(CLI::IsMember({"seeds", "data"}));
 }

@@ -63,24 +63,29 @@ double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& op
   return 0.0;
 }
 
+RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options,
+                             std::uint32_t steps) {
+  shared::TraceParams params = flow::makeTraceParams(volume, options);
+  params.roundSteps = std::max(steps, 1u);
+  params.pointsPerLine = flow::pointsPerLine(options, params.roundSteps);
+  return [&volume, options, params](std::vector<shared::LineState>& live) mutable {
+    params.lineCount = std::uint32_t(live.size());
+    return flow::traceCpuRound(volume, params, options, live);
+  };
+}
+
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
                              const DataPartition& partition,
                              std::vector<shared::LineState> owned,
-                             const flow::TraceOptions& options, std::uint32_t stepsPerRound,
+                             const flow::TraceOptions& options, const RoundAdvance& advance,
                              DataRoundStats* stats) {
   DataRoundStats local;
   flow::TraceSet runs = flow::traceShape(volume, options);
-  shared::TraceParams params = flow::makeTraceParams(volume, options);
-  params.roundSteps = std::max(stepsPerRound, 1u);
-  params.pointsPerLine = flow::pointsPerLine(options, params.roundSteps);
   std::vector<shared::LineState>& live = owned;
   Stopwatch clock;
   for (;;) {
     clock.restart();
-    if (!live.empty()) {
-      params.lineCount = std::uint32_t(live.size());
-      appendRuns(runs, flow::traceCpuRound(volume, params, options, live));
-    }
+    if (!live.empty()) appendRuns(runs, advance(live));
     local.traceSeconds += clock.seconds();
     ++local.rounds;
 

@@ -7,11 +7,13 @@
 // rank has a live line (one sum over the ranks per round, not per step).
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
 #include "data_partition.hpp"
 #include "flow/integrator.hpp"
+#include "flow/round_block.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
 #include "mpi_world.hpp"
@@ -30,14 +32,22 @@ struct DataRoundStats {
   double traceSeconds = 0.0, exchangeSeconds = 0.0;
 };
 
-// Collective. Advances `owned` (lines whose points lie in this rank's part) to their ends, rounds
-// of `stepsPerRound` steps, on the CPU. Returns the runs this rank traced: a TraceSet whose
-// entries are runs (a line's points of one round on this rank), seedIds holding the line, steps
-// the line's steps at the run's end and reasons its reason then (running when it went on).
+// One round of a few steps over `live` on some backend: the round's block, `live` left holding
+// the lines that go on.
+using RoundAdvance = std::function<flow::RoundBlock(std::vector<shared::LineState>& live)>;
+
+// A RoundAdvance on the CPU reference, rounds of `steps` steps. `volume` must outlive it.
+RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options,
+                             std::uint32_t steps);
+
+// Collective. Advances `owned` (lines whose points lie in this rank's part) to their ends, round
+// after round. Returns the runs this rank traced: a TraceSet (shaped by `volume` and `options`)
+// whose entries are runs (a line's points of one round on this rank), seedIds holding the line,
+// steps the line's steps at the run's end and reasons its reason then (running when it went on).
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
                              const DataPartition& partition,
                              std::vector<shared::LineState> owned,
-                             const flow::TraceOptions& options, std::uint32_t stepsPerRound,
+                             const flow::TraceOptions& options, const RoundAdvance& advance,
                              DataRoundStats* stats = nullptr);
 
 // The position of a line in finest-cell units.

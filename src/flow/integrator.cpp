@@ -92,6 +92,7 @@ class CpuRoundTracer final : public RoundTracer {
         live_(std::move(lines)), lineEnded_(std::move(lineEnded)) {}
 
   std::size_t liveLines() const override { return live_.size(); }
+  std::vector<shared::LineState> liveStates() const override { return live_; }
 
   RoundBlock advance(std::uint32_t steps) override {
     params_.lineCount = static_cast<std::uint32_t>(live_.size());

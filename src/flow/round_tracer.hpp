@@ -21,6 +21,9 @@ class RoundTracer {
   // Advances every live line by at most `steps` steps (0 is taken as 1); lines that end report
   // their reason in the block and take no part in later rounds.
   virtual RoundBlock advance(std::uint32_t steps) = 0;
+  // The live lines' states, from which a tracer made of them would go on as this one does (MPI
+  // ranks hand lines on between rounds). Between rounds only.
+  virtual std::vector<shared::LineState> liveStates() const = 0;
 };
 
 // The CPU reference, on all cores. `volume` must outlive it.

@@ -9,6 +9,7 @@
 #include "flow/cell_point.hpp"
 #include "flow/precise_position.hpp"
 #include "util/stopwatch.hpp"
+#include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
 
@@ -275,6 +276,12 @@ flow::RoundBlock GpuRounds::finishCopy(const shared::RoundSummary& summary, std:
   }
   times_.unpackSeconds += clock.seconds();
   return block;
+}
+
+std::vector<shared::LineState> GpuRounds::liveStates() const {
+  std::vector<shared::LineState> states = vk::readBackAs<shared::LineState>(*ctx_, buffers_.states);
+  states.resize(live_);
+  return states;
 }
 
 flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {

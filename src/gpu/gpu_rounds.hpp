@@ -56,6 +56,8 @@ class GpuRounds final : public flow::RoundTracer {
 
   std::size_t liveLines() const override { return live_; }
   flow::RoundBlock advance(std::uint32_t steps) override;
+  // Read back from the device (the compaction left them first in `states`).
+  std::vector<shared::LineState> liveStates() const override;
 
   // Runs rounds until every line has ended, handing each round's block to `consume` (on this
   // thread) while the next round runs on the device. `stepsFor(live)` gives each round's steps.

@@ -175,6 +175,31 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
                                      ordered, options, std::move(buffers), timeKernels_);
 }
 
+flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
+                                         const flow::TraceOptions& options, std::uint32_t steps) {
+  if (lines.empty()) return {};
+  const std::size_t channels = volume_->channelCount();
+  const bool regionIds = volume_->deepPositions();
+  const std::uint64_t slots =
+      std::uint64_t(lines.size()) * flow::pointsPerLine(options, std::max(steps, 1u));
+  if (!roundBuffers_ ||
+      !roundBuffers_->fits(lines.size(), slots, channels, options.vorticity, regionIds)) {
+    // Room for a quarter more, as lines handed on from other ranks come and go.
+    const std::size_t room = lines.size() + lines.size() / 4;
+    roundBuffers_.reset();
+    roundBuffers_ = std::make_unique<RoundBuffers>(
+        *ctx_, room, std::uint64_t(room) * flow::pointsPerLine(options, std::max(steps, 1u)),
+        channels, options.vorticity, regionIds);
+  }
+  const std::vector<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
+  GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
+                   *roundBuffers_, timeKernels_);
+  flow::RoundBlock block = rounds.advance(steps);
+  lines = rounds.liveStates();
+  lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
+  return block;
+}
+
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
   if (!probe_) probe_ = createTraceKernel(*ctx_, kernel_.backend, KernelProgram::LocateProbe);
   VectorProbe probe(*ctx_, *probe_, *volume_, device_);

@@ -68,6 +68,12 @@ class GpuTracer {
   std::unique_ptr<flow::RoundTracer> startRounds(std::span<const shared::LineState> lines,
                                                  const flow::TraceOptions& options);
 
+  // One round of at most `steps` steps for `lines` (states of any earlier rounds, in any order),
+  // in the tracer's kept buffers: the round's block, and `lines` left holding the live lines'
+  // states. For MPI ranks that hand lines to each other between rounds.
+  flow::RoundBlock advanceRound(std::vector<shared::LineState>& lines,
+                                const flow::TraceOptions& options, std::uint32_t steps);
+
   // The backend's locateRegion() for points in finest-cell units: the region id, or -1 outside
   // the domain and in empty space. Used by tests to compare point location with brute force.
   std::vector<std::int32_t> locate(std::span<const glm::vec3> cellPoints);

@@ -49,7 +49,7 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint6
   params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                               "round params");
   states = device(ctx, n * sizeof(shared::LineState), "line states",
-                  kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+                  kCopied | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   roundStates = device(ctx, n * sizeof(shared::LineState), "round states");
   lineRounds[0] = device(ctx, n * sizeof(shared::LineRound), "line rounds (even)", kCopied);
   lineRounds[1] = device(ctx, n * sizeof(shared::LineRound), "line rounds (odd)", kCopied);

@@ -173,6 +173,25 @@ TEST_P(MpiGpuTraceTest, RanksEqualOneProcess) {
                    output::readVtpTraces(path("two.vtp")));
 }
 
+// Over data on each GPU backend (lavapipe, validation layers on every rank), against one process
+// on the same backend: lines handed between ranks' GPUs many times.
+TEST_P(MpiGpuTraceTest, OverDataEqualsOneProcess) {
+  const std::string arguments = "trace builtin:rotation --backend " + GetParam() +
+                                " --count 30 --steps 1200 --point-data none";
+  const testing::Outcome single = testing::runAmrstream(
+      arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(single.status, 0) << single.output;
+  const testing::Outcome run = testing::runAmrstream(
+      arguments + " --distribute data --out " + path("three.vtp"),
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 AMRSTREAM_VALIDATION=1 " +
+          std::string(AMRSTREAM_MPIEXEC) +
+          " -x AMRSTREAM_VALIDATION --oversubscribe --bind-to none -np 3");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("device     MiB per rank"));
+  expectSameTraces(output::readVtpTraces(path("one.vtp")),
+                   output::readVtpTraces(path("three.vtp")));
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, MpiGpuTraceTest,
                          ::testing::Values("rayquery", "pipeline", "compute"));
 
@@ -281,7 +300,6 @@ TEST_F(MpiDataTraceTest, LinesThatStartAndEndOnTheFaces) {
 
 TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
   for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
-           {"builtin:cloud --backend compute", "--backend compute over data is not available"},
            {"builtin:cloud --backend cpu --integrator rk45", "not available with --integrator rk45"},
            {"builtin:abc --backend cpu", "not available with periodic axes"},
            {"builtin:cloud --backend cpu --pieces --out " + path("x.pvtp"),
