@@ -65,9 +65,8 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   const glm::ivec3 upper = rank.partition.upper[std::size_t(world.rank())];
   flow::VolumeOptions part;
   part.pointData = input.volume.channelNames;
-  part.keepBrick = [&](const shared::Brick& b) {
-    return dist::brickReaches(b, lower, upper, rank.halo);
-  };
+  part.keepAround = flow::VolumeOptions::Box{glm::dvec3(lower) - rank.halo,
+                                             glm::dvec3(upper) + rank.halo};
   input.volume = flow::buildVectorVolume(
       cells, flow::chooseVectorChannels(cells, job.field.vector), part);
   input.releaseField();
@@ -138,8 +137,10 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   input.report.setupSeconds = world.maxOverRanks(input.report.setupSeconds);
   const std::vector<double> rankBricks = world.gatherToRoot(double(input.volume.bricks.size()));
   const std::vector<double> rankLines = world.gatherToRoot(ownedLines);
+  const std::vector<double> rankCells = world.gatherToRoot(double(input.volume.values.size()));
   const std::vector<double> rankSent = world.gatherToRoot(double(stats.linesSent));
   const std::vector<double> rankTracing = world.gatherToRoot(stats.traceSeconds);
+  const std::vector<double> rankExchange = world.gatherToRoot(stats.exchangeSeconds);
   const double handOffs = world.sumOverRanks(double(stats.linesSent));
   const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
 
@@ -150,12 +151,13 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   dist::agreed(world, [&] {
     if (!world.isRoot()) return;
     const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
-    fmt::print("ranks      {} over data: bricks held {} of {} (halo {:.0f} finest cells), lines "
-               "starting {}, rounds of {} steps: {}, hand-offs {} ({:.3g} MB), tracing {} s\n",
+    fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
+               "{:.0f} finest cells), cells {}, lines starting {}, rounds of {} steps: {}, hand-offs {} ({:.3g} MB), tracing {} s, "
+               "handing on {} s\n",
                world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
-               perRank(rankLines, "{:.0f}"), kStepsPerDataRound, stats.rounds,
+               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), kStepsPerDataRound, stats.rounds,
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
-               perRank(rankTracing, "{:.3f}"));
+               perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
     if (gpuTracer)
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));

@@ -75,12 +75,4 @@ DataPartition partitionCells(const bricks::AmrField& field, int parts) {
   return partition;
 }
 
-bool brickReaches(const shared::Brick& brick, glm::ivec3 lower, glm::ivec3 upper, double margin) {
-  const double width = std::ldexp(1.0, brick.level);
-  const glm::dvec3 padLower = glm::dvec3(brick.lower) - 0.5 * width;
-  const glm::dvec3 padUpper = glm::dvec3(brick.lower) + glm::dvec3(brick.size) * width + 0.5 * width;
-  return glm::all(glm::lessThan(padLower, glm::dvec3(upper) + margin)) &&
-         glm::all(glm::greaterThan(padUpper, glm::dvec3(lower) - margin));
-}
-
 }  // namespace amrstream::dist

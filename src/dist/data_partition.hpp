@@ -6,7 +6,6 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "../../shaders/glsl/shared/amr_types.h"
 #include "bricks/amr_field.hpp"
 
 namespace amrstream::dist {
@@ -22,9 +21,5 @@ struct DataPartition {
 
 // Deterministic: every rank computes the same partition from the same cells.
 DataPartition partitionCells(const bricks::AmrField& field, int parts);
-
-// Whether some point within `margin` finest cells of the box [lower, upper) lies in the brick's
-// padded domain (its cells grown by half a cell, where its tents reach).
-bool brickReaches(const shared::Brick& brick, glm::ivec3 lower, glm::ivec3 upper, double margin);
 
 }  // namespace amrstream::dist

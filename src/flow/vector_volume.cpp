@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cell_gradients.hpp"
@@ -81,17 +82,30 @@ std::string channelList(const bricks::AmrField& field) {
 
 namespace {
 
-// Drops the bricks `keep` refuses and their slots; the kept bricks keep their order.
-void keepBricks(bricks::BrickSet& set, const std::function<bool(const shared::Brick&)>& keep) {
+// Crops every brick to the cells whose tents reach into `box` (one cell more on each side), drops
+// bricks left with none; the kept cells keep their order and the bricks theirs.
+void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box) {
   std::vector<shared::Brick> bricks;
   std::vector<std::uint32_t> cellIds;
   for (const shared::Brick& brick : set.bricks) {
-    if (!keep(brick)) continue;
-    const std::size_t slots = std::size_t(brick.size.x) * brick.size.y * brick.size.z;
+    const double width = std::ldexp(1.0, brick.level);
+    const glm::dvec3 lower(brick.lower);
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::floor((box.lower - lower) / width - 1.5)),
+                                   glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::ceil((box.upper - lower) / width + 0.5)) + 1,
+                                   brick.size);
+    if (glm::any(glm::greaterThanEqual(lo, hi))) continue;
     shared::Brick kept = brick;
+    kept.lower = brick.lower + lo * (1 << brick.level);
+    kept.size = hi - lo;
     kept.valueOffset = std::uint32_t(cellIds.size());
-    cellIds.insert(cellIds.end(), set.cellIds.begin() + brick.valueOffset,
-                   set.cellIds.begin() + brick.valueOffset + std::ptrdiff_t(slots));
+    for (int z = lo.z; z < hi.z; ++z)
+      for (int y = lo.y; y < hi.y; ++y) {
+        const std::size_t row =
+            brick.valueOffset + std::size_t(brick.size.x) * (y + std::size_t(brick.size.y) * z);
+        cellIds.insert(cellIds.end(), set.cellIds.begin() + std::ptrdiff_t(row + lo.x),
+                       set.cellIds.begin() + std::ptrdiff_t(row + hi.x));
+      }
     bricks.push_back(kept);
   }
   set.bricks = std::move(bricks);
@@ -105,7 +119,7 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
   const CentredCells centred = centreCells(field, brickSet.bricks);
-  if (options.keepBrick) keepBricks(brickSet, options.keepBrick);
+  if (options.keepAround) keepAround(brickSet, *options.keepAround);
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {

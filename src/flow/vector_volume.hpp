@@ -10,8 +10,8 @@
 // the sampler needs no other change. Images never create values and never hold seeds.
 
 #include <array>
-#include <functional>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,9 +68,14 @@ struct VectorVolume {
 
 struct VolumeOptions {
   bricks::BrickBuildOptions bricks;
-  // Keeps only the bricks it accepts (all when empty), in their order, with the whole field's
-  // domain and cell units: an MPI rank's part of the data. Not with periodic axes.
-  std::function<bool(const shared::Brick&)> keepBrick;
+  // An MPI rank's part of the data: only the cells whose tents reach into this box (cell units)
+  // are kept, each brick cropped to them (bricks keep their order, their cells' order and the
+  // whole field's domain and cell units, so every sample in the box sums the same terms in the
+  // same order as the whole volume's). Not with periodic axes.
+  struct Box {
+    glm::dvec3 lower, upper;
+  };
+  std::optional<Box> keepAround;
   PeriodicAxes periodic{};
   std::vector<std::string> pointData;  // channel names to sample along the traces
   Interpolant interpolant = Interpolant::Tent;
