@@ -44,7 +44,8 @@ struct RankPart {
   std::size_t allBricks = 0;
 };
 
-RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory) {
+RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
+                     std::uint32_t handOffSteps) {
   RankPart rank;
   PreparedInput& input = rank.input;
   input = prepareInput(job);
@@ -56,7 +57,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   for (const shared::Region& region : input.volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
   // A round's steps from anywhere in the part, or from the domain's padding next to it.
-  rank.halo = kStepsPerDataRound * dist::stageReach(input.volume, input.options) * 1.01 +
+  rank.halo = handOffSteps * dist::stageReach(input.volume, input.options) * 1.01 +
               0.5 * widest + 2.0;
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
@@ -83,13 +84,13 @@ std::string perRank(const std::vector<double>& values, const char* format) {
 }  // namespace
 
 void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                              const std::function<void()>& checkFiles,
+                              std::uint32_t handOffSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   RankPart rank = dist::agreed(world, [&] {
     checkFiles();
     checkDataOptions(output);
-    return prepareRank(world, job, keepHistory);
+    return prepareRank(world, job, keepHistory, handOffSteps);
   });
   PreparedInput& input = rank.input;
 
@@ -107,7 +108,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     input.report.backend = gpu::backendName(choice.backend);
     if (choice.backend == gpu::Backend::Cpu) {
       input.report.device = "cpu";
-      return dist::cpuRoundAdvance(input.volume, input.options, kStepsPerDataRound);
+      return dist::cpuRoundAdvance(input.volume, input.options, handOffSteps);
     }
     Stopwatch setup;
     ctx.emplace(createContext(job.backend, choice));
@@ -115,7 +116,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     input.report.device = ctx->deviceName();
     input.report.setupSeconds = setup.seconds();
     return dist::RoundAdvance([&](std::vector<shared::LineState>& live) {
-      return gpuTracer->advanceRound(live, input.options, kStepsPerDataRound);
+      return gpuTracer->advanceRound(live, input.options, handOffSteps);
     });
   });
 
@@ -155,7 +156,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                "{:.0f} finest cells), cells {}, lines starting {}, rounds of {} steps: {}, hand-offs {} ({:.3g} MB), tracing {} s, "
                "handing on {} s\n",
                world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
-               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), kStepsPerDataRound, stats.rounds,
+               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), handOffSteps, stats.rounds,
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
                perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
     if (gpuTracer)

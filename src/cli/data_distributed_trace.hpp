@@ -11,11 +11,9 @@
 
 namespace amrstream::cli {
 
-// Steps a line takes between hand-offs; the halo is as wide as these steps can reach.
-inline constexpr std::uint32_t kStepsPerDataRound = 16;
-
+// `handOffSteps`: steps a line takes between hand-offs; the halo is as wide as they can reach.
 void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                              const std::function<void()>& checkFiles,
+                              std::uint32_t handOffSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output);
 
 }  // namespace amrstream::cli

@@ -9,6 +9,7 @@
 #include "amrstream/provenance.hpp"
 #include "data_distributed_trace.hpp"
 #include "distributed_trace.hpp"
+#include "option_checks.hpp"
 #include "output_paths.hpp"
 #include "util/input_error.hpp"
 #include "trace_job.hpp"
@@ -28,6 +29,7 @@ struct TraceCommandOptions {
   std::string periodicLines = "split";
   std::string distribute = "seeds";
   bool pieces = false;
+  std::uint32_t handOffSteps = 16;
 };
 
 output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesystem::path& path,
@@ -77,7 +79,8 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
                                return writeTraceFile(o, path, traces, input);
                              }};
     if (o.distribute == "data")
-      traceOverDataDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
+      traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.handOffSteps, checkFiles,
+                               output);
     else
       traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
     printMemory(stagePeak);
@@ -119,6 +122,12 @@ void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
       ->capture_default_str()
       ->check(CLI::IsMember({"split", "unwrapped"}));
   addDistributeOption(*command, options->distribute);
+  command
+      ->add_option("--hand-off-steps", options->handOffSteps,
+                   "with --distribute data: steps a line takes between hand-offs to the rank "
+                   "that owns where it is; each rank holds a halo as wide as they reach")
+      ->capture_default_str()
+      ->check(countIn(1, 1u << 20));
   command->add_flag("--pieces", options->pieces,
                     "each rank writes its lines as a piece beside the .pvtp that --out names, "
                     "which lists them (ParaView opens it); without it rank 0 writes one .vtp");

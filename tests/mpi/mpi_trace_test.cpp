@@ -274,6 +274,13 @@ TEST_F(MpiDataTraceTest, CirclesCrossingThePartsManyTimes) {
   EXPECT_GT(std::stoi(output.substr(at + 10)), 100) << output.substr(at, 40);
 }
 
+// Fewer steps between hand-offs: a narrower halo, more rounds, more hand-offs.
+TEST_F(MpiDataTraceTest, FewStepsBetweenHandOffs) {
+  expectRanksAgree("trace builtin:cloud --backend cpu --count 60 --steps 500 --distribute data "
+                   "--hand-off-steps 2",
+                   {3}, "trace builtin:cloud --backend cpu --count 60 --steps 500");
+}
+
 TEST_F(MpiDataTraceTest, BothDirectionsWithPointDataAndVorticity) {
   expectDataRanksAgree("trace builtin:cloud --backend cpu --count 100 --steps 600 --vorticity",
                        {2, 3});
