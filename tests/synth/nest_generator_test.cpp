@@ -35,6 +35,9 @@ std::int64_t finestCellsPerAxis(const NestOptions& o) {
 glm::dvec3 centreInCells(const NestOptions& o) { return o.centre * double(finestCellsPerAxis(o)); }
 
 std::int64_t cube(std::int64_t n) { return n * n * n; }
+// Volumes of deep nests: a domain of 2^30 finest cells per axis holds 2^90.
+using Volume = unsigned __int128;
+Volume cubed(std::int64_t n) { return Volume(n) * Volume(n) * Volume(n); }
 
 // Levels numbered 0 = finest, as the AmrField numbers them.
 std::vector<std::size_t> expectedCellsPerLevel(const NestOptions& o) {
@@ -54,18 +57,18 @@ void expectCubesAboutTheCentre(const bricks::AmrField& f, const NestOptions& o) 
   for (int level = 0; level < o.levels; ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
     glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max()), upper(-1);
-    std::int64_t volume = 0;
+    Volume volume = 0;
     for (std::size_t i = 0; i < f.cellCount(); ++i) {
       if (f.levels()[i] > level) continue;
       const std::int64_t width = std::int64_t(1) << f.levels()[i];
       lower = glm::min(lower, glm::i64vec3(f.lowers()[i]));
       upper = glm::max(upper, glm::i64vec3(f.lowers()[i]) + width);
-      volume += cube(width);
+      volume += cubed(width);
     }
     const glm::i64vec3 extent = upper - lower;
     EXPECT_EQ(extent.x, extent.y);
     EXPECT_EQ(extent.x, extent.z);
-    EXPECT_EQ(volume, cube(extent.x)) << "the cells leave holes in their box";
+    EXPECT_TRUE(volume == cubed(extent.x)) << "the cells leave holes in their box";
     const double margin = o.blockCells == 2 ? 0.0 : std::ldexp(1.0, level);
     if (level == o.levels - 1) continue;  // the whole domain
     EXPECT_EQ(extent.x, std::int64_t(o.blockCells) << level);
@@ -86,9 +89,9 @@ TEST(NestGenerator, CellsPerLevelTileTheUnitDomain) {
     EXPECT_EQ(f.cellsPerLevel(), expectedCellsPerLevel(o));
     EXPECT_EQ(nestCellCount(o), double(f.cellCount()));
     const std::int64_t extent = finestCellsPerAxis(o);
-    std::int64_t volume = 0;
-    for (std::uint8_t level : f.levels()) volume += cube(std::int64_t(1) << level);
-    EXPECT_EQ(volume, cube(extent));
+    Volume volume = 0;
+    for (std::uint8_t level : f.levels()) volume += cubed(std::int64_t(1) << level);
+    EXPECT_TRUE(volume == cubed(extent));
     EXPECT_EQ(f.bounds().lower, glm::ivec3(0));
     EXPECT_EQ(f.bounds().upper, glm::ivec3(int(extent)));
     EXPECT_EQ(f.transform().origin, glm::dvec3(0.0));
