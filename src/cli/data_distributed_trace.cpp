@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 #include "amrstream/backend.hpp"
 #include "dist/data_partition.hpp"
@@ -113,10 +114,14 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     Stopwatch setup;
     ctx.emplace(createContext(job.backend, choice));
     gpuTracer.emplace(*ctx, choice.backend, input.volume);
+    gpuTracer->timeKernels(true);
     input.report.device = ctx->deviceName();
     input.report.setupSeconds = setup.seconds();
-    return dist::RoundAdvance([&](std::vector<shared::LineState>& live) {
-      return gpuTracer->advanceRound(live, input.options, handOffSteps);
+    // The lines are put in Morton order once; later rounds keep their order, the lines handed
+    // on from other ranks coming after them.
+    return dist::RoundAdvance([&, first = true](std::vector<shared::LineState>& live) mutable {
+      const bool order = std::exchange(first, false);
+      return gpuTracer->advanceRound(live, input.options, handOffSteps, order);
     });
   });
 
@@ -159,9 +164,16 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), handOffSteps, stats.rounds,
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
                perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
-    if (gpuTracer)
+    if (gpuTracer) {
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));
+      const gpu::TraceRunStats& r = gpuTracer->lastRun();
+      fmt::print("rounds     rank 0, {} rounds: kernel {:.3f} s, ordering and uploading lines "
+                 "{:.3f} s, submitting {:.3f} s, waiting for rounds {:.3f} s and copies {:.3f} s, "
+                 "unpacking {:.3f} s, reading states back {:.3f} s\n",
+                 r.rounds, r.kernelSeconds.value_or(0.0), r.linesSeconds, r.submitSeconds,
+                 r.roundWaitSeconds, r.copyWaitSeconds, r.unpackSeconds, r.statesSeconds);
+    }
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(lines, input.report);
     clock.restart();

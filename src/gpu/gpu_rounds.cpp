@@ -9,7 +9,6 @@
 #include "flow/cell_point.hpp"
 #include "flow/precise_position.hpp"
 #include "util/stopwatch.hpp"
-#include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
 
@@ -279,9 +278,7 @@ flow::RoundBlock GpuRounds::finishCopy(const shared::RoundSummary& summary, std:
 }
 
 std::vector<shared::LineState> GpuRounds::liveStates() const {
-  std::vector<shared::LineState> states = vk::readBackAs<shared::LineState>(*ctx_, buffers_.states);
-  states.resize(live_);
-  return states;
+  return buffers_.readStates(*ctx_, live_);
 }
 
 flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {

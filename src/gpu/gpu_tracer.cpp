@@ -176,7 +176,8 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
 }
 
 flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
-                                         const flow::TraceOptions& options, std::uint32_t steps) {
+                                         const flow::TraceOptions& options, std::uint32_t steps,
+                                         bool order) {
   if (lines.empty()) return {};
   const std::size_t channels = volume_->channelCount();
   const bool regionIds = volume_->deepPositions();
@@ -191,11 +192,22 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
         *ctx_, room, std::uint64_t(room) * flow::pointsPerLine(options, std::max(steps, 1u)),
         channels, options.vorticity, regionIds);
   }
-  const std::vector<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
-  GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
+  Stopwatch clock;
+  if (order) lines = threadOrder(lines, spatialOrder_);
+  GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, lines, options,
                    *roundBuffers_, timeKernels_);
+  lastRun_.linesSeconds += clock.seconds();
   flow::RoundBlock block = rounds.advance(steps);
+  clock.restart();
   lines = rounds.liveStates();
+  lastRun_.statesSeconds += clock.seconds();
+  const RoundTimes& t = rounds.times();
+  if (t.traceSeconds) lastRun_.kernelSeconds = lastRun_.kernelSeconds.value_or(0.0) + *t.traceSeconds;
+  ++lastRun_.rounds;
+  lastRun_.submitSeconds += t.submitSeconds;
+  lastRun_.roundWaitSeconds += t.roundWaitSeconds;
+  lastRun_.copyWaitSeconds += t.copyWaitSeconds;
+  lastRun_.unpackSeconds += t.unpackSeconds;
   lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
   return block;
 }

@@ -45,6 +45,8 @@ struct TraceRunStats {
   double planSeconds = 0.0, buffersSeconds = 0.0, linesSeconds = 0.0, submitSeconds = 0.0,
          roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0, collectSeconds = 0.0,
          storeSeconds = 0.0, assembleSeconds = 0.0;
+  // advanceRound(): reading the live lines' states back, summed over calls.
+  double statesSeconds = 0.0;
 };
 
 class GpuTracer {
@@ -70,9 +72,13 @@ class GpuTracer {
 
   // One round of at most `steps` steps for `lines` (states of any earlier rounds, in any order),
   // in the tracer's kept buffers: the round's block, and `lines` left holding the live lines'
-  // states. For MPI ranks that hand lines to each other between rounds.
+  // states. For MPI ranks that hand lines to each other between rounds. Adds its work to
+  // lastRun() (reset it with resetRunStats()).
+  // With `order`, the lines are first put in the tracer's thread order (Morton, when spatial);
+  // the lines coming back keep the order they went in (less those that ended).
   flow::RoundBlock advanceRound(std::vector<shared::LineState>& lines,
-                                const flow::TraceOptions& options, std::uint32_t steps);
+                                const flow::TraceOptions& options, std::uint32_t steps,
+                                bool order);
 
   // The backend's locateRegion() for points in finest-cell units: the region id, or -1 outside
   // the domain and in empty space. Used by tests to compare point location with brute force.
@@ -81,6 +87,7 @@ class GpuTracer {
   Backend backend() const { return kernel_.backend; }
   const TracerSetup& setup() const { return setup_; }
   const TraceRunStats& lastRun() const { return lastRun_; }
+  void resetRunStats() { lastRun_ = {}; }
   // Lines one batch of trace() holds for these options.
   std::size_t linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const;
   // Caps the lines per batch (0: no cap), so that tests can run many batches on small inputs.

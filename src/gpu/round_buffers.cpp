@@ -37,7 +37,7 @@ flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity, b
   const std::uint64_t emitted = 2 * sizeof(glm::vec3) + sizeof(float) + sizeof(std::int32_t);
   const std::uint64_t copied = 2 * sizeof(glm::vec3) + sizeof(float) + pointData +
                                (regionIds ? sizeof(std::int32_t) : 0);
-  return {2 * sizeof(shared::LineState) + 3 * sizeof(shared::LineRound) + sizeof(glm::uvec2),
+  return {3 * sizeof(shared::LineState) + 3 * sizeof(shared::LineRound) + sizeof(glm::uvec2),
           2 * emitted + pointData + copied};
 }
 
@@ -50,6 +50,9 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint6
                               "round params");
   states = device(ctx, n * sizeof(shared::LineState), "line states",
                   kCopied | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  statesUpload = vk::Buffer::upload(ctx, n * sizeof(shared::LineState),
+                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "line states (upload)");
+
   roundStates = device(ctx, n * sizeof(shared::LineState), "round states");
   lineRounds[0] = device(ctx, n * sizeof(shared::LineRound), "line rounds (even)", kCopied);
   lineRounds[1] = device(ctx, n * sizeof(shared::LineRound), "line rounds (odd)", kCopied);
@@ -88,15 +91,31 @@ bool RoundBuffers::fits(std::size_t lines, std::uint64_t pointSlots, std::size_t
 void RoundBuffers::setStates(const vk::Context& ctx, std::span<const shared::LineState> lines) {
   if (lines.size() > lineCapacity) throw std::logic_error("RoundBuffers: too many lines");
   if (lines.empty()) return;
-  vk::Buffer staging = vk::Buffer::upload(ctx, lines.size_bytes(),
-                                                VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "line states (staging)");
-  std::memcpy(staging.mapped().data(), lines.data(), lines.size_bytes());
+  std::memcpy(statesUpload.mapped().data(), lines.data(), lines.size_bytes());
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     // The previous batch's rounds are done (their submissions were waited for).
     const VkBufferCopy region{0, 0, lines.size_bytes()};
-    vkCmdCopyBuffer(cmd, staging.handle(), states.handle(), 1, &region);
+    vkCmdCopyBuffer(cmd, statesUpload.handle(), states.handle(), 1, &region);
     vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
   });
+}
+
+std::vector<shared::LineState> RoundBuffers::readStates(const vk::Context& ctx, std::size_t count) {
+  if (count > lineCapacity) throw std::logic_error("RoundBuffers: too many lines");
+  std::vector<shared::LineState> lines(count);
+  if (count == 0) return lines;
+  const VkDeviceSize bytes = count * sizeof(shared::LineState);
+  if (statesDownload.size() == 0)
+    statesDownload = host(ctx, lineCapacity * sizeof(shared::LineState), "line states (download)");
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vk::memoryBarrier(cmd, vk::access::kAny, vk::access::kTransferRead);
+    const VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, states.handle(), statesDownload.handle(), 1, &region);
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
+  });
+  statesDownload.invalidateMapped();
+  std::memcpy(lines.data(), statesDownload.mapped().data(), bytes);
+  return lines;
 }
 
 }  // namespace amrstream::gpu

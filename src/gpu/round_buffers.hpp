@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
 #include "flow/line_plan.hpp"
@@ -35,6 +36,8 @@ struct RoundBuffers {
             bool vorticity, bool regionIds) const;
   // The batch's starting states, copied into `states` (and the submission waited for).
   void setStates(const vk::Context& ctx, std::span<const shared::LineState> lines);
+  // The first `count` states of `states` (after all work submitted before).
+  std::vector<shared::LineState> readStates(const vk::Context& ctx, std::size_t count);
 
   // The bytes the fields below take per line and per output slot, for budgeting.
   static flow::RoundCosts costs(std::size_t channelCount, bool vorticity, bool regionIds);
@@ -47,6 +50,9 @@ struct RoundBuffers {
 
   vk::Buffer params;  // shared::TraceParams, host-written before each round
   vk::Buffer states;
+  // Host copies of `states`, kept because making them is slow; the download one is made by the
+  // first readStates().
+  vk::Buffer statesUpload, statesDownload;
   vk::Buffer roundStates;
   vk::Buffer lineRounds[2];
   vk::Buffer prefix;
