@@ -75,13 +75,6 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   return rank;
 }
 
-std::string perRank(const std::vector<double>& values, const char* format) {
-  std::string text;
-  for (const double v : values)
-    text += (text.empty() ? "" : " / ") + fmt::format(fmt::runtime(format), v);
-  return text;
-}
-
 }  // namespace
 
 void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
@@ -158,12 +151,13 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     if (!world.isRoot()) return;
     const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
     fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
-               "{:.0f} finest cells), cells {}, lines starting {}, rounds of {} steps: {}, hand-offs {} ({:.3g} MB), tracing {} s, "
-               "handing on {} s\n",
+               "{:.0f} finest cells), cells {}, lines starting {}, rounds of {} steps: {}, "
+               "hand-offs {} ({:.3g} MB), tracing {} s, handing on {} s\n",
                world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
-               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), handOffSteps, stats.rounds,
-               perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
-               perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
+               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), handOffSteps,
+               stats.rounds, perRank(rankSent, "{:.0f}"),
+               handOffs * sizeof(shared::LineState) * 1e-6, perRank(rankTracing, "{:.3f}"),
+               perRank(rankExchange, "{:.3f}"));
     if (gpuTracer) {
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));

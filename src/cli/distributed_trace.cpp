@@ -27,14 +27,14 @@ flow::SeedList subset(const flow::SeedList& seeds, const std::vector<std::uint32
   return part;
 }
 
+}  // namespace
+
 std::string perRank(const std::vector<double>& values, const char* format) {
   std::string text;
   for (const double v : values)
     text += (text.empty() ? "" : " / ") + fmt::format(fmt::runtime(format), v);
   return text;
 }
-
-}  // namespace
 
 std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank) {
   return pvtp.parent_path() / fmt::format("{}_{}.vtp", pvtp.stem().string(), rank);
@@ -71,7 +71,8 @@ void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput
       printSummary();
       printTraceSummary(traces.lines(), input.report);
       std::vector<std::filesystem::path> pieces;
-      for (int rank = 0; rank < world.size(); ++rank) pieces.push_back(piecePath(output.path, rank));
+      for (int rank = 0; rank < world.size(); ++rank)
+        pieces.push_back(piecePath(output.path, rank));
       output::writePvtp(output.path, pieces);
       printWritten(output.path, written, points, seconds,
                    fmt::format("{} pieces {}, ", world.size(),

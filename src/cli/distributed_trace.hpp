@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "dist/mpi_world.hpp"
 #include "flow/trace_view.hpp"
@@ -32,6 +34,9 @@ std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 // `checkFiles` runs first on every rank (the run's inputs and outputs, RunFiles).
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       const std::function<void()>& checkFiles, const DistributedOutput& output);
+
+// "1.2e+04 / 9.9e+03": one value per rank, for the summary lines.
+std::string perRank(const std::vector<double>& values, const char* format);
 
 // --distribute: how an MPI job shares the work, seeds or data.
 void addDistributeOption(CLI::App& command, std::string& distribute);

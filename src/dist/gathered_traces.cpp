@@ -8,12 +8,7 @@ namespace amrstream::dist {
 
 GatheredTraces::GatheredTraces(std::vector<flow::TraceSet> parts) : parts_(std::move(parts)) {
   if (parts_.empty()) parts_.emplace_back();
-  const flow::TraceSet& first = parts_.front();
-  lines_.vectorName = first.vectorName;
-  lines_.channelNames = first.channelNames;
-  lines_.periodic = first.periodic;
-  lines_.precisePositions = first.precisePositions;
-  lines_.withVorticity = first.withVorticity;
+  lines_ = flow::shapeOf(parts_.front());
 
   for (std::uint32_t p = 0; p < parts_.size(); ++p) {
     views_.emplace_back(parts_[p]);

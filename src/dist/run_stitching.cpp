@@ -27,14 +27,9 @@ void appendRange(Column& to, const Column& from, std::uint64_t first, std::uint6
 }  // namespace
 
 flow::TraceSet stitchRuns(std::vector<flow::TraceSet> parts, const flow::LineLayout& layout) {
-  flow::TraceSet lines;
-  if (parts.empty()) return lines;
+  if (parts.empty()) return {};
   const flow::TraceSet& shape = parts.front();
-  lines.vectorName = shape.vectorName;
-  lines.channelNames = shape.channelNames;
-  lines.periodic = shape.periodic;
-  lines.precisePositions = shape.precisePositions;
-  lines.withVorticity = shape.withVorticity;
+  flow::TraceSet lines = flow::shapeOf(shape);
 
   std::vector<RunAt> runs;
   for (std::uint32_t p = 0; p < parts.size(); ++p)

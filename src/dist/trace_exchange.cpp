@@ -74,12 +74,7 @@ flow::TraceSet receivePart(const flow::TraceSet& root, int from) {
       bool(vorticity) != root.withVorticity)
     throw std::runtime_error("rank " + std::to_string(from) +
                              " traced other point data than rank 0");
-  flow::TraceSet t;
-  t.vectorName = root.vectorName;
-  t.channelNames = root.channelNames;
-  t.periodic = root.periodic;
-  t.precisePositions = root.precisePositions;
-  t.withVorticity = root.withVorticity;
+  flow::TraceSet t = flow::shapeOf(root);
   receive(t.seedIds, lines, from);
   receive(t.directions, lines, from);
   receive(t.steps, lines, from);
@@ -105,12 +100,7 @@ std::uint64_t partBytes(const flow::TraceSet& t) {
 }
 
 flow::TraceSet withoutPoints(const flow::TraceSet& t) {
-  flow::TraceSet lines;
-  lines.vectorName = t.vectorName;
-  lines.channelNames = t.channelNames;
-  lines.periodic = t.periodic;
-  lines.precisePositions = t.precisePositions;
-  lines.withVorticity = t.withVorticity;
+  flow::TraceSet lines = flow::shapeOf(t);
   lines.seedIds = t.seedIds;
   lines.directions = t.directions;
   lines.steps = t.steps;

@@ -10,9 +10,9 @@
 namespace amrstream::dist {
 
 // Collective. Rank 0 returns every rank's part in rank order (its own first), the others an
-// empty vector. A part's point columns go as they are held: a part without points (withoutPoints)
-// sends its lines alone. Names (vector, channels) and the periodic box are not sent: the parts take rank
-// 0's, which all ranks share.
+// empty vector. A part's point columns go as they are held: a part without points
+// (withoutPoints) sends its lines alone. Names (vector, channels) and the periodic box are not
+// sent: the parts take rank 0's, which all ranks share.
 std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine);
 
 // The lines of `t` (seed ids, directions, steps, reasons, offsets, names) without its points:

@@ -71,4 +71,15 @@ struct TraceSet {
   }
 };
 
+// A TraceSet with the names, periodic box and flags of `t` and no lines.
+inline TraceSet shapeOf(const TraceSet& t) {
+  TraceSet shape;
+  shape.vectorName = t.vectorName;
+  shape.channelNames = t.channelNames;
+  shape.periodic = t.periodic;
+  shape.precisePositions = t.precisePositions;
+  shape.withVorticity = t.withVorticity;
+  return shape;
+}
+
 }  // namespace amrstream::flow

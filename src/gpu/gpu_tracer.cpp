@@ -202,7 +202,8 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
   lines = rounds.liveStates();
   lastRun_.statesSeconds += clock.seconds();
   const RoundTimes& t = rounds.times();
-  if (t.traceSeconds) lastRun_.kernelSeconds = lastRun_.kernelSeconds.value_or(0.0) + *t.traceSeconds;
+  if (t.traceSeconds)
+    lastRun_.kernelSeconds = lastRun_.kernelSeconds.value_or(0.0) + *t.traceSeconds;
   ++lastRun_.rounds;
   lastRun_.submitSeconds += t.submitSeconds;
   lastRun_.roundWaitSeconds += t.roundWaitSeconds;

@@ -59,7 +59,8 @@ bricks::AmrField generateNest(const NestOptions& options) {
     // (Sterbenz), and scaled after: the deepest cells keep every bit of their offset.
     const glm::dvec3 cellCentre = glm::dvec3(cell.lower) + 0.5 * std::ldexp(1.0, cell.level);
     glm::dvec3 v = spiral.velocity((cellCentre - centre) * spacing);
-    if (const double speed = glm::length(v); speed > options.maxSpeed) v *= options.maxSpeed / speed;
+    if (const double speed = glm::length(v); speed > options.maxSpeed)
+      v *= options.maxSpeed / speed;
     lowers.push_back(glm::ivec3(cell.lower));  // the options' check kept the domain in range
     levels.push_back(std::uint8_t(cell.level));
     for (int c = 0; c < 3; ++c) velocity[c].push_back(float(v[c]));

@@ -43,8 +43,8 @@ struct NestOptions {
 // Source "builtin:nest", DatasetInfo as every generator's (builtin_info.hpp). Throws InputError
 // naming the option: levels outside 1..kMaxNestLevels, blockCells odd or below 2, rootCells too
 // few for the first finer cube or too many for the cell-unit range or for 32-bit cell numbers, a
-// centre outside the domain, rates that are not finite, a maxSpeed that is not positive, or a cube that does not nest with its
-// margin.
+// centre outside the domain, rates that are not finite, a maxSpeed that is not positive, or a
+// cube that does not nest with its margin.
 bricks::AmrField generateNest(const NestOptions& options);
 
 // The cells generateNest() makes: the finest cube whole, every other cube less the next finer

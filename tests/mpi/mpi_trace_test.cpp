@@ -128,11 +128,13 @@ TEST_F(MpiTraceTest, PiecesHoldTheLinesOfOneProcess) {
   std::vector<float> scratch;
   for (std::size_t line = 0; line < merged.lineCount(); ++line) {
     const std::span<const float> p = gathered.column(flow::PointColumn::Positions, line, scratch);
-    for (std::size_t k = 0; k < p.size(); k += 3) merged.positions.push_back({p[k], p[k + 1], p[k + 2]});
+    for (std::size_t k = 0; k < p.size(); k += 3)
+      merged.positions.push_back({p[k], p[k + 1], p[k + 2]});
     for (const float t : gathered.column(flow::PointColumn::Times, line, scratch))
       merged.times.push_back(t);
     const std::span<const float> v = gathered.column(flow::PointColumn::Vectors, line, scratch);
-    for (std::size_t k = 0; k < v.size(); k += 3) merged.vectors.push_back({v[k], v[k + 1], v[k + 2]});
+    for (std::size_t k = 0; k < v.size(); k += 3)
+      merged.vectors.push_back({v[k], v[k + 1], v[k + 2]});
     for (const float c : gathered.column(flow::PointColumn::Channels, line, scratch))
       merged.channels.push_back(c);
   }
@@ -236,7 +238,8 @@ TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
   ASSERT_EQ(single.status, 0) << single.output;
   const testing::Outcome run = mpirun(3, arguments + path("three.json"));
   ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("ranks      3: each row's particles in blocks of the Morton order"));
+  EXPECT_THAT(run.output,
+              HasSubstr("ranks      3: each row's particles in blocks of the Morton order"));
   const auto json = [&](const std::string& name) {
     return nlohmann::json::parse(std::ifstream(path(name)));
   };
@@ -307,7 +310,8 @@ TEST_F(MpiDataTraceTest, LinesThatStartAndEndOnTheFaces) {
 
 TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
   for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
-           {"builtin:cloud --backend cpu --integrator rk45", "not available with --integrator rk45"},
+           {"builtin:cloud --backend cpu --integrator rk45",
+            "not available with --integrator rk45"},
            {"builtin:abc --backend cpu", "not available with periodic axes"},
            {"builtin:cloud --backend cpu --pieces --out " + path("x.pvtp"),
             "--pieces: is not available with --distribute data"}}) {

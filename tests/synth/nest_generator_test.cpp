@@ -176,7 +176,8 @@ TEST(NestGenerator, BadOptionsNameTheOption) {
   rejects(nest(31), "option levels is 31; it must be between 1 and 30");
   rejects(nest(6, 6, 7), "option blockCells is 7; it must be even and at least 2");
   rejects(nest(6, 6, 0), "option blockCells is 0; it must be even and at least 2");
-  rejects(nest(6, 1, 2), "option rootCells is 1; with 6 levels and blockCells 2 it must be at least 2");
+  rejects(nest(6, 1, 2),
+          "option rootCells is 1; with 6 levels and blockCells 2 it must be at least 2");
   rejects(nest(6, 5, 8),
           "option rootCells is 5; with 6 levels and blockCells 8 it must be at "
           "least 6");
