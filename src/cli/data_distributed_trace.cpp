@@ -53,13 +53,13 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   checkDataVolume(input.volume);
   input.options.keepHistory = keepHistory;
   const bricks::AmrField& cells = input.field();
-  rank.partition = dist::partitionCells(cells, world.size());
   float widest = 0.0f;
   for (const shared::Region& region : input.volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
   // A round's steps from anywhere in the part, or from the domain's padding next to it.
   rank.halo = handOffSteps * dist::stageReach(input.volume, input.options) * 1.01 +
               0.5 * widest + 2.0;
+  rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
 

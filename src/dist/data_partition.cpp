@@ -12,36 +12,90 @@ namespace {
 // Cells' centres, doubled so that they are integers: 2 * lower + width.
 using Centres = std::vector<glm::i64vec3>;
 
+// Histograms of finest-cell planes are used up to this extent; wider boxes are cut at the median.
+constexpr int kMaxPlanes = 1 << 22;
+
+struct Cut {
+  int axis = 0;
+  int plane = 0;
+};
+
+// The cut through the median centre along the longest axis, rounded down to a finest cell and
+// kept inside the box so that neither side is empty.
+Cut medianCut(Centres::iterator first, Centres::iterator last, glm::ivec3 lower, glm::ivec3 upper,
+              int leftParts, int parts) {
+  const glm::ivec3 extent = upper - lower;
+  Cut cut;
+  cut.axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  cut.plane = lower[cut.axis] + int(std::int64_t(extent[cut.axis]) * leftParts / parts);
+  const std::ptrdiff_t cells = last - first;
+  const auto middle = first + cells * leftParts / parts;
+  if (cells > 0 && middle != last && extent[cut.axis] >= 2) {
+    const int axis = cut.axis;
+    std::nth_element(first, middle, last, [axis](const glm::i64vec3& a, const glm::i64vec3& b) {
+      return a[axis] < b[axis];
+    });
+    cut.plane =
+        int(std::clamp<std::int64_t>((*middle)[axis] / 2, lower[axis] + 1, upper[axis] - 1));
+  }
+  return cut;
+}
+
+// The cut, on any axis, that makes the larger of the two sides' cells per part smallest, each
+// side counted with the cells within `halo` finest cells of the cut that it will hold as well:
+// a cut through sparse cells costs less halo than one through a dense filament.
+Cut haloAwareCut(Centres::iterator first, Centres::iterator last, glm::ivec3 lower,
+                 glm::ivec3 upper, int leftParts, int parts, double halo) {
+  const glm::ivec3 extent = upper - lower;
+  if (halo <= 0.0 || glm::any(glm::greaterThan(extent, glm::ivec3(kMaxPlanes))))
+    return medianCut(first, last, lower, upper, leftParts, parts);
+  const std::int64_t reach = std::int64_t(std::ceil(halo));
+  const double total = double(last - first);
+  Cut best;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const int planes = extent[axis];
+    if (planes < 2) continue;
+    // below[i]: centres below plane lower + i.
+    std::vector<std::int64_t> below(std::size_t(planes) + 1, 0);
+    for (auto c = first; c != last; ++c) {
+      const std::int64_t at = std::clamp<std::int64_t>((*c)[axis] / 2 - lower[axis], 0, planes - 1);
+      ++below[std::size_t(at) + 1];
+    }
+    for (std::size_t i = 1; i < below.size(); ++i) below[i] += below[i - 1];
+    for (int i = 1; i < planes; ++i) {
+      const double left = double(below[std::size_t(std::min<std::int64_t>(i + reach, planes))]);
+      const double right = total - double(below[std::size_t(std::max<std::int64_t>(i - reach, 0))]);
+      const double cost = std::max(left / leftParts, right / (parts - leftParts));
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = {axis, lower[axis] + i};
+      }
+    }
+  }
+  if (!std::isfinite(bestCost)) return medianCut(first, last, lower, upper, leftParts, parts);
+  return best;
+}
+
 void bisect(Centres::iterator first, Centres::iterator last, glm::ivec3 lower, glm::ivec3 upper,
-            int firstPart, int parts, DataPartition& partition) {
+            int firstPart, int parts, double halo, DataPartition& partition) {
   if (parts == 1) {
     partition.lower[std::size_t(firstPart)] = lower;
     partition.upper[std::size_t(firstPart)] = upper;
     return;
   }
-  const glm::ivec3 extent = upper - lower;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
   const int leftParts = parts / 2;
-  const std::ptrdiff_t cells = last - first;
-  const auto middle = first + cells * leftParts / parts;
-  int split = lower[axis] + int(std::int64_t(extent[axis]) * leftParts / parts);
-  if (cells > 0 && middle != last && extent[axis] >= 2) {
-    std::nth_element(first, middle, last, [axis](const glm::i64vec3& a, const glm::i64vec3& b) {
-      return a[axis] < b[axis];
-    });
-    // The plane through the median centre, rounded down to a finest cell, kept inside the box
-    // so that neither side is empty.
-    const std::int64_t plane = (*middle)[axis] / 2;
-    split = int(std::clamp<std::int64_t>(plane, lower[axis] + 1, upper[axis] - 1));
-  }
+  const Cut cut = haloAwareCut(first, last, lower, upper, leftParts, parts, halo);
+  const int axis = cut.axis, split = cut.plane;
   const auto below = std::partition(first, last, [axis, split](const glm::i64vec3& c) {
     return c[axis] < 2 * std::int64_t(split);
   });
   glm::ivec3 leftUpper = upper, rightLower = lower;
   leftUpper[axis] = split;
   rightLower[axis] = split;
-  bisect(first, below, lower, leftUpper, firstPart, leftParts, partition);
-  bisect(below, last, rightLower, upper, firstPart + leftParts, parts - leftParts, partition);
+  bisect(first, below, lower, leftUpper, firstPart, leftParts, halo, partition);
+  bisect(below, last, rightLower, upper, firstPart + leftParts, parts - leftParts, halo,
+         partition);
 }
 
 }  // namespace
@@ -61,7 +115,7 @@ int DataPartition::ownerOf(glm::dvec3 p) const {
   return best;
 }
 
-DataPartition partitionCells(const bricks::AmrField& field, int parts) {
+DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo) {
   Centres centres(field.cellCount());
   for (std::size_t i = 0; i < centres.size(); ++i)
     centres[i] = std::int64_t(2) * glm::i64vec3(field.lowers()[i]) +
@@ -70,7 +124,7 @@ DataPartition partitionCells(const bricks::AmrField& field, int parts) {
   partition.lower.resize(std::size_t(std::max(parts, 1)));
   partition.upper.resize(partition.lower.size());
   const bricks::CellBox bounds = field.bounds();
-  bisect(centres.begin(), centres.end(), bounds.lower, bounds.upper, 0, partition.parts(),
+  bisect(centres.begin(), centres.end(), bounds.lower, bounds.upper, 0, partition.parts(), halo,
          partition);
   return partition;
 }

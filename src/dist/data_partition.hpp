@@ -1,7 +1,8 @@
 #pragma once
 // Space cut among the ranks for --distribute data: one box per rank (finest-cell units of the
-// volume, half-open), the boxes tiling the domain, found by recursive bisection that balances
-// the leaf cells whose centres lie in each box.
+// volume, half-open), the boxes tiling the domain, found by recursive bisection. Each cut, on
+// whichever axis, makes the larger side's cells per rank smallest, counting with each side the
+// cells within the halo of the cut that its ranks will hold too; so cuts avoid dense regions.
 
 #include <glm/glm.hpp>
 #include <vector>
@@ -19,7 +20,8 @@ struct DataPartition {
   int ownerOf(glm::dvec3 cellPoint) const;
 };
 
-// Deterministic: every rank computes the same partition from the same cells.
-DataPartition partitionCells(const bricks::AmrField& field, int parts);
+// Deterministic: every rank computes the same partition from the same cells. `halo`: finest
+// cells each rank holds beyond its box (0: cut through the median cell of the longest axis).
+DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo);
 
 }  // namespace amrstream::dist

@@ -1,0 +1,79 @@
+// partitionCells(): the boxes tile the domain and own every point once; without a halo the cut
+// halves the cells; with one, no rank holds more cells (its box and the halo) than the median
+// cut's larger side.
+
+#include "dist/data_partition.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "random_amr.hpp"
+#include "synth/generators.hpp"
+
+namespace amrstream::dist {
+namespace {
+
+std::int64_t volumeOf(glm::ivec3 lower, glm::ivec3 upper) {
+  const glm::i64vec3 e = glm::i64vec3(upper) - glm::i64vec3(lower);
+  return e.x * e.y * e.z;
+}
+
+// Cells whose centres lie within `halo` of the box.
+std::size_t cellsHeld(const bricks::AmrField& f, glm::ivec3 lower, glm::ivec3 upper, double halo) {
+  std::size_t held = 0;
+  for (std::size_t i = 0; i < f.cellCount(); ++i) {
+    const glm::dvec3 c = glm::dvec3(f.lowers()[i]) + 0.5 * std::ldexp(1.0, f.levels()[i]);
+    held += glm::all(glm::greaterThanEqual(c, glm::dvec3(lower) - halo)) &&
+            glm::all(glm::lessThan(c, glm::dvec3(upper) + halo));
+  }
+  return held;
+}
+
+TEST(DataPartition, BoxesTileTheDomain) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed)
+    for (const int parts : {1, 2, 3, 5})
+      for (const double halo : {0.0, 6.0}) {
+        SCOPED_TRACE(::testing::Message() << "seed " << seed << ", " << parts << " parts, halo "
+                                          << halo);
+        testing::RandomAmrOptions layout;
+        layout.levels = 3;
+        const bricks::AmrField f = testing::randomAmr(seed, layout);
+        const DataPartition p = partitionCells(f, parts, halo);
+        ASSERT_EQ(p.parts(), parts);
+        std::int64_t volume = 0;
+        for (int k = 0; k < parts; ++k) volume += volumeOf(p.lower[k], p.upper[k]);
+        EXPECT_EQ(volume, volumeOf(f.bounds().lower, f.bounds().upper));
+        for (std::size_t i = 0; i < f.cellCount(); i += 7) {
+          const glm::dvec3 c = glm::dvec3(f.lowers()[i]) + 0.25;
+          int owners = 0;
+          for (int k = 0; k < parts; ++k)
+            owners += glm::all(glm::greaterThanEqual(c, glm::dvec3(p.lower[k]))) &&
+                      glm::all(glm::lessThan(c, glm::dvec3(p.upper[k])));
+          EXPECT_EQ(owners, 1);
+          const int k = p.ownerOf(c);
+          EXPECT_TRUE(glm::all(glm::greaterThanEqual(c, glm::dvec3(p.lower[k]))) &&
+                      glm::all(glm::lessThan(c, glm::dvec3(p.upper[k]))));
+        }
+      }
+}
+
+TEST(DataPartition, CutsAvoidDenseCellsWhenRanksHoldAHalo) {
+  synth::GeneratorOptions g;
+  g.levels = 4;
+  g.targetCells = 200'000;
+  const bricks::AmrField f = synth::generate("cloud", g);
+  const double halo = 20.0;
+  const DataPartition median = partitionCells(f, 2, 0.0);
+  const std::size_t left = cellsHeld(f, median.lower[0], median.upper[0], 0.0);
+  EXPECT_NEAR(double(left), 0.5 * double(f.cellCount()), 0.01 * double(f.cellCount()));
+  const DataPartition aware = partitionCells(f, 2, halo);
+  const auto largest = [&](const DataPartition& p) {
+    return std::max(cellsHeld(f, p.lower[0], p.upper[0], halo),
+                    cellsHeld(f, p.lower[1], p.upper[1], halo));
+  };
+  EXPECT_LE(largest(aware), largest(median));
+}
+
+}  // namespace
+}  // namespace amrstream::dist
