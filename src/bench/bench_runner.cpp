@@ -95,10 +95,16 @@ void startTogether(const BenchCallbacks& callbacks) {
 BenchRow combined(BenchRow row, const BenchCallbacks& callbacks) {
   if (!callbacks.share) return row;
   const RankShare& share = *callbacks.share;
+  // Every rank joins every sum and maximum, also a rank whose share of the row is empty and so
+  // has no kernel time (-1 stands for none).
+  const auto slowest = [&](std::optional<double> seconds) -> std::optional<double> {
+    const double most = share.maxOf(seconds.value_or(-1.0));
+    return most < 0.0 ? std::nullopt : std::optional(most);
+  };
   row.steps = std::uint64_t(share.sumOf(double(row.steps)));
   row.wallSeconds = share.maxOf(row.wallSeconds);
-  if (row.kernelSeconds) row.kernelSeconds = share.maxOf(*row.kernelSeconds);
-  if (row.compactionSeconds) row.compactionSeconds = share.maxOf(*row.compactionSeconds);
+  row.kernelSeconds = slowest(row.kernelSeconds);
+  row.compactionSeconds = slowest(row.compactionSeconds);
   row.deviceBytes = std::uint64_t(share.maxOf(double(row.deviceBytes)));
   row.chunks = std::size_t(share.maxOf(double(row.chunks)));
   row.rounds = std::size_t(share.maxOf(double(row.rounds)));

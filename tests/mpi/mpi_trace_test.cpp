@@ -23,13 +23,19 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Ranks bound to one core each (mpirun's default) would leave lavapipe and the CPU tracer one
-// thread; the tests' processes may share the cores.
-testing::Outcome mpirun(int ranks, const std::string& arguments) {
-  return testing::runAmrstream(
-      arguments, "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
-                     std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np " +
-                     std::to_string(ranks));
+// The launcher of `ranks` ranks. Ranks bound to one core each (mpirun's default) would leave
+// lavapipe and the CPU tracer one thread; the tests' processes may share the cores. With
+// `validated`, every rank runs with the Vulkan validation layers (-x passes the variable on),
+// and a validation error fails its run.
+std::string launcher(int ranks, bool validated = false) {
+  return std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
+         (validated ? "AMRSTREAM_VALIDATION=1 " : "") + AMRSTREAM_MPIEXEC +
+         (validated ? " -x AMRSTREAM_VALIDATION" : "") +
+         " --oversubscribe --bind-to none -np " + std::to_string(ranks);
+}
+
+testing::Outcome mpirun(int ranks, const std::string& arguments, bool validated = false) {
+  return testing::runAmrstream(arguments, launcher(ranks, validated));
 }
 
 void expectSameTraces(const flow::TraceSet& one, const flow::TraceSet& many) {
@@ -156,42 +162,38 @@ TEST_F(MpiTraceTest, RanksWithoutSeeds) {
   expectRanksAgree("trace builtin:cloud --backend cpu --count 2 --steps 300", {3});
 }
 
-class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterface<std::string> {};
+class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterface<std::string> {
+ protected:
+  // `arguments` on one validated process and on `ranks` validated ranks; returns the ranks'
+  // output.
+  std::string expectValidatedRanksAgree(const std::string& arguments, const std::string& ranked,
+                                        int ranks) {
+    const testing::Outcome single = testing::runAmrstream(
+        arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
+    EXPECT_EQ(single.status, 0) << single.output;
+    const testing::Outcome run =
+        mpirun(ranks, arguments + ranked + " --out " + path("ranks.vtp"), true);
+    EXPECT_EQ(run.status, 0) << run.output;
+    if (single.status == 0 && run.status == 0)
+      expectSameTraces(output::readVtpTraces(path("one.vtp")),
+                       output::readVtpTraces(path("ranks.vtp")));
+    return run.output;
+  }
+};
 
 TEST_P(MpiGpuTraceTest, RanksEqualOneProcess) {
-  const std::string arguments =
-      "trace builtin:cloud --backend " + GetParam() + " --count 96 --steps 500";
-  const testing::Outcome single = testing::runAmrstream(
-      arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
-  ASSERT_EQ(single.status, 0) << single.output;
-  // Validation layers on every rank (-x passes the variable on): a validation error fails a run.
-  const testing::Outcome run = testing::runAmrstream(
-      arguments + " --out " + path("two.vtp"),
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 AMRSTREAM_VALIDATION=1 " +
-          std::string(AMRSTREAM_MPIEXEC) +
-          " -x AMRSTREAM_VALIDATION --oversubscribe --bind-to none -np 2");
-  ASSERT_EQ(run.status, 0) << run.output;
-  expectSameTraces(output::readVtpTraces(path("one.vtp")),
-                   output::readVtpTraces(path("two.vtp")));
+  expectValidatedRanksAgree(
+      "trace builtin:cloud --backend " + GetParam() + " --count 96 --steps 500", "", 2);
 }
 
 // Over data on each GPU backend (lavapipe, validation layers on every rank), against one process
 // on the same backend: lines handed between ranks' GPUs many times.
 TEST_P(MpiGpuTraceTest, OverDataEqualsOneProcess) {
-  const std::string arguments = "trace builtin:rotation --backend " + GetParam() +
-                                " --count 30 --steps 1200 --point-data none";
-  const testing::Outcome single = testing::runAmrstream(
-      arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
-  ASSERT_EQ(single.status, 0) << single.output;
-  const testing::Outcome run = testing::runAmrstream(
-      arguments + " --distribute data --out " + path("three.vtp"),
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 AMRSTREAM_VALIDATION=1 " +
-          std::string(AMRSTREAM_MPIEXEC) +
-          " -x AMRSTREAM_VALIDATION --oversubscribe --bind-to none -np 3");
-  ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("device     MiB per rank"));
-  expectSameTraces(output::readVtpTraces(path("one.vtp")),
-                   output::readVtpTraces(path("three.vtp")));
+  const std::string output = expectValidatedRanksAgree(
+      "trace builtin:rotation --backend " + GetParam() +
+          " --count 30 --steps 1200 --point-data none",
+      " --distribute data", 3);
+  EXPECT_THAT(output, HasSubstr("device     MiB per rank"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, MpiGpuTraceTest,
@@ -220,8 +222,7 @@ TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
     const testing::Outcome run = testing::runAmrstream(
         "trace " + path("good.exa") + options + " : -np 1 " + AMRSTREAM_BINARY + " trace " +
             path("bad.exa") + options,
-        "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 " +
-            std::string(AMRSTREAM_MPIEXEC) + " --oversubscribe --bind-to none -np 2");
+        "timeout 120 env " + launcher(2));
     EXPECT_EQ(run.status, 2) << run.output;
     EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 2 of 3: "));
     EXPECT_THAT(run.output, HasSubstr("bad.velx.scalars: holds 1000 bytes"));
@@ -232,8 +233,9 @@ TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
 }
 
 TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
+  // A row of 2 particles leaves a rank of 3 with none (and no kernel time to take part with).
   const std::string arguments =
-      "bench builtin:cloud --backends cpu,compute --particles 100,300 --steps 200 --json ";
+      "bench builtin:cloud --backends cpu,compute --particles 2,300 --steps 200 --json ";
   const testing::Outcome single = testing::runAmrstream(arguments + path("one.json"));
   ASSERT_EQ(single.status, 0) << single.output;
   const testing::Outcome run = mpirun(3, arguments + path("three.json"));
