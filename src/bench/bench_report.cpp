@@ -76,6 +76,7 @@ nlohmann::json toJson(const BenchConfig& c) {
           {"history_point_budget", c.historyPointBudget},
           {"repeats", c.repeats},
           {"steps", c.trace.maxSteps},
+          {"round_steps", c.trace.roundSteps},
           {"step_mode", stepMode},
           {"step_size", c.trace.stepSize},
           {"region_hint", c.regionHint ? nlohmann::json(*c.regionHint) : nlohmann::json("default")},

@@ -41,6 +41,7 @@ struct BenchCommandOptions {
   std::uint64_t historyPoints = std::uint64_t(1) << 28;
   std::uint32_t repeats = 1;
   std::uint32_t steps = 1000;
+  std::uint32_t roundSteps = 0;
   std::optional<float> stepSize;
   std::string stepMode = "cell";
   std::string interpolant = "tent";
@@ -112,6 +113,7 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.stepMode = parseStepMode(o.stepMode);
   config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
   config.trace.maxSteps = o.steps;
+  config.trace.roundSteps = o.roundSteps;
   config.trace.direction = flow::Direction::Forward;  // the paper's experiment
   config.deviceFilter = o.device;
   if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
@@ -285,6 +287,13 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
   command->add_option("--steps", options->steps, "maximum integration steps per particle")
       ->capture_default_str()
       ->check(countIn(1, kMaxSteps));
+  command
+      ->add_option("--round-steps", options->roundSteps,
+                   "steps per round on the GPU, the lines that ended dropped between rounds "
+                   "(0: every step in one round without history, as many as the rounds' "
+                   "memory holds with it)")
+      ->capture_default_str()
+      ->check(countIn(0, kMaxSteps));
   command
       ->add_option("--step-size", options->stepSize,
                    "h: in cell widths (cell, arc) or physical time (time) [default 0.25]")
