@@ -46,7 +46,7 @@ struct RankPart {
 };
 
 RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
-                     std::uint32_t handOffSteps) {
+                     std::uint32_t haloSteps) {
   RankPart rank;
   PreparedInput& input = rank.input;
   input = prepareInput(job);
@@ -56,10 +56,13 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   float widest = 0.0f;
   for (const shared::Region& region : input.volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
-  // A round's steps from anywhere in the part, or from the domain's padding next to it.
-  rank.halo = handOffSteps * dist::stageReach(input.volume, input.options) * 1.01 +
-              0.5 * widest + 2.0;
+  // A step from anywhere lines stay before they are handed on (the part and a margin), or from
+  // the domain's padding next to it.
+  const double reach = dist::stageReach(input.volume, input.options) * 1.01;
+  const double margin = (haloSteps - 1) * reach;
+  rank.halo = margin + reach + 0.5 * widest + 2.0;
   rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
+  input.options.pauseOutside = dist::pauseBox(rank.partition, world.rank(), margin);
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
 
@@ -78,13 +81,13 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
 }  // namespace
 
 void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                              std::uint32_t handOffSteps, const std::function<void()>& checkFiles,
+                              std::uint32_t haloSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   RankPart rank = dist::agreed(world, [&] {
     checkFiles();
     checkDataOptions(output);
-    return prepareRank(world, job, keepHistory, handOffSteps);
+    return prepareRank(world, job, keepHistory, haloSteps);
   });
   PreparedInput& input = rank.input;
 
@@ -102,7 +105,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     input.report.backend = gpu::backendName(choice.backend);
     if (choice.backend == gpu::Backend::Cpu) {
       input.report.device = "cpu";
-      return dist::cpuRoundAdvance(input.volume, input.options, handOffSteps);
+      return dist::cpuRoundAdvance(input.volume, input.options);
     }
     Stopwatch setup;
     ctx.emplace(createContext(job.backend, choice));
@@ -111,11 +114,16 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     input.report.device = ctx->deviceName();
     input.report.setupSeconds = setup.seconds();
     // The lines are put in Morton order once; later rounds keep their order, the lines handed
-    // on from other ranks coming after them.
-    return dist::RoundAdvance([&, first = true](std::vector<shared::LineState>& live) mutable {
+    // on from other ranks coming after them. The rounds share output slots as one process's
+    // rounds do, with room for a quarter more lines handed on.
+    const std::uint64_t slots = gpuTracer->pointSlots(input.options, rank.plan.states.size());
+    auto round = [&, slots, first = true](std::vector<shared::LineState>& live) mutable {
       const bool order = std::exchange(first, false);
-      return gpuTracer->advanceRound(live, input.options, handOffSteps, order);
-    });
+      const std::uint32_t steps =
+          flow::stepsPerRound(input.options, slots, live.size() + live.size() / 4);
+      return gpuTracer->advanceRound(live, input.options, steps, order);
+    };
+    return dist::RoundAdvance(round);
   });
 
   // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
@@ -151,11 +159,11 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     if (!world.isRoot()) return;
     const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
     fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
-               "{:.0f} finest cells), cells {}, lines starting {}, rounds of {} steps: {}, "
+               "{:.0f} finest cells), cells {}, lines starting {}, rounds {}, "
                "hand-offs {} ({:.3g} MB), tracing {} s, handing on {} s\n",
                world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
-               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), handOffSteps,
-               stats.rounds, perRank(rankSent, "{:.0f}"),
+               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), stats.rounds,
+               perRank(rankSent, "{:.0f}"),
                handOffs * sizeof(shared::LineState) * 1e-6, perRank(rankTracing, "{:.3f}"),
                perRank(rankExchange, "{:.3f}"));
     if (gpuTracer) {

@@ -29,7 +29,7 @@ struct TraceCommandOptions {
   std::string periodicLines = "split";
   std::string distribute = "seeds";
   bool pieces = false;
-  std::uint32_t handOffSteps = 16;
+  std::uint32_t haloSteps = 4;
 };
 
 output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesystem::path& path,
@@ -79,7 +79,7 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
                                return writeTraceFile(o, path, traces, input);
                              }};
     if (o.distribute == "data")
-      traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.handOffSteps, checkFiles,
+      traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.haloSteps, checkFiles,
                                output);
     else
       traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
@@ -123,9 +123,10 @@ void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
       ->check(CLI::IsMember({"split", "unwrapped"}));
   addDistributeOption(*command, options->distribute);
   command
-      ->add_option("--hand-off-steps", options->handOffSteps,
-                   "with --distribute data: steps a line takes between hand-offs to the rank "
-                   "that owns where it is; each rank holds a halo as wide as they reach")
+      ->add_option("--halo-steps", options->haloSteps,
+                   "with --distribute data: each rank holds the cells within this many steps' "
+                   "reach of its part; a line goes on to the rank that owns where it is once "
+                   "it is more than one step less than that outside the part")
       ->capture_default_str()
       ->check(countIn(1, 1u << 20));
   command->add_flag("--pieces", options->pieces,

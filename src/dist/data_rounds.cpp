@@ -36,6 +36,14 @@ void appendRuns(flow::TraceSet& runs, const flow::RoundBlock& block) {
   append(runs.vorticity, block.vorticity);
 }
 
+// Whether a line paused at `s` stays on this rank: the test of outsidePauseBox() in
+// line_tracer.cpp, in the same float arithmetic.
+bool staysIn(const std::optional<flow::TraceOptions::Box>& box, const shared::LineState& s) {
+  if (!box) return false;
+  const glm::vec3 p = glm::vec3(s.anchor) + s.offset;
+  return glm::all(glm::greaterThanEqual(p, box->lower)) && glm::all(glm::lessThan(p, box->upper));
+}
+
 }  // namespace
 
 double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& options) {
@@ -63,13 +71,31 @@ double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& op
   return 0.0;
 }
 
-RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options,
-                             std::uint32_t steps) {
+flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin) {
+  glm::ivec3 domainLower = partition.lower.front(), domainUpper = partition.upper.front();
+  for (int k = 0; k < partition.parts(); ++k) {
+    domainLower = glm::min(domainLower, partition.lower[std::size_t(k)]);
+    domainUpper = glm::max(domainUpper, partition.upper[std::size_t(k)]);
+  }
+  constexpr float kBeyond = 0x1p30f;
+  const glm::ivec3 lower = partition.lower[std::size_t(rank)];
+  const glm::ivec3 upper = partition.upper[std::size_t(rank)];
+  flow::TraceOptions::Box box;
+  for (int a = 0; a < 3; ++a) {
+    box.lower[a] = lower[a] == domainLower[a] ? -kBeyond : float(lower[a] - margin);
+    box.upper[a] = upper[a] == domainUpper[a] ? kBeyond : float(upper[a] + margin);
+  }
+  return box;
+}
+
+RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume,
+                             const flow::TraceOptions& options) {
   shared::TraceParams params = flow::makeTraceParams(volume, options);
-  params.roundSteps = std::max(steps, 1u);
-  params.pointsPerLine = flow::pointsPerLine(options, params.roundSteps);
   return [&volume, options, params](std::vector<shared::LineState>& live) mutable {
     params.lineCount = std::uint32_t(live.size());
+    params.roundSteps =
+        flow::stepsPerRound(options, flow::cpuPointSlots(options, live.size()), live.size());
+    params.pointsPerLine = flow::pointsPerLine(options, params.roundSteps);
     return flow::traceCpuRound(volume, params, options, live);
   };
 }
@@ -93,7 +119,8 @@ flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& vo
     std::vector<std::vector<shared::LineState>> outgoing(std::size_t(world.size()));
     std::size_t kept = 0;
     for (const shared::LineState& s : live) {
-      const int owner = partition.ownerOf(cellPointOf(s));
+      const int owner = staysIn(options.pauseOutside, s) ? world.rank()
+                                                          : partition.ownerOf(cellPointOf(s));
       if (owner == world.rank())
         live[kept++] = s;
       else

@@ -1,10 +1,10 @@
 #pragma once
 // Tracing over data (--distribute data): every rank holds the bricks of its part of space and of
-// a halo around it, and advances the lines that are in its part by rounds of a few steps; after
-// each round, lines that left its part go to the ranks that own where they are. The halo is wide
-// enough for every stage of a round's steps to sample where the rank holds every brick whose
-// tents reach, so each step is the step one process takes, bit for bit. The rounds end when no
-// rank has a live line (one sum over the ranks per round, not per step).
+// a halo around it, and advances the lines that are in its part until they leave it by more than a
+// margin, end, or fill the round's output; lines that left then go to the ranks that own where they
+// are. The halo is the margin plus the farthest one step can sample, so each step is the step one
+// process takes, bit for bit. The rounds end when no rank has a live line (one sum over the ranks
+// per round, not per step).
 
 #include <cstdint>
 #include <functional>
@@ -26,24 +26,29 @@ namespace amrstream::dist {
 // the linear interpolant, which may exceed the fastest cell).
 double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& options);
 
+// The box a rank's lines stay in: its part grown by `margin` finest cells, and without bound
+// beyond the faces that lie on the domain's (the points there have no other owner). A line
+// pauses after a step that ends outside it (TraceOptions::pauseOutside).
+flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin);
+
 struct DataRoundStats {
   std::uint32_t rounds = 0;
   std::uint64_t linesSent = 0;  // hand-offs from this rank
   double traceSeconds = 0.0, exchangeSeconds = 0.0;
 };
 
-// One round of a few steps over `live` on some backend: the round's block, `live` left holding
-// the lines that go on.
+// One round over `live` on some backend, as many steps as its output allows: the round's block,
+// `live` left holding the lines that go on.
 using RoundAdvance = std::function<flow::RoundBlock(std::vector<shared::LineState>& live)>;
 
-// A RoundAdvance on the CPU reference, rounds of `steps` steps. `volume` must outlive it.
-RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options,
-                             std::uint32_t steps);
+// A RoundAdvance on the CPU reference. `volume` must outlive it.
+RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options);
 
 // Collective. Advances `owned` (lines whose points lie in this rank's part) to their ends, round
-// after round. Returns the runs this rank traced: a TraceSet (shaped by `volume` and `options`)
-// whose entries are runs (a line's points of one round on this rank), seedIds holding the line,
-// steps the line's steps at the run's end and reasons its reason then (running when it went on).
+// after round; a line paused outside options.pauseOutside goes to the rank that owns its point.
+// Returns the runs this rank traced: a TraceSet (shaped by `volume` and `options`) whose entries
+// are runs (a line's points of one round on this rank), seedIds holding the line, steps the
+// line's steps at the run's end and reasons its reason then (running when it went on).
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
                              const DataPartition& partition,
                              std::vector<shared::LineState> owned,

@@ -140,7 +140,16 @@ shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptio
   params.keepHistory = options.keepHistory ? 1u : 0u;
   params.linearInterpolant = volume.interpolant == Interpolant::Linear ? 1u : 0u;
   params.deepPositions = volume.deepPositions() ? 1u : 0u;
+  if (options.pauseOutside) {
+    params.pauseOutside = 1u;
+    params.pauseLower = options.pauseOutside->lower;
+    params.pauseUpper = options.pauseOutside->upper;
+  }
   return params;
+}
+
+std::uint64_t cpuPointSlots(const TraceOptions& options, std::size_t lines) {
+  return pointSlots(options, kCpuCosts, lines);
 }
 
 TraceSet traceStreamlines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -54,6 +55,12 @@ struct TraceOptions {
   // for rounds of 64 steps within 256 MiB .. 2 GiB (line_plan.hpp).
   std::uint64_t memoryBudget = 0;
   std::uint32_t roundSteps = 0;  // steps per round; 0: as many as the budget allows
+  // Lines pause, as at a round's end, after a step that ends outside this box (finest-cell
+  // units, [lower, upper)): MPI ranks tracing over data then hand them on.
+  struct Box {
+    glm::vec3 lower, upper;
+  };
+  std::optional<Box> pauseOutside;
   // The collected traces may take at most this many bytes (0: no limit): tracing stops with an
   // InputError once they grow past it, rather than exhausting the machine's memory.
   std::uint64_t maxResultBytes = 0;
@@ -62,6 +69,9 @@ struct TraceOptions {
 // The round parameters shared with the GPU kernels; lineCount, roundSteps and pointsPerLine are
 // set per round.
 shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options);
+
+// Output slots the CPU reference's rounds of `lines` lines share within options' budget.
+std::uint64_t cpuPointSlots(const TraceOptions& options, std::size_t lines);
 
 // Traces every seed (physical coordinates) in the options' directions on all cores. `progress`,
 // when set, is called with the lines finished so far and the number of lines.

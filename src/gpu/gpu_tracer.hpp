@@ -90,6 +90,8 @@ class GpuTracer {
   void resetRunStats() { lastRun_ = {}; }
   // Lines one batch of trace() holds for these options.
   std::size_t linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const;
+  // Output slots for a batch: the budget's, within the device's buffer range.
+  std::uint64_t pointSlots(const flow::TraceOptions& options, std::size_t batchLines) const;
   // Caps the lines per batch (0: no cap), so that tests can run many batches on small inputs.
   void limitLinesPerBatch(std::size_t limit) { batchLimit_ = limit; }
   // Whether threads take lines in Morton order of their positions (on by default).
@@ -101,8 +103,6 @@ class GpuTracer {
  private:
   // The kernel taking the options' integrator's steps.
   const TraceKernel& kernelFor(const flow::TraceOptions& options);
-  // Output slots for a batch: the budget's, within the device's buffer range.
-  std::uint64_t pointSlots(const flow::TraceOptions& options, std::size_t batchLines) const;
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;

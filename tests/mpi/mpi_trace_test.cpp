@@ -279,11 +279,26 @@ TEST_F(MpiDataTraceTest, CirclesCrossingThePartsManyTimes) {
   EXPECT_GT(std::stoi(output.substr(at + 10)), 100) << output.substr(at, 40);
 }
 
-// Fewer steps between hand-offs: a narrower halo, more rounds, more hand-offs.
-TEST_F(MpiDataTraceTest, FewStepsBetweenHandOffs) {
-  expectRanksAgree("trace builtin:cloud --backend cpu --count 60 --steps 500 --distribute data "
-                   "--hand-off-steps 2",
-                   {3}, "trace builtin:cloud --backend cpu --count 60 --steps 500");
+// A halo of one step: lines are handed on after the first step that leaves the part. A wide
+// halo: they wander far past the faces first. And rounds cut short by a small memory budget,
+// which pause lines inside the parts.
+TEST_F(MpiDataTraceTest, NarrowAndWideHalosAndShortRounds) {
+  const std::string one = "trace builtin:cloud --backend cpu --count 60 --steps 500";
+  for (const char* more : {" --halo-steps 1", " --halo-steps 12", " --memory-budget 20K"}) {
+    SCOPED_TRACE(more);
+    expectRanksAgree(one + " --distribute data" + more, {3}, one);
+  }
+}
+
+// Steps of three cells: a step past a face samples beyond the cells the part itself needs (with
+// a halo of the margin and two cells, without a step's reach, these differ from one process).
+TEST_F(MpiDataTraceTest, LongStepsPastTheFaces) {
+  for (const char* halo : {" --halo-steps 1", " --halo-steps 2"}) {
+    SCOPED_TRACE(halo);
+    const std::string one = "trace builtin:rotation --backend cpu --count 60 --steps 500 "
+                            "--step-mode arc --step-size 3 --point-data none";
+    expectRanksAgree(one + " --distribute data" + halo, {2, 3}, one);
+  }
 }
 
 TEST_F(MpiDataTraceTest, BothDirectionsWithPointDataAndVorticity) {

@@ -50,6 +50,12 @@ vec3 wrapCellUnits(vec3 p) {
   return q;
 }
 
+// Twin of outsidePauseBox() in line_tracer.cpp.
+bool outsidePauseBox(vec3 x) {
+  precise const vec3 p = vec3(lineAnchor) + x;
+  return any(lessThan(p, params.pauseLower)) || any(greaterThanEqual(p, params.pauseUpper));
+}
+
 VectorSample sampleStage(vec3 unwrapped) {
   if (!kDeepPositions) return sampleVector(ivec3(0), wrapCellUnits(unwrapped));
   return sampleVector(wrapPeriodic(lineAnchor, unwrapped), unwrapped);
@@ -123,6 +129,7 @@ void advanceLine(uint thread) {
       break;
     }
     if (taken == params.roundSteps) break;  // paused; the next round goes on from here
+    if (taken > 0 && params.pauseOutside != 0u && outsidePauseBox(x)) break;  // handed on
 
     // The last step before --max-time is shortened to end on it: the fixed-step integrators
     // scale their stage vectors, rk45 starts from the shortened step.

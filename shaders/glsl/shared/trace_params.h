@@ -34,11 +34,14 @@ struct TraceParams {
   float maxStep;
   uint deepPositions;       // 1: domains wider than 2^21 finest cells (VectorVolume::deepPositions):
                             // anchors follow the lines, points leave as offsets from their regions
+  vec3 pauseLower;          // with pauseOutside, a line pauses after a step that ends outside
+  uint pauseOutside;        // [pauseLower, pauseUpper) (finest-cell units), to be handed to the
+  vec3 pauseUpper;          // MPI rank that holds where it is (tracing over data)
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 132 && offsetof(TraceParams, period) == 64 &&
-              offsetof(TraceParams, maxTime) == 96);
+static_assert(sizeof(TraceParams) == 160 && offsetof(TraceParams, period) == 64 &&
+              offsetof(TraceParams, maxTime) == 96 && offsetof(TraceParams, pauseOutside) == 144);
 }  // namespace amrstream::shared
 #endif
 
