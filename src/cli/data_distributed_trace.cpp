@@ -21,13 +21,6 @@ namespace amrstream::cli {
 
 namespace {
 
-// What tracing over data does not cover yet, refused by name before any work.
-void checkDataOptions(const DistributedOutput& output) {
-  if (output.pieces)
-    throw InputError("--pieces", "is not available with --distribute data (rank 0 joins the "
-                                 "lines that crossed parts and writes one file)");
-}
-
 void checkDataVolume(const flow::VectorVolume& volume) {
   if (std::ranges::any_of(volume.periodic, [](bool p) { return p; }))
     throw InputError("--distribute data", "is not available with periodic axes (--periodic none "
@@ -86,7 +79,6 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   RankPart rank = dist::agreed(world, [&] {
     checkFiles();
-    checkDataOptions(output);
     return prepareRank(world, job, keepHistory, haloSteps);
   });
   PreparedInput& input = rank.input;
@@ -149,23 +141,14 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   const std::vector<double> rankTracing = world.gatherToRoot(stats.traceSeconds);
   const std::vector<double> rankExchange = world.gatherToRoot(stats.exchangeSeconds);
   const double handOffs = world.sumOverRanks(double(stats.linesSent));
-  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
-
-  clock.restart();
-  std::vector<flow::TraceSet> parts =
-      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
-  const double gatherSeconds = clock.seconds();
-  dist::agreed(world, [&] {
-    if (!world.isRoot()) return;
-    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
+  const auto printRanks = [&] {
     fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
                "{:.0f} finest cells), cells {}, lines starting {}, rounds {}, "
                "hand-offs {} ({:.3g} MB), tracing {} s, handing on {} s\n",
                world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
                perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), stats.rounds,
-               perRank(rankSent, "{:.0f}"),
-               handOffs * sizeof(shared::LineState) * 1e-6, perRank(rankTracing, "{:.3f}"),
-               perRank(rankExchange, "{:.3f}"));
+               perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
+               perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
     if (gpuTracer) {
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));
@@ -176,6 +159,50 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                  r.rounds, r.kernelSeconds.value_or(0.0), r.linesSeconds, r.submitSeconds,
                  r.roundWaitSeconds, r.copyWaitSeconds, r.unpackSeconds, r.statesSeconds);
     }
+  };
+
+  if (output.pieces) {
+    // Each rank joins and writes a contiguous range of lines, so that the pieces in rank order
+    // hold the lines in one process's order: the runs go to the rank whose piece holds them.
+    const std::size_t lineCount = rank.plan.states.size();
+    std::vector<flow::TraceSet> byPiece = dist::runsByPiece(runs, lineCount, world.size());
+    runs = {};
+    double bytes = 0.0;
+    for (int k = 0; k < world.size(); ++k)
+      if (k != world.rank()) bytes += double(dist::partBytes(byPiece[std::size_t(k)]));
+    bytes = world.sumOverRanks(bytes);
+    clock.restart();
+    std::vector<flow::TraceSet> mine = dist::agreed(world, [&] {
+      std::vector<flow::TraceSet> received;
+      for (int k = 0; k < world.size(); ++k) {
+        std::vector<flow::TraceSet> parts =
+            dist::gatherTraces(world, std::move(byPiece[std::size_t(k)]), k);
+        if (k == world.rank()) received = std::move(parts);
+      }
+      return received;
+    });
+    const double exchangeSeconds = world.maxOverRanks(clock.seconds());
+    flow::TraceSet lines = dist::agreed(world, [&] {
+      return dist::stitchRuns(std::move(mine), rank.plan.layout,
+                              dist::pieceLines(lineCount, world.rank(), world.size()));
+    });
+    writePieces(world, std::move(lines), input, output, [&] {
+      printRanks();
+      fmt::print("joined     {:.3g} GB of runs sent to the ranks writing their lines in {:.2f} s\n",
+                 bytes * 1e-9, exchangeSeconds);
+    });
+    return;
+  }
+
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
+  clock.restart();
+  std::vector<flow::TraceSet> parts =
+      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
+  const double gatherSeconds = clock.seconds();
+  dist::agreed(world, [&] {
+    if (!world.isRoot()) return;
+    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
+    printRanks();
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(lines, input.report);
     clock.restart();

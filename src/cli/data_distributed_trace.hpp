@@ -1,10 +1,10 @@
 #pragma once
 // `trace --distribute data` on the ranks of an MPI job (dist/data_rounds.hpp): space cut among
 // the ranks by cells, each rank holding the bricks of its part and of a halo, lines handed to the
-// rank that owns where they go once they leave the part by more than a margin, and rank 0 putting
-// every line
-// back together as one polyline and writing the file one process would. On the CPU or any GPU
-// backend, each rank on its host's GPU by local rank.
+// rank that owns where they go once they leave the part by more than a margin. Rank 0 puts every
+// line back together as one polyline and writes the file one process would; with pieces, every
+// rank does so for a contiguous range of the lines. On the CPU or any GPU backend, each rank on
+// its host's GPU by local rank.
 
 #include <functional>
 

@@ -48,7 +48,8 @@ void printWritten(const std::filesystem::path& path, double lines, double points
              withCommas(std::uint64_t(lines)), withCommas(std::uint64_t(points)), seconds);
 }
 
-// Every rank writes its lines as a piece, rank 0 the .pvtp; a failure anywhere removes them all.
+}  // namespace
+
 void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput& input,
                  const DistributedOutput& output, const std::function<void()>& printSummary) {
   const std::filesystem::path piece = piecePath(output.path, world.rank());
@@ -84,8 +85,6 @@ void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput
     throw;
   }
 }
-
-}  // namespace
 
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       const std::function<void()>& checkFiles, const DistributedOutput& output) {

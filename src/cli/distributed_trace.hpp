@@ -35,6 +35,11 @@ std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       const std::function<void()>& checkFiles, const DistributedOutput& output);
 
+// Collective. Every rank writes `lines` as its piece, rank 0 the .pvtp listing the pieces and
+// (after `printSummary`) the summary of every rank's lines; a failure anywhere removes them all.
+void writePieces(const dist::MpiWorld& world, flow::TraceSet lines, PreparedInput& input,
+                 const DistributedOutput& output, const std::function<void()>& printSummary);
+
 // "1.2e+04 / 9.9e+03": one value per rank, for the summary lines.
 std::string perRank(const std::vector<double>& values, const char* format);
 

@@ -24,9 +24,48 @@ void appendRange(Column& to, const Column& from, std::uint64_t first, std::uint6
             from.begin() + std::ptrdiff_t((first + count) * width));
 }
 
+// Run r of `from`'s points after `to`'s.
+void appendPoints(flow::TraceSet& to, const flow::TraceSet& from, std::size_t r) {
+  const std::uint64_t first = from.firstPoint(r), count = from.pointCount(r);
+  appendRange(to.positions, from.positions, first, count);
+  appendRange(to.positionsLow, from.positionsLow, first, count);
+  appendRange(to.times, from.times, first, count);
+  appendRange(to.vectors, from.vectors, first, count);
+  appendRange(to.channels, from.channels, first, count, from.channelCount());
+  appendRange(to.vorticity, from.vorticity, first, count);
+}
+
 }  // namespace
 
-flow::TraceSet stitchRuns(std::vector<flow::TraceSet> parts, const flow::LineLayout& layout) {
+LineRange pieceLines(std::size_t lines, int rank, int ranks) {
+  const auto edge = [&](int k) {
+    return static_cast<std::uint32_t>(lines * std::size_t(k) / std::size_t(ranks));
+  };
+  return {edge(rank), edge(rank + 1)};
+}
+
+std::vector<flow::TraceSet> runsByPiece(const flow::TraceSet& runs, std::size_t lines,
+                                        int ranks) {
+  std::vector<flow::TraceSet> pieces(std::size_t(ranks), flow::shapeOf(runs));
+  for (std::size_t r = 0; r < runs.lineCount(); ++r) {
+    // The rank k whose range [lines·k/ranks, lines·(k+1)/ranks) holds the run's line.
+    const std::size_t line = runs.seedIds[r];
+    std::size_t k = std::min<std::size_t>(line * std::size_t(ranks) / lines, ranks - 1);
+    while (k > 0 && line < pieceLines(lines, int(k), ranks).first) --k;
+    while (line >= pieceLines(lines, int(k), ranks).last) ++k;
+    flow::TraceSet& piece = pieces[k];
+    piece.seedIds.push_back(runs.seedIds[r]);
+    piece.directions.push_back(runs.directions[r]);
+    piece.steps.push_back(runs.steps[r]);
+    piece.reasons.push_back(runs.reasons[r]);
+    appendPoints(piece, runs, r);
+    piece.offsets.push_back(piece.positions.size());
+  }
+  return pieces;
+}
+
+flow::TraceSet stitchRuns(std::vector<flow::TraceSet> parts, const flow::LineLayout& layout,
+                          LineRange range) {
   if (parts.empty()) return {};
   const flow::TraceSet& shape = parts.front();
   flow::TraceSet lines = flow::shapeOf(shape);
@@ -43,9 +82,8 @@ flow::TraceSet stitchRuns(std::vector<flow::TraceSet> parts, const flow::LineLay
   };
   std::ranges::sort(runs, [&](const RunAt& a, const RunAt& b) { return key(a) < key(b); });
 
-  const std::size_t channels = shape.channelCount();
   std::size_t at = 0;
-  for (std::uint32_t line = 0; line < layout.seedIds.size(); ++line) {
+  for (std::uint32_t line = range.first; line < range.last; ++line) {
     if (at == runs.size() || parts[runs[at].part].seedIds[runs[at].run] != line)
       throw std::runtime_error("line " + std::to_string(line) + " was traced by no rank");
     std::int32_t reason = AMRSTREAM_REASON_RUNNING;
@@ -55,13 +93,7 @@ flow::TraceSet stitchRuns(std::vector<flow::TraceSet> parts, const flow::LineLay
       const std::size_t r = runs[at].run;
       if (reason != AMRSTREAM_REASON_RUNNING)
         throw std::runtime_error("line " + std::to_string(line) + " goes on after its end");
-      const std::uint64_t first = t.firstPoint(r), count = t.pointCount(r);
-      appendRange(lines.positions, t.positions, first, count);
-      appendRange(lines.positionsLow, t.positionsLow, first, count);
-      appendRange(lines.times, t.times, first, count);
-      appendRange(lines.vectors, t.vectors, first, count);
-      appendRange(lines.channels, t.channels, first, count, channels);
-      appendRange(lines.vorticity, t.vorticity, first, count);
+      appendPoints(lines, t, r);
       reason = t.reasons[r];
       steps = t.steps[r];
     }

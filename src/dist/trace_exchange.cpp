@@ -50,30 +50,30 @@ Header headerOf(const flow::TraceSet& t) {
           t.withVorticity ? 1u : 0u};
 }
 
-void sendPart(const flow::TraceSet& t) {
+void sendPart(const flow::TraceSet& t, int to) {
   const Header header = headerOf(t);
-  sendBytes(header.data(), sizeof(header), 0);
-  send(t.seedIds, 0);
-  send(t.directions, 0);
-  send(t.steps, 0);
-  send(t.reasons, 0);
-  send(t.offsets, 0);
-  send(t.positions, 0);
-  if (t.precisePositions) send(t.positionsLow, 0);
-  send(t.times, 0);
-  send(t.vectors, 0);
-  send(t.channels, 0);
-  if (t.withVorticity) send(t.vorticity, 0);
+  sendBytes(header.data(), sizeof(header), to);
+  send(t.seedIds, to);
+  send(t.directions, to);
+  send(t.steps, to);
+  send(t.reasons, to);
+  send(t.offsets, to);
+  send(t.positions, to);
+  if (t.precisePositions) send(t.positionsLow, to);
+  send(t.times, to);
+  send(t.vectors, to);
+  send(t.channels, to);
+  if (t.withVorticity) send(t.vorticity, to);
 }
 
-flow::TraceSet receivePart(const flow::TraceSet& root, int from) {
+flow::TraceSet receivePart(const flow::TraceSet& root, int rootRank, int from) {
   Header header{};
   receiveBytes(header.data(), sizeof(header), from);
   const auto [lines, points, channels, precise, vorticity] = header;
   if (channels != root.channelCount() || bool(precise) != root.precisePositions ||
       bool(vorticity) != root.withVorticity)
     throw std::runtime_error("rank " + std::to_string(from) +
-                             " traced other point data than rank 0");
+                             " traced other point data than rank " + std::to_string(rootRank));
   flow::TraceSet t = flow::shapeOf(root);
   receive(t.seedIds, lines, from);
   receive(t.directions, lines, from);
@@ -109,14 +109,15 @@ flow::TraceSet withoutPoints(const flow::TraceSet& t) {
   return lines;
 }
 
-std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine) {
+std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine, int root) {
   std::vector<flow::TraceSet> parts;
-  if (!world.isRoot()) {
-    sendPart(mine);
+  if (world.rank() != root) {
+    sendPart(mine, root);
     return parts;
   }
   parts.push_back(std::move(mine));
-  for (int rank = 1; rank < world.size(); ++rank) parts.push_back(receivePart(parts.front(), rank));
+  for (int rank = 0; rank < world.size(); ++rank)
+    if (rank != root) parts.push_back(receivePart(parts.front(), root, rank));
   return parts;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Moving traces between ranks: every rank's part to rank 0, point columns as raw bytes, in
+// Moving traces between ranks: every rank's part to one rank, point columns as raw bytes, in
 // messages of at most 1 GiB (MPI counts are ints).
 
 #include <vector>
@@ -9,11 +9,12 @@
 
 namespace amrstream::dist {
 
-// Collective. Rank 0 returns every rank's part in rank order (its own first), the others an
-// empty vector. A part's point columns go as they are held: a part without points
-// (withoutPoints) sends its lines alone. Names (vector, channels) and the periodic box are not
-// sent: the parts take rank 0's, which all ranks share.
-std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine);
+// Collective. Rank `root` returns every rank's part, its own first and then the others in rank
+// order; the others return an empty vector. A part's point columns go as they are held: a part
+// without points (withoutPoints) sends its lines alone. Names (vector, channels) and the
+// periodic box are not sent: the parts take the root's, which all ranks share.
+std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine,
+                                         int root = 0);
 
 // The lines of `t` (seed ids, directions, steps, reasons, offsets, names) without its points:
 // what rank 0 needs of pieces that every rank writes itself.

@@ -107,28 +107,9 @@ TEST_F(MpiTraceTest, ManyBlocksOfSeedsDealtRoundTheRanks) {
                    {2, 3});
 }
 
-// --pieces: each rank writes its own lines beside the .pvtp; the pieces hold one process's lines
-// between them, and VTK's parallel reader opens the .pvtp.
-TEST_F(MpiTraceTest, PiecesHoldTheLinesOfOneProcess) {
-  const std::string arguments = "trace builtin:cloud --backend cpu --count 120 --steps 400";
-  ASSERT_EQ(testing::runAmrstream(arguments + " --out " + path("one.vtp")).status, 0);
-  flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
-  // Forward lines, then backward ones (a line of one point has no IntegrationTime to tell its
-  // direction by), in the file and in each piece.
-  const auto directionsByHalves = [](flow::TraceSet& t) {
-    for (std::size_t line = 0; line < t.lineCount(); ++line)
-      t.directions[line] = line < t.lineCount() / 2 ? 1.0f : -1.0f;
-  };
-  directionsByHalves(one);
-  const testing::Outcome run = mpirun(3, arguments + " --pieces --out " + path("lines.pvtp"));
-  ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("(3 pieces lines_0.vtp.., 240 polylines"));
-  std::vector<flow::TraceSet> pieces;
-  for (int rank = 0; rank < 3; ++rank) {
-    pieces.push_back(output::readVtpTraces(path("lines_" + std::to_string(rank) + ".vtp")));
-    directionsByHalves(pieces.back());
-  }
-  EXPECT_GT(pieces[1].lineCount(), 0u);
+// The pieces' lines read as one process's (dist::GatheredTraces orders them by direction and
+// seed id), their points copied out.
+flow::TraceSet mergedPieces(std::vector<flow::TraceSet> pieces) {
   const dist::GatheredTraces gathered(std::move(pieces));
   flow::TraceSet merged = gathered.lines();
   std::vector<float> scratch;
@@ -144,17 +125,72 @@ TEST_F(MpiTraceTest, PiecesHoldTheLinesOfOneProcess) {
     for (const float c : gathered.column(flow::PointColumn::Channels, line, scratch))
       merged.channels.push_back(c);
   }
-  expectSameTraces(one, merged);
+  return merged;
+}
 
-  const auto readByVtk = [&](const std::string& file) {
-    return testing::runAmrstream("", std::string(AMRSTREAM_VTK_PYTHON) + " " +
-                                         AMRSTREAM_READ_PVTP + " " + path(file) + " #");
-  };
-  const testing::Outcome parallel = readByVtk("lines.pvtp"), single = readByVtk("one.vtp");
-  ASSERT_EQ(parallel.status, 0) << parallel.output;
-  EXPECT_THAT(parallel.output, HasSubstr("240 "));
-  EXPECT_THAT(parallel.output, HasSubstr(" mag,dens,IntegrationTime,Speed\n"));
-  EXPECT_EQ(parallel.output, single.output);
+// Forward lines, then backward ones, from line `first` of `total` on (a line of one point has no
+// IntegrationTime to tell its direction by).
+void setDirectionsByHalves(flow::TraceSet& t, std::size_t first, std::size_t total) {
+  for (std::size_t line = 0; line < t.lineCount(); ++line)
+    t.directions[line] = first + line < total / 2 ? 1.0f : -1.0f;
+}
+
+// --pieces: each rank writes its own lines beside the .pvtp; the pieces hold one process's lines
+// between them, and VTK's parallel reader opens the .pvtp.
+class MpiPiecesTest : public MpiTraceTest {
+ protected:
+  // Over seeds, a piece holds the lines of its rank's seeds, forward then backward; over data,
+  // the pieces in rank order hold the lines in one process's order.
+  void expectPiecesHoldOneProcess(const std::string& arguments, bool overData) {
+    ASSERT_EQ(testing::runAmrstream(arguments + " --out " + path("one.vtp")).status, 0);
+    flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
+    const std::size_t total = one.lineCount();
+    setDirectionsByHalves(one, 0, total);
+    const testing::Outcome run =
+        mpirun(3, arguments + (overData ? " --distribute data" : "") + " --pieces --out " +
+                      path("lines.pvtp"));
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_THAT(run.output,
+                HasSubstr("(3 pieces lines_0.vtp.., " + std::to_string(total) + " polylines"));
+    std::vector<flow::TraceSet> pieces;
+    std::size_t first = 0;
+    for (int rank = 0; rank < 3; ++rank) {
+      pieces.push_back(output::readVtpTraces(path("lines_" + std::to_string(rank) + ".vtp")));
+      EXPECT_GT(pieces.back().lineCount(), 0u);
+      if (overData)
+        setDirectionsByHalves(pieces.back(), first, total);
+      else
+        setDirectionsByHalves(pieces.back(), 0, pieces.back().lineCount());
+      first += pieces.back().lineCount();
+    }
+    expectSameTraces(one, mergedPieces(std::move(pieces)));
+
+    const auto readByVtk = [&](const std::string& file) {
+      return testing::runAmrstream("", std::string(AMRSTREAM_VTK_PYTHON) + " " +
+                                           AMRSTREAM_READ_PVTP + " " + path(file) + " #");
+    };
+    const testing::Outcome parallel = readByVtk("lines.pvtp"), single = readByVtk("one.vtp");
+    ASSERT_EQ(parallel.status, 0) << parallel.output;
+    EXPECT_THAT(parallel.output, HasSubstr(std::to_string(total) + " "));
+    EXPECT_THAT(parallel.output, HasSubstr(" mag,dens,IntegrationTime,Speed\n"));
+    EXPECT_EQ(parallel.output, single.output);
+    lastRun_ = run.output;
+  }
+  std::string lastRun_;
+};
+
+TEST_F(MpiPiecesTest, OverSeeds) {
+  expectPiecesHoldOneProcess("trace builtin:cloud --backend cpu --count 120 --steps 400", false);
+}
+
+// Over data the ranks first send each line's runs to the rank whose piece holds the line.
+TEST_F(MpiPiecesTest, OverDataWithLinesCrossingParts) {
+  expectPiecesHoldOneProcess(
+      "trace builtin:cloud --backend cpu --count 120 --steps 400 --halo-steps 1", true);
+  const std::size_t at = lastRun_.find("hand-offs ");
+  ASSERT_NE(at, std::string::npos) << lastRun_;
+  EXPECT_NE(lastRun_.substr(at, 20).find_first_of("123456789"), std::string::npos)
+      << lastRun_.substr(at, 40);
 }
 
 // More ranks than seeds: some ranks trace nothing.
@@ -329,14 +365,10 @@ TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
   for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
            {"builtin:cloud --backend cpu --integrator rk45",
             "not available with --integrator rk45"},
-           {"builtin:abc --backend cpu", "not available with periodic axes"},
-           {"builtin:cloud --backend cpu --pieces --out " + path("x.pvtp"),
-            "--pieces: is not available with --distribute data"}}) {
+           {"builtin:abc --backend cpu", "not available with periodic axes"}}) {
     SCOPED_TRACE(options);
-    const testing::Outcome run = mpirun(2, "trace " + options + " --distribute data" +
-                                               (options.find("--out") == std::string::npos
-                                                    ? " --out " + path("out.vtp")
-                                                    : std::string()));
+    const testing::Outcome run =
+        mpirun(2, "trace " + options + " --distribute data --out " + path("out.vtp"));
     EXPECT_EQ(run.status, 2) << run.output;
     EXPECT_THAT(run.output, HasSubstr(words));
     EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
