@@ -56,6 +56,15 @@ std::vector<glm::vec3> linearCells(const flow::VectorVolume& volume) {
   return cells;
 }
 
+// The regions' brick lists with the records in place of the indices.
+std::vector<shared::Brick> brickRecords(const flow::VectorVolume& volume) {
+  const std::vector<std::uint32_t>& ids = volume.regions.regionBricks;
+  std::vector<shared::Brick> records(ids.size());
+  tbb::parallel_for(std::size_t(0), ids.size(),
+                    [&](std::size_t i) { records[i] = volume.bricks[ids[i]]; });
+  return records;
+}
+
 }  // namespace
 
 VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
@@ -78,10 +87,12 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
   regions = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
+  regionBrickRecords =
+      vk::uploadToDeviceLocal(ctx, brickRecords(volume), kStorage, "region brick records");
   setup.uploadSeconds = clock.seconds();
-  setup.volumeBytes =
-      bricks.size() + values.size() + channelValues.size() + vectorGradients.size() +
-      channelGradients.size() + regions.size() + regionBricks.size();
+  setup.volumeBytes = bricks.size() + values.size() + channelValues.size() +
+                      vectorGradients.size() + channelGradients.size() + regions.size() +
+                      regionBricks.size() + regionBrickRecords.size();
 
   clock.restart();
   if (backend == Backend::Compute) {

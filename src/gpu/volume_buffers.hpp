@@ -37,6 +37,8 @@ struct VolumeBuffers {
   vk::Buffer channelGradients;  // linear interpolant (empty with tent)
   vk::Buffer regions;
   vk::Buffer regionBricks;
+  // Per entry of regionBricks, that brick's record: what the tracing kernels read.
+  vk::Buffer regionBrickRecords;
   vk::Buffer tree;                     // compute backend
   std::optional<vk::AabbScene> scene;  // rayquery and pipeline backends
 };

@@ -14,7 +14,11 @@ layout(scalar, set = 0, binding = 0) uniform ParamsBlock { TraceParams params; }
 layout(scalar, set = 0, binding = 1) readonly buffer BrickBuffer { Brick bricks[]; };
 layout(scalar, set = 0, binding = 2) readonly buffer ValueBuffer { vec3 values[]; };
 layout(scalar, set = 0, binding = 3) readonly buffer RegionBuffer { Region regions[]; };
-layout(scalar, set = 0, binding = 4) readonly buffer RegionBrickBuffer { uint regionBricks[]; };
+// The regions' brick lists with each brick's record in place (VolumeBuffers::regionBrickRecords),
+// so that a sample reads a brick in one load rather than its index and then the record.
+layout(scalar, set = 0, binding = 4) readonly buffer RegionBrickBuffer {
+  Brick regionBrickRecords[];
+};
 #ifdef AMRSTREAM_PROBE_POINTS  // the probe (locate_probe.glsl): binding 5 holds bare points
 layout(scalar, set = 0, binding = 5) readonly buffer ProbePointBuffer { vec3 probePoints[]; };
 #else

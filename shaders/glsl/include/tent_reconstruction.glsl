@@ -1,11 +1,16 @@
 // The tent basis-function sum over one region's bricks (docs/architecture.md, "Sampling"), for any value type.
 // Include with TENT_TYPE (float or vec3), TENT_VALUE(slot) (the brick-ordered value at a slot)
-// and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers.
+// and TENT_FUNCTION (the name to define) defined; needs the `bricks` and `regionBricks` buffers,
+// or TENT_BRICK(i) defined to give entry i of the regions' brick lists as a Brick.
 // TENT_FUNCTION(region, anchor, p, weighted) returns the sum of the weights at the point
 // anchor + p (cell_point.glsl) and sets `weighted` to the weighted sum of the values; the sample
 // is their quotient. With TENT_MODEL(slot, toP) defined
 // instead of TENT_VALUE, each value is the cell's linear model at p, toP = p - c_i (the linear
 // interpolant).
+
+#ifndef TENT_BRICK
+#define TENT_BRICK(i) bricks[regionBricks[i]]
+#endif
 
 float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted) {
   // `precise` forbids fusing a*b+c into an FMA, which the CPU reference never does: both paths
@@ -13,7 +18,7 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
   precise float weightSum = 0.0;
   precise TENT_TYPE sum = TENT_TYPE(0.0);
   for (uint k = 0; k < region.brickCount; ++k) {
-    const Brick brick = bricks[regionBricks[region.brickOffset + k]];
+    const Brick brick = TENT_BRICK(region.brickOffset + k);
     const float width = float(1 << brick.level);
     precise const vec3 local =
         (kDeepPositions ? vec3(anchor - brick.lower) + p : p - vec3(brick.lower)) / width - 0.5;
