@@ -12,9 +12,9 @@
 
 layout(push_constant, scalar) uniform PointDataBlock { PointDataParams pc; };
 layout(scalar, set = 0, binding = 0) readonly buffer BrickBuffer { Brick bricks[]; };
-layout(scalar, set = 0, binding = 1) readonly buffer ValueBuffer { vec3 values[]; };
+layout(std430, set = 0, binding = 1) readonly buffer ValueBuffer { vec4 values[]; };
 layout(scalar, set = 0, binding = 2) readonly buffer RegionBuffer { Region regions[]; };
-layout(scalar, set = 0, binding = 3) readonly buffer RegionBrickBuffer { uint regionBricks[]; };
+layout(scalar, set = 0, binding = 3) readonly buffer RegionBrickBuffer { Brick regionBricks[]; };
 layout(scalar, set = 0, binding = 4) readonly buffer ChannelValueBuffer { float channelValues[]; };
 layout(scalar, set = 0, binding = 5) readonly buffer SummaryBuffer { RoundSummary summary; };
 layout(scalar, set = 0, binding = 6) readonly buffer PositionBuffer { vec3 positions[]; };
@@ -41,9 +41,9 @@ struct TentBrick {
   ivec3 lo;
 };
 
-TentBrick tentBrick(uint brickId, ivec3 anchor, vec3 p) {
+TentBrick tentBrick(Brick brick, ivec3 anchor, vec3 p) {
   TentBrick t;
-  t.brick = bricks[brickId];
+  t.brick = brick;
   t.width = float(1 << t.brick.level);
   precise const vec3 local = (vec3(anchor - t.brick.lower) + p) / t.width - 0.5;
   const vec3 base = floor(local);
@@ -121,7 +121,7 @@ vec3 sampleVorticity(int regionId, vec3 p) {
       precise const vec3 da = (2.0 * offset - 1.0) / t.width;
       precise const float weight = a.x * a.y * a.z;
       precise const vec3 gradient = vec3(da.x * a.y * a.z, a.x * da.y * a.z, a.x * a.y * da.z);
-      precise vec3 v = values[slot];
+      precise vec3 v = values[slot].xyz;
       if (pc.linearInterpolant != 0u) {  // the cell's model v_i + G_i (p - c_i), its derivative G_i
         precise const vec3 toP = t.width * (t.frac - offset);
         const vec3 g0 = linearCells[4u * slot + 1u], g1 = linearCells[4u * slot + 2u],

@@ -78,7 +78,7 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
     const std::array<vk::DescriptorTarget, kTraceBindingCount> traceTargets{
         vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.handle()},
         storage(device.bricks), storage(device.values), storage(device.regions),
-        storage(device.regionBrickRecords), storage(b.states), storage(b.roundStates),
+        storage(device.regionBricks), storage(b.states), storage(b.roundStates),
         storage(b.lineRounds[parity]), storage(b.positions), storage(b.times),
         storage(b.vectors), storage(b.regionIds), device.locateTarget(),
         storage(device.vectorGradients)};

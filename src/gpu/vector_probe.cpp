@@ -64,7 +64,7 @@ void VectorProbe::reserve(std::size_t points) {
       storage(device_->bricks),
       storage(device_->values),
       storage(device_->regions),
-      storage(device_->regionBrickRecords),
+      storage(device_->regionBricks),
       storage(points_),   // probePoints
       storage(unused_),   // statesOut
       storage(unused_),   // lineRounds

@@ -36,9 +36,9 @@ struct VolumeBuffers {
   vk::Buffer vectorGradients;   // linear interpolant: per slot the value, then its 3 gradients
   vk::Buffer channelGradients;  // linear interpolant (empty with tent)
   vk::Buffer regions;
+  // The regions' brick lists (RegionSet::regionBricks) with each brick's record in place of its
+  // index, so that a sample reads a brick in one load instead of two dependent ones.
   vk::Buffer regionBricks;
-  // Per entry of regionBricks, that brick's record: what the tracing kernels read.
-  vk::Buffer regionBrickRecords;
   vk::Buffer tree;                     // compute backend
   std::optional<vk::AabbScene> scene;  // rayquery and pipeline backends
 };

@@ -499,9 +499,9 @@ TEST_P(GpuTracerTest, ReportsKernelTimeBatchesRoundsAndDeviceBytes) {
   GpuTracer tracer(ctx(), GetParam(), volume);
   const TracerSetup& setup = tracer.setup();
   EXPECT_EQ(setup.volumeBytes, volume.bricks.size() * sizeof(shared::Brick) +
-                                   volume.values.size() * sizeof(glm::vec3) +
+                                   volume.values.size() * sizeof(glm::vec4) +
                                    volume.regions.regions.size() * sizeof(shared::Region) +
-                                   volume.regions.regionBricks.size() * sizeof(std::uint32_t));
+                                   volume.regions.regionBricks.size() * sizeof(shared::Brick));
   if (GetParam() == Backend::Compute)
     EXPECT_EQ(setup.structureBytes, volume.regions.tree.size() * sizeof(shared::RegionTreeNode));
   else

@@ -12,10 +12,11 @@
 
 layout(scalar, set = 0, binding = 0) uniform ParamsBlock { TraceParams params; };
 layout(scalar, set = 0, binding = 1) readonly buffer BrickBuffer { Brick bricks[]; };
-layout(scalar, set = 0, binding = 2) readonly buffer ValueBuffer { vec3 values[]; };
+// The vector's values padded to 16 bytes (VolumeBuffers::values): one aligned load per cell.
+layout(std430, set = 0, binding = 2) readonly buffer ValueBuffer { vec4 values[]; };
 layout(scalar, set = 0, binding = 3) readonly buffer RegionBuffer { Region regions[]; };
-// The regions' brick lists with each brick's record in place (VolumeBuffers::regionBrickRecords),
-// so that a sample reads a brick in one load rather than its index and then the record.
+// The regions' brick lists with each brick's record in place (VolumeBuffers::regionBricks), so
+// that a sample reads a brick in one load rather than its index and then the record.
 layout(scalar, set = 0, binding = 4) readonly buffer RegionBrickBuffer {
   Brick regionBrickRecords[];
 };

@@ -8,7 +8,7 @@ const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
 #define TENT_TYPE vec3
 #define TENT_BRICK(i) regionBrickRecords[i]
-#define TENT_VALUE(slot) values[slot]
+#define TENT_VALUE(slot) values[slot].xyz
 #define TENT_FUNCTION reconstructVector
 #include "tent_reconstruction.glsl"
 #undef TENT_FUNCTION
