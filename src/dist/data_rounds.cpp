@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "flow/cpu_round.hpp"
 #include "flow/line_plan.hpp"
