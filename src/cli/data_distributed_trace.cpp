@@ -22,9 +22,6 @@ namespace amrstream::cli {
 namespace {
 
 void checkDataVolume(const flow::VectorVolume& volume) {
-  if (std::ranges::any_of(volume.periodic, [](bool p) { return p; }))
-    throw InputError("--distribute data", "is not available with periodic axes (--periodic none "
-                                          "traces without them)");
   if (volume.deepPositions())
     throw InputError("--distribute data",
                      "is not available for domains wider than 2^21 finest cells");
@@ -55,14 +52,24 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   const double margin = (haloSteps - 1) * reach;
   rank.halo = margin + reach + 0.5 * widest + 2.0;
   rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
-  input.options.pauseOutside = dist::pauseBox(rank.partition, world.rank(), margin);
+  // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
+  // origin.
+  const glm::ivec3 shift = input.volume.domain.lower - cells.bounds().lower;
+  for (std::size_t k = 0; k < rank.partition.lower.size(); ++k) {
+    rank.partition.lower[k] += shift;
+    rank.partition.upper[k] += shift;
+  }
+  input.options.pauseOutside =
+      dist::pauseBox(rank.partition, world.rank(), margin, input.volume.periodic);
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
 
   const glm::ivec3 lower = rank.partition.lower[std::size_t(world.rank())];
   const glm::ivec3 upper = rank.partition.upper[std::size_t(world.rank())];
-  flow::VolumeOptions part;
+  flow::VolumeOptions part;  // as the whole volume's (api/field.cpp), cropped
   part.pointData = input.volume.channelNames;
+  part.periodic = input.volume.periodic;
+  part.interpolant = input.volume.interpolant;
   part.keepAround = flow::VolumeOptions::Box{glm::dvec3(lower) - rank.halo,
                                              glm::dvec3(upper) + rank.halo};
   input.volume = flow::buildVectorVolume(

@@ -72,7 +72,8 @@ double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& op
   return 0.0;
 }
 
-flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin) {
+flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin,
+                                 const flow::PeriodicAxes& periodic) {
   glm::ivec3 domainLower = partition.lower.front(), domainUpper = partition.upper.front();
   for (int k = 0; k < partition.parts(); ++k) {
     domainLower = glm::min(domainLower, partition.lower[std::size_t(k)]);
@@ -83,8 +84,8 @@ flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, doubl
   const glm::ivec3 upper = partition.upper[std::size_t(rank)];
   flow::TraceOptions::Box box;
   for (int a = 0; a < 3; ++a) {
-    box.lower[a] = lower[a] == domainLower[a] ? -kBeyond : float(lower[a] - margin);
-    box.upper[a] = upper[a] == domainUpper[a] ? kBeyond : float(upper[a] + margin);
+    box.lower[a] = lower[a] == domainLower[a] && !periodic[a] ? -kBeyond : float(lower[a] - margin);
+    box.upper[a] = upper[a] == domainUpper[a] && !periodic[a] ? kBeyond : float(upper[a] + margin);
   }
   return box;
 }

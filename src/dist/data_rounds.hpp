@@ -27,9 +27,11 @@ namespace amrstream::dist {
 double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& options);
 
 // The box a rank's lines stay in: its part grown by `margin` finest cells, and without bound
-// beyond the faces that lie on the domain's (the points there have no other owner). A line
-// pauses after a step that ends outside it (TraceOptions::pauseOutside).
-flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin);
+// beyond the faces that lie on the domain's, but for periodic axes (the points beyond have no
+// other owner; along periodic axes lines wrap to the other side). A line pauses after a step
+// that ends outside it (TraceOptions::pauseOutside).
+flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin,
+                                 const flow::PeriodicAxes& periodic);
 
 struct DataRoundStats {
   std::uint32_t rounds = 0;

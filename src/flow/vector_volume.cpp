@@ -82,19 +82,49 @@ std::string channelList(const bricks::AmrField& field) {
 
 namespace {
 
-// Crops every brick to the cells whose tents reach into `box` (one cell more on each side), drops
-// bricks left with none; the kept cells keep their order and the bricks theirs.
-void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box) {
+// Crops every brick to the cells whose tents reach into `box` (one cell more on each side) or,
+// along periodic axes, into its translates by a period (samples there wrap to the other side);
+// drops bricks left with none. The kept cells keep their order and the bricks theirs.
+//
+// A sample at p sums weights from p - lower, lower a brick's corner. That difference is exact in
+// float when lower >= 0 (cells are aligned to their width, so a cell whose tent reaches p has
+// |p - lower| <= p), and then cropping, which moves lower, changes nothing. Where lower < 0, on a
+// brick or on its image a period below, p - lower rounds, and differently for another lower:
+// such bricks keep their lower corner along that axis.
+void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box,
+                const bricks::CellBox& domain, const PeriodicAxes& periodic) {
+  std::vector<VolumeOptions::Box> boxes;
+  const glm::dvec3 period(domain.upper - domain.lower);
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x) {
+        const glm::ivec3 s(x, y, z);
+        bool allowed = true;
+        for (int a = 0; a < 3; ++a) allowed = allowed && (s[a] == 0 || periodic[a]);
+        if (allowed) boxes.push_back({box.lower + glm::dvec3(s) * period,
+                                      box.upper + glm::dvec3(s) * period});
+      }
   std::vector<shared::Brick> bricks;
   std::vector<std::uint32_t> cellIds;
   for (const shared::Brick& brick : set.bricks) {
     const double width = std::ldexp(1.0, brick.level);
     const glm::dvec3 lower(brick.lower);
-    const glm::ivec3 lo = glm::max(glm::ivec3(glm::floor((box.lower - lower) / width - 1.5)),
-                                   glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(glm::ivec3(glm::ceil((box.upper - lower) / width + 0.5)) + 1,
-                                   brick.size);
+    glm::ivec3 lo = brick.size, hi(0);
+    for (const VolumeOptions::Box& b : boxes) {
+      const glm::ivec3 l = glm::max(glm::ivec3(glm::floor((b.lower - lower) / width - 1.5)),
+                                    glm::ivec3(0));
+      const glm::ivec3 h = glm::min(glm::ivec3(glm::ceil((b.upper - lower) / width + 0.5)) + 1,
+                                    brick.size);
+      if (glm::any(glm::greaterThanEqual(l, h))) continue;
+      lo = glm::min(lo, l);
+      hi = glm::max(hi, h);
+    }
     if (glm::any(glm::greaterThanEqual(lo, hi))) continue;
+    const bricks::CellBox d = bricks::brickDomainDoubled(brick);
+    for (int a = 0; a < 3; ++a) {
+      const bool imageBelow = periodic[a] && d.upper[a] > 2 * domain.upper[a];
+      if (brick.lower[a] < 0 || imageBelow) lo[a] = 0;
+    }
     shared::Brick kept = brick;
     kept.lower = brick.lower + lo * (1 << brick.level);
     kept.size = hi - lo;
@@ -119,7 +149,8 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
   Stopwatch clock;
   bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
   const CentredCells centred = centreCells(field, brickSet.bricks);
-  if (options.keepAround) keepAround(brickSet, *options.keepAround);
+  if (options.keepAround)
+    keepAround(brickSet, *options.keepAround, centred.domain, options.periodic);
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {

@@ -68,10 +68,11 @@ struct VectorVolume {
 
 struct VolumeOptions {
   bricks::BrickBuildOptions bricks;
-  // An MPI rank's part of the data: only the cells whose tents reach into this box (cell units)
+  // An MPI rank's part of the data: only the cells whose tents reach into this box (cell units,
+  // after the centring of buildCellLayout) or its translates by a period along periodic axes
   // are kept, each brick cropped to them (bricks keep their order, their cells' order and the
-  // whole field's domain and cell units, so every sample in the box sums the same terms in the
-  // same order as the whole volume's). Not with periodic axes.
+  // whole field's domain and cell units, and images follow the kept bricks in their order, so
+  // every sample in the box sums the same terms in the same order as the whole volume's).
   struct Box {
     glm::dvec3 lower, upper;
   };

@@ -232,6 +232,14 @@ TEST_P(MpiGpuTraceTest, OverDataEqualsOneProcess) {
   EXPECT_THAT(output, HasSubstr("device     MiB per rank"));
 }
 
+// The same across the faces of a periodic box.
+TEST_P(MpiGpuTraceTest, OverDataOnAPeriodicBoxEqualsOneProcess) {
+  expectValidatedRanksAgree("trace builtin:abc --backend " + GetParam() +
+                                " --count 12 --steps 400 --step-mode arc --step-size 1 "
+                                "--point-data none --halo-steps 2",
+                            " --distribute data", 3);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, MpiGpuTraceTest,
                          ::testing::Values("rayquery", "pipeline", "compute"));
 
@@ -337,6 +345,19 @@ TEST_F(MpiDataTraceTest, LongStepsPastTheFaces) {
   }
 }
 
+// The ABC flow on its periodic box: lines leave through every face and come back through the
+// opposite one, into other ranks' parts; samples near a face reach the cells on the other side.
+TEST_F(MpiDataTraceTest, PeriodicAxesAcrossTheParts) {
+  const std::string output =
+      expectDataRanksAgree("trace builtin:abc --backend cpu --count 40 --steps 800 --step-mode arc "
+                           "--step-size 1 --vorticity --halo-steps 2",
+                           {2, 3, 4});
+  const std::size_t at = output.find("hand-offs ");
+  ASSERT_NE(at, std::string::npos) << output;
+  EXPECT_NE(output.substr(at, 30).find_first_of("123456789"), std::string::npos)
+      << output.substr(at, 40);
+}
+
 TEST_F(MpiDataTraceTest, BothDirectionsWithPointDataAndVorticity) {
   expectDataRanksAgree("trace builtin:cloud --backend cpu --count 100 --steps 600 --vorticity",
                        {2, 3});
@@ -365,7 +386,8 @@ TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
   for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
            {"builtin:cloud --backend cpu --integrator rk45",
             "not available with --integrator rk45"},
-           {"builtin:abc --backend cpu", "not available with periodic axes"}}) {
+           {"builtin:cloud --backend cpu --interpolant linear",
+            "not available with --interpolant linear"}}) {
     SCOPED_TRACE(options);
     const testing::Outcome run =
         mpirun(2, "trace " + options + " --distribute data --out " + path("out.vtp"));
