@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <optional>
 
 #include "flow/cpu_round.hpp"
 #include "flow/line_plan.hpp"
@@ -35,14 +34,6 @@ void appendRuns(flow::TraceSet& runs, const flow::RoundBlock& block) {
   append(runs.vectors, block.vectors);
   append(runs.channels, block.channels);
   append(runs.vorticity, block.vorticity);
-}
-
-// Whether a line paused at `s` stays on this rank: the test of outsidePauseBox() in
-// line_tracer.cpp, in the same float arithmetic.
-bool staysIn(const std::optional<flow::TraceOptions::Box>& box, const shared::LineState& s) {
-  if (!box) return false;
-  const glm::vec3 p = glm::vec3(s.anchor) + s.offset;
-  return glm::all(glm::greaterThanEqual(p, box->lower)) && glm::all(glm::lessThan(p, box->upper));
 }
 
 }  // namespace
@@ -121,8 +112,8 @@ flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& vo
     std::vector<std::vector<shared::LineState>> outgoing(std::size_t(world.size()));
     std::size_t kept = 0;
     for (const shared::LineState& s : live) {
-      const int owner = staysIn(options.pauseOutside, s) ? world.rank()
-                                                          : partition.ownerOf(cellPointOf(s));
+      const bool stays = options.pauseOutside && options.pauseOutside->contains(s.anchor, s.offset);
+      const int owner = stays ? world.rank() : partition.ownerOf(cellPointOf(s));
       if (owner == world.rank())
         live[kept++] = s;
       else

@@ -47,13 +47,14 @@ LineRange pieceLines(std::size_t lines, int rank, int ranks) {
 std::vector<flow::TraceSet> runsByPiece(const flow::TraceSet& runs, std::size_t lines,
                                         int ranks) {
   std::vector<flow::TraceSet> pieces(std::size_t(ranks), flow::shapeOf(runs));
+  std::vector<std::uint32_t> lasts;  // of each rank's lines
+  for (int k = 0; k < ranks; ++k) lasts.push_back(pieceLines(lines, k, ranks).last);
   for (std::size_t r = 0; r < runs.lineCount(); ++r) {
-    // The rank k whose range [lines·k/ranks, lines·(k+1)/ranks) holds the run's line.
-    const std::size_t line = runs.seedIds[r];
-    std::size_t k = std::min<std::size_t>(line * std::size_t(ranks) / lines, ranks - 1);
-    while (k > 0 && line < pieceLines(lines, int(k), ranks).first) --k;
-    while (line >= pieceLines(lines, int(k), ranks).last) ++k;
-    flow::TraceSet& piece = pieces[k];
+    const auto holder = std::ranges::upper_bound(lasts, runs.seedIds[r]);
+    if (holder == lasts.end())
+      throw std::runtime_error("a run of line " + std::to_string(runs.seedIds[r]) + " of " +
+                               std::to_string(lines));
+    flow::TraceSet& piece = pieces[std::size_t(holder - lasts.begin())];
     piece.seedIds.push_back(runs.seedIds[r]);
     piece.directions.push_back(runs.directions[r]);
     piece.steps.push_back(runs.steps[r]);

@@ -59,6 +59,12 @@ struct TraceOptions {
   // units, [lower, upper)): MPI ranks tracing over data then hand them on.
   struct Box {
     glm::vec3 lower, upper;
+    // Whether the point anchor + offset lies in the box, in the kernels' float arithmetic (twin
+    // of outsidePauseBox() in line_round.glsl).
+    bool contains(glm::ivec3 anchor, glm::vec3 offset) const {
+      const glm::vec3 p = glm::vec3(anchor) + offset;
+      return glm::all(glm::greaterThanEqual(p, lower)) && glm::all(glm::lessThan(p, upper));
+    }
   };
   std::optional<Box> pauseOutside;
   // The collected traces may take at most this many bytes (0: no limit): tracing stops with an

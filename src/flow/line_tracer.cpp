@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "integrator.hpp"
 #include "line_steps.hpp"
 
 namespace amrstream::flow {
@@ -48,13 +49,6 @@ glm::vec3 wrapCellUnits(const shared::TraceParams& params, glm::vec3 p) {
   return p;
 }
 
-// Twin of outsidePauseBox() in line_round.glsl.
-bool outsidePauseBox(const shared::TraceParams& params, const CellPoint& x) {
-  const glm::vec3 p = glm::vec3(x.anchor) + x.offset;
-  return glm::any(glm::lessThan(p, params.pauseLower)) ||
-         glm::any(glm::greaterThanEqual(p, params.pauseUpper));
-}
-
 // wrapPeriodic() with the round's parameters, as the kernels do it: the anchor moves.
 CellPoint wrap(const shared::TraceParams& params, CellPoint p) {
   if (params.periodicAxes == 0 || !isNear(p)) return p;
@@ -87,6 +81,7 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
   float time = state.time, length = state.arcLength;
   std::uint32_t steps = state.steps, emitted = 0;
   float nextStep = state.stepSize;
+  const TraceOptions::Box pauseBox{params.pauseLower, params.pauseUpper};
   VectorSample s = sample(x);
   if (steps == 0 && params.keepHistory) {
     emit(x, time, s);
@@ -108,7 +103,8 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
       break;
     }
     if (taken == params.roundSteps) break;  // paused; the next round goes on from here
-    if (taken > 0 && params.pauseOutside && outsidePauseBox(params, x)) break;  // handed on
+    if (taken > 0 && params.pauseOutside && !pauseBox.contains(x.anchor, x.offset))
+      break;  // handed on
 
     // The last step before --max-time is shortened to end on it: the fixed-step integrators
     // scale their stage vectors, rk45 starts from the shortened step.

@@ -16,12 +16,10 @@ namespace amrstream::flow {
 
 namespace {
 
-// Images of the bricks across the periodic faces: for every shift of -1, 0 or +1 periods along
-// each periodic axis (not all zero), the shifted brick whose domain reaches into the domain box.
-std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bricks,
-                                          const bricks::CellBox& domain,
-                                          const PeriodicAxes& periodic) {
-  std::vector<glm::ivec3> shifts;
+// The shifts of -1, 0 or +1 periods along each periodic axis (none along the others), the zero
+// shift first.
+std::vector<glm::ivec3> periodicShifts(const PeriodicAxes& periodic) {
+  std::vector<glm::ivec3> shifts{glm::ivec3(0)};
   for (int z = -1; z <= 1; ++z)
     for (int y = -1; y <= 1; ++y)
       for (int x = -1; x <= 1; ++x) {
@@ -31,6 +29,16 @@ std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bric
         for (int a = 0; a < 3; ++a) allowed = allowed && (s[a] == 0 || periodic[a]);
         if (allowed) shifts.push_back(s);
       }
+  return shifts;
+}
+
+// Images of the bricks across the periodic faces: for every non-zero periodic shift, the shifted
+// brick whose domain reaches into the domain box.
+std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bricks,
+                                          const bricks::CellBox& domain,
+                                          const PeriodicAxes& periodic) {
+  std::vector<glm::ivec3> shifts = periodicShifts(periodic);
+  shifts.erase(shifts.begin());
   const glm::i64vec3 period(domain.upper - domain.lower);
   const glm::i64vec3 lowerDoubled = std::int64_t(2) * glm::i64vec3(domain.lower),
                      upperDoubled = std::int64_t(2) * glm::i64vec3(domain.upper);
@@ -95,15 +103,8 @@ void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box,
                 const bricks::CellBox& domain, const PeriodicAxes& periodic) {
   std::vector<VolumeOptions::Box> boxes;
   const glm::dvec3 period(domain.upper - domain.lower);
-  for (int z = -1; z <= 1; ++z)
-    for (int y = -1; y <= 1; ++y)
-      for (int x = -1; x <= 1; ++x) {
-        const glm::ivec3 s(x, y, z);
-        bool allowed = true;
-        for (int a = 0; a < 3; ++a) allowed = allowed && (s[a] == 0 || periodic[a]);
-        if (allowed) boxes.push_back({box.lower + glm::dvec3(s) * period,
-                                      box.upper + glm::dvec3(s) * period});
-      }
+  for (const glm::ivec3& s : periodicShifts(periodic))
+    boxes.push_back({box.lower + glm::dvec3(s) * period, box.upper + glm::dvec3(s) * period});
   std::vector<shared::Brick> bricks;
   std::vector<std::uint32_t> cellIds;
   for (const shared::Brick& brick : set.bricks) {

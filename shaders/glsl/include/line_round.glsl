@@ -50,7 +50,7 @@ vec3 wrapCellUnits(vec3 p) {
   return q;
 }
 
-// Twin of outsidePauseBox() in line_tracer.cpp.
+// Twin of TraceOptions::Box::contains() (src/flow/integrator.hpp), negated.
 bool outsidePauseBox(vec3 x) {
   precise const vec3 p = vec3(lineAnchor) + x;
   return any(lessThan(p, params.pauseLower)) || any(greaterThanEqual(p, params.pauseUpper));
