@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "output/vtp_writer.hpp"
 #include "amrstream/provenance.hpp"
@@ -46,12 +47,18 @@ output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesy
   return output::writeVtp(path, traces, writeOptions);
 }
 
-void printMemory(bool stagePeak) {
-  fmt::print("memory     {:.2f} GiB peak resident on the host{}\n",
-             double(peakResidentBytes()) / 0x1p30,
-             stagePeak ? fmt::format(", {:.2f} GiB while tracing and writing",
-                                     double(stagePeakResidentBytes()) / 0x1p30)
-                       : std::string());
+// With `tracingPeak` (the stage peak when tracing ended, the stage restarted for writing), the
+// two stages apart.
+void printMemory(bool stagePeak, std::optional<std::uint64_t> tracingPeak = std::nullopt) {
+  const auto gib = [](std::uint64_t bytes) { return double(bytes) / 0x1p30; };
+  std::string stages;
+  if (stagePeak && tracingPeak)
+    stages = fmt::format(", {:.2f} GiB while tracing, {:.2f} GiB while writing", gib(*tracingPeak),
+                         gib(stagePeakResidentBytes()));
+  else if (stagePeak)
+    stages = fmt::format(", {:.2f} GiB while tracing and writing", gib(stagePeakResidentBytes()));
+  fmt::print("memory     {:.2f} GiB peak resident on the host{}\n", gib(peakResidentBytes()),
+             stages);
 }
 
 // With --pieces, --out names the .pvtp; the pieces lie beside it.
@@ -93,11 +100,13 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   const bool stagePeak = resetStagePeak();
   // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
   const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
+  const std::uint64_t tracingPeak = stagePeakResidentBytes();
+  resetStagePeak();
   Stopwatch clock;
   const output::VtpCounts written = writeTraceFile(o, o.out, traces, input);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
-  printMemory(stagePeak);
+  printMemory(stagePeak, tracingPeak);
 }
 
 }  // namespace

@@ -62,19 +62,6 @@ std::size_t deflateBlock(std::span<const std::byte> in, std::span<std::byte> out
   return size;
 }
 
-std::size_t compressBlock(Compression compression, std::span<const std::byte> in,
-                          std::span<std::byte> out, ZLibSettings zlib) {
-  if (compression == Compression::ZLib) return deflateBlock(in, out, zlib);
-  if (compression == Compression::LZ4) {
-    const int size = LZ4_compress_default(
-        reinterpret_cast<const char*>(in.data()), reinterpret_cast<char*>(out.data()),
-        static_cast<int>(in.size()), static_cast<int>(out.size()));
-    if (size <= 0) throw std::runtime_error("LZ4_compress_default failed");
-    return static_cast<std::size_t>(size);
-  }
-  throw std::logic_error("compressBlock without a compressor");
-}
-
 // True when `in` is a valid stream that inflates to exactly out.size() bytes.
 bool decompressBlock(Compression compression, std::span<const std::byte> in,
                      std::span<std::byte> out) {
@@ -100,6 +87,19 @@ bool decompressBlock(Compression compression, std::span<const std::byte> in,
 }
 
 }  // namespace
+
+std::size_t compressBlock(Compression compression, std::span<const std::byte> in,
+                          std::span<std::byte> out, ZLibSettings zlib) {
+  if (compression == Compression::ZLib) return deflateBlock(in, out, zlib);
+  if (compression == Compression::LZ4) {
+    const int size = LZ4_compress_default(
+        reinterpret_cast<const char*>(in.data()), reinterpret_cast<char*>(out.data()),
+        static_cast<int>(in.size()), static_cast<int>(out.size()));
+    if (size <= 0) throw std::runtime_error("LZ4_compress_default failed");
+    return static_cast<std::size_t>(size);
+  }
+  throw std::logic_error("compressBlock without a compressor");
+}
 
 std::optional<Compression> compressionNamed(std::string_view name) {
   for (const Names& names : kNames) {

@@ -77,6 +77,11 @@ struct BlockHeader {
 // Upper bound of one block's compressed size.
 std::size_t maxCompressedBytes(Compression compression, std::size_t uncompressedBytes);
 
+// Compresses one block (at most kBlockBytes) into `out`, which holds maxCompressedBytes(); returns
+// the compressed size. Thread-safe.
+std::size_t compressBlock(Compression compression, std::span<const std::byte> in,
+                          std::span<std::byte> out, ZLibSettings zlib = {});
+
 // Compresses `input` cut into blocks of kBlockBytes, the blocks in parallel (TBB).
 struct CompressedBlocks {
   std::vector<std::byte> bytes;  // the compressed blocks, one after the other

@@ -2,7 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <bit>
@@ -32,29 +33,80 @@ void checkWritten(const AppendedArray& array, std::uint64_t written) {
   }
 }
 
-// Values made by fillValues arrive a batch of blocks at a time, the blocks of a batch filled in
-// parallel; `consume` takes each batch in order.
-constexpr std::uint64_t kFillBatchBytes = 256 * kBlockBytes;
+// Values made by fillValues go through a pipeline of groups of blocks: groups are filled (and
+// their blocks compressed) in parallel, each in the buffers of its token, and written in order by
+// one thread at a time while later groups are still being made. A group is large enough for the
+// file to take it in one write, bypassing the writer's buffer. Memory is the tokens' buffers,
+// whatever the array's size.
+constexpr std::uint64_t kGroupBlocks = 32;
 
-template <typename Consume>
-void forEachFilledBatch(const AppendedArray& array, Consume&& consume) {
-  std::vector<std::byte> batch;
-  for (std::uint64_t first = 0; first < array.byteCount; first += kFillBatchBytes) {
-    batch.resize(std::min(kFillBatchBytes, array.byteCount - first));
-    const std::size_t blocks = (batch.size() + kBlockBytes - 1) / kBlockBytes;
-    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
-      const std::size_t begin = b * kBlockBytes, size = std::min(kBlockBytes, batch.size() - begin);
-      array.fillValues(first + begin, std::span(batch).subspan(begin, size));
-    });
-    consume(std::span<const std::byte>(batch));
+struct GroupToken {
+  std::vector<std::byte> raw;
+  std::vector<std::byte> packed;     // the group's compressed blocks, one after another
+  std::vector<std::uint64_t> sizes;  // of each compressed block
+  std::span<const std::byte> ready;  // what goes to the file
+};
+
+// Fills group `group` of the array into token.raw and, unless `compression` is None, compresses
+// its blocks into token.packed.
+void makeGroup(const AppendedArray& array, Compression compression, std::uint64_t group,
+               GroupToken& token) {
+  const std::uint64_t first = group * kGroupBlocks * kBlockBytes;
+  token.raw.resize(std::min(kGroupBlocks * kBlockBytes, array.byteCount - first));
+  array.fillValues(first, token.raw);
+  token.ready = token.raw;
+  if (compression == Compression::None) return;
+  const std::size_t bound = maxCompressedBytes(compression, kBlockBytes);
+  token.packed.resize(kGroupBlocks * bound);
+  token.sizes.clear();
+  std::size_t packed = 0;
+  for (std::size_t begin = 0; begin < token.raw.size(); begin += kBlockBytes) {
+    const std::size_t size = std::min<std::size_t>(kBlockBytes, token.raw.size() - begin);
+    token.sizes.push_back(compressBlock(compression, std::span(token.raw).subspan(begin, size),
+                                        std::span(token.packed).subspan(packed, bound)));
+    packed += token.sizes.back();
   }
+  token.ready = std::span(token.packed).first(packed);
+}
+
+// Writes the array's values, each block compressed unless `compression` is None; returns the
+// compressed size of every block (none when None).
+std::vector<std::uint64_t> writeFilledBlocks(const AppendedArray& array, Compression compression,
+                                             BufferedWriter& out) {
+  const std::uint64_t groupBytes = kGroupBlocks * kBlockBytes;
+  const std::uint64_t groups = (array.byteCount + groupBytes - 1) / groupBytes;
+  // At most `tokens` groups are between the first filter and the end of the last, and they are
+  // consecutive, so group g can use ring slot g % tokens.
+  const std::size_t tokens = 2 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+  std::vector<GroupToken> ring(tokens);
+  std::vector<std::uint64_t> sizes;
+  std::uint64_t next = 0;
+  const auto take = [&](tbb::flow_control& control) -> std::uint64_t {
+    if (next == groups) control.stop();
+    return next == groups ? 0 : next++;
+  };
+  const auto make = [&](std::uint64_t group) {
+    makeGroup(array, compression, group, ring[group % tokens]);
+    return group;
+  };
+  const auto put = [&](std::uint64_t group) {
+    const GroupToken& token = ring[group % tokens];
+    out.write(token.ready);
+    sizes.insert(sizes.end(), token.sizes.begin(), token.sizes.end());
+  };
+  using tbb::filter_mode;
+  tbb::parallel_pipeline(
+      tokens, tbb::make_filter<void, std::uint64_t>(filter_mode::serial_in_order, take) &
+                  tbb::make_filter<std::uint64_t, std::uint64_t>(filter_mode::parallel, make) &
+                  tbb::make_filter<std::uint64_t, void>(filter_mode::serial_in_order, put));
+  return sizes;
 }
 
 void writeRawBlock(BufferedWriter& out, const AppendedArray& array) {
   out.put<std::uint64_t>(array.byteCount);
   const std::uint64_t start = out.bytesWritten();
   if (array.fillValues)
-    forEachFilledBatch(array, [&](std::span<const std::byte> batch) { out.write(batch); });
+    writeFilledBlocks(array, Compression::None, out);
   else
     array.writeValues(out);
   checkWritten(array, out.bytesWritten() - start);
@@ -71,11 +123,7 @@ void writeCompressedBlock(AtomicFile& file, BufferedWriter& out, const AppendedA
 
   std::vector<std::uint64_t> sizes;
   if (array.fillValues) {
-    forEachFilledBatch(array, [&](std::span<const std::byte> batch) {
-      const CompressedBlocks blocks = compressBlocks(compression, batch);
-      out.write(blocks.bytes);
-      sizes.insert(sizes.end(), blocks.sizes.begin(), blocks.sizes.end());
-    });
+    sizes = writeFilledBlocks(array, compression, out);
   } else {
     BlockCompressingSink compressor(compression, out);
     BufferedWriter values(compressor);

@@ -5,18 +5,12 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <string>
 
 namespace amrstream {
-
-// Peak since the process started; bytes, 0 when the system does not say.
-inline std::uint64_t peakResidentBytes() {
-  rusage usage{};
-  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
-  return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
-}
 
 // Peak since the last resetStagePeak(); bytes, 0 when the system does not say.
 inline std::uint64_t stagePeakResidentBytes() {
@@ -26,8 +20,25 @@ inline std::uint64_t stagePeakResidentBytes() {
   return 0;
 }
 
+namespace detail {
+// The highest stage peak that a reset cleared (the reset clears getrusage's peak too).
+inline std::uint64_t& clearedPeak() {
+  static std::uint64_t peak = 0;
+  return peak;
+}
+}  // namespace detail
+
+// Peak since the process started; bytes, 0 when the system does not say.
+inline std::uint64_t peakResidentBytes() {
+  rusage usage{};
+  const std::uint64_t sinceReset =
+      getrusage(RUSAGE_SELF, &usage) == 0 ? std::uint64_t(usage.ru_maxrss) * 1024 : 0;  // kilobytes
+  return std::max(sinceReset, detail::clearedPeak());
+}
+
 // Starts a new stage peak at the current resident size; false where the system does not allow it.
 inline bool resetStagePeak() {
+  detail::clearedPeak() = peakResidentBytes();
   std::ofstream clear("/proc/self/clear_refs");
   clear << "5";
   return static_cast<bool>(clear.flush());
