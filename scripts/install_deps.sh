@@ -11,6 +11,8 @@ packages=(
   python3 python3-vtk9 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
+  # text in rendered images: FreeType and the DejaVu Sans font
+  libfreetype-dev fonts-dejavu-core
   libglfw3-dev libimgui-dev xvfb xauth
   # MPI: distributed tracing and its tests (mpirun)
   libopenmpi-dev openmpi-bin

@@ -16,6 +16,7 @@
 #include "flow/vector_volume.hpp"
 #include "render/camera.hpp"
 #include "render/image/colour_map.hpp"
+#include "render/image/colour_scale.hpp"
 #include "render/image/image.hpp"
 #include "render/tube_geometry.hpp"
 #include "render/tube_renderer.hpp"
@@ -31,11 +32,22 @@ inline constexpr std::uint32_t kMaxAoSamples = 256;
 
 struct RenderOptions {
   std::uint32_t width = 1024, height = 768;
-  std::vector<float> camera;        // azimuth, elevation (degrees)[, zoom]
-  std::vector<double> viewBox;      // x0,y0,z0,x1,y1,z1 the camera frames; empty: the domain
-  std::optional<float> tubeRadius;  // finest cells
+  std::vector<float> camera;    // azimuth, elevation (degrees)[, zoom]
+  std::string view;             // a named view (render::namedView); empty: --camera's or 35, 25
+  float zoom = 1.0f;            // > 1 closer; --camera's third number multiplies it
+  std::string up = "+z";        // the axis up on screen
+  float fovDegrees = 35.0f;     // vertical field of view (and an orthographic view's height)
+  std::string projection = "perspective";  // or "orthographic"
+  std::string frame = "traces";            // what the camera frames: "traces" or "domain"
+  std::vector<double> lookAt;              // x,y,z the camera looks at; empty: the framed box's centre
+  std::vector<double> viewBox;  // x0,y0,z0,x1,y1,z1 the camera frames; empty: see `frame`
+  std::optional<float> tubeRadius;           // finest cells
+  std::optional<double> tubeRadiusPhysical;  // the input's length units
+  float tubeRadiusOfView = 0.003f;           // without either: a fraction of the view's height
   std::string colourBy = "speed";
   std::string colourMap = "viridis";
+  std::string colourScale = "linear";  // "log" or "symlog"
+  std::optional<double> symlogWidth;   // symlog's linear half-width; default 1e-3 of the range
   std::vector<float> range;  // min, max of the colour field
   std::uint32_t aoSamples = 4;
   std::string volume;  // context scalar channel; empty: none
@@ -49,6 +61,9 @@ struct RenderScene {
   std::vector<shared::TubeSegment> segments;
   render::RenderSettings settings;
   render::ColourMap colourMap = render::ColourMap::Viridis;
+  // The colour field's values at the ends of the map, and how values between map onto it; the
+  // tubes carry scale coordinates (settings.colourRange is the range's), the bar shows values.
+  render::ColourScale colourScale;
   std::string colourLabel;
   std::vector<float> contextScalars;    // brick-ordered; empty without --volume
   render::ChannelValues colourChannel;  // the --colour-by channel, when it is one
@@ -63,6 +78,15 @@ void setTubeRadius(render::RenderSettings& settings, float radius);
 // `cells` give the context volume's channel and scalars to colour by; `volume` the domain.
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
                          const flow::VectorVolume& volume, const flow::TraceSet& traces);
+
+// Points scene.camera at what the options frame (--view-box, else the tubes or the domain, see
+// RenderOptions::frame) from their direction, up axis, field of view and projection. Throws
+// InputError for a bad one. The viewer calls it again to frame the traces as they are.
+void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume);
+
+// Moves scene.camera, keeping its direction and projection, to frame the scene's tubes as they
+// are (the domain when there are none) at this aspect: the viewer's "frame all".
+void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect);
 
 // The tube segments and colour range for traces (also used as traces grow in the viewer).
 void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cells,

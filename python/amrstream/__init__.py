@@ -99,9 +99,13 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
 def render(traces, **look):
     """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
     RGBA image. Options as `amrstream render` names them: width=1024, height=768,
-    camera=(azimuth, elevation[, zoom]), view_box=(x0, y0, z0, x1, y1, z1) the camera frames
-    (default: the domain), tube_radius (finest cells), colour_by='speed'|'time'|a
-    field, colour_map='viridis'|'magma'|'coolwarm', range=(min, max), ao_samples=4,
+    camera=(azimuth, elevation[, zoom]) or view='iso'|'+x'|'-x'|..., zoom=1, up='+z', fov=35,
+    projection='perspective'|'orthographic', frame='traces'|'domain', look_at=(x, y, z),
+    view_box=(x0, y0, z0, x1, y1, z1) the camera frames (default: the traces),
+    tube_radius (finest cells) or tube_radius_physical or tube_radius_view=0.003 (of the
+    view's height), colour_by='speed'|'time'|a field, colour_map='viridis'|'magma'|'inferno'|
+    'plasma'|'cividis'|'coolwarm'|'rdbu'|'twilight', colour_scale='linear'|'log'|'symlog',
+    symlog_width, range=(min, max), ao_samples=4,
     volume=<a field shown behind the tubes>, volume_range, volume_opacity=0.05,
     linear_volume=False, frames=32, colour_bar=True, backend, device, progress, verbose."""
     return traces.render(**look)

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
 
 #include "render/image/colour_bar.hpp"
+#include "render/image/font.hpp"
 #include "render/volume_range.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -15,11 +17,31 @@ namespace amrstream {
 
 namespace {
 
-// Half a finest cell, or wider on large domains so that a tube stays about a pixel wide in a
-// 1024-pixel view of the whole domain.
-float defaultTubeRadius(const flow::VectorVolume& volume) {
-  const glm::vec3 extent = glm::vec3(volume.domain.upper - volume.domain.lower);
-  return std::max(0.5f, glm::length(extent) / 1200.0f);
+// The tube radius in finest cells: --tube-radius, --tube-radius-physical, else a fraction of the
+// view's height at the camera's target (so figures look alike whatever the data's depth).
+float tubeRadiusOf(const RenderOptions& o, const flow::VectorVolume& volume,
+                   const render::OrbitCamera& camera) {
+  const int given = int(o.tubeRadius.has_value()) + int(o.tubeRadiusPhysical.has_value());
+  if (given > 1)
+    throw InputError("--tube-radius", "give the radius in cells or in physical units, not both");
+  float radius = 0.0f;
+  const char* option = "--tube-radius";
+  if (o.tubeRadius) {
+    radius = *o.tubeRadius;
+  } else if (o.tubeRadiusPhysical) {
+    const glm::dvec3 spacing = volume.transform.spacing;
+    radius = float(*o.tubeRadiusPhysical / std::cbrt(spacing.x * spacing.y * spacing.z));
+    option = "--tube-radius-physical";
+  } else {
+    if (!(o.tubeRadiusOfView > 0.0f && o.tubeRadiusOfView <= 0.5f))
+      throw InputError("--tube-radius-view",
+                       fmt::format("{} is outside (0, 0.5]", o.tubeRadiusOfView));
+    radius = o.tubeRadiusOfView * 2.0f * camera.distance * render::halfHeightAtUnitDistance(camera);
+    option = "--tube-radius-view";
+  }
+  if (!(radius > 0.0f) || !std::isfinite(radius))
+    throw InputError(option, "must be positive and finite");
+  return radius;
 }
 
 render::ValueRange parseRange(const std::vector<float>& values, const char* option) {
@@ -47,9 +69,115 @@ void checkImageOptions(const RenderOptions& o) {
                                                  o.aoSamples, kMaxAoSamples));
   requireFinite(o.camera, "--camera");
   requireFinite(o.viewBox, "--view-box");
+  requireFinite(o.lookAt, "--look-at");
   if (!(o.volumeOpacity >= 0.0f) || !std::isfinite(o.volumeOpacity))
     throw InputError("--volume-opacity",
                      fmt::format("{} is not a finite number >= 0", o.volumeOpacity));
+}
+
+// The colour field's scale: the kind asked for, over --range or the values' own range (the
+// positive values' for a log scale).
+render::ColourScale colourScaleFor(const RenderOptions& o, std::span<const float> values) {
+  const std::optional<render::ScaleKind> kind = render::parseScaleKind(o.colourScale);
+  if (!kind)
+    throw InputError("--colour-scale",
+                     fmt::format("no scale '{}'; choose linear, log or symlog", o.colourScale));
+  render::ColourScale scale;
+  scale.kind = *kind;
+  if (!o.range.empty()) {
+    const render::ValueRange range = parseRange(o.range, "--range");
+    scale.min = range.min, scale.max = range.max;
+  } else {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const float v : values)
+      if (std::isfinite(v) && (*kind != render::ScaleKind::Log || v > 0.0f))
+        lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+    if (lo > hi) lo = *kind == render::ScaleKind::Log ? 1.0 : 0.0, hi = lo;  // nothing to show
+    if (!(lo < hi)) {  // one value: a range around it
+      const double pad = lo != 0.0 ? std::abs(lo) * 0.5 : 1.0;
+      hi = lo + pad, lo = *kind == render::ScaleKind::Log ? lo * 0.5 : lo - pad;
+    }
+    scale.min = lo, scale.max = hi;
+  }
+  if (*kind == render::ScaleKind::SymLog)
+    scale.linearWidth = o.symlogWidth.value_or(render::defaultLinearWidth(scale.min, scale.max));
+  try {
+    render::checkScale(scale);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(o.range.empty() ? "--colour-scale" : "--range", e.what());
+  }
+  return scale;
+}
+
+// What the camera frames, in cell units: the corners of --view-box, else the tubes' ends (with
+// their radius) or the domain's corners.
+struct Framed {
+  std::vector<glm::vec3> points;
+  float radius = 0.0f;
+};
+
+std::vector<glm::vec3> boxCorners(glm::vec3 lower, glm::vec3 upper) {
+  std::vector<glm::vec3> corners;
+  for (int corner = 0; corner < 8; ++corner)
+    corners.push_back({(corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
+                       (corner & 4) ? upper.z : lower.z});
+  return corners;
+}
+
+Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
+                    std::span<const shared::TubeSegment> segments, float radius) {
+  if (!o.viewBox.empty()) {
+    if (o.viewBox.size() != 6)
+      throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
+    const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
+    const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
+    if (!glm::all(glm::lessThan(a, b)))
+      throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
+    return {boxCorners(glm::vec3(volume.transform.toCellUnits(a)),
+                       glm::vec3(volume.transform.toCellUnits(b)))};
+  }
+  if (o.frame != "traces" && o.frame != "domain")
+    throw InputError("--frame", fmt::format("'{}': choose traces or domain", o.frame));
+  if (o.frame == "traces" && !segments.empty()) {
+    Framed framed{{}, radius};
+    framed.points.reserve(2 * segments.size());
+    for (const shared::TubeSegment& s : segments) {
+      framed.points.push_back(s.a);
+      framed.points.push_back(s.b);
+    }
+    return framed;
+  }
+  return {boxCorners(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper))};
+}
+
+// The camera the options ask for, before framing.
+render::OrbitCamera cameraOf(const RenderOptions& o) {
+  render::OrbitCamera camera;
+  const std::optional<render::Axis> up = render::parseAxis(o.up);
+  if (!up) throw InputError("--up", fmt::format("'{}': choose +x, -x, +y, -y, +z or -z", o.up));
+  camera.up = *up;
+  if (!(o.fovDegrees >= 1.0f && o.fovDegrees <= 150.0f))
+    throw InputError("--fov", fmt::format("{} degrees is outside 1 to 150", o.fovDegrees));
+  camera.fovYDegrees = o.fovDegrees;
+  if (o.projection == "orthographic")
+    camera.projection = render::Projection::Orthographic;
+  else if (o.projection != "perspective")
+    throw InputError("--projection",
+                     fmt::format("'{}': choose perspective or orthographic", o.projection));
+  if (!o.view.empty()) {
+    if (!o.camera.empty())
+      throw InputError("--view", "give either --view or --camera's azimuth and elevation");
+    const std::optional<render::NamedView> view = render::namedView(o.view, camera.up);
+    if (!view)
+      throw InputError("--view", fmt::format("no view '{}'; choose one of: {}", o.view,
+                                             render::namedViewNames()));
+    camera.azimuthDegrees = view->azimuthDegrees;
+    camera.elevationDegrees = view->elevationDegrees;
+  } else if (o.camera.size() >= 2) {
+    camera.azimuthDegrees = o.camera[0];
+    camera.elevationDegrees = std::clamp(o.camera[1], -90.0f, 90.0f);
+  }
+  return camera;
 }
 
 }  // namespace
@@ -61,11 +189,39 @@ void setTubeRadius(render::RenderSettings& settings, float radius) {
 
 void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cells,
                  const flow::VectorVolume& volume, const flow::TraceSet& traces) {
-  const render::ColourField colour =
+  render::ColourField colour =
       render::colourFieldOf(traces, o.colourBy, cells, volume, scene.colourChannel);
+  scene.colourScale = colourScaleFor(o, colour.values);
+  const render::ColourScale& scale = scene.colourScale;
+  if (scale.kind != render::ScaleKind::Linear)
+    for (float& v : colour.values)
+      if (std::isfinite(v)) v = static_cast<float>(scale.coordinate(v));
   scene.segments = render::buildTubeSegments(traces, colour, volume.transform);
-  scene.settings.colourRange =
-      o.range.empty() ? render::rangeOf(colour.values) : parseRange(o.range, "--range");
+  scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
+                                static_cast<float>(scale.coordinate(scale.max))};
+}
+
+void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume) {
+  const float zoom = o.zoom * (o.camera.size() == 3 ? o.camera[2] : 1.0f);
+  if (!(zoom > 0.0f) || !std::isfinite(zoom))
+    throw InputError(o.camera.size() == 3 ? "--camera" : "--zoom",
+                     "the zoom factor must be positive and finite");
+  const Framed framed = framedPoints(o, volume, scene.segments, scene.settings.tubeRadius);
+  std::optional<glm::vec3> target;
+  if (!o.lookAt.empty()) {
+    if (o.lookAt.size() != 3) throw InputError("--look-at", "expected 3 numbers x,y,z");
+    target = glm::vec3(
+        volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
+  }
+  scene.camera = render::framePoints(cameraOf(o), framed.points, framed.radius,
+                                     float(o.width) / float(o.height), zoom, target);
+}
+
+void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {
+  RenderOptions tubes;
+  tubes.frame = "traces";
+  const Framed framed = framedPoints(tubes, volume, scene.segments, scene.settings.tubeRadius);
+  scene.camera = render::framePoints(scene.camera, framed.points, framed.radius, aspect);
 }
 
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
@@ -80,9 +236,6 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
 
   render::RenderSettings& s = scene.settings;
-  setTubeRadius(s, o.tubeRadius.value_or(defaultTubeRadius(volume)));
-  if (!(s.tubeRadius > 0.0f) || !std::isfinite(s.tubeRadius))
-    throw InputError("--tube-radius", "must be positive and finite");
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   updateTubes(scene, o, cells, volume, traces);
@@ -104,23 +257,12 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
     s.volumeOpacity = o.volumeOpacity;
   }
 
-  const float azimuth = o.camera.size() >= 2 ? o.camera[0] : 35.0f;
-  const float elevation = o.camera.size() >= 2 ? o.camera[1] : 25.0f;
-  const float zoom = o.camera.size() == 3 ? o.camera[2] : 1.0f;
-  if (!(zoom > 0.0f)) throw InputError("--camera", "the zoom factor must be positive");
-  glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
-  if (!o.viewBox.empty()) {
-    if (o.viewBox.size() != 6)
-      throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
-    const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
-    const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
-    if (!glm::all(glm::lessThan(a, b)))
-      throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
-    lower = glm::vec3(volume.transform.toCellUnits(a));
-    upper = glm::vec3(volume.transform.toCellUnits(b));
-  }
-  scene.camera =
-      render::frameBox(lower, upper, float(o.width) / float(o.height), azimuth, elevation, zoom);
+  // Framed without the tubes' radius when the radius follows from the view: the margin holds it.
+  if (o.tubeRadius && !(*o.tubeRadius > 0.0f && std::isfinite(*o.tubeRadius)))
+    throw InputError("--tube-radius", "must be positive and finite");
+  setTubeRadius(s, o.tubeRadius.value_or(0.0f));
+  frameCamera(scene, o, volume);
+  setTubeRadius(s, tubeRadiusOf(o, volume, scene.camera));
   return scene;
 }
 
@@ -139,6 +281,7 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
     throw InputError("--frames", fmt::format("{} is outside the range 1 to {}", frames,
                                              kMaxRenderFrames));
   const RenderScene scene = prepareScene(options, cells, volume, traces);
+  if (colourBar) render::defaultFont();  // a missing font is told before the work, not after
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)
     throw vk::ContextError(
@@ -170,8 +313,8 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   checkValidation(ctx);
   result.image = renderer.readImage();
   if (colourBar)
-    render::drawColourBar(result.image, {scene.colourMap, scene.settings.colourRange.min,
-                                         scene.settings.colourRange.max, scene.colourLabel});
+    render::drawColourBar(result.image,
+                          {scene.colourMap, scene.colourScale, scene.colourLabel, ""});
   result.renderSeconds = clock.seconds();
   result.kernelSecondsPerFrame = kernelSeconds / frames;
   return result;

@@ -12,26 +12,82 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
   command.add_option("--height", o.height, "image height in pixels")
       ->capture_default_str()
       ->check(countIn(kMinImageSide, kMaxImageSide));
-  command.add_option("--camera", o.camera,
-                     "AZIMUTH,ELEVATION[,ZOOM]: degrees about +z and above the xy plane, and a "
-                     "zoom factor (> 1 closer) [default 35,25,1]")
+  auto* camera = command
+                     .add_option("--camera", o.camera,
+                                 "AZIMUTH,ELEVATION[,ZOOM]: degrees about the up axis and above "
+                                 "the plane across it, and a zoom factor (> 1 closer) "
+                                 "[default 35,25,1]")
+                     ->delimiter(',')
+                     ->expected(2, 3)
+                     ->check(finiteFloat());
+  command
+      .add_option("--view", o.view,
+                  "look from a named direction: iso, +x, -x, +y, -y, +z or -z (+x looks from "
+                  "+x towards -x)")
+      ->check(CLI::IsMember({"iso", "+x", "-x", "+y", "-y", "+z", "-z"}))
+      ->excludes(camera);
+  command.add_option("--zoom", o.zoom, "zoom factor after framing (> 1 closer)")
+      ->capture_default_str()
+      ->check(positiveFloat());
+  command.add_option("--up", o.up, "the axis that points up on screen: +x, -x, +y, -y, +z, -z")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z"}));
+  command.add_option("--fov", o.fovDegrees, "vertical field of view in degrees (1 to 150)")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0f, 150.0f));
+  command
+      .add_option("--projection", o.projection,
+                  "perspective, or orthographic (parallel rays: sizes do not shrink with depth)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"perspective", "orthographic"}));
+  command
+      .add_option("--frame", o.frame,
+                  "what the camera frames: traces (their tubes' bounding box) or domain")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"traces", "domain"}));
+  command.add_option("--look-at", o.lookAt,
+                     "x,y,z the camera looks at (it stays far enough to see the framed box) "
+                     "[default: the framed box's centre]")
       ->delimiter(',')
-      ->expected(2, 3)
+      ->expected(3)
       ->check(finiteFloat());
   command.add_option("--view-box", o.viewBox,
-                     "x0,y0,z0,x1,y1,z1: the box the camera frames [default: the domain]")
+                     "x0,y0,z0,x1,y1,z1: the box the camera frames [default: see --frame]")
       ->delimiter(',')
       ->expected(6)
       ->check(finiteFloat());
-  command.add_option("--tube-radius", o.tubeRadius,
-                     "tube radius in finest cells [default 0.5, or 1/1200 of the domain's "
-                     "diagonal when larger]")
-      ->check(positiveFloat());
+  auto* cells = command.add_option("--tube-radius", o.tubeRadius, "tube radius in finest cells")
+                    ->check(positiveFloat());
+  auto* physical = command
+                       .add_option("--tube-radius-physical", o.tubeRadiusPhysical,
+                                   "tube radius in the input's length units")
+                       ->check(positiveFloat())
+                       ->excludes(cells);
+  command
+      .add_option("--tube-radius-view", o.tubeRadiusOfView,
+                  "without the two above: tube radius as a fraction of the view's height, so "
+                  "tubes look alike whatever the data's depth and size (0 to 0.5)")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6f, 0.5f))
+      ->excludes(cells)
+      ->excludes(physical);
   command.add_option("--colour-by", o.colourBy,
                      "speed, time (IntegrationTime) or a scalar channel sampled along the tubes")
       ->capture_default_str();
-  command.add_option("--colour-map", o.colourMap, "viridis, magma or coolwarm")->capture_default_str();
-  command.add_option("--range", o.range, "MIN,MAX of the colour field [default: its range]")
+  command.add_option("--colour-map", o.colourMap, render::colourMapNames())->capture_default_str();
+  command
+      .add_option("--colour-scale", o.colourScale,
+                  "how values map onto the colour map: linear, log (positive values; the rest "
+                  "take the low end) or symlog (linear near 0, log beyond, both signs)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"linear", "log", "symlog"}));
+  command
+      .add_option("--symlog-width", o.symlogWidth,
+                  "symlog's linear part: -W..W [default: 1/1000 of the largest magnitude]")
+      ->check(positiveFloat());
+  command.add_option("--range", o.range,
+                     "MIN,MAX of the colour field [default: its range; the positive values' "
+                     "with --colour-scale log]")
       ->delimiter(',')
       ->expected(2)
       ->check(finiteFloat());

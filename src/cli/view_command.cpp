@@ -84,8 +84,10 @@ void runView(const ViewOptions& o) {
       if (key.key == GLFW_KEY_S) requests.screenshot = true;
       if (key.key == GLFW_KEY_E) requests.exportTraces = true;
       if (key.key == GLFW_KEY_H) showPanel = !showPanel;
+      if (key.key == GLFW_KEY_F) requests.frameAll = true;
       if (key.key == GLFW_KEY_ESCAPE || key.key == GLFW_KEY_Q) window.requestClose();
     }
+    if (requests.frameAll) session.frameAll();
     const VkExtent2D extent = window.framebufferExtent();
     moveCamera(session.camera(), input, float(std::max(1u, extent.height)));
     render::orbit(session.camera(), o.orbitPerFrame, 0.0f);
@@ -135,6 +137,7 @@ void addViewCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "view", "open a window that traces progressively and renders the traces as tubes");
   addTraceJobOptions(*command, options->job);
+  options->look.frame = "domain";  // the traces grow out of any box around the seeds; F frames them
   addRenderOptions(*command, options->look);
   command->add_option("--steps-per-frame", options->stepsPerFrame,
                       "integration steps every particle takes before each frame")

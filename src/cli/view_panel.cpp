@@ -31,8 +31,11 @@ void drawColourLegend(const RenderScene& scene) {
                                   colour(table[i]));
   }
   ImGui::Dummy(ImVec2(width, height));
-  text(fmt::format("{}: {:.3g} .. {:.3g}", scene.colourLabel, scene.settings.colourRange.min,
-                   scene.settings.colourRange.max));
+  const render::ColourScale& scale = scene.colourScale;
+  text(fmt::format("{}: {:.3g} .. {:.3g}{}", scene.colourLabel, scale.min, scale.max,
+                   scale.kind == render::ScaleKind::Linear
+                       ? ""
+                       : fmt::format(" ({})", render::scaleKindName(scale.kind))));
 }
 
 }  // namespace
@@ -102,9 +105,10 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
         }
       ImGui::EndCombo();
     }
-    const std::array<render::ColourMap, 3> maps{render::ColourMap::Viridis,
-                                                render::ColourMap::Magma,
-                                                render::ColourMap::CoolWarm};
+    const std::array<render::ColourMap, 8> maps{
+        render::ColourMap::Viridis, render::ColourMap::Magma,   render::ColourMap::Inferno,
+        render::ColourMap::Plasma,  render::ColourMap::Cividis, render::ColourMap::CoolWarm,
+        render::ColourMap::RdBu,    render::ColourMap::Twilight};
     if (ImGui::BeginCombo("colour map", std::string(render::colourMapName(scene.colourMap)).c_str())) {
       for (const render::ColourMap m : maps)
         if (ImGui::Selectable(std::string(render::colourMapName(m)).c_str(), m == scene.colourMap)) {
@@ -132,10 +136,16 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
       session.reloadVolume();
     }
   }
+  if (ImGui::Button("frame all (F)")) requests.frameAll = true;
+  ImGui::SameLine();
+  bool orthographic = session.camera().projection == render::Projection::Orthographic;
+  if (ImGui::Checkbox("orthographic", &orthographic))
+    session.camera().projection =
+        orthographic ? render::Projection::Orthographic : render::Projection::Perspective;
   if (ImGui::Button("screenshot (S)")) requests.screenshot = true;
   ImGui::SameLine();
   if (ImGui::Button("export .vtp (E)")) requests.exportTraces = true;
-  text("drag: orbit, right drag: pan, wheel: zoom, H: hide");
+  text("drag: orbit, right drag: pan, wheel: zoom, F: frame all, H: hide");
   ImGui::End();
   return requests;
 }

@@ -18,6 +18,7 @@ struct FrameStats {
 struct PanelRequests {
   bool screenshot = false;
   bool exportTraces = false;
+  bool frameAll = false;
 };
 
 PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats);

@@ -58,6 +58,11 @@ void ViewSession::reloadVolume() {
   rebuildTubes();
 }
 
+void ViewSession::frameAll() {
+  frameTubes(scene_, input_.volume,
+             float(std::max(1u, renderer_->width())) / float(std::max(1u, renderer_->height())));
+}
+
 std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
   std::size_t taken = 0;
   if (!paused && !traces_->finished()) {

@@ -41,6 +41,8 @@ class ViewSession {
   void setColourMap(render::ColourMap map);
   // Reloads the context volume for options().look.volume (empty: none).
   void reloadVolume();
+  // Frames the traces as they are, keeping the camera's direction (the "frame all" key).
+  void frameAll();
 
   ViewOptions& options() { return options_; }
   PreparedInput& input() { return input_; }

@@ -164,9 +164,13 @@ std::shared_ptr<Traces> runPathlines(const std::vector<std::string>& snapshots, 
 }
 
 py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t height,
-                       std::optional<std::vector<float>> camera,
+                       std::optional<std::vector<float>> camera, std::optional<std::string> view,
+                       float zoom, std::string up, float fov, std::string projection,
+                       std::string frame, std::optional<std::vector<double>> lookAt,
                        std::optional<std::vector<double>> viewBox, std::optional<float> tubeRadius,
-                       std::string colourBy, std::string colourMap,
+                       std::optional<double> tubeRadiusPhysical, float tubeRadiusOfView,
+                       std::string colourBy, std::string colourMap, std::string colourScale,
+                       std::optional<double> symlogWidth,
                        std::optional<std::vector<float>> range, std::uint32_t aoSamples,
                        std::optional<std::string> volume,
                        std::optional<std::vector<float>> volumeRange, float volumeOpacity,
@@ -184,10 +188,21 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
   o.width = width;
   o.height = height;
   o.camera = camera.value_or(std::vector<float>{});
+  o.view = view.value_or("");
+  o.zoom = zoom;
+  o.up = std::move(up);
+  o.fovDegrees = fov;
+  o.projection = std::move(projection);
+  o.frame = std::move(frame);
+  o.lookAt = lookAt.value_or(std::vector<double>{});
   o.viewBox = viewBox.value_or(std::vector<double>{});
   o.tubeRadius = tubeRadius;
+  o.tubeRadiusPhysical = tubeRadiusPhysical;
+  o.tubeRadiusOfView = tubeRadiusOfView;
   o.colourBy = std::move(colourBy);
   o.colourMap = std::move(colourMap);
+  o.colourScale = std::move(colourScale);
+  o.symlogWidth = symlogWidth;
   o.range = range.value_or(std::vector<float>{});
   o.aoSamples = aoSamples;
   o.volume = volume.value_or("");
@@ -320,9 +335,14 @@ void bindTraces(py::module_& m) {
           "Writes the lines as VTK XML PolyData, as the command line does; returns (polylines, "
           "points) written.")
       .def("render", &renderTraces, py::kw_only(), py::arg("width") = 1024, py::arg("height") = 768,
-           py::arg("camera") = py::none(), py::arg("view_box") = py::none(),
-           py::arg("tube_radius") = py::none(), py::arg("colour_by") = "speed",
-           py::arg("colour_map") = "viridis", py::arg("range") = py::none(),
+           py::arg("camera") = py::none(), py::arg("view") = py::none(), py::arg("zoom") = 1.0f,
+           py::arg("up") = "+z", py::arg("fov") = 35.0f, py::arg("projection") = "perspective",
+           py::arg("frame") = "traces", py::arg("look_at") = py::none(),
+           py::arg("view_box") = py::none(), py::arg("tube_radius") = py::none(),
+           py::arg("tube_radius_physical") = py::none(), py::arg("tube_radius_view") = 0.003f,
+           py::arg("colour_by") = "speed", py::arg("colour_map") = "viridis",
+           py::arg("colour_scale") = "linear", py::arg("symlog_width") = py::none(),
+           py::arg("range") = py::none(),
            py::arg("ao_samples") = 4, py::arg("volume") = py::none(),
            py::arg("volume_range") = py::none(), py::arg("volume_opacity") = 0.05f,
            py::arg("linear_volume") = false, py::arg("frames") = 32, py::arg("colour_bar") = true,

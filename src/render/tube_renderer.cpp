@@ -38,18 +38,29 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
                                 std::uint32_t height, std::uint32_t frame,
                                 std::size_t segmentCount, bool linearVolume) {
   const CameraFrame view = cameraFrame(camera);
+  const bool orthographic = camera.projection == Projection::Orthographic;
   shared::RenderParams p{};
   p.eye = view.eye;
   p.forward = view.forward;
   p.right = view.right;
   p.up = view.up;
-  p.tanHalfFovY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
+  p.halfHeight = halfHeightAtUnitDistance(camera);
+  if (orthographic) {
+    // Parallel rays start on a plane outside the domain's bounding sphere, so that no tube lies
+    // behind them, whatever the distance.
+    const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+    const float outside =
+        glm::length(camera.target - 0.5f * (lower + upper)) + 0.5f * glm::length(upper - lower);
+    p.eye = camera.target - (outside + 1.0f) * view.forward;
+    p.halfHeight *= camera.distance;
+  }
   p.aspect = float(width) / float(height);
   p.frameIndex = frame;
   p.flags = (settings.ambientOcclusion ? AMRSTREAM_RENDER_AO : 0u) |
             (settings.volume ? AMRSTREAM_RENDER_VOLUME : 0u) |
             (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u) |
-            (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u);
+            (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u) |
+            (orthographic ? AMRSTREAM_RENDER_ORTHOGRAPHIC : 0u);
   p.imageSize = {width, height};
   p.segmentCount = static_cast<std::uint32_t>(segmentCount);
   p.tubeRadius = settings.tubeRadius;

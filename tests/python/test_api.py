@@ -255,6 +255,33 @@ def test_cloud_traces_equal_cli_vtp(backend, cloud, cloud_seeds, tmp_path):
     assert_traces_match_file(t, cli)
 
 
+def test_render_camera_and_colour_options_equal_cli_png(cloud, cloud_seeds, tmp_path):
+    require_backend("compute")
+    look = ["--width", 96, "--height", 64, "--frames", 2, "--view", "+x", "--up", "+y",
+            "--projection", "orthographic", "--fov", 50, "--zoom", 1.2, "--colour-by", "dens",
+            "--colour-scale", "log", "--colour-map", "inferno", "--tube-radius-view", 0.01]
+    write_seeds(tmp_path / "seeds.txt", cloud_seeds)
+    run_cli("render", "builtin:cloud", *SMALL_CLI, "--seeds", tmp_path / "seeds.txt",
+            "--steps", 300, "--direction", "both", "--backend", "compute", *look,
+            "--out", tmp_path / "cli.png")
+    t = amrstream.trace(cloud, cloud_seeds, steps=300, direction="both", backend="compute")
+    image = t.render(width=96, height=64, frames=2, view="+x", up="+y",
+                     projection="orthographic", fov=50, zoom=1.2, colour_by="dens",
+                     colour_scale="log", colour_map="inferno", tube_radius_view=0.01,
+                     backend="compute")
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(str(tmp_path / "cli.png"))
+    reader.Update()
+    png = reader.GetOutput()
+    cli = vtk_to_numpy(png.GetPointData().GetScalars()).reshape(64, 96, -1)[::-1]
+    assert image.shape == (64, 96, 4)
+    assert np.array_equal(image[..., :cli.shape[2]], cli)
+    with pytest.raises(ValueError, match="a log scale needs a positive minimum"):
+        t.render(width=32, height=32, colour_scale="log", range=(-1, 1), backend="compute")
+    with pytest.raises(ValueError, match="no view 'front'"):
+        t.render(width=32, height=32, view="front", backend="compute")
+
+
 @pytest.mark.parametrize("backend", ["cpu", "compute"])
 def test_linear_interpolant_traces_equal_cli_vtp(backend, cloud, cloud_seeds, tmp_path):
     require_backend(backend)

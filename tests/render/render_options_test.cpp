@@ -68,5 +68,61 @@ TEST_F(RenderOptionChecks, RefusesValuesThatAreNotFinite) {
   EXPECT_THAT(errorOf(o), HasSubstr("--volume-opacity: nan is not a finite number >= 0"));
 }
 
+TEST_F(RenderOptionChecks, RefusesUnknownViewsAxesProjectionsAndScales) {
+  RenderOptions o;
+  o.view = "front";
+  EXPECT_THAT(errorOf(o), HasSubstr("--view: no view 'front'; choose one of: iso, +x"));
+  o = {};
+  o.view = "+x";
+  o.camera = {30.0f, 20.0f};
+  EXPECT_THAT(errorOf(o), HasSubstr("--view: give either --view or --camera"));
+  o = {};
+  o.up = "+w";
+  EXPECT_THAT(errorOf(o), HasSubstr("--up: '+w': choose +x, -x"));
+  o = {};
+  o.fovDegrees = 170.0f;
+  EXPECT_THAT(errorOf(o), HasSubstr("--fov: 170 degrees is outside 1 to 150"));
+  o = {};
+  o.projection = "fisheye";
+  EXPECT_THAT(errorOf(o), HasSubstr("--projection: 'fisheye': choose perspective or orthographic"));
+  o = {};
+  o.frame = "seeds";
+  EXPECT_THAT(errorOf(o), HasSubstr("--frame: 'seeds': choose traces or domain"));
+  o = {};
+  o.lookAt = {0.0, kNaN, 0.0};
+  EXPECT_THAT(errorOf(o), HasSubstr("--look-at: nan is not a finite number"));
+  o = {};
+  o.colourScale = "ln";
+  EXPECT_THAT(errorOf(o), HasSubstr("--colour-scale: no scale 'ln'"));
+  o = {};
+  o.colourScale = "log";
+  o.range = {-1.0f, 10.0f};
+  EXPECT_THAT(errorOf(o), HasSubstr("--range: a log scale needs a positive minimum, not -1"));
+  o = {};
+  o.colourScale = "symlog";
+  o.symlogWidth = -2.0;
+  EXPECT_THAT(errorOf(o), HasSubstr("symlog's linear width must be positive, not -2"));
+  o = {};
+  o.tubeRadius = 1.0f;
+  o.tubeRadiusPhysical = 0.01;
+  EXPECT_THAT(errorOf(o), HasSubstr("--tube-radius: give the radius in cells or in physical"));
+  o = {};
+  o.tubeRadiusOfView = 0.0f;
+  EXPECT_THAT(errorOf(o), HasSubstr("--tube-radius-view: 0 is outside (0, 0.5]"));
+}
+
+TEST_F(RenderOptionChecks, TheDefaultTubeRadiusIsAFractionOfTheView) {
+  RenderOptions o;
+  o.frame = "domain";
+  o.tubeRadiusOfView = 0.01f;
+  const RenderScene scene = prepareScene(o, cells_, volume_, traces_);
+  const float viewHeight =
+      2.0f * scene.camera.distance * std::tan(glm::radians(scene.camera.fovYDegrees) / 2.0f);
+  EXPECT_NEAR(scene.settings.tubeRadius, 0.01f * viewHeight, 1e-4f * viewHeight);
+  o.zoom = 2.0f;  // half the view: half the radius
+  EXPECT_NEAR(prepareScene(o, cells_, volume_, traces_).settings.tubeRadius,
+              0.5f * scene.settings.tubeRadius, 1e-4f * viewHeight);
+}
+
 }  // namespace
 }  // namespace amrstream

@@ -43,6 +43,15 @@ double raySegmentDistance(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b
   return std::min({toRay(0.0), toRay(1.0), toRay(0.5 * (lo + hi))});
 }
 
+OrbitCamera looking(float azimuthDegrees, float elevationDegrees,
+                    Projection projection = Projection::Perspective) {
+  OrbitCamera camera;
+  camera.azimuthDegrees = azimuthDegrees;
+  camera.elevationDegrees = elevationDegrees;
+  camera.projection = projection;
+  return camera;
+}
+
 class TubeRendererTest : public testing::GpuTest,
                          public ::testing::WithParamInterface<gpu::Backend> {
  protected:
@@ -78,34 +87,46 @@ TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
   RenderSettings settings;
   settings.tubeRadius = radius;
   settings.ambientOcclusion = false;
-  const OrbitCamera camera = frameBox(lower, upper, float(w) / h, 30.0f, 20.0f, 1.6f);
-  renderer.renderFrame(camera, settings);  // frame 0: one ray through each pixel's centre
-  const Image image = renderer.readImage();
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    const bool perspective = projection == Projection::Perspective;
+    const OrbitCamera camera =
+        frameBox(looking(30.0f, 20.0f, projection), lower, upper, float(w) / h, 1.6f);
+    renderer.renderFrame(camera, settings);  // frame 0: one ray through each pixel's centre
+    const Image image = renderer.readImage();
 
-  const CameraFrame view = cameraFrame(camera);
-  const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2);
-  std::size_t tubePixels = 0, mismatches = 0, ambiguous = 0;
-  for (std::uint32_t y = 0; y < h; ++y)
-    for (std::uint32_t x = 0; x < w; ++x) {
-      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
-      const glm::dvec3 d = glm::normalize(glm::dvec3(view.forward) +
-                                          ndc.x * double(w) / h * tanHalf * glm::dvec3(view.right) -
-                                          ndc.y * tanHalf * glm::dvec3(view.up));
-      double distance = 1e300;
-      for (const auto& s : segments)
-        distance = std::min(distance, raySegmentDistance(view.eye, d, s.a, s.b));
-      const Rgba8 c = image.at(x, y);
-      const bool shownAsTube = c.r > 50 && c.r > c.b + 30;
-      if (std::abs(distance - radius) < 0.02 * radius) {
-        ++ambiguous;
-        continue;
+    const CameraFrame view = cameraFrame(camera);
+    const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2);
+    // Orthographic: parallel rays from a plane behind every segment, as tall as the view at the
+    // target.
+    const double halfHeight = perspective ? tanHalf : tanHalf * camera.distance;
+    const glm::dvec3 behind = glm::dvec3(camera.target) - 1000.0 * glm::dvec3(view.forward);
+    std::size_t tubePixels = 0, mismatches = 0, ambiguous = 0;
+    for (std::uint32_t y = 0; y < h; ++y)
+      for (std::uint32_t x = 0; x < w; ++x) {
+        const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
+        const glm::dvec3 offset = ndc.x * double(w) / h * halfHeight * glm::dvec3(view.right) -
+                                  ndc.y * halfHeight * glm::dvec3(view.up);
+        const glm::dvec3 d = perspective ? glm::normalize(glm::dvec3(view.forward) + offset)
+                                         : glm::dvec3(view.forward);
+        const glm::dvec3 o = perspective ? glm::dvec3(view.eye) : behind + offset;
+        double distance = 1e300;
+        for (const auto& s : segments)
+          distance = std::min(distance, raySegmentDistance(o, d, s.a, s.b));
+        const Rgba8 c = image.at(x, y);
+        const bool shownAsTube = c.r > 50 && c.r > c.b + 30;
+        if (std::abs(distance - radius) < 0.02 * radius) {
+          ++ambiguous;
+          continue;
+        }
+        const bool hit = distance < radius;
+        tubePixels += hit;
+        if (hit != shownAsTube) ++mismatches;
       }
-      const bool hit = distance < radius;
-      tubePixels += hit;
-      if (hit != shownAsTube) ++mismatches;
-    }
-  EXPECT_GT(tubePixels, w * h / 50) << "the scene should cover a fair part of the image";
-  EXPECT_EQ(mismatches, 0u) << "of " << w * h << " pixels (" << ambiguous << " on tube edges skipped)";
+    EXPECT_GT(tubePixels, w * h / 50) << "the scene should cover a fair part of the image";
+    EXPECT_EQ(mismatches, 0u) << "of " << w * h << " pixels (" << ambiguous
+                              << " on tube edges skipped), "
+                              << (perspective ? "perspective" : "orthographic");
+  }
 }
 
 // Traces of the rotation field (circles about the z axis) as tubes with ambient occlusion, in
@@ -135,8 +156,8 @@ TEST_P(TubeRendererTest, MatchesTheReferenceImage) {
   renderer.setTubes(buildTubeSegments(traces, colour, volume.transform), settings.tubeRadius);
   renderer.setColourMap(colourMapTable(ColourMap::Viridis));
   renderer.resize(128, 128);
-  const OrbitCamera camera = frameBox(glm::vec3(volume.domain.lower),
-                                      glm::vec3(volume.domain.upper), 1.0f, 20.0f, 35.0f, 1.3f);
+  const OrbitCamera camera = frameBox(looking(20.0f, 35.0f), glm::vec3(volume.domain.lower),
+                                      glm::vec3(volume.domain.upper), 1.0f, 1.3f);
   for (int frame = 0; frame < 8; ++frame) renderer.renderFrame(camera, settings);
   EXPECT_EQ(renderer.framesAccumulated(), 8u);
   const Image image = renderer.readImage();
@@ -167,7 +188,7 @@ TEST_P(TubeRendererTest, StillFramesAccumulateAndAMovedCameraStartsAgain) {
   renderer.resize(32, 32);
   RenderSettings settings;
   settings.tubeRadius = 1.0f;
-  OrbitCamera camera = frameBox(glm::vec3(0), glm::vec3(32), 1.0f);
+  OrbitCamera camera = frameBox(OrbitCamera{}, glm::vec3(0), glm::vec3(32), 1.0f);
   renderer.renderFrame(camera, settings);
   renderer.renderFrame(camera, settings);
   EXPECT_EQ(renderer.framesAccumulated(), 2u);

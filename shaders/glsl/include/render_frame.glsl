@@ -131,9 +131,11 @@ void renderPixel(uvec2 pixel) {
   rngState = hashUint(index ^ hashUint(params.frameIndex * 9781u + 1u));
   const vec2 jitter = params.frameIndex == 0 ? vec2(0.5) : vec2(random01(), random01());
   const vec2 ndc = (vec2(pixel) + jitter) / vec2(params.imageSize) * 2.0 - 1.0;
-  const vec3 d = normalize(params.forward + ndc.x * params.aspect * params.tanHalfFovY * params.right -
-                           ndc.y * params.tanHalfFovY * params.up);
-  const vec3 o = params.eye;
+  const vec3 offset = ndc.x * params.aspect * params.halfHeight * params.right -
+                      ndc.y * params.halfHeight * params.up;
+  const bool orthographic = (params.flags & AMRSTREAM_RENDER_ORTHOGRAPHIC) != 0;
+  const vec3 d = orthographic ? params.forward : normalize(params.forward + offset);
+  const vec3 o = orthographic ? params.eye + offset : params.eye;
 
   const TubeHit hit = closestTube(o, d, 1e30);
   const vec3 surface = hit.segment != kNoSegment ? shadeTube(o, d, hit) : backgroundColour(d);

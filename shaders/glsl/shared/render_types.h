@@ -30,12 +30,13 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_VOLUME 2u
 #define AMRSTREAM_RENDER_LOG_VOLUME 4u
 #define AMRSTREAM_RENDER_LINEAR_VOLUME 8u  // the volume's scalar through the linear interpolant
+#define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u  // parallel rays from the plane through the eye
 
-// A pinhole camera and what one frame draws. A frame adds one jittered sample per pixel to the
+// A pinhole (or orthographic) camera and what one frame draws. A frame adds one jittered sample per pixel to the
 // accumulation buffer; pixels show the mean of the frames since the last reset (frameIndex 0).
 struct RenderParams {
   vec3 eye;
-  float tanHalfFovY;
+  float halfHeight;  // perspective: tan(fovY / 2); orthographic: half the view's height
   vec3 forward;  // unit vectors
   float aspect;  // width / height
   vec3 right;

@@ -2,15 +2,15 @@
 
 #include <fmt/format.h>
 
-#include "render/image/bitmap_font.hpp"
 #include "render/image/colour_bar_layout.hpp"
+#include "render/image/font.hpp"
 
 namespace amrstream::render {
 namespace {
 
 constexpr Rgba8 kPanelColour{0, 0, 0, 160};
 constexpr Rgba8 kFrameColour{170, 170, 170, 255};
-constexpr Rgba8 kTextColour{240, 240, 240, 255};
+constexpr Rgba8 kTextColour{240, 240, 240, 255};  // also the tick marks
 
 void blendRect(Image& image, const PixelRect& rect, Rgba8 colour) {
   for (int y = rect.y; y < rect.y + rect.height; ++y) {
@@ -30,6 +30,11 @@ void drawFrameAround(Image& image, const PixelRect& rect, Rgba8 colour) {
   blendRect(image, {right, rect.y, 1, rect.height}, colour);
 }
 
+void drawText(Image& image, const PlacedText& text, int pixelSize) {
+  if (!text.text.empty())
+    defaultFont().drawText(image, text.x, text.baseline, text.text, kTextColour, pixelSize);
+}
+
 void drawGradient(Image& image, const PixelRect& rect, ColourMap map) {
   const std::vector<glm::vec3> table = colourMapTable(map, static_cast<std::size_t>(rect.width));
   for (int i = 0; i < rect.width; ++i) {
@@ -42,6 +47,12 @@ void drawGradient(Image& image, const PixelRect& rect, ColourMap map) {
 
 }  // namespace
 
+std::string colourBarTitle(const ColourBar& bar) {
+  if (bar.unit.empty()) return bar.label;
+  if (bar.label.empty()) return "[" + bar.unit + "]";
+  return bar.label + " [" + bar.unit + "]";
+}
+
 std::string formatBarValue(double v) {
   if (v == 0.0) return "0";  // also -0
   return fmt::format("{:.3g}", v);
@@ -53,8 +64,10 @@ void drawColourBar(Image& image, const ColourBar& bar) {
   blendRect(image, layout->panel, kPanelColour);
   drawFrameAround(image, layout->gradient, kFrameColour);
   drawGradient(image, layout->gradient, bar.map);
-  for (const PlacedText* text : {&layout->label, &layout->minValue, &layout->maxValue}) {
-    drawText(image, text->x, text->y, text->text, kTextColour, layout->scale);
+  drawText(image, layout->title, layout->titlePixelSize);
+  for (const PlacedTick& tick : layout->ticks) {
+    blendRect(image, tick.mark, kTextColour);
+    drawText(image, tick.label, layout->labelPixelSize);
   }
 }
 

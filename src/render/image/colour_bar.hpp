@@ -1,25 +1,34 @@
 #pragma once
 // The colour legend burnt into rendered images: a horizontal gradient of the colour map on a
-// translucent dark panel near the bottom-right corner, the label above it, the range ends below.
+// translucent dark panel near the bottom-right corner, the title above it, and tick marks with
+// their values below.
 
 #include <string>
 
 #include "render/image/colour_map.hpp"
+#include "render/image/colour_scale.hpp"
 #include "render/image/image.hpp"
 
 namespace amrstream::render {
 
 struct ColourBar {
   ColourMap map = ColourMap::Viridis;
-  double min = 0, max = 1;  // the values at the gradient's left and right ends
-  std::string label;        // may be empty; shortened with ".." when it does not fit
+  ColourScale scale;  // the values along the gradient, which its ticks show
+  std::string label;  // the field's name; may be empty
+  std::string unit;   // may be empty
 };
 
-// Three significant digits, as short as possible: "0", "0.25", "1.5e+03", "-3.2e-05".
+// "label [unit]", or whichever of the two is not empty; shortened with an ellipsis when it does
+// not fit above the gradient.
+std::string colourBarTitle(const ColourBar& bar);
+
+// Three significant digits, as short as possible: "0", "0.25", "1.5e+03", "-3.2e-05". Labels the
+// ends of a scale that has no ticks (see colour_bar_layout.hpp).
 std::string formatBarValue(double v);
 
 // Draws nothing on images smaller than 128x128 (kMinColourBarImageSide); see colour_bar_layout.hpp
-// for where each part goes. Column i of the gradient is colourMapTable(map, gradient width)[i].
+// for where each part goes. Column i of the gradient is colourMapTable(map, gradient width)[i]:
+// the map at t = i / (width - 1), so that a tick at t sits on the column of its colour.
 void drawColourBar(Image& image, const ColourBar& bar);
 
 }  // namespace amrstream::render

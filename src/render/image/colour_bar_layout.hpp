@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/image/colour_bar.hpp"
 
@@ -17,23 +18,41 @@ struct PixelRect {
 };
 
 struct PlacedText {
-  int x = 0, y = 0;  // top-left corner
   std::string text;
+  int x = 0;         // where the pen starts
+  int baseline = 0;  // the row below the ink of letters without descenders (Font::drawText)
+  // From x over Font::textWidth, and from baseline - ascent to baseline + descent.
+  PixelRect box;
+};
+
+struct PlacedTick {
+  double value = 0;
+  // The gradient's column of the value: gradient.x + round(position * (gradient.width - 1)).
+  int x = 0;
+  // The mark: from the gradient's bottom edge (over its frame) down, covering column x, one
+  // pixel wide or two at large sizes.
+  PixelRect mark;
+  // Centred under the mark (moved inwards near the panel's sides). Its text is empty when it
+  // was left out: for crowding its neighbour (the first and last ticks keep theirs, unless those
+  // two would touch: then only the first), or for being wider than the panel.
+  PlacedText label;
 };
 
 struct ColourBarLayout {
-  // Text scale: 1 below 512 px of image width, 2 from 512, 3 from 1536; less when too short.
-  int scale = 1;
+  // The tick labels' and the title's font sizes: about 1.6 % and 2 % of the image's shorter
+  // side, the labels' within [11, 48] px; smaller where the image is too short for the panel.
+  int labelPixelSize = 11;
+  int titlePixelSize = 13;
   // The translucent backdrop; every part below lies inside it.
   PixelRect panel;
-  // At least max(64, width / 3) wide, framed by a 1-pixel border just outside.
+  // At least max(64, width / 3) wide unless the image is too narrow, framed by a 1-pixel border
+  // just outside.
   PixelRect gradient;
-  // Centred above the gradient; empty text when the bar has no label.
-  PlacedText label;
-  // Under the gradient's left and right ends, normally two characters apart or more. In narrow
-  // images they come closer, and two values as long as -1.23e+100 overlap at 128 px.
-  PlacedText minValue;
-  PlacedText maxValue;
+  // Centred above the gradient; empty text when the bar has neither label nor unit.
+  PlacedText title;
+  // scaleTicks(scale, ...) from left to right; for a scale checkScale refuses, the two ends
+  // labelled with formatBarValue (one tick in the middle when min == max).
+  std::vector<PlacedTick> ticks;
 };
 
 // nullopt when either side of the image is below kMinColourBarImageSide.

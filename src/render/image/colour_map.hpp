@@ -14,13 +14,18 @@ namespace amrstream::render {
 enum class ColourMap {
   Viridis,   // matplotlib's perceptually uniform sequential map
   Magma,     // matplotlib's dark-to-light sequential map
+  Inferno,   // matplotlib's black-red-yellow sequential map
+  Plasma,    // matplotlib's blue-red-yellow sequential map
+  Cividis,   // matplotlib's blue-yellow sequential map, for colour-vision deficiency
   CoolWarm,  // Moreland's diverging blue-grey-red map
+  RdBu,      // ColorBrewer's diverging map, blue at low values and red at high ones
+  Twilight,  // matplotlib's cyclic map: its two ends are the same colour
 };
 
-// "viridis", "magma" or "coolwarm", in any case; nullopt for anything else.
+// A name of colourMapNames(), in any case; nullopt for anything else.
 std::optional<ColourMap> parseColourMap(std::string_view name);
 std::string_view colourMapName(ColourMap map);
-// "viridis, magma, coolwarm", for error messages.
+// "viridis, magma, inferno, plasma, cividis, coolwarm, rdbu, twilight", for error messages.
 std::string colourMapNames();
 
 // The colour at t, sRGB in [0,1]; t is clamped to [0,1] and NaN reads as 0.

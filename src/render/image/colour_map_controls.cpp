@@ -8,9 +8,20 @@ constexpr ColourControl atEntry(int index, float r, float g, float b) {
   return {static_cast<float>(index) / 255.0f, r, g, b};
 }
 
+// matplotlib's twilight has 510 entries instead: entry `index` sits at t = index / 509.
+constexpr ColourControl atTwilightEntry(int index, float r, float g, float b) {
+  return {static_cast<float>(index) / 509.0f, r, g, b};
+}
+
 // Moreland's table lists 8-bit colours at t = k / 32.
 constexpr ColourControl atThirtySecond(int k, int r, int g, int b) {
   return {static_cast<float>(k) / 32.0f, static_cast<float>(r) / 255.0f,
+          static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f};
+}
+
+// ColorBrewer's 11 classes are 8-bit colours, at t = k / 10 here.
+constexpr ColourControl atTenth(int k, int r, int g, int b) {
+  return {static_cast<float>(k) / 10.0f, static_cast<float>(r) / 255.0f,
           static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f};
 }
 
@@ -92,6 +103,124 @@ constexpr ColourControl kMagma[] = {
     atEntry(255, 0.987053f, 0.991438f, 0.749504f),
 };
 
+// Every 8th entry of matplotlib's inferno and the last (within 2/255 of every entry).
+constexpr ColourControl kInferno[] = {
+    atEntry(0, 0.001462f, 0.000466f, 0.013866f),
+    atEntry(8, 0.013995f, 0.011225f, 0.071862f),
+    atEntry(16, 0.042253f, 0.028139f, 0.141141f),
+    atEntry(24, 0.081962f, 0.043328f, 0.215289f),
+    atEntry(32, 0.129285f, 0.047293f, 0.290788f),
+    atEntry(40, 0.183429f, 0.040329f, 0.354971f),
+    atEntry(48, 0.238273f, 0.036621f, 0.396353f),
+    atEntry(56, 0.290763f, 0.045644f, 0.418637f),
+    atEntry(64, 0.3415f, 0.062325f, 0.429425f),
+    atEntry(72, 0.391453f, 0.080927f, 0.433109f),
+    atEntry(80, 0.441207f, 0.099338f, 0.431594f),
+    atEntry(88, 0.491022f, 0.117179f, 0.425552f),
+    atEntry(96, 0.54092f, 0.134729f, 0.415123f),
+    atEntry(104, 0.590734f, 0.152563f, 0.40029f),
+    atEntry(112, 0.640135f, 0.171438f, 0.381065f),
+    atEntry(120, 0.688653f, 0.192239f, 0.357603f),
+    atEntry(128, 0.735683f, 0.215906f, 0.330245f),
+    atEntry(136, 0.780517f, 0.243327f, 0.299523f),
+    atEntry(144, 0.822386f, 0.275197f, 0.266085f),
+    atEntry(152, 0.860533f, 0.311892f, 0.230606f),
+    atEntry(160, 0.894305f, 0.353399f, 0.193584f),
+    atEntry(168, 0.923215f, 0.399359f, 0.155193f),
+    atEntry(176, 0.946965f, 0.449191f, 0.115272f),
+    atEntry(184, 0.965397f, 0.502249f, 0.073859f),
+    atEntry(192, 0.978422f, 0.557937f, 0.034931f),
+    atEntry(200, 0.985952f, 0.61575f, 0.025592f),
+    atEntry(208, 0.987874f, 0.675267f, 0.065257f),
+    atEntry(216, 0.984075f, 0.736087f, 0.129527f),
+    atEntry(224, 0.974638f, 0.797692f, 0.206332f),
+    atEntry(232, 0.960626f, 0.859069f, 0.29801f),
+    atEntry(240, 0.947594f, 0.917399f, 0.410665f),
+    atEntry(248, 0.954529f, 0.965896f, 0.540361f),
+    atEntry(255, 0.988362f, 0.998364f, 0.644924f),
+};
+
+// Every 8th entry of matplotlib's plasma and the last, and entry 251: without it the yellow end
+// would be 2.5/255 off.
+constexpr ColourControl kPlasma[] = {
+    atEntry(0, 0.050383f, 0.029803f, 0.527975f),
+    atEntry(8, 0.132381f, 0.022258f, 0.56325f),
+    atEntry(16, 0.193374f, 0.018354f, 0.59033f),
+    atEntry(24, 0.248032f, 0.014439f, 0.612868f),
+    atEntry(32, 0.299855f, 0.009561f, 0.631624f),
+    atEntry(40, 0.35015f, 0.004382f, 0.646298f),
+    atEntry(48, 0.399411f, 0.000859f, 0.656133f),
+    atEntry(56, 0.447714f, 0.00208f, 0.66024f),
+    atEntry(64, 0.494877f, 0.01199f, 0.657865f),
+    atEntry(72, 0.54057f, 0.03495f, 0.64864f),
+    atEntry(80, 0.584391f, 0.068579f, 0.632812f),
+    atEntry(88, 0.625987f, 0.103312f, 0.611305f),
+    atEntry(96, 0.665129f, 0.138566f, 0.585582f),
+    atEntry(104, 0.701769f, 0.174005f, 0.557296f),
+    atEntry(112, 0.736019f, 0.209439f, 0.527908f),
+    atEntry(120, 0.76809f, 0.244817f, 0.498465f),
+    atEntry(128, 0.798216f, 0.280197f, 0.469538f),
+    atEntry(136, 0.826588f, 0.315714f, 0.441316f),
+    atEntry(144, 0.853319f, 0.351553f, 0.413734f),
+    atEntry(152, 0.878423f, 0.387932f, 0.3866f),
+    atEntry(160, 0.901807f, 0.425087f, 0.359688f),
+    atEntry(168, 0.923287f, 0.463251f, 0.332801f),
+    atEntry(176, 0.942598f, 0.502639f, 0.305816f),
+    atEntry(184, 0.959424f, 0.543431f, 0.278701f),
+    atEntry(192, 0.973416f, 0.585761f, 0.25154f),
+    atEntry(200, 0.984199f, 0.629718f, 0.224595f),
+    atEntry(208, 0.991365f, 0.675355f, 0.198453f),
+    atEntry(216, 0.994474f, 0.722691f, 0.174381f),
+    atEntry(224, 0.993033f, 0.77172f, 0.154808f),
+    atEntry(232, 0.986509f, 0.822401f, 0.143557f),
+    atEntry(240, 0.974443f, 0.874622f, 0.144061f),
+    atEntry(248, 0.956808f, 0.928152f, 0.152409f),
+    atEntry(251, 0.949151f, 0.948435f, 0.152178f),
+    atEntry(255, 0.940015f, 0.975158f, 0.131326f),
+};
+
+// Every 8th entry of matplotlib's cividis and the last, and entries 20, 22, 28 and 251 where the
+// channels bend (red leaves 0 at entry 23, then saturates): without them, up to 5/255 off.
+constexpr ColourControl kCividis[] = {
+    atEntry(0, 0.0f, 0.135112f, 0.304751f),
+    atEntry(8, 0.0f, 0.157932f, 0.357521f),
+    atEntry(16, 0.0f, 0.178802f, 0.414764f),
+    atEntry(20, 0.0f, 0.188769f, 0.439563f),
+    atEntry(22, 0.0f, 0.193366f, 0.441561f),
+    atEntry(24, 0.017852f, 0.198528f, 0.441248f),
+    atEntry(28, 0.068968f, 0.209372f, 0.438863f),
+    atEntry(32, 0.103401f, 0.220406f, 0.43579f),
+    atEntry(40, 0.154261f, 0.242475f, 0.43012f),
+    atEntry(48, 0.195057f, 0.264372f, 0.425924f),
+    atEntry(56, 0.230871f, 0.286134f, 0.423498f),
+    atEntry(64, 0.263738f, 0.307831f, 0.422789f),
+    atEntry(72, 0.294669f, 0.329531f, 0.423716f),
+    atEntry(80, 0.32425f, 0.351289f, 0.42625f),
+    atEntry(88, 0.352892f, 0.373153f, 0.430226f),
+    atEntry(96, 0.38083f, 0.395164f, 0.435653f),
+    atEntry(104, 0.408226f, 0.417357f, 0.44257f),
+    atEntry(112, 0.435168f, 0.439763f, 0.451134f),
+    atEntry(120, 0.461616f, 0.462405f, 0.461969f),
+    atEntry(128, 0.488697f, 0.485318f, 0.471008f),
+    atEntry(136, 0.51792f, 0.508454f, 0.472707f),
+    atEntry(144, 0.54784f, 0.531895f, 0.471704f),
+    atEntry(152, 0.578236f, 0.555673f, 0.468724f),
+    atEntry(160, 0.609105f, 0.579816f, 0.463638f),
+    atEntry(168, 0.640352f, 0.604354f, 0.456791f),
+    atEntry(176, 0.671991f, 0.629316f, 0.448018f),
+    atEntry(184, 0.704037f, 0.654731f, 0.437147f),
+    atEntry(192, 0.736488f, 0.680629f, 0.424028f),
+    atEntry(200, 0.769353f, 0.707035f, 0.408516f),
+    atEntry(208, 0.802667f, 0.733978f, 0.390153f),
+    atEntry(216, 0.836429f, 0.761483f, 0.368747f),
+    atEntry(224, 0.870717f, 0.789572f, 0.343333f),
+    atEntry(232, 0.905589f, 0.818257f, 0.312889f),
+    atEntry(240, 0.941147f, 0.84753f, 0.275815f),
+    atEntry(248, 0.97778f, 0.877281f, 0.227954f),
+    atEntry(251, 0.992218f, 0.888385f, 0.205468f),
+    atEntry(255, 0.995737f, 0.909344f, 0.217772f),
+};
+
 // K. Moreland, "Diverging Color Maps for Scientific Visualization" (ISVC 2009), the cool-warm
 // table of the expanded version.
 constexpr ColourControl kCoolWarm[] = {
@@ -130,6 +259,60 @@ constexpr ColourControl kCoolWarm[] = {
     atThirtySecond(32, 180, 4, 38),
 };
 
+// ColorBrewer's 11-class RdBu (C. Brewer, colorbrewer2.org), reversed like matplotlib's RdBu_r so
+// that, as in coolwarm, low values are blue and high values red.
+constexpr ColourControl kRdBu[] = {
+    atTenth(0, 5, 48, 97),
+    atTenth(1, 33, 102, 172),
+    atTenth(2, 67, 147, 195),
+    atTenth(3, 146, 197, 222),
+    atTenth(4, 209, 229, 240),
+    atTenth(5, 247, 247, 247),
+    atTenth(6, 253, 219, 199),
+    atTenth(7, 244, 165, 130),
+    atTenth(8, 214, 96, 77),
+    atTenth(9, 178, 24, 43),
+    atTenth(10, 103, 0, 31),
+};
+
+// Every 16th entry of matplotlib's cyclic twilight and the last (within 2/255 of every entry);
+// its first and last entries differ by less than 1/255.
+constexpr ColourControl kTwilight[] = {
+    atTwilightEntry(0, 0.8857502f, 0.8500092f, 0.8879737f),
+    atTwilightEntry(16, 0.8403042f, 0.8425606f, 0.8652509f),
+    atTwilightEntry(32, 0.7618691f, 0.8071195f, 0.8302665f),
+    atTwilightEntry(48, 0.6672148f, 0.7595113f, 0.7986367f),
+    atTwilightEntry(64, 0.5778116f, 0.7061311f, 0.7782535f),
+    atTwilightEntry(80, 0.5028854f, 0.6489722f, 0.7652145f),
+    atTwilightEntry(96, 0.4449325f, 0.5885056f, 0.7551311f),
+    atTwilightEntry(112, 0.4053334f, 0.5245923f, 0.7445037f),
+    atTwilightEntry(128, 0.3831217f, 0.4570632f, 0.7298463f),
+    atTwilightEntry(144, 0.3735806f, 0.3859647f, 0.707693f),
+    atTwilightEntry(160, 0.3696599f, 0.311661f, 0.6745734f),
+    atTwilightEntry(176, 0.3640569f, 0.2353647f, 0.6262101f),
+    atTwilightEntry(192, 0.3492451f, 0.1616148f, 0.5563484f),
+    atTwilightEntry(208, 0.3168165f, 0.1038986f, 0.4605341f),
+    atTwilightEntry(224, 0.2667323f, 0.07434402f, 0.3542028f),
+    atTwilightEntry(240, 0.2173785f, 0.06585966f, 0.2663421f),
+    atTwilightEntry(256, 0.1877448f, 0.07725159f, 0.2138745f),
+    atTwilightEntry(272, 0.232663f, 0.0675571f, 0.2303762f),
+    atTwilightEntry(288, 0.3007728f, 0.07661782f, 0.2617929f),
+    atTwilightEntry(304, 0.3816025f, 0.09423873f, 0.2928111f),
+    atTwilightEntry(320, 0.463891f, 0.1201256f, 0.3111034f),
+    atTwilightEntry(336, 0.5394174f, 0.1602477f, 0.314703f),
+    atTwilightEntry(352, 0.604084f, 0.2146033f, 0.3123265f),
+    atTwilightEntry(368, 0.6583281f, 0.2780321f, 0.3134643f),
+    atTwilightEntry(384, 0.7031625f, 0.3471872f, 0.3240891f),
+    atTwilightEntry(400, 0.7387914f, 0.4205367f, 0.3491326f),
+    atTwilightEntry(416, 0.7654549f, 0.4968321f, 0.3935025f),
+    atTwilightEntry(432, 0.7850685f, 0.5742417f, 0.4605912f),
+    atTwilightEntry(448, 0.8026053f, 0.6503379f, 0.5494169f),
+    atTwilightEntry(464, 0.8245268f, 0.7226461f, 0.6531314f),
+    atTwilightEntry(480, 0.8525191f, 0.7873494f, 0.7594994f),
+    atTwilightEntry(496, 0.8757146f, 0.8355302f, 0.8457554f),
+    atTwilightEntry(509, 0.8857116f, 0.8500219f, 0.8857254f),
+};
+
 // clang-format on
 
 // sampleColourMap relies on this: t rises strictly from exactly 0 to exactly 1.
@@ -141,7 +324,12 @@ constexpr bool spansUnitInterval(std::span<const ColourControl> controls) {
 }
 static_assert(spansUnitInterval(kViridis));
 static_assert(spansUnitInterval(kMagma));
+static_assert(spansUnitInterval(kInferno));
+static_assert(spansUnitInterval(kPlasma));
+static_assert(spansUnitInterval(kCividis));
 static_assert(spansUnitInterval(kCoolWarm));
+static_assert(spansUnitInterval(kRdBu));
+static_assert(spansUnitInterval(kTwilight));
 
 }  // namespace
 
@@ -151,8 +339,18 @@ std::span<const ColourControl> colourControls(ColourMap map) {
       return kViridis;
     case ColourMap::Magma:
       return kMagma;
+    case ColourMap::Inferno:
+      return kInferno;
+    case ColourMap::Plasma:
+      return kPlasma;
+    case ColourMap::Cividis:
+      return kCividis;
     case ColourMap::CoolWarm:
       return kCoolWarm;
+    case ColourMap::RdBu:
+      return kRdBu;
+    case ColourMap::Twilight:
+      return kTwilight;
   }
   return kViridis;
 }
