@@ -49,6 +49,11 @@ struct RenderOptions {
   std::string colourScale = "linear";  // "log" or "symlog"
   std::optional<double> symlogWidth;   // symlog's linear half-width; default 1e-3 of the range
   std::vector<float> range;  // min, max of the colour field
+  std::string outline = "domain";    // thin grey tubes along "domain", "bricks" or "none"
+  bool axes = false;       // the domain's axes with ticks in physical units (zooms out a little)
+  bool triad = true;       // the orientation triad, bottom left
+  bool scaleBar = false;   // a bar of a round physical length above the triad
+  std::string background;            // "white", "black", "#rrggbb" or "R,G,B" (0..1): flat
   std::uint32_t aoSamples = 4;
   std::string volume;  // context scalar channel; empty: none
   std::vector<float> volumeRange;
@@ -58,7 +63,9 @@ struct RenderOptions {
 
 // The renderer's input made from traces: tube segments, settings, colour map and camera.
 struct RenderScene {
+  // The traces' tubes, then the outline's (RenderOptions::outline), which updateTubes keeps.
   std::vector<shared::TubeSegment> segments;
+  std::vector<shared::TubeSegment> outline;
   render::RenderSettings settings;
   render::ColourMap colourMap = render::ColourMap::Viridis;
   // The colour field's values at the ends of the map, and how values between map onto it; the

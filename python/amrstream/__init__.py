@@ -105,7 +105,8 @@ def render(traces, **look):
     tube_radius (finest cells) or tube_radius_physical or tube_radius_view=0.003 (of the
     view's height), colour_by='speed'|'time'|a field, colour_map='viridis'|'magma'|'inferno'|
     'plasma'|'cividis'|'coolwarm'|'rdbu'|'twilight', colour_scale='linear'|'log'|'symlog',
-    symlog_width, range=(min, max), ao_samples=4,
+    symlog_width, range=(min, max), outline='domain'|'bricks'|'none', axes=False, triad=True,
+    scale_bar=False, background='white'|'#rrggbb'|'r,g,b', ao_samples=4,
     volume=<a field shown behind the tubes>, volume_range, volume_opacity=0.05,
     linear_volume=False, frames=32, colour_bar=True, backend, device, progress, verbose."""
     return traces.render(**look)

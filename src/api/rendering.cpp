@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <span>
 #include <utility>
 
 #include "render/image/colour_bar.hpp"
 #include "render/image/font.hpp"
+#include "render/annotations/axes.hpp"
+#include "render/annotations/overlay_text.hpp"
+#include "render/annotations/scale_bar.hpp"
+#include "render/annotations/triad.hpp"
 #include "render/volume_range.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -180,6 +185,80 @@ render::OrbitCamera cameraOf(const RenderOptions& o) {
   return camera;
 }
 
+// The traces' tubes: the scene's segments before the outline's.
+std::span<const shared::TubeSegment> traceSegments(const RenderScene& scene) {
+  return std::span(scene.segments).first(scene.segments.size() - scene.outline.size());
+}
+
+std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
+                                           const flow::VectorVolume& volume) {
+  if (o.outline == "none") return {};
+  if (o.outline == "domain")
+    return render::boxOutline(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper));
+  if (o.outline != "bricks")
+    throw InputError("--outline", fmt::format("'{}': choose domain, bricks or none", o.outline));
+  std::vector<shared::TubeSegment> edges;
+  for (std::size_t i = 0; i < volume.originalBrickCount; ++i) {
+    const shared::Brick& brick = volume.bricks[i];
+    const glm::vec3 lower(brick.lower);
+    const std::vector<shared::TubeSegment> box =
+        render::boxOutline(lower, lower + glm::vec3(brick.size) * std::ldexp(1.0f, brick.level));
+    edges.insert(edges.end(), box.begin(), box.end());
+  }
+  return edges;
+}
+
+// A colour as --background takes it: a name, #rrggbb, or R,G,B in [0, 1].
+glm::vec3 parseColour(const std::string& text, const char* option) {
+  if (text == "white") return glm::vec3(1.0f);
+  if (text == "black") return glm::vec3(0.0f);
+  unsigned r = 0, g = 0, b = 0;
+  char end = 0;
+  if (text.size() == 7 && std::sscanf(text.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &end) == 3)
+    return glm::vec3(r, g, b) / 255.0f;
+  float x = 0, y = 0, z = 0;
+  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &x, &y, &z, &end) == 3) {
+    const glm::vec3 c(x, y, z);
+    if (glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) &&
+        glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))))
+      return c;
+  }
+  throw InputError(option, fmt::format("'{}': give white, black, #rrggbb or R,G,B from 0 to 1",
+                                       text));
+}
+
+// Outlines stand out from the background: dark on light, light on dark.
+glm::vec3 outlineColourOn(glm::vec3 background) {
+  const float luminance = glm::dot(background, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+  return luminance > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
+}
+
+// "kpc" of "kpc", "code units" of "code units (1 = 3.1e+24 cm)": short enough for a label.
+std::string shortUnit(const std::string& unit) { return unit.substr(0, unit.find(" (")); }
+
+// The axes, triad and scale bar the options ask for, drawn over the rendered image in a grey
+// that stands out from the background.
+void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderScene& scene,
+                     const flow::VectorVolume& volume, const bricks::DatasetInfo& info) {
+  const std::uint32_t w = image.width, h = image.height;
+  const int size = render::overlayLabelPixelSize(w, h);
+  const glm::vec3 grey = outlineColourOn(scene.settings.background) * 1.15f;
+  const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
+  if (o.axes) {
+    const glm::dvec3 lower = volume.transform.toPhysical(glm::dvec3(volume.domain.lower));
+    const glm::dvec3 upper = volume.transform.toPhysical(glm::dvec3(volume.domain.upper));
+    render::drawAxes(image,
+                     render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size),
+                     ink);
+  }
+  if (o.triad) render::drawTriad(image, render::layoutTriad(scene.camera, w, h, size));
+  if (o.scaleBar)
+    render::drawScaleBar(image,
+                         render::layoutScaleBar(scene.camera, w, h, volume.transform,
+                                                shortUnit(info.lengthUnit), size),
+                         ink);
+}
+
 }  // namespace
 
 void setTubeRadius(render::RenderSettings& settings, float radius) {
@@ -197,16 +276,18 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cell
     for (float& v : colour.values)
       if (std::isfinite(v)) v = static_cast<float>(scale.coordinate(v));
   scene.segments = render::buildTubeSegments(traces, colour, volume.transform);
+  scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
   scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
                                 static_cast<float>(scale.coordinate(scale.max))};
 }
 
 void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume) {
-  const float zoom = o.zoom * (o.camera.size() == 3 ? o.camera[2] : 1.0f);
+  // Axes need room outside the framed box for their labels.
+  const float zoom = o.zoom * (o.camera.size() == 3 ? o.camera[2] : 1.0f) * (o.axes ? 0.8f : 1.0f);
   if (!(zoom > 0.0f) || !std::isfinite(zoom))
     throw InputError(o.camera.size() == 3 ? "--camera" : "--zoom",
                      "the zoom factor must be positive and finite");
-  const Framed framed = framedPoints(o, volume, scene.segments, scene.settings.tubeRadius);
+  const Framed framed = framedPoints(o, volume, traceSegments(scene), scene.settings.tubeRadius);
   std::optional<glm::vec3> target;
   if (!o.lookAt.empty()) {
     if (o.lookAt.size() != 3) throw InputError("--look-at", "expected 3 numbers x,y,z");
@@ -220,7 +301,7 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
 void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {
   RenderOptions tubes;
   tubes.frame = "traces";
-  const Framed framed = framedPoints(tubes, volume, scene.segments, scene.settings.tubeRadius);
+  const Framed framed = framedPoints(tubes, volume, traceSegments(scene), scene.settings.tubeRadius);
   scene.camera = render::framePoints(scene.camera, framed.points, framed.radius, aspect);
 }
 
@@ -236,6 +317,11 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
 
   render::RenderSettings& s = scene.settings;
+  if (!o.background.empty()) {
+    s.background = parseColour(o.background, "--background");
+    s.flatBackground = true;
+  }
+  s.outlineColour = outlineColourOn(s.background);
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   updateTubes(scene, o, cells, volume, traces);
@@ -263,6 +349,8 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   setTubeRadius(s, o.tubeRadius.value_or(0.0f));
   frameCamera(scene, o, volume);
   setTubeRadius(s, tubeRadiusOf(o, volume, scene.camera));
+  scene.outline = outlineOf(o, volume);
+  scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
   return scene;
 }
 
@@ -281,7 +369,8 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
     throw InputError("--frames", fmt::format("{} is outside the range 1 to {}", frames,
                                              kMaxRenderFrames));
   const RenderScene scene = prepareScene(options, cells, volume, traces);
-  if (colourBar) render::defaultFont();  // a missing font is told before the work, not after
+  if (colourBar || options.axes || options.triad || options.scaleBar)
+    render::defaultFont();  // a missing font is told before the work, not after
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)
     throw vk::ContextError(
@@ -312,6 +401,7 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   }
   checkValidation(ctx);
   result.image = renderer.readImage();
+  drawAnnotations(result.image, options, scene, volume, cells.info());
   if (colourBar)
     render::drawColourBar(result.image,
                           {scene.colourMap, scene.colourScale, scene.colourLabel, ""});

@@ -91,6 +91,21 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
       ->delimiter(',')
       ->expected(2)
       ->check(finiteFloat());
+  command
+      .add_option("--outline", o.outline,
+                  "thin tubes along the domain's edges (domain), every brick's (bricks) or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"domain", "bricks", "none"}));
+  command.add_flag("--axes", o.axes,
+                   "the domain's axes, with ticks and labels in physical units, along the edges "
+                   "on the outside of its outline (zooms out a little to make room)");
+  command.add_flag("!--no-triad", o.triad, "leave out the orientation triad (bottom left)");
+  command.add_flag("--scale-bar", o.scaleBar,
+                   "a bar of a round physical length, exact in orthographic views, at the framed "
+                   "centre's depth in perspective");
+  command.add_option("--background", o.background,
+                     "a flat background: white, black, #rrggbb or R,G,B from 0 to 1 [default: a "
+                     "dark grey gradient]");
   command.add_option("--ao-samples", o.aoSamples,
                      "ambient-occlusion rays per pixel and frame (0: off)")
       ->capture_default_str()

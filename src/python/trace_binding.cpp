@@ -171,7 +171,9 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
                        std::optional<double> tubeRadiusPhysical, float tubeRadiusOfView,
                        std::string colourBy, std::string colourMap, std::string colourScale,
                        std::optional<double> symlogWidth,
-                       std::optional<std::vector<float>> range, std::uint32_t aoSamples,
+                       std::optional<std::vector<float>> range, std::string outline, bool axes,
+                       bool triad, bool scaleBar,
+                       std::optional<std::string> background, std::uint32_t aoSamples,
                        std::optional<std::string> volume,
                        std::optional<std::vector<float>> volumeRange, float volumeOpacity,
                        bool linearVolume, std::uint32_t frames, bool colourBar, std::string backend,
@@ -204,6 +206,11 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
   o.colourScale = std::move(colourScale);
   o.symlogWidth = symlogWidth;
   o.range = range.value_or(std::vector<float>{});
+  o.outline = std::move(outline);
+  o.axes = axes;
+  o.triad = triad;
+  o.scaleBar = scaleBar;
+  o.background = background.value_or("");
   o.aoSamples = aoSamples;
   o.volume = volume.value_or("");
   o.volumeRange = volumeRange.value_or(std::vector<float>{});
@@ -342,7 +349,9 @@ void bindTraces(py::module_& m) {
            py::arg("tube_radius_physical") = py::none(), py::arg("tube_radius_view") = 0.003f,
            py::arg("colour_by") = "speed", py::arg("colour_map") = "viridis",
            py::arg("colour_scale") = "linear", py::arg("symlog_width") = py::none(),
-           py::arg("range") = py::none(),
+           py::arg("range") = py::none(), py::arg("outline") = "domain",
+           py::arg("axes") = false, py::arg("triad") = true, py::arg("scale_bar") = false,
+           py::arg("background") = py::none(),
            py::arg("ao_samples") = 4, py::arg("volume") = py::none(),
            py::arg("volume_range") = py::none(), py::arg("volume_opacity") = 0.05f,
            py::arg("linear_volume") = false, py::arg("frames") = 32, py::arg("colour_bar") = true,

@@ -87,4 +87,18 @@ std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
   return segments;
 }
 
+std::vector<shared::TubeSegment> boxOutline(glm::vec3 lower, glm::vec3 upper) {
+  const float outline = AMRSTREAM_OUTLINE_VALUE;
+  const auto corner = [&](int bits) {
+    return glm::vec3((bits & 1) ? upper.x : lower.x, (bits & 2) ? upper.y : lower.y,
+                     (bits & 4) ? upper.z : lower.z);
+  };
+  std::vector<shared::TubeSegment> edges;
+  for (int bits = 0; bits < 8; ++bits)
+    for (int axis = 0; axis < 3; ++axis)
+      if ((bits & (1 << axis)) == 0)
+        edges.push_back({corner(bits), outline, corner(bits | (1 << axis)), outline});
+  return edges;
+}
+
 }  // namespace amrstream::render

@@ -52,4 +52,7 @@ std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
                                                    const ColourField& colour,
                                                    const bricks::WorldTransform& transform);
 
+// The twelve edges of a box (cell units) as outline segments (AMRSTREAM_OUTLINE_VALUE).
+std::vector<shared::TubeSegment> boxOutline(glm::vec3 lower, glm::vec3 upper);
+
 }  // namespace amrstream::render

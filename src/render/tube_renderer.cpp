@@ -60,7 +60,8 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
             (settings.volume ? AMRSTREAM_RENDER_VOLUME : 0u) |
             (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u) |
             (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u) |
-            (orthographic ? AMRSTREAM_RENDER_ORTHOGRAPHIC : 0u);
+            (orthographic ? AMRSTREAM_RENDER_ORTHOGRAPHIC : 0u) |
+            (settings.flatBackground ? AMRSTREAM_RENDER_FLAT_BACKGROUND : 0u);
   p.imageSize = {width, height};
   p.segmentCount = static_cast<std::uint32_t>(segmentCount);
   p.tubeRadius = settings.tubeRadius;
@@ -68,6 +69,7 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.lightDirection = glm::normalize(-view.forward + 0.6f * view.up - 0.5f * view.right);
   p.aoSamples = settings.aoSamples;
   p.background = settings.background;
+  p.outlineColour = settings.outlineColour;
   p.aoDistance = settings.aoDistance;
   p.domainLower = glm::vec3(volume.domain.lower);
   p.domainUpper = glm::vec3(volume.domain.upper);

@@ -41,6 +41,8 @@ struct RenderSettings {
   float volumeOpacity = 0.05f;  // extinction per finest cell at the top of the transfer function
   float volumeStepScale = 1.0f;
   glm::vec3 background{0.12f, 0.13f, 0.16f};
+  bool flatBackground = false;  // else a gentle vertical gradient of `background`
+  glm::vec3 outlineColour{0.75f};  // of segments with AMRSTREAM_OUTLINE_VALUE values
 
   bool operator==(const RenderSettings&) const = default;
 };

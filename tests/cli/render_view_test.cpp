@@ -47,6 +47,33 @@ TEST(RenderCommand, WritesAnImageOfTubesWithItsColourBar) {
   EXPECT_GT(render::describeContent(image).distinctColours, 200u);
 }
 
+// A flat background is exactly the colour asked for wherever no tube is; the domain's outline,
+// seen from +z in an orthographic view of the whole domain, runs along the image's border.
+TEST(RenderCommand, AFlatBackgroundAndTheDomainOutline) {
+  const auto bare = outputPath("flat.png"), outlined = outputPath("outlined.png");
+  const std::string look =
+      "render builtin:cloud --count 1 --steps 1 --width 128 --height 128 --frames 1 "
+      "--ao-samples 0 --no-colour-bar --no-triad --background '#ff8000' --view +z "
+      "--projection orthographic --frame domain --tube-radius-view 0.01 ";
+  auto run = testing::runAmrstream(look + "--outline none --out " + bare.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  run = testing::runAmrstream(look + "--out " + outlined.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const render::Image flat = render::readPng(bare), box = render::readPng(outlined);
+  std::size_t orange = 0, greyOnBorder = 0, border = 0;
+  for (std::uint32_t y = 0; y < 128; ++y)
+    for (std::uint32_t x = 0; x < 128; ++x) {
+      const render::Rgba8 c = flat.at(x, y);
+      orange += c.r == 255 && c.g == 128 && c.b == 0;
+      // The framed domain's edges lie within the 4 % margin: the outer ring of 8 pixels.
+      const bool ring = std::min({x, y, 127 - x, 127 - y}) < 8;
+      const render::Rgba8 o = box.at(x, y);
+      if (ring) ++border, greyOnBorder += std::abs(int(o.r) - int(o.g)) < 40 && o.b > 40;
+    }
+  EXPECT_GT(orange, 128u * 128u * 99 / 100) << "the flat background is not the colour asked for";
+  EXPECT_GT(greyOnBorder, border / 10) << "no outline along the border";
+}
+
 // Traces written by `trace` rendered with --traces: the same tubes as rendering them directly.
 TEST(RenderCommand, RendersTracesReadFromAVtpLikeTracingThem) {
   const auto vtp = outputPath("traced.vtp"), direct = outputPath("direct.png"),
@@ -78,6 +105,11 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
   run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --colour-by pressure --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("no field 'pressure'"), std::string::npos) << run.output;
+  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --background pink --out x.png");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--background: 'pink': give white, black, #rrggbb or R,G,B"),
+            std::string::npos)
+      << run.output;
 }
 
 // The viewer under Xvfb: progressive tracing until every trace ends, a scripted orbit, and a

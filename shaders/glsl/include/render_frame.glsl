@@ -58,7 +58,8 @@ vec3 shadeTube(vec3 o, vec3 d, TubeHit hit) {
   vec3 n = p - (s.a + along * ab);
   n = dot(n, n) > 0.0 ? normalize(n) : -d;
   if (dot(n, d) > 0.0) n = -n;
-  const vec3 base = mapColour(mix(s.valueA, s.valueB, along));
+  const float value = mix(s.valueA, s.valueB, along);
+  const vec3 base = value < 0.1 * AMRSTREAM_OUTLINE_VALUE ? params.outlineColour : mapColour(value);
 
   float ambient = 1.0;
   if ((params.flags & AMRSTREAM_RENDER_AO) != 0 && params.aoSamples > 0) {
@@ -74,6 +75,7 @@ vec3 shadeTube(vec3 o, vec3 d, TubeHit hit) {
 }
 
 vec3 backgroundColour(vec3 d) {
+  if ((params.flags & AMRSTREAM_RENDER_FLAT_BACKGROUND) != 0) return params.background;
   return params.background * (0.75 + 0.25 * clamp(dot(d, params.up) * 0.5 + 0.5, 0.0, 1.0));
 }
 

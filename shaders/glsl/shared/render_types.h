@@ -31,6 +31,11 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_LOG_VOLUME 4u
 #define AMRSTREAM_RENDER_LINEAR_VOLUME 8u  // the volume's scalar through the linear interpolant
 #define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u  // parallel rays from the plane through the eye
+#define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u  // the background colour as it is, no gradient
+
+// A segment whose values are below this is an outline (of the domain or of bricks), drawn in
+// RenderParams::outlineColour rather than through the colour map.
+#define AMRSTREAM_OUTLINE_VALUE (-1.0e38)
 
 // A pinhole (or orthographic) camera and what one frame draws. A frame adds one jittered sample per pixel to the
 // accumulation buffer; pixels show the mean of the frames since the last reset (frameIndex 0).
@@ -58,12 +63,14 @@ struct RenderParams {
   float volumeMax;
   float volumeOpacity;  // extinction per finest cell at the top of the transfer function
   float volumeStepScale;  // ray-march step in units of the region's finest cell width
+  vec3 outlineColour;
+  uint pad0;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(TubeSegment) == 32 && sizeof(TubeBvhNode) == 32);
 static_assert(offsetof(RenderParams, imageSize) == 64 && offsetof(RenderParams, volumeMin) == 144 &&
-              sizeof(RenderParams) == 160);
+              sizeof(RenderParams) == 176);
 }  // namespace amrstream::shared
 #endif
 

@@ -11,8 +11,6 @@ namespace amrstream::render {
 namespace {
 
 constexpr int kMinGradientWidth = 64;
-constexpr int kSmallestLabelSize = 11;
-constexpr int kLargestLabelSize = 48;
 constexpr const char* kEllipsis = "\u2026";
 
 // Spacing, all in pixels, that grows with the tick labels' font size s.
@@ -34,11 +32,6 @@ Spacing spacingFor(int s) {
           .tickThickness = s >= 24 ? 2 : 1,
           .labelGap = std::max(2, s / 6),
           .labelSpacing = std::max(3, s / 2)};
-}
-
-int preferredLabelSize(int shorterSide) {
-  const int size = static_cast<int>(std::lround(0.016 * shorterSide));
-  return std::clamp(size, kSmallestLabelSize, kLargestLabelSize);
 }
 
 int titleSizeFor(int labelSize) { return static_cast<int>(std::lround(1.25 * labelSize)); }
@@ -186,7 +179,7 @@ std::optional<ColourBarLayout> layoutColourBar(std::uint32_t width, std::uint32_
   // Far beyond any render target; keeps the int arithmetic above exact.
   const int w = static_cast<int>(std::min<std::uint32_t>(width, 1u << 20));
   const int h = static_cast<int>(std::min<std::uint32_t>(height, 1u << 20));
-  for (int size = preferredLabelSize(std::min(w, h)); size >= kSmallestLabelSize; --size) {
+  for (int size = overlayLabelPixelSize(w, h); size >= kSmallestLabelPixelSize; --size) {
     if (auto layout = layoutAtSize(w, h, bar, size)) return layout;
   }
   return std::nullopt;

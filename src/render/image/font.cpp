@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <map>
@@ -182,6 +183,12 @@ void Font::drawText(Image& image, int x, int baseline, std::string_view text, Rg
     blendGlyph(image, glyph, std::int64_t{x} + roundedPixels(pen) + glyph.left,
                std::int64_t{baseline} - glyph.top, colour);
   });
+}
+
+int overlayLabelPixelSize(std::uint32_t width, std::uint32_t height) {
+  const double shorterSide = std::min(width, height);
+  return std::clamp(static_cast<int>(std::lround(0.016 * shorterSide)), kSmallestLabelPixelSize,
+                    kLargestLabelPixelSize);
 }
 
 std::filesystem::path fontPath() {

@@ -4,6 +4,7 @@
 // kerning. Text is UTF-8 (invalid bytes show as U+FFFD); characters the font lacks show as its
 // missing-glyph box.
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string_view>
@@ -47,6 +48,11 @@ class Font {
   struct Glyphs;
   std::unique_ptr<Glyphs> glyphs_;
 };
+
+// The size of text burnt into an image beside the picture (colour bar, axes, triad): 1.6 % of
+// the image's shorter side, 11 to 48 px.
+inline constexpr int kSmallestLabelPixelSize = 11, kLargestLabelPixelSize = 48;
+int overlayLabelPixelSize(std::uint32_t width, std::uint32_t height);
 
 // The font file to use: $AMRSTREAM_FONT when it is set and not empty, else the path built in
 // (CMake's AMRSTREAM_FONT_PATH, by default Debian's fonts-dejavu-core DejaVu Sans).
