@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Quick start, command 1: installs what is missing, builds, traces the built-in magnetised cloud
 # to traces.vtp (open it in ParaView) and renders its field lines as tubes in front of the
-# density to cloud.png (the README's image; about a minute on lavapipe). Installs the Python
-# module for Debian's python3 (`import amrstream`). Extra arguments go to `amrstream trace`.
+# density to cloud.png (the README's first image; one to two minutes on lavapipe). Installs the
+# Python module for Debian's python3 (`import amrstream`). Extra arguments go to `amrstream trace`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_deps.sh"
@@ -10,4 +10,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_python.sh"
 "$root/build/src/cli/amrstream" trace builtin:cloud --out traces.vtp "$@"
 "$root/build/src/cli/amrstream" render builtin:cloud --count 512 --steps 2000 --volume dens \
-  --camera 35,25,1.2 --width 800 --height 500 --frames 8 --out cloud.png
+  --axes --width 800 --height 500 --frames 8 --out cloud.png

@@ -129,26 +129,41 @@ std::vector<glm::vec3> boxCorners(glm::vec3 lower, glm::vec3 upper) {
   return corners;
 }
 
+// --view-box in cell units, checked; nullopt without one.
+std::optional<std::pair<glm::vec3, glm::vec3>> viewBoxOf(const RenderOptions& o,
+                                                         const flow::VectorVolume& volume) {
+  if (o.viewBox.empty()) return std::nullopt;
+  if (o.viewBox.size() != 6) throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
+  const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
+  const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
+  if (!glm::all(glm::lessThan(a, b)))
+    throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
+  return std::pair{glm::vec3(volume.transform.toCellUnits(a)),
+                   glm::vec3(volume.transform.toCellUnits(b))};
+}
+
+// The box --axes follows, in cell units: --view-box, else the domain.
+std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const flow::VectorVolume& volume) {
+  return viewBoxOf(o, volume).value_or(
+      std::pair{glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper)});
+}
+
 Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
                     std::span<const shared::TubeSegment> segments, float radius) {
-  if (!o.viewBox.empty()) {
-    if (o.viewBox.size() != 6)
-      throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
-    const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
-    const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
-    if (!glm::all(glm::lessThan(a, b)))
-      throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
-    return {boxCorners(glm::vec3(volume.transform.toCellUnits(a)),
-                       glm::vec3(volume.transform.toCellUnits(b)))};
-  }
+  if (const auto box = viewBoxOf(o, volume)) return {boxCorners(box->first, box->second)};
   if (o.frame != "traces" && o.frame != "domain")
     throw InputError("--frame", fmt::format("'{}': choose traces or domain", o.frame));
   if (o.frame == "traces" && !segments.empty()) {
     Framed framed{{}, radius};
-    framed.points.reserve(2 * segments.size());
+    framed.points.reserve(2 * segments.size() + 8);
     for (const shared::TubeSegment& s : segments) {
       framed.points.push_back(s.a);
       framed.points.push_back(s.b);
+    }
+    if (o.axes) {  // the axes (on the domain) and their labels stay in view too
+      const auto [lower, upper] = axesBox(o, volume);
+      const std::vector<glm::vec3> corners = boxCorners(lower, upper);
+      framed.points.insert(framed.points.end(), corners.begin(), corners.end());
     }
     return framed;
   }
@@ -245,8 +260,9 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   const glm::vec3 grey = outlineColourOn(scene.settings.background) * 1.15f;
   const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
   if (o.axes) {
-    const glm::dvec3 lower = volume.transform.toPhysical(glm::dvec3(volume.domain.lower));
-    const glm::dvec3 upper = volume.transform.toPhysical(glm::dvec3(volume.domain.upper));
+    const auto [lowerCells, upperCells] = axesBox(o, volume);
+    const glm::dvec3 lower = volume.transform.toPhysical(glm::dvec3(lowerCells));
+    const glm::dvec3 upper = volume.transform.toPhysical(glm::dvec3(upperCells));
     render::drawAxes(image,
                      render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size),
                      ink);
@@ -301,7 +317,8 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
 void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {
   RenderOptions tubes;
   tubes.frame = "traces";
-  const Framed framed = framedPoints(tubes, volume, traceSegments(scene), scene.settings.tubeRadius);
+  const Framed framed =
+      framedPoints(tubes, volume, traceSegments(scene), scene.settings.tubeRadius);
   scene.camera = render::framePoints(scene.camera, framed.points, framed.radius, aspect);
 }
 

@@ -1,5 +1,6 @@
 #include "tube_renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -33,10 +34,30 @@ std::vector<VkAabbPositionsKHR> segmentBoxes(std::span<const shared::TubeSegment
   return boxes;
 }
 
+// Where parallel rays start: on a plane across the view just in front of everything they may
+// meet (the tubes, and the domain when the volume shows), not further: the capsule test loses
+// thin tubes to float rounding when rays start thousands of cells away.
+float orthographicStart(const OrbitCamera& camera, const CameraFrame& view,
+                        const RenderSettings& settings, const flow::VectorVolume& volume,
+                        glm::vec3 tubesLower, glm::vec3 tubesUpper) {
+  float nearest = 0.0f;
+  const auto include = [&](glm::vec3 lower, glm::vec3 upper) {
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p((corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
+                        (corner & 4) ? upper.z : lower.z);
+      nearest = std::max(nearest, -glm::dot(p - camera.target, view.forward));
+    }
+  };
+  include(tubesLower, tubesUpper);
+  if (settings.volume) include(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper));
+  return nearest + 1.0f;
+}
+
 shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings& settings,
                                 const flow::VectorVolume& volume, std::uint32_t width,
                                 std::uint32_t height, std::uint32_t frame,
-                                std::size_t segmentCount, bool linearVolume) {
+                                std::size_t segmentCount, bool linearVolume,
+                                glm::vec3 tubesLower, glm::vec3 tubesUpper) {
   const CameraFrame view = cameraFrame(camera);
   const bool orthographic = camera.projection == Projection::Orthographic;
   shared::RenderParams p{};
@@ -46,12 +67,8 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.up = view.up;
   p.halfHeight = halfHeightAtUnitDistance(camera);
   if (orthographic) {
-    // Parallel rays start on a plane outside the domain's bounding sphere, so that no tube lies
-    // behind them, whatever the distance.
-    const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
-    const float outside =
-        glm::length(camera.target - 0.5f * (lower + upper)) + 0.5f * glm::length(upper - lower);
-    p.eye = camera.target - (outside + 1.0f) * view.forward;
+    p.eye = camera.target - orthographicStart(camera, view, settings, volume, tubesLower,
+                                              tubesUpper) * view.forward;
     p.halfHeight *= camera.distance;
   }
   p.aspect = float(width) / float(height);
@@ -131,6 +148,12 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
 void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float radius) {
   segmentCount_ = segments.size();
   radius_ = radius;
+  tubesLower_ = glm::vec3(INFINITY), tubesUpper_ = glm::vec3(-INFINITY);
+  for (const shared::TubeSegment& s : segments) {
+    tubesLower_ = glm::min(tubesLower_, glm::min(s.a, s.b) - radius);
+    tubesUpper_ = glm::max(tubesUpper_, glm::max(s.a, s.b) + radius);
+  }
+  if (segments.empty()) tubesLower_ = tubesUpper_ = glm::vec3(0.0f);
   scene_.reset();
   bvhNodes_ = {};
   if (kernel_.backend == gpu::Backend::Compute) {
@@ -209,7 +232,8 @@ void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& 
   lastSettings_ = settings;
 
   const shared::RenderParams params =
-      makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_, linearVolume_);
+      makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_, linearVolume_,
+                 tubesLower_, tubesUpper_);
   // The previous frame has completed (renderFrame waits), so the buffer is free to rewrite.
   std::memcpy(params_.mapped().data(), &params, sizeof(params));
   if (descriptorsStale_) writeDescriptors();

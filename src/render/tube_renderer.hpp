@@ -94,6 +94,7 @@ class TubeRenderer {
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;
   float radius_ = 0.0f;
+  glm::vec3 tubesLower_{0.0f}, tubesUpper_{0.0f};  // the tubes' bounding box, radius included
   vk::Buffer colourMap_;
   vk::Buffer accumulation_, pixels_;
   std::uint32_t width_ = 0, height_ = 0;

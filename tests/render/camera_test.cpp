@@ -114,8 +114,9 @@ TEST(CameraViews, NamedViewsLookFromTheirAxis) {
       EXPECT_NEAR(glm::dot(-frame.forward, from), 1.0f, 1e-5f) << name << " up " << upName;
       // A right-handed screen frame: right x up = backwards.
       EXPECT_NEAR(glm::length(glm::cross(frame.right, frame.up) + frame.forward), 0.0f, 1e-5f);
-      if (from != up.vector() && from != -up.vector())
+      if (from != up.vector() && from != -up.vector()) {
         EXPECT_NEAR(glm::dot(frame.up, up.vector()), 1.0f, 1e-5f) << name << " up " << upName;
+      }
     }
   }
   const std::optional<NamedView> iso = namedView("iso", Axis{});

@@ -71,7 +71,9 @@ TEST(ScaleTicks, LinearTicksAreRoundAndInsideTheRange) {
     EXPECT_LE(ticks[i].value, 0.97);
     EXPECT_NEAR(ticks[i].value / step, std::round(ticks[i].value / step), 1e-9);
     EXPECT_DOUBLE_EQ(ticks[i].position, (ticks[i].value - 0.13) / (0.97 - 0.13));
-    if (i > 0) EXPECT_NEAR(ticks[i].value - ticks[i - 1].value, step, 1e-12);
+    if (i > 0) {
+      EXPECT_NEAR(ticks[i].value - ticks[i - 1].value, step, 1e-12);
+    }
   }
   EXPECT_EQ(ticks[0].label, "0.2");
 }
@@ -97,7 +99,9 @@ TEST(ScaleTicks, SymLogTicksAreZeroAndDecadesOnBothSides) {
   std::vector<double> values;
   for (const ScaleTick& t : ticks) values.push_back(t.value);
   EXPECT_EQ(values, (std::vector<double>{-1000, -100, -10, -1, 0, 1, 10, 100}));
-  for (std::size_t i = 1; i < ticks.size(); ++i) EXPECT_LT(ticks[i - 1].position, ticks[i].position);
+  for (std::size_t i = 1; i < ticks.size(); ++i) {
+    EXPECT_LT(ticks[i - 1].position, ticks[i].position);
+  }
 }
 
 }  // namespace
