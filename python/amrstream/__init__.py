@@ -106,7 +106,7 @@ def render(traces, **look):
     view's height), colour_by='speed'|'time'|a field, colour_map='viridis'|'magma'|'inferno'|
     'plasma'|'cividis'|'coolwarm'|'rdbu'|'twilight', colour_scale='linear'|'log'|'symlog',
     symlog_width, range=(min, max), outline='domain'|'bricks'|'none', axes=False, triad=True,
-    scale_bar=False, background='white'|'#rrggbb'|'r,g,b', ao_samples=4,
+    scale_bar=False, background='white'|'transparent'|'#rrggbb'|'r,g,b', ao_samples=4,
     volume=<a field shown behind the tubes>, volume_range, volume_opacity=0.05,
     linear_volume=False, frames=32, colour_bar=True, backend, device, progress, verbose."""
     return traces.render(**look)

@@ -238,7 +238,8 @@ glm::vec3 parseColour(const std::string& text, const char* option) {
         glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))))
       return c;
   }
-  throw InputError(option, fmt::format("'{}': give white, black, #rrggbb or R,G,B from 0 to 1",
+  throw InputError(option, fmt::format("'{}': give white, black, transparent, #rrggbb or R,G,B "
+                                       "from 0 to 1",
                                        text));
 }
 
@@ -257,7 +258,7 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
                      const flow::VectorVolume& volume, const bricks::DatasetInfo& info) {
   const std::uint32_t w = image.width, h = image.height;
   const int size = render::overlayLabelPixelSize(w, h);
-  const glm::vec3 grey = outlineColourOn(scene.settings.background) * 1.15f;
+  const glm::vec3 grey = scene.settings.outlineColour * 1.15f;
   const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
   if (o.axes) {
     const auto [lowerCells, upperCells] = axesBox(o, volume);
@@ -334,11 +335,16 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
 
   render::RenderSettings& s = scene.settings;
-  if (!o.background.empty()) {
-    s.background = parseColour(o.background, "--background");
-    s.flatBackground = true;
+  if (o.background == "transparent") {
+    s.transparent = true;
+    s.outlineColour = glm::vec3(0.5f);  // whatever the image will be laid on
+  } else {
+    if (!o.background.empty()) {
+      s.background = parseColour(o.background, "--background");
+      s.flatBackground = true;
+    }
+    s.outlineColour = outlineColourOn(s.background);
   }
-  s.outlineColour = outlineColourOn(s.background);
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   updateTubes(scene, o, cells, volume, traces);

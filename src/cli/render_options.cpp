@@ -104,8 +104,9 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
                    "a bar of a round physical length, exact in orthographic views, at the framed "
                    "centre's depth in perspective");
   command.add_option("--background", o.background,
-                     "a flat background: white, black, #rrggbb or R,G,B from 0 to 1 [default: a "
-                     "dark grey gradient]");
+                     "a flat background: white, black, #rrggbb or R,G,B from 0 to 1, or "
+                     "transparent (a PNG whose alpha is the coverage) [default: a dark grey "
+                     "gradient]");
   command.add_option("--ao-samples", o.aoSamples,
                      "ambient-occlusion rays per pixel and frame (0: off)")
       ->capture_default_str()

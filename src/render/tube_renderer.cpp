@@ -78,7 +78,8 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
             (settings.logVolume ? AMRSTREAM_RENDER_LOG_VOLUME : 0u) |
             (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u) |
             (orthographic ? AMRSTREAM_RENDER_ORTHOGRAPHIC : 0u) |
-            (settings.flatBackground ? AMRSTREAM_RENDER_FLAT_BACKGROUND : 0u);
+            (settings.flatBackground ? AMRSTREAM_RENDER_FLAT_BACKGROUND : 0u) |
+            (settings.transparent ? AMRSTREAM_RENDER_TRANSPARENT : 0u);
   p.imageSize = {width, height};
   p.segmentCount = static_cast<std::uint32_t>(segmentCount);
   p.tubeRadius = settings.tubeRadius;

@@ -42,6 +42,7 @@ struct RenderSettings {
   float volumeStepScale = 1.0f;
   glm::vec3 background{0.12f, 0.13f, 0.16f};
   bool flatBackground = false;  // else a gentle vertical gradient of `background`
+  bool transparent = false;     // no background: the image's alpha is the coverage
   glm::vec3 outlineColour{0.75f};  // of segments with AMRSTREAM_OUTLINE_VALUE values
 
   bool operator==(const RenderSettings&) const = default;

@@ -74,6 +74,28 @@ TEST(RenderCommand, AFlatBackgroundAndTheDomainOutline) {
   EXPECT_GT(greyOnBorder, border / 10) << "no outline along the border";
 }
 
+// A transparent background: no tube, alpha 0; inside a tube, 255; the tubes' anti-aliased edges
+// in between. The colour of a covered pixel is the tube's, not mixed with any background.
+TEST(RenderCommand, ATransparentBackgroundIsTheCoverage) {
+  const auto png = outputPath("transparent.png");
+  const auto run = testing::runAmrstream(
+      "render builtin:cloud --count 16 --steps 200 --width 96 --height 96 --frames 8 "
+      "--ao-samples 0 --no-colour-bar --no-triad --outline none --background transparent "
+      "--tube-radius-view 0.02 --out " +
+      png.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const render::Image image = render::readPng(png);
+  std::size_t clear = 0, covered = 0, edges = 0;
+  for (std::uint32_t y = 0; y < 96; ++y)
+    for (std::uint32_t x = 0; x < 96; ++x) {
+      const std::uint8_t a = image.at(x, y).a;
+      clear += a == 0, covered += a == 255, edges += a > 0 && a < 255;
+    }
+  EXPECT_GT(clear, 96u * 96u / 4) << "no transparent background";
+  EXPECT_GT(covered, 50u) << "no opaque tube pixels";
+  EXPECT_GT(edges, 20u) << "no anti-aliased edges";
+}
+
 // Traces written by `trace` rendered with --traces: the same tubes as rendering them directly.
 TEST(RenderCommand, RendersTracesReadFromAVtpLikeTracingThem) {
   const auto vtp = outputPath("traced.vtp"), direct = outputPath("direct.png"),
@@ -107,7 +129,7 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
   EXPECT_NE(run.output.find("no field 'pressure'"), std::string::npos) << run.output;
   run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --background pink --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("--background: 'pink': give white, black, #rrggbb or R,G,B"),
+  EXPECT_NE(run.output.find("--background: 'pink': give white, black, transparent, #rrggbb"),
             std::string::npos)
       << run.output;
 }

@@ -140,16 +140,21 @@ void renderPixel(uvec2 pixel) {
   const vec3 o = orthographic ? params.eye + offset : params.eye;
 
   const TubeHit hit = closestTube(o, d, 1e30);
-  const vec3 surface = hit.segment != kNoSegment ? shadeTube(o, d, hit) : backgroundColour(d);
-  vec3 colour = surface;
+  const bool tube = hit.segment != kNoSegment;
+  const bool transparent = (params.flags & AMRSTREAM_RENDER_TRANSPARENT) != 0;
+  // Premultiplied colour and coverage; an opaque background covers every pixel.
+  vec4 colour = tube ? vec4(shadeTube(o, d, hit), 1.0)
+                     : (transparent ? vec4(0.0) : vec4(backgroundColour(d), 1.0));
   if ((params.flags & AMRSTREAM_RENDER_VOLUME) != 0) {
-    const vec4 volume = marchVolume(o, d, hit.segment != kNoSegment ? hit.t : 1e30);
-    colour = volume.rgb + (1.0 - volume.a) * surface;
+    const vec4 volume = marchVolume(o, d, tube ? hit.t : 1e30);
+    colour = volume + (1.0 - volume.a) * colour;
   }
 
-  const vec4 sum = params.frameIndex == 0 ? vec4(colour, 1.0) : accumulation[index] + vec4(colour, 1.0);
+  // The running sum of the frames since the reset: frameIndex + 1 of them.
+  const vec4 sum = params.frameIndex == 0 ? colour : accumulation[index] + colour;
   accumulation[index] = sum;
-  const vec3 mean = clamp(sum.rgb / sum.a, 0.0, 1.0);
-  const uvec3 bytes = uvec3(mean * 255.0 + 0.5);
-  pixels[index] = bytes.r | (bytes.g << 8) | (bytes.b << 16) | (255u << 24);
+  const float coverage = clamp(sum.a / float(params.frameIndex + 1u), 0.0, 1.0);
+  const vec3 mean = sum.a > 0.0 ? clamp(sum.rgb / sum.a, 0.0, 1.0) : vec3(0.0);
+  const uvec4 bytes = uvec4(vec4(mean, transparent ? coverage : 1.0) * 255.0 + 0.5);
+  pixels[index] = bytes.r | (bytes.g << 8) | (bytes.b << 16) | (bytes.a << 24);
 }

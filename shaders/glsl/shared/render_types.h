@@ -32,6 +32,7 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_LINEAR_VOLUME 8u  // the volume's scalar through the linear interpolant
 #define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u  // parallel rays from the plane through the eye
 #define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u  // the background colour as it is, no gradient
+#define AMRSTREAM_RENDER_TRANSPARENT 64u  // no background: the image's alpha is the coverage
 
 // A segment whose values are below this is an outline (of the domain or of bricks), drawn in
 // RenderParams::outlineColour rather than through the colour map.

@@ -65,7 +65,18 @@ void Image::set(std::uint32_t x, std::uint32_t y, Rgba8 c) {
 
 void Image::blend(std::uint32_t x, std::uint32_t y, Rgba8 c) {
   const Rgba8 d = at(x, y);
-  set(x, y, {mix(c.r, d.r, c.a), mix(c.g, d.g, c.a), mix(c.b, d.b, c.a), 255});
+  if (d.a == 255) {
+    set(x, y, {mix(c.r, d.r, c.a), mix(c.g, d.g, c.a), mix(c.b, d.b, c.a), 255});
+    return;
+  }
+  // Over a translucent pixel: Porter-Duff "over" in straight (not premultiplied) alpha.
+  const double a = c.a / 255.0, b = d.a / 255.0 * (1.0 - a), out = a + b;
+  if (out <= 0.0) return;
+  const auto channel = [&](std::uint8_t source, std::uint8_t destination) {
+    return static_cast<std::uint8_t>(std::lround((source * a + destination * b) / out));
+  };
+  set(x, y, {channel(c.r, d.r), channel(c.g, d.g), channel(c.b, d.b),
+             static_cast<std::uint8_t>(std::lround(out * 255.0))});
 }
 
 }  // namespace amrstream::render

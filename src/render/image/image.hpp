@@ -30,7 +30,8 @@ struct Image {  // row-major, top row first
   // Pixel access; coordinates outside the image throw std::out_of_range.
   Rgba8 at(std::uint32_t x, std::uint32_t y) const;
   void set(std::uint32_t x, std::uint32_t y, Rgba8 c);
-  // Source-over with c.a as coverage: the colour channels move towards c, alpha becomes 255.
+  // Source-over with c.a as coverage: the colour channels move towards c; an opaque pixel stays
+  // opaque, a translucent one gets the "over" operator's alpha.
   void blend(std::uint32_t x, std::uint32_t y, Rgba8 c);
 
  private:

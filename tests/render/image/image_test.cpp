@@ -38,7 +38,7 @@ TEST(ImageTest, AccessOutsideThrows) {
   EXPECT_THROW(Image().at(0, 0), std::out_of_range);
 }
 
-TEST(ImageTest, BlendIsSourceOverAndLeavesTheImageOpaque) {
+TEST(ImageTest, BlendIsSourceOverAndKeepsOpaqueImagesOpaque) {
   Image image(1, 1, {200, 100, 0, 255});
   image.blend(0, 0, {0, 0, 255, 0});  // fully transparent: no change
   EXPECT_EQ(image.at(0, 0), (Rgba8{200, 100, 0, 255}));
@@ -47,9 +47,14 @@ TEST(ImageTest, BlendIsSourceOverAndLeavesTheImageOpaque) {
   image.blend(0, 0, {7, 8, 9, 255});  // opaque: replaces
   EXPECT_EQ(image.at(0, 0), (Rgba8{7, 8, 9, 255}));
 
+  // Over a translucent pixel (a transparent render): alpha a + b (1 - a), colour weighted by
+  // each one's share: 128/255 white over 10/255 black gives alpha 0.5215 and 245 grey.
   Image translucent(1, 1, {0, 0, 0, 10});
   translucent.blend(0, 0, {255, 255, 255, 128});
-  EXPECT_EQ(translucent.at(0, 0), (Rgba8{128, 128, 128, 255}));
+  EXPECT_EQ(translucent.at(0, 0), (Rgba8{245, 245, 245, 133}));
+  Image clear(1, 1, {9, 9, 9, 0});
+  clear.blend(0, 0, {10, 20, 30, 77});  // over nothing: the source as it is
+  EXPECT_EQ(clear.at(0, 0), (Rgba8{10, 20, 30, 77}));
 }
 
 TEST(ImageTest, ToRgba8RoundsClampsAndMapsNanToZero) {
