@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "amrstream/backend.hpp"
@@ -90,6 +91,13 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
 // RenderOptions::frame) from their direction, up axis, field of view and projection. Throws
 // InputError for a bad one. The viewer calls it again to frame the traces as they are.
 void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume);
+
+// The box --axes follows, in physical coordinates: --view-box, else the domain.
+std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
+                                             const flow::VectorVolume& volume);
+// The input's length unit short enough for a label: "kpc", or "code units" of
+// "code units (1 = 3.1e+24 cm)"; empty when unknown.
+std::string shortLengthUnit(const bricks::DatasetInfo& info);
 
 // Moves scene.camera, keeping its direction and projection, to frame the scene's tubes as they
 // are (the domain when there are none) at this aspect: the viewer's "frame all".

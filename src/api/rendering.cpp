@@ -249,9 +249,6 @@ glm::vec3 outlineColourOn(glm::vec3 background) {
   return luminance > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
 }
 
-// "kpc" of "kpc", "code units" of "code units (1 = 3.1e+24 cm)": short enough for a label.
-std::string shortUnit(const std::string& unit) { return unit.substr(0, unit.find(" (")); }
-
 // The axes, triad and scale bar the options ask for, drawn over the rendered image in a grey
 // that stands out from the background.
 void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderScene& scene,
@@ -261,9 +258,7 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   const glm::vec3 grey = scene.settings.outlineColour * 1.15f;
   const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
   if (o.axes) {
-    const auto [lowerCells, upperCells] = axesBox(o, volume);
-    const glm::dvec3 lower = volume.transform.toPhysical(glm::dvec3(lowerCells));
-    const glm::dvec3 upper = volume.transform.toPhysical(glm::dvec3(upperCells));
+    const auto [lower, upper] = axesBounds(o, volume);
     render::drawAxes(image,
                      render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size),
                      ink);
@@ -272,11 +267,22 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   if (o.scaleBar)
     render::drawScaleBar(image,
                          render::layoutScaleBar(scene.camera, w, h, volume.transform,
-                                                shortUnit(info.lengthUnit), size),
+                                                shortLengthUnit(info), size),
                          ink);
 }
 
 }  // namespace
+
+std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
+                                             const flow::VectorVolume& volume) {
+  const auto [lower, upper] = axesBox(o, volume);
+  return {volume.transform.toPhysical(glm::dvec3(lower)),
+          volume.transform.toPhysical(glm::dvec3(upper))};
+}
+
+std::string shortLengthUnit(const bricks::DatasetInfo& info) {
+  return info.lengthUnit.substr(0, info.lengthUnit.find(" ("));
+}
 
 void setTubeRadius(render::RenderSettings& settings, float radius) {
   settings.tubeRadius = radius;

@@ -15,6 +15,7 @@
 #include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
+#include "view_overlays.hpp"
 #include "view_panel.hpp"
 
 namespace amrstream::cli {
@@ -76,6 +77,8 @@ void runView(const ViewOptions& o) {
     imgui.newFrame();
     const app::InputFrame input = imgui.uncaptured(window.takeInput());
     PanelRequests requests;
+    drawSceneOverlays(session.scene(), session.options().look, session.input().volume,
+                      session.input().info);
     if (showPanel)
       requests = drawViewPanel(session, stats);
     else

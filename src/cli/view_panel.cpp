@@ -136,6 +136,11 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
       session.reloadVolume();
     }
   }
+  ImGui::Checkbox("axes", &o.look.axes);
+  ImGui::SameLine();
+  ImGui::Checkbox("triad", &o.look.triad);
+  ImGui::SameLine();
+  ImGui::Checkbox("scale bar", &o.look.scaleBar);
   if (ImGui::Button("frame all (F)")) requests.frameAll = true;
   ImGui::SameLine();
   bool orthographic = session.camera().projection == render::Projection::Orthographic;

@@ -158,6 +158,14 @@ TEST(ViewCommand, TracesProgressivelyAndShowsTubesUnderXvfb) {
   EXPECT_GT(content.distinctColours, 100u) << "not one colour";
   EXPECT_GT(tubeLikePixels(image, 0.7), 200u) << "no tubes above the legend";
   EXPECT_GT(tubeLikePixels(image), tubeLikePixels(image, 0.7)) << "no legend or tubes below";
+  // The orientation triad, as `render` draws it: a red x arm in the bottom-left quarter.
+  std::size_t red = 0;
+  for (std::uint32_t y = 120; y < 240; ++y)
+    for (std::uint32_t x = 0; x < 160; ++x) {
+      const render::Rgba8 c = image.at(x, y);
+      red += c.r > 150 && c.g < 100 && c.b < 100;
+    }
+  EXPECT_GT(red, 5u) << "no triad";
 }
 
 }  // namespace
