@@ -271,6 +271,18 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
                          ink);
 }
 
+// The context volume's colour bar, above the tubes': its transfer function's colours over its
+// range (in log10 unless --linear-volume: then a log scale of the values).
+render::ColourBar volumeBar(const RenderOptions& o, const RenderScene& scene) {
+  const render::RenderSettings& s = scene.settings;
+  render::ColourScale scale{render::ScaleKind::Linear, s.volumeRange.min, s.volumeRange.max};
+  if (s.logVolume)
+    scale = {render::ScaleKind::Log, std::pow(10.0, double(s.volumeRange.min)),
+             std::pow(10.0, double(s.volumeRange.max))};
+  return {render::ColourMap::Viridis, scale, o.volume + " (volume)", "",
+          {shared::kVolumeLowColour, shared::kVolumeHighColour}, 1};
+}
+
 }  // namespace
 
 std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
@@ -431,9 +443,11 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   checkValidation(ctx);
   result.image = renderer.readImage();
   drawAnnotations(result.image, options, scene, volume, cells.info());
-  if (colourBar)
+  if (colourBar) {
     render::drawColourBar(result.image,
-                          {scene.colourMap, scene.colourScale, scene.colourLabel, ""});
+                          {scene.colourMap, scene.colourScale, scene.colourLabel, "", {}, 0});
+    if (scene.settings.volume) render::drawColourBar(result.image, volumeBar(options, scene));
+  }
   result.renderSeconds = clock.seconds();
   result.kernelSecondsPerFrame = kernelSeconds / frames;
   return result;

@@ -88,7 +88,7 @@ vec2 domainSpan(vec3 o, vec3 d) {
   return vec2(tEnter, tExit);
 }
 
-vec3 transferColour(float x) { return mix(vec3(0.20, 0.30, 0.55), vec3(1.0, 0.88, 0.70), x); }
+vec3 transferColour(float x) { return mix(kVolumeLowColour, kVolumeHighColour, x); }
 
 // Emission-absorption along the ray up to tEnd: premultiplied colour and opacity. The step is
 // the finest cell width of the region at each sample, so fine regions are sampled finely.

@@ -34,6 +34,11 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u  // the background colour as it is, no gradient
 #define AMRSTREAM_RENDER_TRANSPARENT 64u  // no background: the image's alpha is the coverage
 
+// The context volume's transfer function runs from this colour at the low end of its range to
+// this one at the high end (render_frame.glsl's transferColour; the volume's colour bar).
+const vec3 kVolumeLowColour = vec3(0.20, 0.30, 0.55);
+const vec3 kVolumeHighColour = vec3(1.0, 0.88, 0.70);
+
 // A segment whose values are below this is an outline (of the domain or of bricks), drawn in
 // RenderParams::outlineColour rather than through the colour map.
 #define AMRSTREAM_OUTLINE_VALUE (-1.0e38)

@@ -1,6 +1,10 @@
 #include "render/image/colour_bar.hpp"
 
+#include <glm/common.hpp>
+
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "render/image/colour_bar_layout.hpp"
 #include "render/image/font.hpp"
@@ -35,8 +39,23 @@ void drawText(Image& image, const PlacedText& text, int pixelSize) {
     defaultFont().drawText(image, text.x, text.baseline, text.text, kTextColour, pixelSize);
 }
 
-void drawGradient(Image& image, const PixelRect& rect, ColourMap map) {
-  const std::vector<glm::vec3> table = colourMapTable(map, static_cast<std::size_t>(rect.width));
+// Column i at t = i / (width - 1), as colourMapTable samples a map.
+std::vector<glm::vec3> gradientColours(const ColourBar& bar, int width) {
+  const auto columns = static_cast<std::size_t>(width);
+  if (bar.colours.empty()) return colourMapTable(bar.map, columns);
+  std::vector<glm::vec3> table(columns);
+  const std::size_t last = bar.colours.size() - 1;
+  for (std::size_t i = 0; i < columns; ++i) {
+    const double x = columns > 1 ? double(i) / double(columns - 1) * double(last) : 0.0;
+    const std::size_t k = std::min(static_cast<std::size_t>(x), last > 0 ? last - 1 : 0);
+    const float f = last > 0 ? static_cast<float>(x - double(k)) : 0.0f;
+    table[i] = glm::mix(bar.colours[k], bar.colours[std::min(k + 1, last)], f);
+  }
+  return table;
+}
+
+void drawGradient(Image& image, const PixelRect& rect, const ColourBar& bar) {
+  const std::vector<glm::vec3> table = gradientColours(bar, rect.width);
   for (int i = 0; i < rect.width; ++i) {
     const Rgba8 colour = toRgba8(table[static_cast<std::size_t>(i)]);
     for (int y = rect.y; y < rect.y + rect.height; ++y) {
@@ -63,7 +82,7 @@ void drawColourBar(Image& image, const ColourBar& bar) {
   if (!layout) return;
   blendRect(image, layout->panel, kPanelColour);
   drawFrameAround(image, layout->gradient, kFrameColour);
-  drawGradient(image, layout->gradient, bar.map);
+  drawGradient(image, layout->gradient, bar);
   drawText(image, layout->title, layout->titlePixelSize);
   for (const PlacedTick& tick : layout->ticks) {
     blendRect(image, tick.mark, kTextColour);

@@ -3,7 +3,9 @@
 // translucent dark panel near the bottom-right corner, the title above it, and tick marks with
 // their values below.
 
+#include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 #include "render/image/colour_map.hpp"
 #include "render/image/colour_scale.hpp"
@@ -16,6 +18,11 @@ struct ColourBar {
   ColourScale scale;  // the values along the gradient, which its ticks show
   std::string label;  // the field's name; may be empty
   std::string unit;   // may be empty
+  // The gradient's colours from its low end to its high end, evenly spaced and interpolated
+  // linearly (a transfer function's, say); empty: the map's.
+  std::vector<glm::vec3> colours;
+  // Bars stack up from the bottom-right corner: 0 is the lowest, 1 the one above it, ...
+  int stack = 0;
 };
 
 // "label [unit]", or whichever of the two is not empty; shortened with an ellipsis when it does

@@ -132,14 +132,15 @@ std::optional<ColourBarLayout> layoutAtSize(int width, int height, const ColourB
   const int titleBlock = hasTitle ? titleLine.height() + space.titleGap : 0;
   const int panelHeight = space.padding + titleBlock + space.gradientHeight + space.tickLength +
                           space.labelGap + labelLine.height() + space.padding;
-  if (panelHeight + 2 * space.margin > height) return std::nullopt;
+  const int stack = std::max(0, bar.stack);
+  if ((stack + 1) * (panelHeight + space.margin) + space.margin > height) return std::nullopt;
 
   ColourBarLayout layout;
   layout.labelPixelSize = labelSize;
   layout.titlePixelSize = titleSize;
   const int panelWidth = gradientWidth + 2 * (overhang + space.padding);
-  layout.panel = {width - space.margin - panelWidth, height - space.margin - panelHeight,
-                  panelWidth, panelHeight};
+  layout.panel = {width - space.margin - panelWidth,
+                  height - (stack + 1) * (space.margin + panelHeight), panelWidth, panelHeight};
   PixelRect& g = layout.gradient;
   g = {layout.panel.x + space.padding + overhang, layout.panel.y + space.padding + titleBlock,
        gradientWidth, space.gradientHeight};

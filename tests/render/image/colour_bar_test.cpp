@@ -157,6 +157,29 @@ TEST(ColourBarTest, GradientCentreRowReproducesTheColourMapTable) {
   }
 }
 
+// A bar with its own colours (the volume's transfer function), stacked above the first: its
+// gradient runs linearly from the first colour to the last, and the panels do not overlap.
+TEST(ColourBarTest, ABarOfGivenColoursStacksAboveTheFirst) {
+  const glm::vec3 low(0.2f, 0.3f, 0.55f), high(1.0f, 0.88f, 0.7f);
+  const ColourBar first{ColourMap::Viridis, {ScaleKind::Linear, 0.0, 1.0}, "speed", ""};
+  ColourBar volume{ColourMap::Viridis, {ScaleKind::Log, 1.0, 1e4}, "dens (volume)", "",
+                   {low, high}, 1};
+  Image image(800, 600, kBackground);
+  drawColourBar(image, volume);
+  const auto below = layoutColourBar(800, 600, first), above = layoutColourBar(800, 600, volume);
+  ASSERT_TRUE(below && above);
+  EXPECT_LE(above->panel.y + above->panel.height, below->panel.y) << "the panels overlap";
+  const PixelRect& g = above->gradient;
+  const auto row = static_cast<std::uint32_t>(g.y + g.height / 2);
+  for (int i = 0; i < g.width; ++i) {
+    const float t = float(i) / float(g.width - 1);
+    ASSERT_EQ(image.at(static_cast<std::uint32_t>(g.x + i), row), toRgba8(low + t * (high - low)))
+        << "column " << i;
+  }
+  volume.stack = 40;  // no room that high: no bar
+  EXPECT_FALSE(layoutColourBar(800, 600, volume).has_value());
+}
+
 TEST(ColourBarTest, LinearTicksSitAtTheirValuesColumns) {
   const ColourBar bar{ColourMap::Viridis, {ScaleKind::Linear, -2.5, 40.0}, "speed", "m/s"};
   expectTicksAt(800, 600, bar, {0, 10, 20, 30, 40}, identity, {"0", "10", "20", "30", "40"});
