@@ -129,6 +129,62 @@ TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
   }
 }
 
+// Thin tubes in the far corner of a deep domain (a 12-level nest, 16,384 finest cells
+// across), seen in an orthographic view framed on them: parallel rays must start near the tubes,
+// or float rounding in the capsule test loses them (it did when they started outside the domain).
+TEST_P(TubeRendererTest, ThinTubesInADeepDomainShowInOrthographicViews) {
+  field_ = synth::generate("nest", {.levels = 12});
+  const flow::VectorVolume volume =
+      flow::buildVectorVolume(*field_, flow::chooseVectorChannels(*field_, ""));
+  // The corner away from the eye (azimuth 30, elevation 20 looks from +x, +y, +z).
+  const glm::vec3 corner = glm::vec3(volume.domain.lower) + 20.0f;
+  ASSERT_GT(volume.domain.upper.x - volume.domain.lower.x, 8000) << "not a deep domain";
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<shared::TubeSegment> segments;
+  for (int i = 0; i < 60; ++i) {
+    const glm::vec3 a = corner + 20.0f * glm::vec3(unit(random), unit(random), unit(random));
+    segments.push_back({a, 0.0f, a + 4.0f * (glm::vec3(unit(random), unit(random), unit(random)) -
+                                             0.5f), 1.0f});
+  }
+  const float radius = 0.15f;
+  TubeRenderer renderer(ctx(), GetParam(), volume, {});
+  renderer.setTubes(segments, radius);
+  const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
+  renderer.setColourMap(red);
+  const std::uint32_t w = 96, h = 72;
+  renderer.resize(w, h);
+  RenderSettings settings;
+  settings.tubeRadius = radius;
+  settings.ambientOcclusion = false;
+  const OrbitCamera camera = frameBox(looking(30.0f, 20.0f, Projection::Orthographic), corner,
+                                      corner + 20.0f, float(w) / h);
+  renderer.renderFrame(camera, settings);
+  const Image image = renderer.readImage();
+
+  const CameraFrame view = cameraFrame(camera);
+  const double halfHeight =
+      std::tan(glm::radians(double(camera.fovYDegrees)) / 2) * camera.distance;
+  const glm::dvec3 behind = glm::dvec3(camera.target) - 100.0 * glm::dvec3(view.forward);
+  std::size_t tubePixels = 0, mismatches = 0;
+  for (std::uint32_t y = 0; y < h; ++y)
+    for (std::uint32_t x = 0; x < w; ++x) {
+      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
+      const glm::dvec3 o = behind + ndc.x * double(w) / h * halfHeight * glm::dvec3(view.right) -
+                           ndc.y * halfHeight * glm::dvec3(view.up);
+      double distance = 1e300;
+      for (const auto& s : segments)
+        distance = std::min(distance, raySegmentDistance(o, glm::dvec3(view.forward), s.a, s.b));
+      if (std::abs(distance - radius) < 0.05 * radius) continue;
+      const Rgba8 c = image.at(x, y);
+      const bool hit = distance < radius, shown = c.r > 50 && c.r > c.b + 30;
+      tubePixels += hit;
+      mismatches += hit != shown;
+    }
+  EXPECT_GT(tubePixels, 30u);
+  EXPECT_EQ(mismatches, 0u) << "of " << tubePixels << " tube pixels";
+}
+
 // Traces of the rotation field (circles about the z axis) as tubes with ambient occlusion, in
 // front of the speed as a volume: the scene the reference image shows. Set
 // AMRSTREAM_UPDATE_RENDER_REFERENCE=1 to rewrite the reference (then look at it before committing).
