@@ -243,10 +243,11 @@ glm::vec3 parseColour(const std::string& text, const char* option) {
                                        text));
 }
 
+float luminance(glm::vec3 colour) { return glm::dot(colour, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+
 // Outlines stand out from the background: dark on light, light on dark.
 glm::vec3 outlineColourOn(glm::vec3 background) {
-  const float luminance = glm::dot(background, glm::vec3(0.2126f, 0.7152f, 0.0722f));
-  return luminance > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
+  return luminance(background) > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
 }
 
 // The axes, triad and scale bar the options ask for, drawn over the rendered image in a grey
@@ -444,9 +445,14 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   result.image = renderer.readImage();
   drawAnnotations(result.image, options, scene, volume, cells.info());
   if (colourBar) {
-    render::drawColourBar(result.image,
-                          {scene.colourMap, scene.colourScale, scene.colourLabel, "", {}, 0});
-    if (scene.settings.volume) render::drawColourBar(result.image, volumeBar(options, scene));
+    const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
+    render::drawColourBar(result.image, {scene.colourMap, scene.colourScale, scene.colourLabel,
+                                         "", {}, 0, light});
+    if (scene.settings.volume) {
+      render::ColourBar volume = volumeBar(options, scene);
+      volume.light = light;
+      render::drawColourBar(result.image, volume);
+    }
   }
   result.renderSeconds = clock.seconds();
   result.kernelSecondsPerFrame = kernelSeconds / frames;

@@ -12,9 +12,11 @@
 namespace amrstream::render {
 namespace {
 
-constexpr Rgba8 kPanelColour{0, 0, 0, 160};
-constexpr Rgba8 kFrameColour{170, 170, 170, 255};
-constexpr Rgba8 kTextColour{240, 240, 240, 255};  // also the tick marks
+struct Palette {
+  Rgba8 panel, frame, text;  // text: also the tick marks
+};
+constexpr Palette kDark{{0, 0, 0, 160}, {170, 170, 170, 255}, {240, 240, 240, 255}};
+constexpr Palette kLight{{255, 255, 255, 200}, {90, 90, 90, 255}, {25, 25, 25, 255}};
 
 void blendRect(Image& image, const PixelRect& rect, Rgba8 colour) {
   for (int y = rect.y; y < rect.y + rect.height; ++y) {
@@ -34,9 +36,9 @@ void drawFrameAround(Image& image, const PixelRect& rect, Rgba8 colour) {
   blendRect(image, {right, rect.y, 1, rect.height}, colour);
 }
 
-void drawText(Image& image, const PlacedText& text, int pixelSize) {
+void drawText(Image& image, const PlacedText& text, int pixelSize, Rgba8 colour) {
   if (!text.text.empty())
-    defaultFont().drawText(image, text.x, text.baseline, text.text, kTextColour, pixelSize);
+    defaultFont().drawText(image, text.x, text.baseline, text.text, colour, pixelSize);
 }
 
 // Column i at t = i / (width - 1), as colourMapTable samples a map.
@@ -80,13 +82,14 @@ std::string formatBarValue(double v) {
 void drawColourBar(Image& image, const ColourBar& bar) {
   const std::optional<ColourBarLayout> layout = layoutColourBar(image.width, image.height, bar);
   if (!layout) return;
-  blendRect(image, layout->panel, kPanelColour);
-  drawFrameAround(image, layout->gradient, kFrameColour);
+  const Palette& palette = bar.light ? kLight : kDark;
+  blendRect(image, layout->panel, palette.panel);
+  drawFrameAround(image, layout->gradient, palette.frame);
   drawGradient(image, layout->gradient, bar);
-  drawText(image, layout->title, layout->titlePixelSize);
+  drawText(image, layout->title, layout->titlePixelSize, palette.text);
   for (const PlacedTick& tick : layout->ticks) {
-    blendRect(image, tick.mark, kTextColour);
-    drawText(image, tick.label, layout->labelPixelSize);
+    blendRect(image, tick.mark, palette.text);
+    drawText(image, tick.label, layout->labelPixelSize, palette.text);
   }
 }
 

@@ -23,6 +23,8 @@ struct ColourBar {
   std::vector<glm::vec3> colours;
   // Bars stack up from the bottom-right corner: 0 is the lowest, 1 the one above it, ...
   int stack = 0;
+  // A light translucent panel with dark text, for light backgrounds; else dark with light text.
+  bool light = false;
 };
 
 // "label [unit]", or whichever of the two is not empty; shortened with an ellipsis when it does

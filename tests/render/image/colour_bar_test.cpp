@@ -180,6 +180,35 @@ TEST(ColourBarTest, ABarOfGivenColoursStacksAboveTheFirst) {
   EXPECT_FALSE(layoutColourBar(800, 600, volume).has_value());
 }
 
+// On a white figure the light bar keeps its panel light and its text dark; the dark bar the
+// reverse.
+TEST(ColourBarTest, ALightBarForLightBackgrounds) {
+  for (const bool light : {true, false}) {
+    ColourBar bar{ColourMap::Viridis, {ScaleKind::Linear, 0.0, 1.0}, "speed", "m/s"};
+    bar.light = light;
+    Image image(800, 600, {255, 255, 255, 255});
+    drawColourBar(image, bar);
+    const auto layout = layoutColourBar(800, 600, bar);
+    ASSERT_TRUE(layout);
+    const PixelRect& box = layout->title.box;
+    int darkest = 255, lightest = 0;
+    for (int y = box.y; y < box.y + box.height; ++y)
+      for (int x = box.x; x < box.x + box.width; ++x) {
+        const Rgba8 c = image.at(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+        darkest = std::min<int>(darkest, c.g), lightest = std::max<int>(lightest, c.g);
+      }
+    const Rgba8 panel = image.at(static_cast<std::uint32_t>(layout->panel.x + 1),
+                                 static_cast<std::uint32_t>(layout->panel.y + 1));
+    if (light) {
+      EXPECT_GT(panel.g, 200) << "the light panel is dark";
+      EXPECT_LT(darkest, 80) << "no dark text";
+    } else {
+      EXPECT_LT(panel.g, 140) << "the dark panel is light";
+      EXPECT_GT(lightest, 200) << "no light text";
+    }
+  }
+}
+
 TEST(ColourBarTest, LinearTicksSitAtTheirValuesColumns) {
   const ColourBar bar{ColourMap::Viridis, {ScaleKind::Linear, -2.5, 40.0}, "speed", "m/s"};
   expectTicksAt(800, 600, bar, {0, 10, 20, 30, 40}, identity, {"0", "10", "20", "30", "40"});
