@@ -4,16 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <span>
 #include <utility>
 
-#include "render/image/colour_bar.hpp"
 #include "render/image/font.hpp"
-#include "render/annotations/axes.hpp"
-#include "render/annotations/overlay_text.hpp"
-#include "render/annotations/scale_bar.hpp"
-#include "render/annotations/triad.hpp"
+#include "scene_overlays.hpp"
 #include "render/volume_range.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -114,97 +109,6 @@ render::ColourScale colourScaleFor(const RenderOptions& o, std::span<const float
   return scale;
 }
 
-// What the camera frames, in cell units: the corners of --view-box, else the tubes' ends (with
-// their radius) or the domain's corners.
-struct Framed {
-  std::vector<glm::vec3> points;
-  float radius = 0.0f;
-};
-
-std::vector<glm::vec3> boxCorners(glm::vec3 lower, glm::vec3 upper) {
-  std::vector<glm::vec3> corners;
-  for (int corner = 0; corner < 8; ++corner)
-    corners.push_back({(corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
-                       (corner & 4) ? upper.z : lower.z});
-  return corners;
-}
-
-// --view-box in cell units, checked; nullopt without one.
-std::optional<std::pair<glm::vec3, glm::vec3>> viewBoxOf(const RenderOptions& o,
-                                                         const flow::VectorVolume& volume) {
-  if (o.viewBox.empty()) return std::nullopt;
-  if (o.viewBox.size() != 6) throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
-  const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
-  const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
-  if (!glm::all(glm::lessThan(a, b)))
-    throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
-  return std::pair{glm::vec3(volume.transform.toCellUnits(a)),
-                   glm::vec3(volume.transform.toCellUnits(b))};
-}
-
-// The box --axes follows, in cell units: --view-box, else the domain.
-std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const flow::VectorVolume& volume) {
-  return viewBoxOf(o, volume).value_or(
-      std::pair{glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper)});
-}
-
-Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
-                    std::span<const shared::TubeSegment> segments, float radius) {
-  if (const auto box = viewBoxOf(o, volume)) return {boxCorners(box->first, box->second)};
-  if (o.frame != "traces" && o.frame != "domain")
-    throw InputError("--frame", fmt::format("'{}': choose traces or domain", o.frame));
-  if (o.frame == "traces" && !segments.empty()) {
-    Framed framed{{}, radius};
-    framed.points.reserve(2 * segments.size() + 8);
-    for (const shared::TubeSegment& s : segments) {
-      framed.points.push_back(s.a);
-      framed.points.push_back(s.b);
-    }
-    if (o.axes) {  // the axes (on the domain) and their labels stay in view too
-      const auto [lower, upper] = axesBox(o, volume);
-      const std::vector<glm::vec3> corners = boxCorners(lower, upper);
-      framed.points.insert(framed.points.end(), corners.begin(), corners.end());
-    }
-    return framed;
-  }
-  return {boxCorners(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper))};
-}
-
-// The camera the options ask for, before framing.
-render::OrbitCamera cameraOf(const RenderOptions& o) {
-  render::OrbitCamera camera;
-  const std::optional<render::Axis> up = render::parseAxis(o.up);
-  if (!up) throw InputError("--up", fmt::format("'{}': choose +x, -x, +y, -y, +z or -z", o.up));
-  camera.up = *up;
-  if (!(o.fovDegrees >= 1.0f && o.fovDegrees <= 150.0f))
-    throw InputError("--fov", fmt::format("{} degrees is outside 1 to 150", o.fovDegrees));
-  camera.fovYDegrees = o.fovDegrees;
-  if (o.projection == "orthographic")
-    camera.projection = render::Projection::Orthographic;
-  else if (o.projection != "perspective")
-    throw InputError("--projection",
-                     fmt::format("'{}': choose perspective or orthographic", o.projection));
-  if (!o.view.empty()) {
-    if (!o.camera.empty())
-      throw InputError("--view", "give either --view or --camera's azimuth and elevation");
-    const std::optional<render::NamedView> view = render::namedView(o.view, camera.up);
-    if (!view)
-      throw InputError("--view", fmt::format("no view '{}'; choose one of: {}", o.view,
-                                             render::namedViewNames()));
-    camera.azimuthDegrees = view->azimuthDegrees;
-    camera.elevationDegrees = view->elevationDegrees;
-  } else if (o.camera.size() >= 2) {
-    camera.azimuthDegrees = o.camera[0];
-    camera.elevationDegrees = std::clamp(o.camera[1], -90.0f, 90.0f);
-  }
-  return camera;
-}
-
-// The traces' tubes: the scene's segments before the outline's.
-std::span<const shared::TubeSegment> traceSegments(const RenderScene& scene) {
-  return std::span(scene.segments).first(scene.segments.size() - scene.outline.size());
-}
-
 std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
                                            const flow::VectorVolume& volume) {
   if (o.outline == "none") return {};
@@ -223,79 +127,7 @@ std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
   return edges;
 }
 
-// A colour as --background takes it: a name, #rrggbb, or R,G,B in [0, 1].
-glm::vec3 parseColour(const std::string& text, const char* option) {
-  if (text == "white") return glm::vec3(1.0f);
-  if (text == "black") return glm::vec3(0.0f);
-  unsigned r = 0, g = 0, b = 0;
-  char end = 0;
-  if (text.size() == 7 && std::sscanf(text.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &end) == 3)
-    return glm::vec3(r, g, b) / 255.0f;
-  float x = 0, y = 0, z = 0;
-  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &x, &y, &z, &end) == 3) {
-    const glm::vec3 c(x, y, z);
-    if (glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) &&
-        glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))))
-      return c;
-  }
-  throw InputError(option, fmt::format("'{}': give white, black, transparent, #rrggbb or R,G,B "
-                                       "from 0 to 1",
-                                       text));
-}
-
-float luminance(glm::vec3 colour) { return glm::dot(colour, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
-
-// Outlines stand out from the background: dark on light, light on dark.
-glm::vec3 outlineColourOn(glm::vec3 background) {
-  return luminance(background) > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
-}
-
-// The axes, triad and scale bar the options ask for, drawn over the rendered image in a grey
-// that stands out from the background.
-void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderScene& scene,
-                     const flow::VectorVolume& volume, const bricks::DatasetInfo& info) {
-  const std::uint32_t w = image.width, h = image.height;
-  const int size = render::overlayLabelPixelSize(w, h);
-  const glm::vec3 grey = scene.settings.outlineColour * 1.15f;
-  const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
-  if (o.axes) {
-    const auto [lower, upper] = axesBounds(o, volume);
-    render::drawAxes(image,
-                     render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size),
-                     ink);
-  }
-  if (o.triad) render::drawTriad(image, render::layoutTriad(scene.camera, w, h, size));
-  if (o.scaleBar)
-    render::drawScaleBar(image,
-                         render::layoutScaleBar(scene.camera, w, h, volume.transform,
-                                                shortLengthUnit(info), size),
-                         ink);
-}
-
-// The context volume's colour bar, above the tubes': its transfer function's colours over its
-// range (in log10 unless --linear-volume: then a log scale of the values).
-render::ColourBar volumeBar(const RenderOptions& o, const RenderScene& scene) {
-  const render::RenderSettings& s = scene.settings;
-  render::ColourScale scale{render::ScaleKind::Linear, s.volumeRange.min, s.volumeRange.max};
-  if (s.logVolume)
-    scale = {render::ScaleKind::Log, std::pow(10.0, double(s.volumeRange.min)),
-             std::pow(10.0, double(s.volumeRange.max))};
-  return {render::ColourMap::Viridis, scale, o.volume + " (volume)", "",
-          {shared::kVolumeLowColour, shared::kVolumeHighColour}, 1};
-}
-
 }  // namespace
-
-std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
-                                             const flow::VectorVolume& volume) {
-  const auto [lower, upper] = axesBox(o, volume);
-  return {volume.transform.toPhysical(glm::dvec3(lower)),
-          volume.transform.toPhysical(glm::dvec3(upper))};
-}
-
-std::string shortLengthUnit(const bricks::DatasetInfo& info) {
-  return info.lengthUnit.substr(0, info.lengthUnit.find(" ("));
-}
 
 void setTubeRadius(render::RenderSettings& settings, float radius) {
   settings.tubeRadius = radius;
@@ -315,31 +147,6 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cell
   scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
   scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
                                 static_cast<float>(scale.coordinate(scale.max))};
-}
-
-void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume) {
-  // Axes need room outside the framed box for their labels.
-  const float zoom = o.zoom * (o.camera.size() == 3 ? o.camera[2] : 1.0f) * (o.axes ? 0.8f : 1.0f);
-  if (!(zoom > 0.0f) || !std::isfinite(zoom))
-    throw InputError(o.camera.size() == 3 ? "--camera" : "--zoom",
-                     "the zoom factor must be positive and finite");
-  const Framed framed = framedPoints(o, volume, traceSegments(scene), scene.settings.tubeRadius);
-  std::optional<glm::vec3> target;
-  if (!o.lookAt.empty()) {
-    if (o.lookAt.size() != 3) throw InputError("--look-at", "expected 3 numbers x,y,z");
-    target = glm::vec3(
-        volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
-  }
-  scene.camera = render::framePoints(cameraOf(o), framed.points, framed.radius,
-                                     float(o.width) / float(o.height), zoom, target);
-}
-
-void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {
-  RenderOptions tubes;
-  tubes.frame = "traces";
-  const Framed framed =
-      framedPoints(tubes, volume, traceSegments(scene), scene.settings.tubeRadius);
-  scene.camera = render::framePoints(scene.camera, framed.points, framed.radius, aspect);
 }
 
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
@@ -443,17 +250,7 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   }
   checkValidation(ctx);
   result.image = renderer.readImage();
-  drawAnnotations(result.image, options, scene, volume, cells.info());
-  if (colourBar) {
-    const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
-    render::drawColourBar(result.image, {scene.colourMap, scene.colourScale, scene.colourLabel,
-                                         "", {}, 0, light});
-    if (scene.settings.volume) {
-      render::ColourBar volume = volumeBar(options, scene);
-      volume.light = light;
-      render::drawColourBar(result.image, volume);
-    }
-  }
+  drawOverlays(result.image, options, scene, volume, cells.info(), colourBar);
   result.renderSeconds = clock.seconds();
   result.kernelSecondsPerFrame = kernelSeconds / frames;
   return result;

@@ -1,0 +1,26 @@
+#pragma once
+// What a rendered image shows besides the tubes: the colour bars, the axes, the orientation triad
+// and the scale bar, and the colours of the background and outline they are drawn against.
+
+#include <glm/vec3.hpp>
+#include <string>
+
+#include "amrstream/rendering.hpp"
+#include "bricks/dataset_info.hpp"
+
+namespace amrstream {
+
+// A colour as --background takes it: white, black, #rrggbb or R,G,B in [0, 1]. Throws
+// InputError naming `option` for anything else.
+glm::vec3 parseColour(const std::string& text, const char* option);
+
+// Outlines (and overlay lines) stand out from the background: dark on light, light on dark.
+glm::vec3 outlineColourOn(glm::vec3 background);
+
+// Draws the axes, triad and scale bar `o` asks for and, with `colourBars`, the tubes' colour bar
+// and the context volume's above it; light bars on a light background.
+void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScene& scene,
+                  const flow::VectorVolume& volume, const bricks::DatasetInfo& info,
+                  bool colourBars);
+
+}  // namespace amrstream
