@@ -15,6 +15,7 @@
 #include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
+#include "view_benchmark.hpp"
 #include "view_overlays.hpp"
 #include "view_panel.hpp"
 
@@ -155,9 +156,15 @@ void addViewCommand(CLI::App& app) {
       ->check(numberIn(-360.0, 360.0));
   command->add_option("--screenshot", options->screenshot,
                       "with --frames: save the last frame (with the controls) to this PNG");
+  command->add_flag("--benchmark", options->benchmark,
+                    "no window: render --frames frames offscreen as the traces grow and print "
+                    "their times");
   command->callback([options] {
     options->job.backend.validation = validationRequested();
-    runView(*options);
+    if (options->benchmark)
+      runViewBenchmark(*options);
+    else
+      runView(*options);
   });
 }
 

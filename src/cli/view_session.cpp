@@ -4,6 +4,7 @@
 
 #include "flow/line_plan.hpp"
 #include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 
 namespace amrstream::cli {
@@ -64,16 +65,23 @@ void ViewSession::frameAll() {
 }
 
 std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
+  times_ = {};
   std::size_t taken = 0;
+  Stopwatch clock;
   if (!paused && !traces_->finished()) {
     taken = traces_->advance(options_.stepsPerFrame);
+    times_.traceSeconds = clock.seconds();
+    clock.restart();
     rebuildTubes();
+    times_.tubesSeconds = clock.seconds();
   }
   if (width != renderer_->width() || height != renderer_->height()) {
     vkQueueWaitIdle(ctx_->queue());
     renderer_->resize(width, height);
   }
+  clock.restart();
   renderer_->renderFrame(scene_.camera, scene_.settings);
+  times_.renderSeconds = clock.seconds();
   return taken;
 }
 

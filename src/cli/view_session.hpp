@@ -16,11 +16,19 @@ namespace amrstream::cli {
 
 struct ViewOptions {
   TraceJobOptions job;
+  bool benchmark = false;  // no window: run --frames frames offscreen and print their times
   RenderOptions look;
   std::uint32_t stepsPerFrame = 10;
   std::uint32_t frames = 0;  // stop after this many frames (0: until the window closes)
   float orbitPerFrame = 0.0f;  // degrees of azimuth per frame, for scripted runs
   std::string screenshot;      // with --frames: save the last frame here
+};
+
+// Where one frame's time went (ViewSession::step), wall clock on the host.
+struct ViewFrameTimes {
+  double traceSeconds = 0;   // advancing the traces on the GPU and collecting their new points
+  double tubesSeconds = 0;   // tube segments, their upload and the tubes' structure
+  double renderSeconds = 0;  // rendering the frame, to its completion
 };
 
 class ViewSession {
@@ -31,6 +39,7 @@ class ViewSession {
   // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; then renders one
   // frame at this size. Returns the particle-steps taken.
   std::size_t step(std::uint32_t width, std::uint32_t height);
+  const ViewFrameTimes& lastFrameTimes() const { return times_; }
 
   // Seeds again with the current seeding options and restarts the traces.
   void restartTraces();
@@ -62,6 +71,7 @@ class ViewSession {
   std::optional<flow::ProgressiveTraces> traces_;
   RenderScene scene_;
   std::unique_ptr<render::TubeRenderer> renderer_;
+  ViewFrameTimes times_;
 };
 
 }  // namespace amrstream::cli

@@ -136,6 +136,24 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
 
 // The viewer under Xvfb: progressive tracing until every trace ends, a scripted orbit, and a
 // screenshot of the last frame.
+// `view --benchmark` needs no window: it renders the frames offscreen and prints their times, one
+// line per stage; it refuses a run without frames and a screenshot it could not take.
+TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {
+  auto run = testing::runAmrstream(
+      "view builtin:cloud --benchmark --count 16 --steps 40 --steps-per-frame 10 --frames 6 "
+      "--width 64 --height 48",
+      "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("frames     6 in "), std::string::npos) << run.output;
+  // 40 steps at 10 a frame: the traces grow for 4 frames.
+  EXPECT_NE(run.output.find("growing    4 frames while traces ran"), std::string::npos)
+      << run.output;
+  run = testing::runAmrstream("view builtin:cloud --benchmark --count 4");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--frames: --benchmark needs a number of frames"), std::string::npos)
+      << run.output;
+}
+
 TEST(ViewCommand, TracesProgressivelyAndShowsTubesUnderXvfb) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
     FAIL() << "xvfb-run is missing: apt-get install xvfb xauth (scripts/install_deps.sh does)";

@@ -1,0 +1,77 @@
+#include "view_benchmark.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "util/input_error.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+namespace {
+
+double percentile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto at = static_cast<std::size_t>(fraction * double(values.size() - 1) + 0.5);
+  return values[std::min(at, values.size() - 1)];
+}
+
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / double(values.size());
+}
+
+}  // namespace
+
+void runViewBenchmark(const ViewOptions& o) {
+  if (o.frames == 0) throw InputError("--frames", "--benchmark needs a number of frames");
+  if (!o.screenshot.empty())
+    throw InputError("--screenshot", "--benchmark has no window to take a screenshot of");
+  if (o.job.backend.backend == "cpu")
+    throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
+                                  "pipeline or compute");
+  jobFiles(o.job);
+  PreparedInput input = prepareInput(o.job);
+  const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, printLine);
+  if (choice.backend == gpu::Backend::Cpu)
+    throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
+  const vk::Context ctx = createContext(o.job.backend, choice);
+  ViewSession session(o, ctx, choice.backend, std::move(input));
+  fmt::print("viewer     benchmark, no window: backend {} on {}, {} x {}, {} frames\n",
+             gpu::backendName(choice.backend), ctx.deviceName(), o.look.width, o.look.height,
+             o.frames);
+
+  std::vector<double> frames, growing, trace, tubes, render;
+  std::size_t steps = 0;
+  for (std::uint32_t f = 0; f < o.frames; ++f) {
+    const bool grew = !session.traces().finished();
+    Stopwatch clock;
+    steps += session.step(o.look.width, o.look.height);
+    frames.push_back(clock.seconds());
+    const ViewFrameTimes& t = session.lastFrameTimes();
+    if (grew) {
+      growing.push_back(frames.back());
+      trace.push_back(t.traceSeconds);
+      tubes.push_back(t.tubesSeconds);
+    }
+    render.push_back(t.renderSeconds);
+  }
+  const auto ms = [](double seconds) { return 1e3 * seconds; };
+  fmt::print("frames     {} in {:.2f} s: median {:.2f} ms, 95th percentile {:.2f} ms, slowest "
+             "{:.2f} ms\n",
+             frames.size(), mean(frames) * double(frames.size()), ms(percentile(frames, 0.5)),
+             ms(percentile(frames, 0.95)), ms(percentile(frames, 1.0)));
+  fmt::print("growing    {} frames while traces ran: mean {:.2f} ms (tracing {:.2f}, tubes {:.2f}, "
+             "rendering {:.2f}), last {:.2f} ms\n",
+             growing.size(), ms(mean(growing)), ms(mean(trace)), ms(mean(tubes)),
+             ms(mean(std::vector<double>(render.begin(), render.begin() + growing.size()))),
+             growing.empty() ? 0.0 : ms(growing.back()));
+  fmt::print("traces     {} particle-steps, {} tube segments at the end\n", steps,
+             session.scene().segments.size());
+  checkValidation(ctx);
+}
+
+}  // namespace amrstream::cli

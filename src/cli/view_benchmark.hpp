@@ -1,0 +1,12 @@
+#pragma once
+// `view --benchmark`: the viewer's frames without a window. The traces grow by --steps-per-frame
+// steps a frame, the tubes are rebuilt and a frame rendered offscreen at --width x --height, for
+// --frames frames; prints the frame times (and where they went) as the viewer would see them.
+
+#include "view_session.hpp"
+
+namespace amrstream::cli {
+
+void runViewBenchmark(const ViewOptions& options);
+
+}  // namespace amrstream::cli
