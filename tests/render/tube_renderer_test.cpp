@@ -63,69 +63,97 @@ class TubeRendererTest : public testing::GpuTest,
     return flow::buildVectorVolume(*field_, flow::chooseVectorChannels(*field_, ""));
   }
 
-  std::optional<bricks::AmrField> field_;
-};
+  static constexpr std::uint32_t kWidth = 96, kHeight = 72;
 
-TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
-  const flow::VectorVolume volume = smallVolume();
-  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<shared::TubeSegment> segments;
-  for (int i = 0; i < 120; ++i) {
-    const glm::vec3 a = lower + (upper - lower) * glm::vec3(unit(random), unit(random), unit(random));
-    const glm::vec3 step = 3.0f * (glm::vec3(unit(random), unit(random), unit(random)) - 0.5f);
-    segments.push_back({a, 0.0f, i % 10 == 0 ? a : a + step, 1.0f});  // some are spheres
+  // `count` segments from random points of the box [lower, lower + extent] by up to step / 2 on
+  // each axis; every `spheresEvery`-th one (0: none) a sphere.
+  static std::vector<shared::TubeSegment> randomSegments(glm::vec3 lower, glm::vec3 extent,
+                                                         int count, float step, unsigned seed,
+                                                         int spheresEvery) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const auto point = [&] { return glm::vec3(unit(random), unit(random), unit(random)); };
+    std::vector<shared::TubeSegment> segments;
+    for (int i = 0; i < count; ++i) {
+      const glm::vec3 a = lower + extent * point();
+      const glm::vec3 b = a + step * (point() - 0.5f);
+      segments.push_back({a, 0.0f, spheresEvery > 0 && i % spheresEvery == 0 ? a : b, 1.0f});
+    }
+    return segments;
   }
-  const float radius = 0.4f;
-  TubeRenderer renderer(ctx(), GetParam(), volume, {});
-  renderer.setTubes(segments, radius);
-  const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
-  renderer.setColourMap(red);
-  const std::uint32_t w = 96, h = 72;
-  renderer.resize(w, h);
-  RenderSettings settings;
-  settings.tubeRadius = radius;
-  settings.ambientOcclusion = false;
-  for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
-    const bool perspective = projection == Projection::Perspective;
-    const OrbitCamera camera =
-        frameBox(looking(30.0f, 20.0f, projection), lower, upper, float(w) / h, 1.6f);
-    renderer.renderFrame(camera, settings);  // frame 0: one ray through each pixel's centre
+
+  struct PixelCheck {
+    std::size_t tubePixels = 0, mismatches = 0, ambiguous = 0;
+  };
+
+  // Renders the segments as red tubes without occlusion (frame 0: one ray through each pixel's
+  // centre) and compares every pixel with the ray-segment distance; pixels whose distance is
+  // within `edge` radii of the radius count as ambiguous. Orthographic oracle rays start on a
+  // plane behind every segment, as tall as the view at the target.
+  PixelCheck checkTubePixels(const flow::VectorVolume& volume,
+                             const std::vector<shared::TubeSegment>& segments, float radius,
+                             const OrbitCamera& camera, double edge) {
+    TubeRenderer renderer(ctx(), GetParam(), volume, {});
+    renderer.setTubes(segments, radius);
+    const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
+    renderer.setColourMap(red);
+    renderer.resize(kWidth, kHeight);
+    RenderSettings settings;
+    settings.tubeRadius = radius;
+    settings.ambientOcclusion = false;
+    renderer.renderFrame(camera, settings);
     const Image image = renderer.readImage();
 
+    const bool perspective = camera.projection == Projection::Perspective;
     const CameraFrame view = cameraFrame(camera);
     const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2);
-    // Orthographic: parallel rays from a plane behind every segment, as tall as the view at the
-    // target.
     const double halfHeight = perspective ? tanHalf : tanHalf * camera.distance;
     const glm::dvec3 behind = glm::dvec3(camera.target) - 1000.0 * glm::dvec3(view.forward);
-    std::size_t tubePixels = 0, mismatches = 0, ambiguous = 0;
-    for (std::uint32_t y = 0; y < h; ++y)
-      for (std::uint32_t x = 0; x < w; ++x) {
-        const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
-        const glm::dvec3 offset = ndc.x * double(w) / h * halfHeight * glm::dvec3(view.right) -
-                                  ndc.y * halfHeight * glm::dvec3(view.up);
+    PixelCheck check;
+    for (std::uint32_t y = 0; y < kHeight; ++y)
+      for (std::uint32_t x = 0; x < kWidth; ++x) {
+        const glm::dvec2 ndc =
+            (glm::dvec2(x, y) + 0.5) / glm::dvec2(kWidth, kHeight) * 2.0 - 1.0;
+        const glm::dvec3 offset =
+            ndc.x * double(kWidth) / kHeight * halfHeight * glm::dvec3(view.right) -
+            ndc.y * halfHeight * glm::dvec3(view.up);
         const glm::dvec3 d = perspective ? glm::normalize(glm::dvec3(view.forward) + offset)
                                          : glm::dvec3(view.forward);
         const glm::dvec3 o = perspective ? glm::dvec3(view.eye) : behind + offset;
         double distance = 1e300;
         for (const auto& s : segments)
           distance = std::min(distance, raySegmentDistance(o, d, s.a, s.b));
-        const Rgba8 c = image.at(x, y);
-        const bool shownAsTube = c.r > 50 && c.r > c.b + 30;
-        if (std::abs(distance - radius) < 0.02 * radius) {
-          ++ambiguous;
+        if (std::abs(distance - radius) < edge * radius) {
+          ++check.ambiguous;
           continue;
         }
-        const bool hit = distance < radius;
-        tubePixels += hit;
-        if (hit != shownAsTube) ++mismatches;
+        const Rgba8 c = image.at(x, y);
+        const bool hit = distance < radius, shown = c.r > 50 && c.r > c.b + 30;
+        check.tubePixels += hit;
+        check.mismatches += hit != shown;
       }
-    EXPECT_GT(tubePixels, w * h / 50) << "the scene should cover a fair part of the image";
-    EXPECT_EQ(mismatches, 0u) << "of " << w * h << " pixels (" << ambiguous
-                              << " on tube edges skipped), "
-                              << (perspective ? "perspective" : "orthographic");
+    return check;
+  }
+
+  std::optional<bricks::AmrField> field_;
+};
+
+TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
+  const flow::VectorVolume volume = smallVolume();
+  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  // Some are spheres (a == b).
+  const std::vector<shared::TubeSegment> segments =
+      randomSegments(lower, upper - lower, 120, 3.0f, 7, 10);
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    const OrbitCamera camera =
+        frameBox(looking(30.0f, 20.0f, projection), lower, upper, float(kWidth) / kHeight, 1.6f);
+    const PixelCheck check = checkTubePixels(volume, segments, 0.4f, camera, 0.02);
+    EXPECT_GT(check.tubePixels, kWidth * kHeight / 50)
+        << "the scene should cover a fair part of the image";
+    EXPECT_EQ(check.mismatches, 0u)
+        << "of " << kWidth * kHeight << " pixels (" << check.ambiguous
+        << " on tube edges skipped), "
+        << (projection == Projection::Perspective ? "perspective" : "orthographic");
   }
 }
 
@@ -136,53 +164,16 @@ TEST_P(TubeRendererTest, ThinTubesInADeepDomainShowInOrthographicViews) {
   field_ = synth::generate("nest", {.levels = 12});
   const flow::VectorVolume volume =
       flow::buildVectorVolume(*field_, flow::chooseVectorChannels(*field_, ""));
+  ASSERT_GT(volume.domain.upper.x - volume.domain.lower.x, 8000) << "not a deep domain";
   // The corner away from the eye (azimuth 30, elevation 20 looks from +x, +y, +z).
   const glm::vec3 corner = glm::vec3(volume.domain.lower) + 20.0f;
-  ASSERT_GT(volume.domain.upper.x - volume.domain.lower.x, 8000) << "not a deep domain";
-  std::mt19937 random(3);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<shared::TubeSegment> segments;
-  for (int i = 0; i < 60; ++i) {
-    const glm::vec3 a = corner + 20.0f * glm::vec3(unit(random), unit(random), unit(random));
-    segments.push_back({a, 0.0f, a + 4.0f * (glm::vec3(unit(random), unit(random), unit(random)) -
-                                             0.5f), 1.0f});
-  }
-  const float radius = 0.15f;
-  TubeRenderer renderer(ctx(), GetParam(), volume, {});
-  renderer.setTubes(segments, radius);
-  const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
-  renderer.setColourMap(red);
-  const std::uint32_t w = 96, h = 72;
-  renderer.resize(w, h);
-  RenderSettings settings;
-  settings.tubeRadius = radius;
-  settings.ambientOcclusion = false;
+  const std::vector<shared::TubeSegment> segments =
+      randomSegments(corner, glm::vec3(20.0f), 60, 4.0f, 3, 0);
   const OrbitCamera camera = frameBox(looking(30.0f, 20.0f, Projection::Orthographic), corner,
-                                      corner + 20.0f, float(w) / h);
-  renderer.renderFrame(camera, settings);
-  const Image image = renderer.readImage();
-
-  const CameraFrame view = cameraFrame(camera);
-  const double halfHeight =
-      std::tan(glm::radians(double(camera.fovYDegrees)) / 2) * camera.distance;
-  const glm::dvec3 behind = glm::dvec3(camera.target) - 100.0 * glm::dvec3(view.forward);
-  std::size_t tubePixels = 0, mismatches = 0;
-  for (std::uint32_t y = 0; y < h; ++y)
-    for (std::uint32_t x = 0; x < w; ++x) {
-      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(w, h) * 2.0 - 1.0;
-      const glm::dvec3 o = behind + ndc.x * double(w) / h * halfHeight * glm::dvec3(view.right) -
-                           ndc.y * halfHeight * glm::dvec3(view.up);
-      double distance = 1e300;
-      for (const auto& s : segments)
-        distance = std::min(distance, raySegmentDistance(o, glm::dvec3(view.forward), s.a, s.b));
-      if (std::abs(distance - radius) < 0.05 * radius) continue;
-      const Rgba8 c = image.at(x, y);
-      const bool hit = distance < radius, shown = c.r > 50 && c.r > c.b + 30;
-      tubePixels += hit;
-      mismatches += hit != shown;
-    }
-  EXPECT_GT(tubePixels, 30u);
-  EXPECT_EQ(mismatches, 0u) << "of " << tubePixels << " tube pixels";
+                                      corner + 20.0f, float(kWidth) / kHeight);
+  const PixelCheck check = checkTubePixels(volume, segments, 0.15f, camera, 0.05);
+  EXPECT_GT(check.tubePixels, 30u);
+  EXPECT_EQ(check.mismatches, 0u) << "of " << check.tubePixels << " tube pixels";
 }
 
 // Traces of the rotation field (circles about the z axis) as tubes with ambient occlusion, in

@@ -8,7 +8,7 @@
 
 #include "bricks/amr_field.hpp"
 #include "render/camera.hpp"
-#include "render/image/colour_bar_layout.hpp"
+#include "render/image/placed_text.hpp"
 #include "render/image/image.hpp"
 
 namespace amrstream::render {

@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "render/camera.hpp"
-#include "render/image/colour_bar_layout.hpp"
+#include "render/image/placed_text.hpp"
 #include "render/image/image.hpp"
 
 namespace amrstream::render {

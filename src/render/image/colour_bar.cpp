@@ -36,11 +36,6 @@ void drawFrameAround(Image& image, const PixelRect& rect, Rgba8 colour) {
   blendRect(image, {right, rect.y, 1, rect.height}, colour);
 }
 
-void drawText(Image& image, const PlacedText& text, int pixelSize, Rgba8 colour) {
-  if (!text.text.empty())
-    defaultFont().drawText(image, text.x, text.baseline, text.text, colour, pixelSize);
-}
-
 // Column i at t = i / (width - 1), as colourMapTable samples a map.
 std::vector<glm::vec3> gradientColours(const ColourBar& bar, int width) {
   const auto columns = static_cast<std::size_t>(width);
@@ -86,10 +81,10 @@ void drawColourBar(Image& image, const ColourBar& bar) {
   blendRect(image, layout->panel, palette.panel);
   drawFrameAround(image, layout->gradient, palette.frame);
   drawGradient(image, layout->gradient, bar);
-  drawText(image, layout->title, layout->titlePixelSize, palette.text);
+  drawPlacedText(image, layout->title, palette.text, layout->titlePixelSize);
   for (const PlacedTick& tick : layout->ticks) {
     blendRect(image, tick.mark, palette.text);
-    drawText(image, tick.label, layout->labelPixelSize, palette.text);
+    drawPlacedText(image, tick.label, palette.text, layout->labelPixelSize);
   }
 }
 

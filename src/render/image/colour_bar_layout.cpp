@@ -50,13 +50,6 @@ std::string fitText(const std::string& text, int maxWidth, int pixelSize) {
   return std::string(kept) + kEllipsis;
 }
 
-PlacedText placeText(std::string text, int x, int top, int pixelSize) {
-  const Font& font = defaultFont();
-  const LineMetrics line = font.lineMetrics(pixelSize);
-  const int width = font.textWidth(text, pixelSize);
-  return {std::move(text), x, top + line.ascent, {x, top, width, line.height()}};
-}
-
 // The ticks of the scale, or for a scale that has none (min >= max, bounds that are not finite,
 // a log scale reaching 0) its ends, so that the bar still says what it shows.
 std::vector<ScaleTick> ticksOf(const ColourScale& scale, int most) {

@@ -8,22 +8,11 @@
 #include <vector>
 
 #include "render/image/colour_bar.hpp"
+#include "render/image/placed_text.hpp"
 
 namespace amrstream::render {
 
 constexpr std::uint32_t kMinColourBarImageSide = 128;
-
-struct PixelRect {
-  int x = 0, y = 0, width = 0, height = 0;
-};
-
-struct PlacedText {
-  std::string text;
-  int x = 0;         // where the pen starts
-  int baseline = 0;  // the row below the ink of letters without descenders (Font::drawText)
-  // From x over Font::textWidth, and from baseline - ascent to baseline + descent.
-  PixelRect box;
-};
 
 struct PlacedTick {
   double value = 0;
