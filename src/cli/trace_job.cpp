@@ -297,8 +297,9 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->check(nonNegativeFloat());
   command
       ->add_option("--memory-budget", options->trace.memoryBudget,
-                   "bytes the tracing rounds may use on the device and for the host copies, "
-                   "e.g. 512M or 2G (the collected traces come on top); 0: automatic, 256M to 2G")
+                   "bytes the tracing rounds may use (a GPU's round buffers, or the CPU's), "
+                   "e.g. 512M or 2G (the collected traces come on top); 0: automatic, 256M to "
+                   "8G on a GPU, 2G on the CPU")
       ->transform(CLI::AsSizeValue(false))
       ->check(countIn(0, hostMemoryBytes()))
       ->capture_default_str();

@@ -40,10 +40,9 @@ TraceSet traceShape(const VectorVolume& volume, const TraceOptions& options) {
 std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
                            std::size_t lines) {
   if (options.memoryBudget > 0) return options.memoryBudget;
-  constexpr std::uint64_t kLeast = std::uint64_t(256) << 20, kMost = std::uint64_t(2) << 30;
-  const std::uint64_t slotsPerLine = options.keepHistory ? 65 : 1;
+  const std::uint64_t slotsPerLine = options.keepHistory ? costs.stepsPerLine + 1 : 1;
   const std::uint64_t wanted = lines * (costs.bytesPerLine + slotsPerLine * costs.bytesPerPointSlot);
-  return std::clamp(wanted, kLeast, kMost);
+  return std::clamp(wanted, costs.leastBudget, std::max(costs.leastBudget, costs.mostBudget));
 }
 
 std::size_t linesPerBatch(const TraceOptions& options, const RoundCosts& costs, std::size_t lines) {

@@ -26,16 +26,18 @@ LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds
 // vector and channel names, vorticity, and the periodic box.
 TraceSet traceShape(const VectorVolume& volume, const TraceOptions& options);
 
-// What a tracer's rounds hold per line and per output slot of a round.
+// What a tracer's rounds hold per line and per output slot of a round, and the bounds of its
+// automatic budget.
 struct RoundCosts {
   std::uint64_t bytesPerLine = 0;
   std::uint64_t bytesPerPointSlot = 0;
+  std::uint64_t leastBudget = std::uint64_t(256) << 20;
+  std::uint64_t mostBudget = std::uint64_t(2) << 30;
+  std::uint64_t stepsPerLine = 64;  // what the automatic budget makes room for, with history
 };
 
 // The working memory of rounds: options.memoryBudget, or when it is 0 room for every line to take
-// 64 steps per round, but no less than 256 MiB and no more than 2 GiB. Allocating pinned host
-// memory for the copies costs about 0.1 s per GiB, so a budget far beyond what the rounds use
-// only slows the start.
+// costs.stepsPerLine steps per round, within costs.leastBudget and costs.mostBudget.
 std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
                            std::size_t lines);
 

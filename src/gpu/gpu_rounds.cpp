@@ -29,45 +29,68 @@ std::uint32_t groups(std::size_t threads, std::uint32_t groupSize) {
   return static_cast<std::uint32_t>((threads + groupSize - 1) / groupSize);
 }
 
-// Copies `count` elements from a host-visible buffer into a new container, in parallel.
-template <typename Container>
-Container copyOut(const vk::Buffer& buffer, std::size_t count) {
-  using T = typename Container::value_type;
-  buffer.invalidateMapped();
-  Container out(count);
-  const T* source = reinterpret_cast<const T*>(buffer.mapped().data());
-  constexpr std::size_t kGrain = std::size_t(1) << 16;
-  tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
-    const std::size_t first = chunk * kGrain, n = std::min(kGrain, count - first);
-    std::memcpy(out.data() + first, source + first, n * sizeof(T));
-  });
-  return out;
-}
-
-void copyRange(VkCommandBuffer cmd, const vk::Buffer& from, const vk::Buffer& to,
-               VkDeviceSize bytes) {
+void copyRange(VkCommandBuffer cmd, const vk::Buffer& from, VkDeviceSize fromOffset,
+               const vk::Buffer& to, VkDeviceSize toOffset, VkDeviceSize bytes) {
   if (bytes == 0) return;
-  const VkBufferCopy region{0, 0, bytes};
+  const VkBufferCopy region{fromOffset, toOffset, bytes};
   vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
 }
+
+// One array of the dense output as it passes through a staging slot: `count` points starting at
+// point `first` lie at `offset * count` bytes of the slot.
+struct StagedArray {
+  const vk::Buffer* source;
+  std::uint64_t bytesPerPoint;
+  std::uint64_t offset;  // the bytes per point of the arrays before it in the slot
+};
+
+// The arrays a round brings back, in the order they lie in a slot.
+class StagedLayout {
+ public:
+  StagedLayout(const RoundBuffers& b, std::size_t channels, bool vorticity) {
+    add(b.densePositions, sizeof(glm::vec3));
+    add(b.denseTimes, sizeof(float));
+    add(b.denseVectors, sizeof(glm::vec3));
+    add(b.channels, channels * sizeof(float));
+    if (vorticity) add(b.vorticity, sizeof(glm::vec3));
+    if (b.withRegionIds) add(b.denseRegionIds, sizeof(std::int32_t));
+  }
+  std::uint64_t bytesPerPoint() const { return bytesPerPoint_; }
+  std::span<const StagedArray> arrays() const { return arrays_; }
+  // Where array `index` of a piece of `count` points starts in its slot.
+  template <typename T>
+  const T* in(const vk::Buffer& slot, std::size_t index, std::size_t count) const {
+    return reinterpret_cast<const T*>(slot.mapped().data() + arrays_[index].offset * count);
+  }
+
+ private:
+  void add(const vk::Buffer& source, std::uint64_t bytes) {
+    arrays_.push_back({&source, bytes, bytesPerPoint_});
+    bytesPerPoint_ += bytes;
+  }
+  std::vector<StagedArray> arrays_;
+  std::uint64_t bytesPerPoint_ = 0;
+};
 
 }  // namespace
 
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
                      const VolumeBuffers& device, const flow::VectorVolume& volume,
                      std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-                     std::unique_ptr<RoundBuffers> buffers, bool timeKernels)
-    : GpuRounds(ctx, trace, kernels, device, volume, lines, options, *buffers, timeKernels) {
+                     std::unique_ptr<RoundBuffers> buffers, StagingRing& staging,
+                     bool timeKernels)
+    : GpuRounds(ctx, trace, kernels, device, volume, lines, options, *buffers, staging,
+                timeKernels) {
   ownBuffers_ = std::move(buffers);
 }
 
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
                      const VolumeBuffers& device, const flow::VectorVolume& volume,
                      std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-                     RoundBuffers& buffers, bool timeKernels)
+                     RoundBuffers& buffers, StagingRing& staging, bool timeKernels)
     : ctx_(&ctx), trace_(&trace), kernels_(&kernels), device_(&device), volume_(&volume),
       options_(options), params_(flow::makeTraceParams(volume, options)), buffers_(buffers),
-      pool_(ctx, 5, kPerSet), live_(lines.size()), round_(ctx), copy_(ctx) {
+      staging_(staging), pool_(ctx, 5, kPerSet), live_(lines.size()), round_(ctx) {
   if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity,
                    volume.deepPositions()))
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
@@ -190,7 +213,7 @@ void GpuRounds::submitRound(std::uint32_t steps) {
     if (compactionTimer_) compactionTimer_->stop(cmd);
 
     vk::memoryBarrier(cmd, compute, vk::access::kTransferRead);
-    copyRange(cmd, buffers_.summary, buffers_.summaryOut, sizeof(shared::RoundSummary));
+    copyRange(cmd, buffers_.summary, 0, buffers_.summaryOut, 0, sizeof(shared::RoundSummary));
     vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
   });
 }
@@ -216,64 +239,103 @@ shared::RoundSummary GpuRounds::finishRound() {
   return summary;
 }
 
-void GpuRounds::submitCopy(const shared::RoundSummary& summary) {
-  const int parity = parity_ ^ 1;  // the round submitted last
-  const RoundBuffers& b = buffers_;
-  const VkDeviceSize points = summary.points, channels = volume_->channelCount();
-  copy_.submit([&](VkCommandBuffer cmd) {
-    vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
-                      vk::access::kTransferRead);
-    copyRange(cmd, b.lineRounds[parity], b.lineRoundsOut, roundLines_ * sizeof(shared::LineRound));
-    copyRange(cmd, b.densePositions, b.positionsOut, points * sizeof(glm::vec3));
-    copyRange(cmd, b.denseTimes, b.timesOut, points * sizeof(float));
-    copyRange(cmd, b.denseVectors, b.vectorsOut, points * sizeof(glm::vec3));
-    copyRange(cmd, b.channels, b.channelsOut, points * channels * sizeof(float));
-    if (options_.vorticity) copyRange(cmd, b.vorticity, b.vorticityOut, points * sizeof(glm::vec3));
-    if (b.withRegionIds)
-      copyRange(cmd, b.denseRegionIds, b.regionIdsOut, points * sizeof(std::int32_t));
-    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
-  });
-}
-
-flow::RoundBlock GpuRounds::finishCopy(const shared::RoundSummary& summary, std::size_t lines) {
+flow::RoundBlock GpuRounds::readRound(const shared::RoundSummary& summary, std::size_t lines,
+                                      const std::function<void()>& afterLastCopy) {
   Stopwatch clock;
-  copy_.wait();
-  times_.copyWaitSeconds += clock.seconds();
-  clock.restart();
   const RoundBuffers& b = buffers_;
+  const vk::Buffer& reports = b.lineRounds[parity_ ^ 1];  // the round submitted last
   const std::size_t points = summary.points, channels = volume_->channelCount();
+  const StagedLayout layout(b, channels, options_.vorticity);
+  const std::size_t perPiece = staging_.slotBytes() / layout.bytesPerPoint();
+  if (perPiece == 0) throw std::logic_error("GpuRounds: a staging slot holds no whole point");
+  const std::size_t pieces = std::max<std::size_t>(1, (points + perPiece - 1) / perPiece);
+  const std::size_t slots = staging_.slots();
+  const auto piecePoints = [&](std::size_t piece) {
+    const std::size_t first = piece * perPiece;
+    return std::pair(first, std::min(perPiece, points - std::min(points, first)));
+  };
+  const auto submitPiece = [&](std::size_t piece) {
+    const auto [first, count] = piecePoints(piece);
+    const vk::Buffer& slot = staging_.buffer(piece % slots);
+    staging_.submission(piece % slots).submit([&](VkCommandBuffer cmd) {
+      vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                        vk::access::kTransferRead);
+      if (piece == 0)
+        copyRange(cmd, reports, 0, b.lineRoundsOut, 0, lines * sizeof(shared::LineRound));
+      for (const StagedArray& array : layout.arrays())
+        copyRange(cmd, *array.source, first * array.bytesPerPoint, slot, array.offset * count,
+                  count * array.bytesPerPoint);
+      vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
+    });
+    if (piece + 1 == pieces && afterLastCopy) afterLastCopy();
+  };
+  for (std::size_t piece = 0; piece < std::min(pieces, slots); ++piece) submitPiece(piece);
+
   flow::RoundBlock block;
-  block.lines = copyOut<std::vector<shared::LineRound>>(b.lineRoundsOut, lines);
-  block.times = copyOut<flow::Column<float>>(b.timesOut, points);
-  block.vectors = copyOut<flow::Column<glm::vec3>>(b.vectorsOut, points);
-  block.channels = copyOut<flow::Column<float>>(b.channelsOut, points * channels);
-  if (options_.vorticity) block.vorticity = copyOut<flow::Column<glm::vec3>>(b.vorticityOut, points);
-  // Kernels work in cell units, or offsets from regions' corners (line_state.h); convert in
-  // double precision like the CPU path.
-  b.positionsOut.invalidateMapped();
-  const glm::vec3* cells = reinterpret_cast<const glm::vec3*>(b.positionsOut.mapped().data());
   block.positions.resize(points);
+  block.times.resize(points);
+  block.vectors.resize(points);
+  block.channels.resize(points * channels);
+  if (options_.vorticity) block.vorticity.resize(points);
+  if (b.withRegionIds) block.positionsLow.resize(points);
+  times_.submitSeconds += clock.seconds();
+
+  // Kernels work in cell units, or offsets from regions' corners (line_state.h); positions are
+  // converted in double precision like the CPU path's.
   const bricks::WorldTransform& transform = volume_->transform;
-  if (b.withRegionIds) {  // deep positions: offsets from the regions' corners, kept precise
-    b.regionIdsOut.invalidateMapped();
-    const auto* ids = reinterpret_cast<const std::int32_t*>(b.regionIdsOut.mapped().data());
-    const std::vector<shared::Region>& regions = volume_->regions.regions;
-    block.positionsLow.resize(points);
-    tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
-      const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
-                                    ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
-                                    : glm::ivec3(0);
-      const flow::SplitPosition split = flow::splitPosition(
-          transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
-      block.positions[i] = split.high;
-      block.positionsLow[i] = split.low;
+  const std::vector<shared::Region>& regions = volume_->regions.regions;
+  for (std::size_t piece = 0; piece < pieces; ++piece) {
+    clock.restart();
+    vk::Submission& copy = staging_.submission(piece % slots);
+    copy.wait();
+    times_.copyWaitSeconds += clock.seconds();
+    clock.restart();
+    const vk::Buffer& slot = staging_.buffer(piece % slots);
+    slot.invalidateMapped();
+    if (piece == 0) {
+      b.lineRoundsOut.invalidateMapped();
+      const auto* reported =
+          reinterpret_cast<const shared::LineRound*>(b.lineRoundsOut.mapped().data());
+      block.lines.assign(reported, reported + lines);
+    }
+    const auto [first, count] = piecePoints(piece);
+    const auto* cells = layout.in<glm::vec3>(slot, 0, count);
+    const auto* times = layout.in<float>(slot, 1, count);
+    const auto* vectors = layout.in<glm::vec3>(slot, 2, count);
+    const auto* values = layout.in<float>(slot, 3, count);
+    const auto* vorticity = options_.vorticity ? layout.in<glm::vec3>(slot, 4, count) : nullptr;
+    const auto* ids = b.withRegionIds
+                          ? layout.in<std::int32_t>(slot, layout.arrays().size() - 1, count)
+                          : nullptr;
+    constexpr std::size_t kGrain = std::size_t(1) << 14;
+    tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
+      const std::size_t from = chunk * kGrain, n = std::min(kGrain, count - from);
+      const std::size_t to = first + from;
+      std::memcpy(block.times.data() + to, times + from, n * sizeof(float));
+      std::memcpy(block.vectors.data() + to, vectors + from, n * sizeof(glm::vec3));
+      std::memcpy(block.channels.data() + to * channels, values + from * channels,
+                  n * channels * sizeof(float));
+      if (vorticity)
+        std::memcpy(block.vorticity.data() + to, vorticity + from, n * sizeof(glm::vec3));
+      for (std::size_t i = from; i < from + n; ++i) {
+        if (ids) {  // deep positions: offsets from the regions' corners, kept precise
+          const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
+                                        ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
+                                        : glm::ivec3(0);
+          const flow::SplitPosition split = flow::splitPosition(
+              transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
+          block.positions[first + i] = split.high;
+          block.positionsLow[first + i] = split.low;
+        } else {
+          block.positions[first + i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
+        }
+      }
     });
-  } else {
-    tbb::parallel_for(std::size_t(0), points, [&](std::size_t i) {
-      block.positions[i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
-    });
+    times_.unpackSeconds += clock.seconds();
+    clock.restart();
+    if (piece + slots < pieces) submitPiece(piece + slots);
+    times_.submitSeconds += clock.seconds();
   }
-  times_.unpackSeconds += clock.seconds();
   return block;
 }
 
@@ -284,14 +346,11 @@ std::vector<shared::LineState> GpuRounds::liveStates() const {
 flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {
   submitRound(steps);
   const shared::RoundSummary summary = finishRound();
-  submitCopy(summary);
   live_ = summary.liveLines;
-  return finishCopy(summary, roundLines_);
+  return readRound(summary, roundLines_, {});
 }
 
-// The device traces round k+1 while the host waits for round k's copy and unpacks it. (Two host
-// copies, so that round k's copy could overlap unpacking round k-1, measured slower on the H200:
-// twice the pinned memory to make, and the copy competing with the unpacking for memory.)
+// The device traces round k + 1 while the host unpacks the last pieces of round k.
 void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
                          const std::function<void(flow::RoundBlock&&)>& consume) {
   if (live_ == 0) return;
@@ -300,18 +359,17 @@ void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& s
   times_.submitSeconds += clock.seconds();
   while (true) {
     const shared::RoundSummary summary = finishRound();
-    const std::size_t lines = roundLines_;
-    clock.restart();
-    submitCopy(summary);
     live_ = summary.liveLines;
-    if (live_ > 0) submitRound(stepsFor(live_));
-    times_.submitSeconds += clock.seconds();
-    flow::RoundBlock block = finishCopy(summary, lines);
+    flow::RoundBlock block = readRound(summary, roundLines_, [&] {
+      if (live_ > 0) submitRound(stepsFor(live_));
+    });
     clock.restart();
     consume(std::move(block));
     times_.consumeSeconds += clock.seconds();
     if (live_ == 0) break;
   }
 }
+
+GpuRounds::~GpuRounds() { staging_.waitQuietly(); }
 
 }  // namespace amrstream::gpu

@@ -6,9 +6,10 @@
 // then the point data kernel samples the channels and vorticity at the packed points. Only the
 // round's real points and reports are copied back.
 //
-// runToEnd() overlaps the work: while round r's points are copied to the host and unpacked
-// there, round r + 1 already runs on the device (the reports alternate between two buffers, and
-// the compaction of r + 1 waits for the copy of r before it overwrites the dense arrays).
+// The points come back through a StagingRing in pieces of whole points: while the host unpacks
+// one piece, the device copies the next ones. runToEnd() submits round r + 1 as soon as the last
+// piece of round r is submitted, so that the device traces it while the host unpacks the last
+// pieces; its compaction waits for those copies before it overwrites the dense arrays.
 
 #include <cstdint>
 #include <functional>
@@ -20,6 +21,7 @@
 #include "flow/round_tracer.hpp"
 #include "round_buffers.hpp"
 #include "round_kernels.hpp"
+#include "staging_ring.hpp"
 #include "trace_kernel.hpp"
 #include "vk/descriptor_pool.hpp"
 #include "vk/gpu_timer.hpp"
@@ -47,12 +49,15 @@ class GpuRounds final : public flow::RoundTracer {
   GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
             const VolumeBuffers& device, const flow::VectorVolume& volume,
             std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-            RoundBuffers& buffers, bool timeKernels);
+            RoundBuffers& buffers, StagingRing& staging, bool timeKernels);
   // The same with buffers of its own.
   GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
             const VolumeBuffers& device, const flow::VectorVolume& volume,
             std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-            std::unique_ptr<RoundBuffers> buffers, bool timeKernels);
+            std::unique_ptr<RoundBuffers> buffers, StagingRing& staging, bool timeKernels);
+
+  // Waits for the copies still in the staging ring, which may read these rounds' buffers.
+  ~GpuRounds() override;
 
   std::size_t liveLines() const override { return live_; }
   flow::RoundBlock advance(std::uint32_t steps) override;
@@ -70,9 +75,10 @@ class GpuRounds final : public flow::RoundTracer {
  private:
   void submitRound(std::uint32_t steps);
   shared::RoundSummary finishRound();
-  void submitCopy(const shared::RoundSummary& summary);
-  // Waits for the copy and reads it into a block of `lines` lines.
-  flow::RoundBlock finishCopy(const shared::RoundSummary& summary, std::size_t lines);
+  // Copies the round submitted last to the host through the staging ring and unpacks it into a
+  // block of `lines` lines; calls `afterLastCopy` once every piece's copy is submitted.
+  flow::RoundBlock readRound(const shared::RoundSummary& summary, std::size_t lines,
+                             const std::function<void()>& afterLastCopy);
 
   const vk::Context* ctx_;
   const TraceKernel* trace_;
@@ -83,6 +89,7 @@ class GpuRounds final : public flow::RoundTracer {
   shared::TraceParams params_;
   std::unique_ptr<RoundBuffers> ownBuffers_;  // when not the tracer's
   RoundBuffers& buffers_;
+  StagingRing& staging_;
   vk::DescriptorPool pool_;
   VkDescriptorSet traceSets_[2]{}, compactionSets_[2]{}, pointDataSet_ = VK_NULL_HANDLE;
   std::optional<vk::GpuTimer> traceTimer_, compactionTimer_;
@@ -91,7 +98,7 @@ class GpuRounds final : public flow::RoundTracer {
   int parity_ = 0;              // which line-round buffer the next round writes
   RoundTimes times_;
   // Declared last, so that destruction waits for the device before the buffers go.
-  vk::Submission round_, copy_;
+  vk::Submission round_;
 };
 
 }  // namespace amrstream::gpu

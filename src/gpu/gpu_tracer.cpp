@@ -46,6 +46,7 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
                      const KernelSettings& settings)
     : ctx_(&ctx),
       volume_(&volume),
+      staging_(std::make_unique<StagingRing>(ctx)),
       device_(ctx, gpuBackend(backend), volume, setup_),
       settings_(settings) {
   settings_.deepPositions = volume.deepPositions();
@@ -69,9 +70,22 @@ const TraceKernel& GpuTracer::kernelFor(const flow::TraceOptions& options) {
   return found->second;
 }
 
+flow::RoundCosts GpuTracer::roundCosts(const flow::TraceOptions& options) const {
+  flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity);
+  // Device memory is quick to make; the host's share is the staging ring's few pinned slots.
+  // Longer rounds mean fewer runs of points per line for the host to keep track of.
+  VkDeviceSize deviceLocal = 0;
+  const VkPhysicalDeviceMemoryProperties& memory = ctx_->memoryProperties();
+  for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      deviceLocal = std::max(deviceLocal, memory.memoryHeaps[i].size);
+  costs.mostBudget = std::min<std::uint64_t>(std::uint64_t(8) << 30, deviceLocal / 4);
+  costs.stepsPerLine = 128;
+  return costs;
+}
+
 std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const {
-  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity,
-                                                         volume_->deepPositions());
+  const flow::RoundCosts costs = roundCosts(options);
   const VkPhysicalDeviceLimits& limits = ctx_->limits();
   // A batch's smallest round (2 slots per line with history) must fit the storage buffer range.
   const std::uint64_t slotsPerLine = options.keepHistory ? 2 : 1;
@@ -88,8 +102,7 @@ std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::siz
 
 std::uint64_t GpuTracer::pointSlots(const flow::TraceOptions& options,
                                     std::size_t batchLines) const {
-  const flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity,
-                                                         volume_->deepPositions());
+  const flow::RoundCosts costs = roundCosts(options);
   const std::uint64_t widest =
       std::max<std::uint64_t>(sizeof(glm::vec3), volume_->channelCount() * sizeof(float));
   const std::uint64_t byRange = ctx_->limits().maxStorageBufferRange / widest;
@@ -134,7 +147,7 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     const std::vector<shared::LineState> ordered =
         threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
     GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
-                     *roundBuffers_, timeKernels_);
+                     *roundBuffers_, *staging_, timeKernels_);
     lastRun_.linesSeconds += clock.seconds();
     rounds.runToEnd([&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
                     [&](flow::RoundBlock&& block) {
@@ -172,7 +185,8 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
                                      volume_->channelCount(), options.vorticity,
                                      volume_->deepPositions());
   return std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
-                                     ordered, options, std::move(buffers), timeKernels_);
+                                     ordered, options, std::move(buffers), *staging_,
+                                     timeKernels_);
 }
 
 flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
@@ -195,7 +209,7 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
   Stopwatch clock;
   if (order) lines = threadOrder(lines, spatialOrder_);
   GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, lines, options,
-                   *roundBuffers_, timeKernels_);
+                   *roundBuffers_, *staging_, timeKernels_);
   lastRun_.linesSeconds += clock.seconds();
   flow::RoundBlock block = rounds.advance(steps);
   clock.restart();
@@ -211,6 +225,11 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
   lastRun_.unpackSeconds += t.unpackSeconds;
   lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
   return block;
+}
+
+void GpuTracer::setStaging(std::size_t slots, std::uint64_t slotBytes) {
+  staging_.reset();
+  staging_ = std::make_unique<StagingRing>(*ctx_, slots, slotBytes);
 }
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {

@@ -26,6 +26,7 @@
 #include "flow/vector_volume.hpp"
 #include "round_buffers.hpp"
 #include "round_kernels.hpp"
+#include "staging_ring.hpp"
 #include "trace_kernel.hpp"
 #include "volume_buffers.hpp"
 
@@ -99,14 +100,20 @@ class GpuTracer {
   // Timestamps around each round's kernels (off by default: they may keep the device from
   // overlapping a round with the copy of the one before).
   void timeKernels(bool on) { timeKernels_ = on; }
+  // Replaces the staging ring the points come back through (tests use slots of a few points).
+  void setStaging(std::size_t slots, std::uint64_t slotBytes);
+  std::uint64_t stagingBytes() const { return staging_->hostBytes(); }
 
  private:
+  // What a round costs, and the automatic budget's bounds on this device.
+  flow::RoundCosts roundCosts(const flow::TraceOptions& options) const;
   // The kernel taking the options' integrator's steps.
   const TraceKernel& kernelFor(const flow::TraceOptions& options);
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
   TracerSetup setup_;
+  std::unique_ptr<StagingRing> staging_;  // made while the volume and kernels are
   VolumeBuffers device_;
   TraceKernel kernel_;  // with settings_.integrator
   KernelSettings settings_;

@@ -32,13 +32,13 @@ std::uint64_t blocksOf(std::size_t lines) {
 
 }  // namespace
 
-flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity, bool regionIds) {
+flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
   const std::uint64_t pointData = channelCount * sizeof(float) + (vorticity ? sizeof(glm::vec3) : 0);
   const std::uint64_t emitted = 2 * sizeof(glm::vec3) + sizeof(float) + sizeof(std::int32_t);
-  const std::uint64_t copied = 2 * sizeof(glm::vec3) + sizeof(float) + pointData +
-                               (regionIds ? sizeof(std::int32_t) : 0);
+  // The emitted arrays, their dense copies and the point data; the host receives the dense
+  // arrays through a staging ring of its own size.
   return {3 * sizeof(shared::LineState) + 3 * sizeof(shared::LineRound) + sizeof(glm::uvec2),
-          2 * emitted + pointData + copied};
+          2 * emitted + pointData};
 }
 
 RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
@@ -74,12 +74,6 @@ RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint6
 
   summaryOut = host(ctx, sizeof(shared::RoundSummary), "round summary (host)");
   lineRoundsOut = host(ctx, n * sizeof(shared::LineRound), "line rounds (host)");
-  positionsOut = host(ctx, p * sizeof(glm::vec3), "positions (host)");
-  timesOut = host(ctx, p * sizeof(float), "times (host)");
-  vectorsOut = host(ctx, p * sizeof(glm::vec3), "vectors (host)");
-  channelsOut = host(ctx, p * channelCount * sizeof(float), "channels (host)");
-  vorticityOut = host(ctx, withVorticity ? p * sizeof(glm::vec3) : 0, "vorticity (host)");
-  regionIdsOut = host(ctx, withRegionIds ? p * sizeof(std::int32_t) : 0, "region ids (host)");
 }
 
 bool RoundBuffers::fits(std::size_t lines, std::uint64_t pointSlots, std::size_t channelsPerPoint,

@@ -8,8 +8,8 @@
 // round ends with (one per thread), the round reports (two, alternating between rounds, so that
 // a round may run while the previous one's reports are still being copied), the compaction's
 // prefix, and the host copy of the reports.
-// Per output slot: the round's point-major output (position, time, vector, region id), its dense
-// copy with the point data, and the host copies.
+// Per output slot: the round's point-major output (position, time, vector, region id) and its
+// dense copy with the point data.
 
 #include <cstdint>
 #include <span>
@@ -40,7 +40,7 @@ struct RoundBuffers {
   std::vector<shared::LineState> readStates(const vk::Context& ctx, std::size_t count);
 
   // The bytes the fields below take per line and per output slot, for budgeting.
-  static flow::RoundCosts costs(std::size_t channelCount, bool vorticity, bool regionIds);
+  static flow::RoundCosts costs(std::size_t channelCount, bool vorticity);
 
   std::size_t lineCapacity;
   std::uint64_t pointCapacity;
@@ -64,10 +64,9 @@ struct RoundBuffers {
   // Dense output of the compaction and the point data kernel.
   vk::Buffer densePositions, denseTimes, denseVectors, denseRegionIds, channels, vorticity;
 
-  // Host-visible copies.
+  // Host-visible copies of the summary and the reports; the points come through a StagingRing.
   vk::Buffer summaryOut;
   vk::Buffer lineRoundsOut;
-  vk::Buffer positionsOut, timesOut, vectorsOut, channelsOut, vorticityOut, regionIdsOut;
 };
 
 }  // namespace amrstream::gpu

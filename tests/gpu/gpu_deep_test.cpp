@@ -52,6 +52,7 @@ double worstDifference(vk::Context& ctx, Backend backend, const testing::DeepNes
     return -1.0;
   }
   GpuTracer tracer(ctx, backend, volume);
+  tracer.setStaging(2, 1000);  // the points and their region ids come back a few dozen at a time
   const flow::TraceSet gpu = tracer.trace(seeds, options);
   EXPECT_TRUE(gpu.precisePositions);
   if (!gpu.precisePositions) return -1.0;

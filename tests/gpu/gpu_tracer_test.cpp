@@ -94,10 +94,12 @@ class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterf
   KernelSettings settings_ = defaultKernelSettings(GetParam());
 
   void compare(const flow::VectorVolume& volume, const flow::SeedList& seeds,
-               const flow::TraceOptions& options, std::size_t linesPerBatch = 0) {
+               const flow::TraceOptions& options, std::size_t linesPerBatch = 0,
+               std::uint64_t stagingSlotBytes = 0) {
     const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
     GpuTracer tracer(ctx(), GetParam(), volume, settings_);
     tracer.limitLinesPerBatch(linesPerBatch);
+    if (stagingSlotBytes > 0) tracer.setStaging(2, stagingSlotBytes);
     expectGpuMatchesCpu(tracer.trace(seeds.points, options), cpu, volume);
   }
 
@@ -249,6 +251,8 @@ TEST_P(GpuTracerTest, PointDataAndVorticityMatchCpu) {
   options.maxSteps = 150;
   options.vorticity = true;
   compare(volume, seedsIn(volume, 40), options);
+  // Through a staging ring of two 1000-byte slots (a dozen points each) as well.
+  compare(volume, seedsIn(volume, 40), options, 0, 1000);
 }
 
 // The linear interpolant (vector, point data and vorticity) on a random four-level layout, and
@@ -332,7 +336,7 @@ TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
   const flow::TraceSet once = tracer.trace(seeds, options);
   EXPECT_EQ(tracer.lastRun().rounds, 1u);
-  options.memoryBudget = 2 << 20;
+  options.memoryBudget = 1 << 20;
   const flow::TraceSet gpu = tracer.trace(seeds, options);
   EXPECT_GT(tracer.lastRun().rounds, 10u);
   EXPECT_EQ(gpu.offsets, once.offsets);
@@ -340,6 +344,16 @@ TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
   EXPECT_EQ(gpu.times, once.times);
   EXPECT_EQ(gpu.vectors, once.vectors);
   expectGpuMatchesCpu(gpu, cpu, volume);
+
+  // Through a staging ring of three slots of 4000 bytes (125 points, the last piece of a round
+  // partly filled), every round comes back in many pieces, three in flight.
+  tracer.setStaging(3, 4000);
+  const flow::TraceSet pieces = tracer.trace(seeds, options);
+  EXPECT_EQ(pieces.offsets, once.offsets);
+  EXPECT_EQ(pieces.positions, once.positions);
+  EXPECT_EQ(pieces.times, once.times);
+  EXPECT_EQ(pieces.vectors, once.vectors);
+  EXPECT_EQ(pieces.reasons, once.reasons);
 }
 
 // Every integrator (rk4 is the rest of this suite), in every step mode and both directions, with
