@@ -46,11 +46,14 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   float widest = 0.0f;
   for (const shared::Region& region : input.volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
-  // A step from anywhere lines stay before they are handed on (the part and a margin), or from
-  // the domain's padding next to it.
-  const double reach = dist::stageReach(input.volume, input.options) * 1.01;
-  const double margin = (haloSteps - 1) * reach;
-  rank.halo = margin + reach + 0.5 * widest + 2.0;
+  // A step's stages from anywhere lines stay before they are handed on (the part and a margin),
+  // or from the domain's padding next to it.
+  const dist::StepReach reach = dist::stepReach(input.volume, input.options);
+  const double margin = (haloSteps - 1) * reach.step * 1.01;
+  rank.halo = margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
+  // The linear interpolant's gradients at the cells samples reach fit their face neighbours.
+  const double kept =
+      rank.halo + (input.volume.interpolant == flow::Interpolant::Linear ? 2.0 * widest : 0.0);
   rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
   // origin.
@@ -70,8 +73,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   part.pointData = input.volume.channelNames;
   part.periodic = input.volume.periodic;
   part.interpolant = input.volume.interpolant;
-  part.keepAround = flow::VolumeOptions::Box{glm::dvec3(lower) - rank.halo,
-                                             glm::dvec3(upper) + rank.halo};
+  part.keepAround = flow::VolumeOptions::Box{glm::dvec3(lower) - kept, glm::dvec3(upper) + kept};
   input.volume = flow::buildVectorVolume(
       cells, flow::chooseVectorChannels(cells, job.field.vector), part);
   input.releaseField();

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "../../shaders/glsl/shared/dormand_prince.h"
 #include "flow/cpu_round.hpp"
 #include "flow/line_plan.hpp"
 #include "line_exchange.hpp"
@@ -36,31 +38,58 @@ void appendRuns(flow::TraceSet& runs, const flow::RoundBlock& block) {
   append(runs.vorticity, block.vorticity);
 }
 
+constexpr double mag(float w) { return w < 0.0f ? -double(w) : double(w); }
+
+// The largest sum of the weights' magnitudes over Dormand and Prince's stages, and over the
+// step's (fifth-order) weights.
+constexpr double kDpStageWeights = std::max(
+    {mag(AMRSTREAM_DP_A21), mag(AMRSTREAM_DP_A31) + mag(AMRSTREAM_DP_A32),
+     mag(AMRSTREAM_DP_A41) + mag(AMRSTREAM_DP_A42) + mag(AMRSTREAM_DP_A43),
+     mag(AMRSTREAM_DP_A51) + mag(AMRSTREAM_DP_A52) + mag(AMRSTREAM_DP_A53) +
+         mag(AMRSTREAM_DP_A54),
+     mag(AMRSTREAM_DP_A61) + mag(AMRSTREAM_DP_A62) + mag(AMRSTREAM_DP_A63) +
+         mag(AMRSTREAM_DP_A64) + mag(AMRSTREAM_DP_A65)});
+constexpr double kDpStepWeights = mag(AMRSTREAM_DP_B1) + mag(AMRSTREAM_DP_B3) +
+                                  mag(AMRSTREAM_DP_B4) + mag(AMRSTREAM_DP_B5) +
+                                  mag(AMRSTREAM_DP_B6);
+static_assert(kDpStageWeights > 24.6 && kDpStageWeights < 24.7);
+
 }  // namespace
 
-double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& options) {
-  if (options.integrator == flow::Integrator::Rk45)
-    throw InputError("--distribute data", "is not available with --integrator rk45 (its stages "
-                                          "reach several steps out); use rk4, rk2 or euler");
-  if (volume.interpolant == flow::Interpolant::Linear)
-    throw InputError("--distribute data", "is not available with --interpolant linear");
+StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options) {
   float widest = 0.0f;
   for (const shared::Region& region : volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
-  float fastest = 0.0f;
-  for (const glm::vec3& v : volume.values) fastest = std::max(fastest, glm::length(v));
-  const double h = options.stepSize;
+  double fastest = 0.0;
+  for (const glm::vec3& v : volume.values) fastest = std::max(fastest, double(glm::length(v)));
+  if (volume.interpolant == flow::Interpolant::Linear) {
+    // Three gradients (one per component) per value slot, in values per finest cell.
+    double steepest = 0.0;
+    const std::vector<glm::vec3>& g = volume.vectorGradients;
+    for (std::size_t slot = 0; slot + 2 < g.size(); slot += 3)
+      steepest = std::max(steepest, std::sqrt(double(glm::dot(g[slot], g[slot]) +
+                                                     glm::dot(g[slot + 1], g[slot + 1]) +
+                                                     glm::dot(g[slot + 2], g[slot + 2]))));
+    fastest += steepest * 0.5 * std::sqrt(3.0) * widest;
+  }
+  const bool rk45 = options.integrator == flow::Integrator::Rk45;
+  const double h = rk45 ? std::max(options.maxStep, options.stepSize) : options.stepSize;
+  double stage = 0.0;
   switch (options.stepMode) {
     case flow::StepMode::Arc:
-      return h * widest;
+      stage = h * widest;
+      break;
     case flow::StepMode::Cell:
-      return h * widest * fastest;
+      stage = h * widest * fastest;
+      break;
     case flow::StepMode::Time: {
       const glm::dvec3 perPhysical = 1.0 / volume.transform.spacing;
-      return h * fastest * std::max({perPhysical.x, perPhysical.y, perPhysical.z});
+      stage = h * fastest * std::max({perPhysical.x, perPhysical.y, perPhysical.z});
+      break;
     }
   }
-  return 0.0;
+  if (rk45) return {kDpStepWeights * stage, kDpStageWeights * stage};
+  return {stage, stage};
 }
 
 flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin,

@@ -20,11 +20,17 @@
 
 namespace amrstream::dist {
 
-// The farthest, in finest cells, that one stage of one step may sample from the step's start:
-// from the step mode and size, the fastest cell of `volume` and its widest region cells. Throws
-// InputError for what the bound does not cover (rk45, whose stages reach several steps out, and
-// the linear interpolant, which may exceed the fastest cell).
-double stageReach(const flow::VectorVolume& volume, const flow::TraceOptions& options);
+// How far, in finest cells, one step may move a line from where it starts, and how far one of
+// its stages may sample: from the step mode and the (largest) step size, the fastest vector the
+// interpolant can give (for the linear one, the fastest cell plus its steepest gradient over half
+// a diagonal of the widest cell) and the widest region cells. Rk45's stages combine earlier
+// stages with weights whose magnitudes add up to 24.7, its step's to 1.65; the other integrators'
+// stages and steps lie within one step.
+struct StepReach {
+  double step = 0.0;
+  double stage = 0.0;
+};
+StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options);
 
 // The box a rank's lines stay in: its part grown by `margin` finest cells, and without bound
 // beyond the faces that lie on the domain's, but for periodic axes (the points beyond have no

@@ -254,6 +254,14 @@ TEST_P(MpiGpuTraceTest, OverDataOnAPeriodicBoxEqualsOneProcess) {
                             " --distribute data", 3);
 }
 
+// Rk45 steps and the linear interpolant (its gradients) over data, on the device.
+TEST_P(MpiGpuTraceTest, OverDataWithRk45AndTheLinearInterpolant) {
+  expectValidatedRanksAgree("trace builtin:rotation --backend " + GetParam() +
+                                " --count 12 --steps 500 --integrator rk45 --max-step 0.25 "
+                                "--interpolant linear --point-data none",
+                            " --distribute data", 3);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, MpiGpuTraceTest,
                          ::testing::Values("rayquery", "pipeline", "compute"));
 
@@ -391,19 +399,25 @@ TEST_F(MpiDataTraceTest, LinesThatStartAndEndOnTheFaces) {
                          {2, 3});
 }
 
-TEST_F(MpiDataTraceTest, WhatItDoesNotCoverIsRefusedByName) {
-  for (const auto& [options, words] : std::vector<std::pair<std::string, std::string>>{
-           {"builtin:cloud --backend cpu --integrator rk45",
-            "not available with --integrator rk45"},
-           {"builtin:cloud --backend cpu --interpolant linear",
-            "not available with --interpolant linear"}}) {
-    SCOPED_TRACE(options);
-    const testing::Outcome run =
-        mpirun(2, "trace " + options + " --distribute data --out " + path("out.vtp"));
-    EXPECT_EQ(run.status, 2) << run.output;
-    EXPECT_THAT(run.output, HasSubstr(words));
-    EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
-  }
+// Rk45 over data: steps of varying size, each trying up to `--max-step`, whose stages may sample
+// much farther than a step moves (the halo allows for it); and the cloud's level jumps.
+TEST_F(MpiDataTraceTest, Rk45StepsAcrossTheParts) {
+  const std::string output =
+      expectDataRanksAgree("trace builtin:rotation --backend cpu --count 40 --steps 600 "
+                           "--integrator rk45 --step-size 0.1 --max-step 0.3 --point-data none",
+                           {2, 3});
+  EXPECT_GT(handOffs(output), 10) << output;
+  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 60 --steps 300 "
+                       "--integrator rk45 --max-step 0.3 --halo-steps 2",
+                       {3});
+}
+
+// The linear interpolant over data, with point data and vorticity (their gradients too): the
+// cells a sample reaches have every face neighbour their gradients were fitted to.
+TEST_F(MpiDataTraceTest, LinearInterpolantAcrossTheParts) {
+  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 80 --steps 500 "
+                       "--interpolant linear --vorticity --halo-steps 1",
+                       {2, 3});
 }
 
 }  // namespace
