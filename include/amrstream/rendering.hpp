@@ -72,6 +72,7 @@ struct RenderScene {
   // The colour field's values at the ends of the map, and how values between map onto it; the
   // tubes carry scale coordinates (settings.colourRange is the range's), the bar shows values.
   render::ColourScale colourScale;
+  render::ValueRange colourSeen;  // the finite values the tubes carry (positive ones for log)
   std::string colourLabel;
   std::vector<float> contextScalars;    // brick-ordered; empty without --volume
   render::ChannelValues colourChannel;  // the --colour-by channel, when it is one
@@ -106,6 +107,17 @@ void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspe
 // The tube segments and colour range for traces (also used as traces grow in the viewer).
 void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cells,
                  const flow::VectorVolume& volume, const flow::TraceSet& traces);
+
+// Extends the scene's tubes by the polylines `recent` (flow::ProgressiveTraces::recent): their
+// segments join the traces' before the outline, and an automatic colour range grows to hold
+// their values. Returns the added segments; nothing, and the scene as it was, when the segments
+// already made would change colour (a symmetric-log scale whose width follows the range): then
+// updateTubes must make them all again.
+std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
+                                                            const RenderOptions& o,
+                                                            const Dataset& cells,
+                                                            const flow::VectorVolume& volume,
+                                                            const flow::TraceSet& recent);
 
 // An image of traces: `frames` jittered samples per pixel accumulated, with the colour bar.
 struct RenderedImage {

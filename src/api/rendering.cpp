@@ -77,29 +77,43 @@ void checkImageOptions(const RenderOptions& o) {
 
 // The colour field's scale: the kind asked for, over --range or the values' own range (the
 // positive values' for a log scale).
-render::ColourScale colourScaleFor(const RenderOptions& o, std::span<const float> values) {
+render::ScaleKind scaleKindOf(const RenderOptions& o) {
   const std::optional<render::ScaleKind> kind = render::parseScaleKind(o.colourScale);
   if (!kind)
     throw InputError("--colour-scale",
                      fmt::format("no scale '{}'; choose linear, log or symlog", o.colourScale));
+  return *kind;
+}
+
+// The finite values the scale can show (positive ones for log), grown by `values`.
+render::ValueRange widenSeen(render::ValueRange seen, render::ScaleKind kind,
+                             std::span<const float> values) {
+  for (const float v : values)
+    if (std::isfinite(v) && (kind != render::ScaleKind::Log || v > 0.0f))
+      seen.min = std::min(seen.min, v), seen.max = std::max(seen.max, v);
+  return seen;
+}
+
+render::ValueRange nothingSeen() { return {INFINITY, -INFINITY}; }
+
+// --range, or the values seen.
+render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange seen) {
+  const render::ScaleKind kind = scaleKindOf(o);
   render::ColourScale scale;
-  scale.kind = *kind;
+  scale.kind = kind;
   if (!o.range.empty()) {
     const render::ValueRange range = parseRange(o.range, "--range");
     scale.min = range.min, scale.max = range.max;
   } else {
-    double lo = INFINITY, hi = -INFINITY;
-    for (const float v : values)
-      if (std::isfinite(v) && (*kind != render::ScaleKind::Log || v > 0.0f))
-        lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
-    if (lo > hi) lo = *kind == render::ScaleKind::Log ? 1.0 : 0.0, hi = lo;  // nothing to show
+    double lo = seen.min, hi = seen.max;
+    if (lo > hi) lo = kind == render::ScaleKind::Log ? 1.0 : 0.0, hi = lo;  // nothing to show
     if (!(lo < hi)) {  // one value: a range around it
       const double pad = lo != 0.0 ? std::abs(lo) * 0.5 : 1.0;
-      hi = lo + pad, lo = *kind == render::ScaleKind::Log ? lo * 0.5 : lo - pad;
+      hi = lo + pad, lo = kind == render::ScaleKind::Log ? lo * 0.5 : lo - pad;
     }
     scale.min = lo, scale.max = hi;
   }
-  if (*kind == render::ScaleKind::SymLog)
+  if (kind == render::ScaleKind::SymLog)
     scale.linearWidth = o.symlogWidth.value_or(render::defaultLinearWidth(scale.min, scale.max));
   try {
     render::checkScale(scale);
@@ -107,6 +121,19 @@ render::ColourScale colourScaleFor(const RenderOptions& o, std::span<const float
     throw InputError(o.range.empty() ? "--colour-scale" : "--range", e.what());
   }
   return scale;
+}
+
+// The colour values as the tubes carry them: scale coordinates.
+void toCoordinates(const render::ColourScale& scale, std::vector<float>& values) {
+  if (scale.kind == render::ScaleKind::Linear) return;
+  for (float& v : values)
+    if (std::isfinite(v)) v = static_cast<float>(scale.coordinate(v));
+}
+
+void setColourRange(RenderScene& scene) {
+  const render::ColourScale& scale = scene.colourScale;
+  scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
+                                static_cast<float>(scale.coordinate(scale.max))};
 }
 
 std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
@@ -138,15 +165,35 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cell
                  const flow::VectorVolume& volume, const flow::TraceSet& traces) {
   render::ColourField colour =
       render::colourFieldOf(traces, o.colourBy, cells, volume, scene.colourChannel);
-  scene.colourScale = colourScaleFor(o, colour.values);
-  const render::ColourScale& scale = scene.colourScale;
-  if (scale.kind != render::ScaleKind::Linear)
-    for (float& v : colour.values)
-      if (std::isfinite(v)) v = static_cast<float>(scale.coordinate(v));
+  scene.colourSeen = widenSeen(nothingSeen(), scaleKindOf(o), colour.values);
+  scene.colourScale = colourScaleFor(o, scene.colourSeen);
+  toCoordinates(scene.colourScale, colour.values);
   scene.segments = render::buildTubeSegments(traces, colour, volume.transform);
   scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
-  scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
-                                static_cast<float>(scale.coordinate(scale.max))};
+  setColourRange(scene);
+}
+
+std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
+                                                            const RenderOptions& o,
+                                                            const Dataset& cells,
+                                                            const flow::VectorVolume& volume,
+                                                            const flow::TraceSet& recent) {
+  render::ColourField colour =
+      render::colourFieldOf(recent, o.colourBy, cells, volume, scene.colourChannel);
+  const render::ValueRange seen = widenSeen(scene.colourSeen, scaleKindOf(o), colour.values);
+  const render::ColourScale scale = colourScaleFor(o, seen);
+  // The coordinates of a symmetric-log scale depend on its width, which follows the range.
+  if (scale.kind == render::ScaleKind::SymLog && scale.linearWidth != scene.colourScale.linearWidth)
+    return std::nullopt;
+  scene.colourSeen = seen;
+  scene.colourScale = scale;
+  toCoordinates(scale, colour.values);
+  std::vector<shared::TubeSegment> added =
+      render::buildTubeSegments(recent, colour, volume.transform);
+  scene.segments.insert(scene.segments.end() - std::ptrdiff_t(scene.outline.size()),
+                        added.begin(), added.end());
+  setColourRange(scene);
+  return added;
 }
 
 RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,

@@ -125,7 +125,7 @@ void runView(const ViewOptions& o) {
     if (!tracesDone && session.traces().finished()) {
       tracesDone = true;
       fmt::print("traces     all {} finished after {} frames, {} particle-steps\n",
-                 session.traces().traces().lineCount(), frame, session.traces().stepsTaken());
+                 session.traces().lineCount(), frame, session.traces().stepsTaken());
     }
     if (o.frames > 0 && frame >= o.frames) window.requestClose();
   }

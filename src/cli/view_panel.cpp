@@ -52,7 +52,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
                    stats.stepsPerSecond));
   const flow::ProgressiveTraces& traces = session.traces();
   text(fmt::format("traces {} running of {}, {} steps", traces.runningCount(),
-                   traces.traces().lineCount(), traces.stepsTaken()));
+                   traces.lineCount(), traces.stepsTaken()));
   text(fmt::format("{} tube segments, {} frames accumulated", scene.segments.size(),
                    session.renderer().framesAccumulated()));
 

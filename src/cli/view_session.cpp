@@ -35,6 +35,14 @@ void ViewSession::rebuildTubes() {
   renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
 }
 
+void ViewSession::growTubes() {
+  const std::optional<std::vector<shared::TubeSegment>> added =
+      appendTubes(scene_, options_.look, input_.field(), input_.volume, traces_->recent());
+  if (!added) return rebuildTubes();
+  vkQueueWaitIdle(ctx_->queue());
+  renderer_->appendTubes(*added, scene_.segments, scene_.settings.tubeRadius);
+}
+
 void ViewSession::setColourMap(render::ColourMap map) {
   scene_.colourMap = map;
   renderer_->setColourMap(render::colourMapTable(map));
@@ -72,7 +80,11 @@ std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
     taken = traces_->advance(options_.stepsPerFrame);
     times_.traceSeconds = clock.seconds();
     clock.restart();
-    rebuildTubes();
+    growTubes();
+    if (traces_->finished()) {
+      vkQueueWaitIdle(ctx_->queue());
+      renderer_->consolidateTubes();
+    }
     times_.tubesSeconds = clock.seconds();
   }
   if (width != renderer_->width() || height != renderer_->height()) {

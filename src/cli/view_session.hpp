@@ -47,6 +47,9 @@ class ViewSession {
   void startTraces();
   // Rebuilds the tubes from the traces as they are (after a colour or radius change).
   void rebuildTubes();
+  // Adds the tubes of what the last round of tracing added (rebuilds them all when the colours
+  // of the old ones would change).
+  void growTubes();
   void setColourMap(render::ColourMap map);
   // Reloads the context volume for options().look.volume (empty: none).
   void reloadVolume();

@@ -1,12 +1,61 @@
 #include "progressive_traces.hpp"
 
+#include <algorithm>
+
 namespace amrstream::flow {
+
+namespace {
+
+// Copies point `from` of `source` to the end of `target`'s columns.
+void appendPoint(TraceSet& target, const TraceSet& source, std::uint64_t from) {
+  const std::size_t channels = source.channelCount();
+  target.positions.push_back(source.positions[from]);
+  if (source.precisePositions) target.positionsLow.push_back(source.positionsLow[from]);
+  target.times.push_back(source.times[from]);
+  target.vectors.push_back(source.vectors[from]);
+  for (std::size_t c = 0; c < channels; ++c)
+    target.channels.push_back(source.channels[from * channels + c]);
+  if (source.withVorticity) target.vorticity.push_back(source.vorticity[from]);
+}
+
+// Writes point `from` of `source` over point `to` of `target`.
+void setPoint(TraceSet& target, std::uint64_t to, const TraceSet& source, std::uint64_t from) {
+  const std::size_t channels = source.channelCount();
+  target.positions[to] = source.positions[from];
+  if (source.precisePositions) target.positionsLow[to] = source.positionsLow[from];
+  target.times[to] = source.times[from];
+  target.vectors[to] = source.vectors[from];
+  std::copy_n(source.channels.begin() + std::ptrdiff_t(from * channels), channels,
+              target.channels.begin() + std::ptrdiff_t(to * channels));
+  if (source.withVorticity) target.vorticity[to] = source.vorticity[from];
+}
+
+TraceSet emptyLike(const TraceSet& shape, bool precise) {
+  TraceSet set;
+  set.vectorName = shape.vectorName;
+  set.channelNames = shape.channelNames;
+  set.periodic = shape.periodic;
+  set.withVorticity = shape.withVorticity;
+  set.precisePositions = precise;
+  return set;
+}
+
+}  // namespace
 
 ProgressiveTraces::ProgressiveTraces(std::unique_ptr<RoundTracer> tracer, LineLayout lines,
                                      const TraceSet& shape)
     : tracer_(std::move(tracer)), accumulator_(std::move(lines), shape) {
   lineSteps_.assign(accumulator_.lineCount(), 0);
-  traces_ = accumulator_.snapshot();
+  hasTail_.assign(accumulator_.lineCount(), false);
+  recent_ = emptyLike(shape, shape.precisePositions);
+}
+
+const TraceSet& ProgressiveTraces::traces() const {
+  if (stale_) {
+    traces_ = accumulator_.snapshot();
+    stale_ = false;
+  }
+  return traces_;
 }
 
 std::size_t ProgressiveTraces::advance(std::uint32_t steps) {
@@ -17,8 +66,45 @@ std::size_t ProgressiveTraces::advance(std::uint32_t steps) {
     taken += line.steps - lineSteps_[line.line];
     lineSteps_[line.line] = line.steps;
   }
+
+  // The round as lines of their own, in its order.
+  TraceSet added = emptyLike(recent_, !round.positionsLow.empty());
+  added.positions = round.positions;
+  added.positionsLow = round.positionsLow;
+  added.times = round.times;
+  added.vectors = round.vectors;
+  added.channels = round.channels;
+  added.vorticity = round.vorticity;
+  if (tails_.times.empty()) {  // one slot per line, once the first round says what points hold
+    const std::size_t lines = hasTail_.size();
+    tails_ = emptyLike(recent_, added.precisePositions);
+    tails_.positions.resize(lines);
+    if (added.precisePositions) tails_.positionsLow.resize(lines);
+    tails_.times.resize(lines);
+    tails_.vectors.resize(lines);
+    tails_.channels.resize(lines * tails_.channelCount());
+    if (tails_.withVorticity) tails_.vorticity.resize(lines);
+  }
+  const LineLayout& layout = accumulator_.layout();
+  TraceSet recent = emptyLike(recent_, added.precisePositions);
+  std::uint64_t point = 0;
+  for (const shared::LineRound& line : round.lines) {
+    recent.seedIds.push_back(layout.seedIds[line.line]);
+    recent.directions.push_back(layout.directions[line.line]);
+    recent.steps.push_back(line.steps);
+    recent.reasons.push_back(line.reason);
+    if (hasTail_[line.line] && line.points > 0) appendPoint(recent, tails_, line.line);
+    for (std::uint32_t k = 0; k < line.points; ++k) appendPoint(recent, added, point + k);
+    recent.offsets.push_back(recent.positions.size());
+    if (line.points > 0) {
+      setPoint(tails_, line.line, added, point + line.points - 1);
+      hasTail_[line.line] = true;
+    }
+    point += line.points;
+  }
+  recent_ = std::move(recent);
   accumulator_.add(std::move(round));
-  traces_ = accumulator_.snapshot();
+  stale_ = true;
   stepsTaken_ += taken;
   return taken;
 }

@@ -35,6 +35,7 @@ class TraceAccumulator {
   void setMemoryLimit(std::uint64_t maxBytes) { maxBytes_ = maxBytes; }
 
   std::size_t lineCount() const { return layout_.seedIds.size(); }
+  const LineLayout& layout() const { return layout_; }
   std::size_t finishedLines() const { return finished_; }
   std::uint64_t pointCount() const { return points_; }
 

@@ -18,6 +18,8 @@ namespace amrstream::render {
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// Segments that appendTubes may move into a larger buffer.
+constexpr VkBufferUsageFlags kAppendable = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 
 VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
   return {buffer.handle(), 0, VK_WHOLE_SIZE};
@@ -162,11 +164,76 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
     segments_ = vk::uploadToDeviceLocal(*ctx_, bvh.segments, kStorage, "tube segments");
     bvhNodes_ = vk::uploadToDeviceLocal(*ctx_, bvh.nodes, kStorage, "tube BVH");
   } else {
-    segments_ = vk::uploadToDeviceLocal(*ctx_, segments, kStorage, "tube segments");
+    segments_ = vk::uploadToDeviceLocal(*ctx_, segments, kAppendable, "tube segments");
     scene_ = vk::buildAabbScene(*ctx_, segmentBoxes(segments, radius), "tubes");
+    deviceOrder_.assign(segments.begin(), segments.end());
   }
   frames_ = 0;
   descriptorsStale_ = true;
+}
+
+void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
+                               std::span<const shared::TubeSegment> all, float radius) {
+  if (added.empty()) return;
+  const std::size_t first = segmentCount_, count = first + added.size();
+  // The compute backend's BVH is built on the host, whole; and a long run of appended structures
+  // makes every ray test many boxes, so after a while they are merged into one.
+  if (kernel_.backend == gpu::Backend::Compute || radius != radius_ || !scene_ ||
+      scene_->blases.size() >= kMaxAppendedStructures || count > 0xFFFFFF)
+    return setTubes(all, radius);
+  deviceOrder_.insert(deviceOrder_.end(), added.begin(), added.end());
+  for (const shared::TubeSegment& s : added) {
+    tubesLower_ = glm::min(tubesLower_, glm::min(s.a, s.b) - radius);
+    tubesUpper_ = glm::max(tubesUpper_, glm::max(s.a, s.b) + radius);
+  }
+  const VkDeviceSize bytes = count * sizeof(shared::TubeSegment);
+  if (segments_.size() < bytes) {  // room for as many again, keeping what is there
+    vk::Buffer grown = vk::Buffer::deviceLocal(*ctx_, 2 * bytes,
+                                               kAppendable | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                               "tube segments");
+    vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+      const VkBufferCopy region{0, 0, first * sizeof(shared::TubeSegment)};
+      if (region.size > 0) vkCmdCopyBuffer(cmd, segments_.handle(), grown.handle(), 1, &region);
+      vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+    });
+    segments_ = std::move(grown);
+  }
+  vk::Buffer staging = vk::Buffer::upload(*ctx_, added.size_bytes(),
+                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                          "tube segments (staging)");
+  std::memcpy(staging.mapped().data(), added.data(), added.size_bytes());
+  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+    const VkBufferCopy region{0, first * sizeof(shared::TubeSegment), added.size_bytes()};
+    vkCmdCopyBuffer(cmd, staging.handle(), segments_.handle(), 1, &region);
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+  });
+  // The new boxes' structure takes global ids from its first segment on (aabb_scene.hpp). Like
+  // a binary counter, it first absorbs the structures before it that are at most twice its size,
+  // so that they stay few (about log2 of the appends) and each segment is built into a structure
+  // a few times over the appends, not at every one.
+  std::vector<vk::AabbBlas>& blases = scene_->blases;
+  std::size_t from = first;
+  while (!blases.empty() && blases.back().boxCount <= 2 * (count - from)) {
+    from = blases.back().firstBox;
+    blases.pop_back();
+  }
+  const std::span<const shared::TubeSegment> rebuilt = std::span(deviceOrder_).subspan(from);
+  for (vk::AabbBlas& blas :
+       vk::buildAabbBlas(*ctx_, segmentBoxes(rebuilt, radius), "tubes", 0, false)) {
+    blas.firstBox += static_cast<std::uint32_t>(from);
+    blases.push_back(std::move(blas));
+  }
+  scene_->tlas = vk::buildTlas(*ctx_, blases, "tubes");
+  scene_->boxCount = static_cast<std::uint32_t>(count);
+  segmentCount_ = count;
+  frames_ = 0;
+  descriptorsStale_ = true;
+}
+
+void TubeRenderer::consolidateTubes() {
+  if (!scene_ || scene_->blases.size() <= 1) return;
+  const std::vector<shared::TubeSegment> segments = std::move(deviceOrder_);
+  setTubes(segments, radius_);
 }
 
 void TubeRenderer::setColourMap(std::span<const glm::vec3> table) {

@@ -63,6 +63,16 @@ class TubeRenderer {
   // Replaces the tubes (builds the BVH or the acceleration structure); `radius` is the radius the
   // boxes are built for and must match RenderSettings::tubeRadius.
   void setTubes(std::span<const shared::TubeSegment> segments, float radius);
+  // Adds `added` to the tubes (`all`: every tube, the added ones included, in any order). The
+  // ray tracing backends build the added boxes' structure, merged with the last ones when they
+  // are not much larger, and the instance list over all; `compute`, a change of radius, or more
+  // than kMaxAppendedStructures structures make it setTubes(all, radius).
+  void appendTubes(std::span<const shared::TubeSegment> added,
+                   std::span<const shared::TubeSegment> all, float radius);
+  static constexpr std::size_t kMaxAppendedStructures = 48;
+  // Rebuilds appended tubes as one structure, as setTubes would have built them (rays cross
+  // fewer boxes): for when the tubes stop growing.
+  void consolidateTubes();
   std::size_t segmentCount() const { return segmentCount_; }
   float tubeRadius() const { return radius_; }
   void setColourMap(std::span<const glm::vec3> table);  // at least 2 entries
@@ -92,6 +102,7 @@ class TubeRenderer {
   bool hasScalars_ = false;
   bool linearVolume_ = false;
   vk::Buffer segments_, bvhNodes_;
+  std::vector<shared::TubeSegment> deviceOrder_;  // segments_ as the ray tracing backends hold it
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;
   float radius_ = 0.0f;

@@ -60,7 +60,8 @@ uint64_t maxBoxesPerScene(const Context& ctx, uint32_t override) {
 }
 
 std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
-                                    std::string_view name, uint32_t maxPrimitivesOverride) {
+                                    std::string_view name, uint32_t maxPrimitivesOverride,
+                                    bool compact) {
   requireAccelerationStructures(ctx, "buildAabbBlas");
   const DeviceFunctions& f = ctx.functions();
   const uint32_t limit = maxBoxesPerBlas(ctx, maxPrimitivesOverride);
@@ -93,7 +94,7 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   build.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
   build.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-                VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
+                (compact ? VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR : 0);
   build.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
   build.geometryCount = 1;
   build.pGeometries = &geometry;
@@ -115,12 +116,13 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
 
   const ScratchBuffer scratch(ctx, scratchSize, fmt::format("{} BLAS scratch", name));
   const auto count = static_cast<uint32_t>(blases.size());
-  const UniqueHandle<VkQueryPool> queries = compactedSizeQueries(ctx, count);
+  const UniqueHandle<VkQueryPool> queries =
+      compact ? compactedSizeQueries(ctx, count) : UniqueHandle<VkQueryPool>();
   std::vector<VkAccelerationStructureKHR> handles;
   for (const AabbBlas& blas : blases) handles.push_back(blas.structure.handle());
 
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, queries.get(), 0, count);
+    if (compact) vkCmdResetQueryPool(cmd, queries.get(), 0, count);
     for (size_t i = 0; i < blases.size(); ++i) {
       build.dstAccelerationStructure = handles[i];
       build.scratchData.deviceAddress = scratch.deviceAddress();
@@ -136,10 +138,14 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
                      VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR});
     }
-    f.vkCmdWriteAccelerationStructuresPropertiesKHR(
-        cmd, count, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
-        queries.get(), 0);
+    if (compact)
+      f.vkCmdWriteAccelerationStructuresPropertiesKHR(
+          cmd, count, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
+          queries.get(), 0);
+    else  // later submissions (the TLAS build) read these BLASes
+      memoryBarrier(cmd, access::kAccelerationStructureWrite, access::kAny);
   });
+  if (!compact) return blases;
 
   std::vector<VkDeviceSize> compactedSizes(count);
   AMRSTREAM_VK_CHECK(vkGetQueryPoolResults(ctx.device(), queries.get(), 0, count,

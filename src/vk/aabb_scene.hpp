@@ -44,11 +44,14 @@ uint32_t maxBoxesPerBlas(const Context& ctx, uint32_t override = 0);
 // The most boxes one scene can hold: 0xFFFFFF + maxBoxesPerBlas(ctx, override).
 uint64_t maxBoxesPerScene(const Context& ctx, uint32_t override = 0);
 
-// Builds and compacts the BLASes over `boxes` (empty input: no BLAS). On return the builds are
-// complete and visible to later acceleration-structure builds on the context's queue. Throws
-// std::length_error for more boxes than the id scheme above can address.
+// Builds and compacts the BLASes over `boxes` (empty input: no BLAS); without `compact`, builds
+// them only (one submission fewer and no wait for their sizes, for structures that live a short
+// while). On return the builds are complete and visible to later acceleration-structure builds
+// on the context's queue. Throws std::length_error for more boxes than the id scheme above can
+// address.
 std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
-                                    std::string_view name, uint32_t maxPrimitivesOverride = 0);
+                                    std::string_view name, uint32_t maxPrimitivesOverride = 0,
+                                    bool compact = true);
 
 // One instance per BLAS as described above. On return the build is complete and visible to any
 // later command on the context's queue.

@@ -107,6 +107,54 @@ TEST_F(RoundsTest, ProgressiveTracesGrowIntoTheOneRun) {
   expectIdentical(traces.traces(), once);
 }
 
+// What each round added (recent()) continues each line from its last point: joined, the pieces
+// are the lines traced in one run.
+TEST_F(RoundsTest, RecentPiecesJoinIntoTheOneRun) {
+  TraceOptions options;
+  options.maxSteps = 120;
+  options.vorticity = true;
+  const TraceSet once = traceStreamlines(volume_, seeds_.points, options);
+  LinePlan plan = planLines(volume_, seeds_.points, options.direction);
+  ProgressiveTraces traces(cpuRoundTracer(volume_, plan.states, options), plan.layout,
+                           traceShape(volume_, options));
+  std::vector<std::vector<glm::vec3>> positions(once.lineCount());
+  std::vector<std::vector<float>> times(once.lineCount());
+  std::vector<std::size_t> pieces(once.lineCount(), 0);
+  while (!traces.finished()) {
+    traces.advance(7);
+    const TraceSet& recent = traces.recent();
+    ASSERT_EQ(recent.vorticity.size(), recent.pointCount());
+    for (std::size_t k = 0; k < recent.lineCount(); ++k) {
+      // Lines are laid out forward then backward: find this piece's line by seed and direction.
+      std::size_t line = 0;
+      while (once.seedIds[line] != recent.seedIds[k] || once.directions[line] != recent.directions[k])
+        ++line;
+      const std::uint64_t first = recent.offsets[k], end = recent.offsets[k + 1];
+      // Every piece after the first starts at the line's last point so far.
+      const std::uint64_t from = positions[line].empty() ? first : first + 1;
+      if (!positions[line].empty() && end > first) {
+        EXPECT_EQ(recent.positions[first], positions[line].back());
+        EXPECT_EQ(recent.times[first], times[line].back());
+      }
+      for (std::uint64_t i = from; i < end; ++i) {
+        positions[line].push_back(recent.positions[i]);
+        times[line].push_back(recent.times[i]);
+      }
+      EXPECT_EQ(recent.steps[k], traces.traces().steps[line]);
+      ++pieces[line];
+    }
+  }
+  for (std::size_t line = 0; line < once.lineCount(); ++line) {
+    const std::uint64_t first = once.offsets[line];
+    ASSERT_EQ(positions[line].size(), once.pointCount(line)) << "line " << line;
+    for (std::size_t k = 0; k < positions[line].size(); ++k) {
+      EXPECT_EQ(positions[line][k], once.positions[first + k]);
+      EXPECT_EQ(times[line][k], once.times[first + k]);
+    }
+  }
+  EXPECT_GT(*std::max_element(pieces.begin(), pieces.end()), 5u);
+}
+
 TEST(Rounds, TracesOfAHundredThousandStepsStreamed) {
   // Solid-body rotation: the lines circle for all 1e5 steps, far more than one round holds.
   const glm::dvec3 centre(12.0, 12.0, 4.0);

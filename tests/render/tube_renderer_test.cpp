@@ -249,6 +249,48 @@ TEST_P(TubeRendererTest, StillFramesAccumulateAndAMovedCameraStartsAgain) {
   EXPECT_THROW(renderer.renderFrame(camera, settings), std::invalid_argument);
 }
 
+// Tubes appended ten at a time (36 times, their structures merging as they go), and the same
+// made into one structure afterwards, render as the tubes set at once, pixel for pixel.
+TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
+  const flow::VectorVolume volume = smallVolume();
+  std::vector<shared::TubeSegment> all;
+  for (int i = 0; i < 360; ++i) {
+    const float t = 0.05f * float(i);
+    const glm::vec3 a(16.0f + 10.0f * std::cos(t), 16.0f + 10.0f * std::sin(t), 4.0f + 0.07f * i);
+    const glm::vec3 b(16.0f + 10.0f * std::cos(t + 0.05f), 16.0f + 10.0f * std::sin(t + 0.05f),
+                      4.0f + 0.07f * (i + 1));
+    all.push_back({a, float(i) / 360.0f, b, float(i + 1) / 360.0f});
+  }
+  const auto render = [&](const std::function<void(TubeRenderer&)>& set) {
+    TubeRenderer renderer(ctx(), GetParam(), volume, {});
+    set(renderer);
+    const std::array<glm::vec3, 2> map{glm::vec3(0, 0, 1), glm::vec3(1, 0.5, 0)};
+    renderer.setColourMap(map);
+    renderer.resize(96, 64);
+    RenderSettings settings;
+    settings.tubeRadius = 0.6f;
+    settings.ambientOcclusion = false;
+    renderer.renderFrame(frameBox(OrbitCamera{}, glm::vec3(0), glm::vec3(32), 1.5f), settings);
+    EXPECT_EQ(renderer.segmentCount(), all.size());
+    return renderer.readImage();
+  };
+  const Image once = render([&](TubeRenderer& r) { r.setTubes(all, 0.6f); });
+  const Image appended = render([&](TubeRenderer& r) {
+    r.setTubes(std::span(all).first(10), 0.6f);
+    for (std::size_t n = 10; n < all.size(); n += 10)
+      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+  });
+  const Image consolidated = render([&](TubeRenderer& r) {
+    r.setTubes(std::span(all).first(10), 0.6f);
+    for (std::size_t n = 10; n < all.size(); n += 10)
+      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    r.consolidateTubes();
+  });
+  EXPECT_GT(describeContent(once).fractionNotBackground, 0.05);
+  EXPECT_EQ(compareImages(appended, once, 0).maxAbsolute, 0);
+  EXPECT_EQ(compareImages(consolidated, once, 0).maxAbsolute, 0);
+}
+
 std::string backendLabel(const ::testing::TestParamInfo<gpu::Backend>& info) {
   return std::string(gpu::backendName(info.param));
 }
