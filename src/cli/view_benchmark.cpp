@@ -44,7 +44,8 @@ void runViewBenchmark(const ViewOptions& o) {
              gpu::backendName(choice.backend), ctx.deviceName(), o.look.width, o.look.height,
              o.frames);
 
-  std::vector<double> frames, growing, trace, tubes, render;
+  std::vector<double> frames, growing, trace, tubes, render, segments, upload, structures,
+      instances;
   std::size_t steps = 0;
   for (std::uint32_t f = 0; f < o.frames; ++f) {
     const bool grew = !session.traces().finished();
@@ -56,6 +57,10 @@ void runViewBenchmark(const ViewOptions& o) {
       growing.push_back(frames.back());
       trace.push_back(t.traceSeconds);
       tubes.push_back(t.tubesSeconds);
+      segments.push_back(t.segmentsSeconds);
+      upload.push_back(t.append.upload);
+      structures.push_back(t.append.structures);
+      instances.push_back(t.append.instances);
     }
     render.push_back(t.renderSeconds);
   }
@@ -69,6 +74,9 @@ void runViewBenchmark(const ViewOptions& o) {
              growing.size(), ms(mean(growing)), ms(mean(trace)), ms(mean(tubes)),
              ms(mean(std::vector<double>(render.begin(), render.begin() + growing.size()))),
              growing.empty() ? 0.0 : ms(growing.back()));
+  fmt::print("tubes      while growing, mean: segments {:.2f} ms, upload {:.2f} ms, structures "
+             "{:.2f} ms, instance list {:.2f} ms\n",
+             ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)));
   fmt::print("traces     {} particle-steps, {} tube segments at the end\n", steps,
              session.scene().segments.size());
   checkValidation(ctx);

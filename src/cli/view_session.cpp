@@ -36,11 +36,14 @@ void ViewSession::rebuildTubes() {
 }
 
 void ViewSession::growTubes() {
+  Stopwatch clock;
   const std::optional<std::vector<shared::TubeSegment>> added =
       appendTubes(scene_, options_.look, input_.field(), input_.volume, traces_->recent());
+  times_.segmentsSeconds = clock.seconds();
   if (!added) return rebuildTubes();
   vkQueueWaitIdle(ctx_->queue());
   renderer_->appendTubes(*added, scene_.segments, scene_.settings.tubeRadius);
+  times_.append = renderer_->lastAppendTimes();
 }
 
 void ViewSession::setColourMap(render::ColourMap map) {

@@ -28,6 +28,8 @@ struct ViewOptions {
 struct ViewFrameTimes {
   double traceSeconds = 0;   // advancing the traces on the GPU and collecting their new points
   double tubesSeconds = 0;   // tube segments, their upload and the tubes' structure
+  double segmentsSeconds = 0;  // of which making and colouring the new segments on the host
+  render::TubeRenderer::AppendTimes append;  // and the renderer's parts
   double renderSeconds = 0;  // rendering the frame, to its completion
 };
 

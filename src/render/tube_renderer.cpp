@@ -8,6 +8,7 @@
 
 #include "flow/cell_gradients.hpp"
 #include "tube_bvh.hpp"
+#include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
@@ -158,6 +159,7 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
   }
   if (segments.empty()) tubesLower_ = tubesUpper_ = glm::vec3(0.0f);
   scene_.reset();
+  appended_ = false;
   bvhNodes_ = {};
   if (kernel_.backend == gpu::Backend::Compute) {
     const TubeBvh bvh = buildTubeBvh(segments, radius);
@@ -174,13 +176,18 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
 
 void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
                                std::span<const shared::TubeSegment> all, float radius) {
+  appendTimes_ = {};
   if (added.empty()) return;
+  Stopwatch clock;
   const std::size_t first = segmentCount_, count = first + added.size();
   // The compute backend's BVH is built on the host, whole; and a long run of appended structures
   // makes every ray test many boxes, so after a while they are merged into one.
   if (kernel_.backend == gpu::Backend::Compute || radius != radius_ || !scene_ ||
-      scene_->blases.size() >= kMaxAppendedStructures || count > 0xFFFFFF)
-    return setTubes(all, radius);
+      scene_->blases.size() >= kMaxAppendedStructures || count > 0xFFFFFF) {
+    setTubes(all, radius);
+    appendTimes_.structures = clock.seconds();
+    return;
+  }
   deviceOrder_.insert(deviceOrder_.end(), added.begin(), added.end());
   for (const shared::TubeSegment& s : added) {
     tubesLower_ = glm::min(tubesLower_, glm::min(s.a, s.b) - radius);
@@ -198,15 +205,18 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
     });
     segments_ = std::move(grown);
   }
-  vk::Buffer staging = vk::Buffer::upload(*ctx_, added.size_bytes(),
-                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                          "tube segments (staging)");
-  std::memcpy(staging.mapped().data(), added.data(), added.size_bytes());
+  if (appendStaging_.size() < added.size_bytes())  // kept: making pinned memory is slow
+    appendStaging_ = vk::Buffer::upload(*ctx_, 2 * added.size_bytes(),
+                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        "tube segments (staging)");
+  std::memcpy(appendStaging_.mapped().data(), added.data(), added.size_bytes());
   vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
     const VkBufferCopy region{0, first * sizeof(shared::TubeSegment), added.size_bytes()};
-    vkCmdCopyBuffer(cmd, staging.handle(), segments_.handle(), 1, &region);
+    vkCmdCopyBuffer(cmd, appendStaging_.handle(), segments_.handle(), 1, &region);
     vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
   });
+  appendTimes_.upload = clock.seconds();
+  clock.restart();
   // The new boxes' structure takes global ids from its first segment on (aabb_scene.hpp). Like
   // a binary counter, it first absorbs the structures before it that are at most twice its size,
   // so that they stay few (about log2 of the appends) and each segment is built into a structure
@@ -223,8 +233,18 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
     blas.firstBox += static_cast<std::uint32_t>(from);
     blases.push_back(std::move(blas));
   }
-  scene_->tlas = vk::buildTlas(*ctx_, blases, "tubes");
+  appendTimes_.structures = clock.seconds();
+  clock.restart();
+  if (blases.size() > kMaxAppendedStructures) {  // split beyond the BLAS size limit
+    setTubes(all, radius);
+    appendTimes_.structures += clock.seconds();
+    return;
+  }
+  if (!appendedTlas_) appendedTlas_.emplace(*ctx_, kMaxAppendedStructures, "appended tubes");
+  appendedTlas_->build(blases);
+  appendTimes_.instances = clock.seconds();
   scene_->boxCount = static_cast<std::uint32_t>(count);
+  appended_ = true;
   segmentCount_ = count;
   frames_ = 0;
   descriptorsStale_ = true;
@@ -278,7 +298,7 @@ void TubeRenderer::writeDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
   if (scene_) {
-    tlas = scene_->tlas.handle();
+    tlas = appended_ ? appendedTlas_->tlas().handle() : scene_->tlas.handle();
     sceneWrite.accelerationStructureCount = 1;
     sceneWrite.pAccelerationStructures = &tlas;
     writes[kTubeStructureBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;

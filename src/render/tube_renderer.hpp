@@ -26,6 +26,7 @@
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
 #include "vk/gpu_timer.hpp"
+#include "vk/tlas_builder.hpp"
 
 namespace amrstream::render {
 
@@ -70,6 +71,12 @@ class TubeRenderer {
   void appendTubes(std::span<const shared::TubeSegment> added,
                    std::span<const shared::TubeSegment> all, float radius);
   static constexpr std::size_t kMaxAppendedStructures = 48;
+  // Host wall time of the last appendTubes: the segments' upload, the structures' build (with
+  // their boxes) and the instance list's; all in `structures` when it set the tubes whole.
+  struct AppendTimes {
+    double upload = 0.0, structures = 0.0, instances = 0.0;
+  };
+  const AppendTimes& lastAppendTimes() const { return appendTimes_; }
   // Rebuilds appended tubes as one structure, as setTubes would have built them (rays cross
   // fewer boxes): for when the tubes stop growing.
   void consolidateTubes();
@@ -103,6 +110,11 @@ class TubeRenderer {
   bool linearVolume_ = false;
   vk::Buffer segments_, bvhNodes_;
   std::vector<shared::TubeSegment> deviceOrder_;  // segments_ as the ray tracing backends hold it
+  // After appendTubes, scene_'s BLASes are instanced by appendedTlas_, not by scene_->tlas.
+  bool appended_ = false;
+  std::optional<vk::TlasBuilder> appendedTlas_;
+  vk::Buffer appendStaging_;
+  AppendTimes appendTimes_;
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;
   float radius_ = 0.0f;

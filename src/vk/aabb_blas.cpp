@@ -1,6 +1,8 @@
 // buildAabbBlas: split, build, compact (declared in aabb_scene.hpp).
 #include <fmt/format.h>
 
+#include <cstring>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -74,11 +76,18 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
   }
   if (boxes.empty()) return {};
 
-  const Buffer boxBuffer =
-      uploadToDeviceLocal(ctx, boxes,
-                          VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                              VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                          fmt::format("{} boxes", name));
+  // A few boxes are read by the build straight from host-visible memory: no copy, no wait.
+  constexpr VkBufferUsageFlags kInput =
+      VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+      VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+  constexpr std::size_t kHostReadBoxes = std::size_t(1) << 16;
+  Buffer boxBuffer;
+  if (boxes.size() <= kHostReadBoxes) {
+    boxBuffer = Buffer::upload(ctx, boxes.size_bytes(), kInput, fmt::format("{} boxes", name));
+    std::memcpy(boxBuffer.mapped().data(), boxes.data(), boxes.size_bytes());
+  } else {
+    boxBuffer = uploadToDeviceLocal(ctx, boxes, kInput, fmt::format("{} boxes", name));
+  }
 
   // One geometry per BLAS, each reading its slice of the one box array (the slice address stays
   // a multiple of 8 bytes, as AABB data requires; a 32-bit primitiveOffset could overflow).

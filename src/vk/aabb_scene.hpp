@@ -53,6 +53,9 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
                                     std::string_view name, uint32_t maxPrimitivesOverride = 0,
                                     bool compact = true);
 
+// The instance of `blas` in a TLAS as described above.
+VkAccelerationStructureInstanceKHR tlasInstanceOf(const AabbBlas& blas);
+
 // One instance per BLAS as described above. On return the build is complete and visible to any
 // later command on the context's queue.
 AccelerationStructure buildTlas(const Context& ctx, std::span<const AabbBlas> blases,

@@ -9,6 +9,7 @@
 
 #include "gpu_test.hpp"
 #include "vk/aabb_scene.hpp"
+#include "vk/tlas_builder.hpp"
 #include "vk/vk_error.hpp"
 
 namespace amrstream::testing {
@@ -79,6 +80,29 @@ TEST_F(AccelerationStructureTest, LimitIsTheDevicesMaxPrimitiveCount) {
   EXPECT_EQ(vk::maxBoxesPerBlas(ctx()), deviceLimit);
   EXPECT_EQ(vk::maxBoxesPerBlas(ctx(), 1000), 1000u);
   EXPECT_EQ(vk::maxBoxesPerBlas(ctx(), UINT32_MAX), deviceLimit);
+}
+
+// Uncompacted BLASes, and one TLAS rebuilt in place over changing instance lists (the appended
+// tubes' render test traces through it); more instances than it was made for are refused.
+TEST_F(AccelerationStructureTest, ATlasBuilderRebuildsOneStructureInPlace) {
+  const auto boxes = randomBoxes(300, 5);
+  std::vector<vk::AabbBlas> blases =
+      vk::buildAabbBlas(ctx(), std::span(boxes).first(100), "first", 0, false);
+  ASSERT_EQ(blases.size(), 1u);
+  EXPECT_EQ(blases[0].structure.size(), blases[0].buildSize);  // not compacted
+  vk::TlasBuilder builder(ctx(), 4, "rebuilt");
+  const VkAccelerationStructureKHR handle = builder.build(blases).handle();
+  for (vk::AabbBlas& blas : vk::buildAabbBlas(ctx(), std::span(boxes).subspan(100), "more")) {
+    blas.firstBox += 100;
+    blases.push_back(std::move(blas));
+  }
+  EXPECT_EQ(builder.build(blases).handle(), handle);
+  EXPECT_EQ(blases.back().firstBox, 100u);
+  std::vector<vk::AabbBlas> five;
+  for (int i = 0; i < 5; ++i)
+    for (vk::AabbBlas& blas : vk::buildAabbBlas(ctx(), std::span(boxes).first(10), "one"))
+      five.push_back(std::move(blas));
+  EXPECT_THROW(builder.build(five), std::length_error);
 }
 
 TEST_F(AccelerationStructureTest, EmptyInputGivesAnEmptyTlas) {
