@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "flow/cell_gradients.hpp"
-#include "tube_bvh.hpp"
+#include "tube_forest.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
@@ -162,9 +162,9 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
   appended_ = false;
   bvhNodes_ = {};
   if (kernel_.backend == gpu::Backend::Compute) {
-    const TubeBvh bvh = buildTubeBvh(segments, radius);
-    segments_ = vk::uploadToDeviceLocal(*ctx_, bvh.segments, kStorage, "tube segments");
-    bvhNodes_ = vk::uploadToDeviceLocal(*ctx_, bvh.nodes, kStorage, "tube BVH");
+    forest_.reset(segments, radius);
+    segments_ = vk::uploadToDeviceLocal(*ctx_, forest_.segments(), kAppendable, "tube segments");
+    bvhNodes_ = vk::uploadToDeviceLocal(*ctx_, forest_.nodes(), kAppendable, "tube BVH");
   } else {
     segments_ = vk::uploadToDeviceLocal(*ctx_, segments, kAppendable, "tube segments");
     scene_ = vk::buildAabbScene(*ctx_, segmentBoxes(segments, radius), "tubes");
@@ -174,47 +174,83 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
   descriptorsStale_ = true;
 }
 
+void TubeRenderer::writeRanges(vk::Buffer& buffer, std::string_view name,
+                               std::span<const std::byte> contents,
+                               std::span<const std::pair<std::size_t, std::size_t>> ranges) {
+  if (buffer.size() < contents.size()) {  // room for as many again, keeping what is there
+    vk::Buffer grown = vk::Buffer::deviceLocal(
+        *ctx_, 2 * contents.size(), kAppendable | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
+    vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+      const VkBufferCopy region{0, 0, buffer.size()};
+      if (region.size > 0) vkCmdCopyBuffer(cmd, buffer.handle(), grown.handle(), 1, &region);
+      vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+    });
+    buffer = std::move(grown);
+  }
+  std::size_t bytes = 0;
+  for (const auto& [first, end] : ranges) bytes += end - first;
+  if (appendStaging_.size() < bytes)  // kept: making pinned memory is slow
+    appendStaging_ = vk::Buffer::upload(*ctx_, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        "tubes (staging)");
+  std::vector<VkBufferCopy> regions;
+  std::size_t at = 0;
+  for (const auto& [first, end] : ranges) {
+    if (end <= first) continue;
+    std::memcpy(appendStaging_.mapped().data() + at, contents.data() + first, end - first);
+    regions.push_back({at, first, end - first});
+    at += end - first;
+  }
+  if (regions.empty()) return;
+  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+    vkCmdCopyBuffer(cmd, appendStaging_.handle(), buffer.handle(),
+                    static_cast<std::uint32_t>(regions.size()), regions.data());
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+  });
+}
+
 void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
                                std::span<const shared::TubeSegment> all, float radius) {
   appendTimes_ = {};
   if (added.empty()) return;
   Stopwatch clock;
   const std::size_t first = segmentCount_, count = first + added.size();
-  // The compute backend's BVH is built on the host, whole; and a long run of appended structures
-  // makes every ray test many boxes, so after a while they are merged into one.
-  if (kernel_.backend == gpu::Backend::Compute || radius != radius_ || !scene_ ||
-      scene_->blases.size() >= kMaxAppendedStructures || count > 0xFFFFFF) {
+  const bool compute = kernel_.backend == gpu::Backend::Compute;
+  // A long run of appended structures makes every ray test many boxes: past a number, they are
+  // made into one.
+  const bool whole = radius != radius_ || count > 0xFFFFFF ||
+                     (compute ? forest_.nodes().empty()
+                              : !scene_ || scene_->blases.size() >= kMaxAppendedStructures);
+  if (whole || (compute && !forest_.append(added, radius))) {
     setTubes(all, radius);
     appendTimes_.structures = clock.seconds();
     return;
   }
-  deviceOrder_.insert(deviceOrder_.end(), added.begin(), added.end());
   for (const shared::TubeSegment& s : added) {
     tubesLower_ = glm::min(tubesLower_, glm::min(s.a, s.b) - radius);
     tubesUpper_ = glm::max(tubesUpper_, glm::max(s.a, s.b) + radius);
   }
-  const VkDeviceSize bytes = count * sizeof(shared::TubeSegment);
-  if (segments_.size() < bytes) {  // room for as many again, keeping what is there
-    vk::Buffer grown = vk::Buffer::deviceLocal(*ctx_, 2 * bytes,
-                                               kAppendable | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                               "tube segments");
-    vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
-      const VkBufferCopy region{0, 0, first * sizeof(shared::TubeSegment)};
-      if (region.size > 0) vkCmdCopyBuffer(cmd, segments_.handle(), grown.handle(), 1, &region);
-      vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
-    });
-    segments_ = std::move(grown);
+  segmentCount_ = count;
+  frames_ = 0;
+  descriptorsStale_ = true;
+  constexpr std::size_t kSegment = sizeof(shared::TubeSegment), kNode = sizeof(shared::TubeBvhNode);
+  if (compute) {  // the forest rebuilt its last chunk on the host
+    appendTimes_.structures = clock.seconds();
+    clock.restart();
+    const std::pair<std::size_t, std::size_t> segmentRange{
+        forest_.firstChangedSegment() * kSegment, count * kSegment};
+    writeRanges(segments_, "tube segments", std::as_bytes(std::span(forest_.segments())),
+                std::span(&segmentRange, 1));
+    const std::array<std::pair<std::size_t, std::size_t>, 2> nodeRanges{
+        {{0, TubeForest::kTopNodes * kNode},
+         {forest_.firstChangedNode() * kNode, forest_.nodes().size() * kNode}}};
+    writeRanges(bvhNodes_, "tube BVH", std::as_bytes(std::span(forest_.nodes())), nodeRanges);
+    appendTimes_.upload = clock.seconds();
+    return;
   }
-  if (appendStaging_.size() < added.size_bytes())  // kept: making pinned memory is slow
-    appendStaging_ = vk::Buffer::upload(*ctx_, 2 * added.size_bytes(),
-                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                        "tube segments (staging)");
-  std::memcpy(appendStaging_.mapped().data(), added.data(), added.size_bytes());
-  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
-    const VkBufferCopy region{0, first * sizeof(shared::TubeSegment), added.size_bytes()};
-    vkCmdCopyBuffer(cmd, appendStaging_.handle(), segments_.handle(), 1, &region);
-    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
-  });
+  deviceOrder_.insert(deviceOrder_.end(), added.begin(), added.end());
+  const std::pair<std::size_t, std::size_t> addedRange{first * kSegment, count * kSegment};
+  writeRanges(segments_, "tube segments", std::as_bytes(std::span(deviceOrder_)),
+              std::span(&addedRange, 1));
   appendTimes_.upload = clock.seconds();
   clock.restart();
   // The new boxes' structure takes global ids from its first segment on (aabb_scene.hpp). Like
@@ -245,12 +281,14 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   appendTimes_.instances = clock.seconds();
   scene_->boxCount = static_cast<std::uint32_t>(count);
   appended_ = true;
-  segmentCount_ = count;
-  frames_ = 0;
-  descriptorsStale_ = true;
 }
 
 void TubeRenderer::consolidateTubes() {
+  if (kernel_.backend == gpu::Backend::Compute) {
+    if (forest_.chunks() <= 1) return;
+    const std::vector<shared::TubeSegment> segments = forest_.segments();
+    return setTubes(segments, radius_);
+  }
   if (!scene_ || scene_->blases.size() <= 1) return;
   const std::vector<shared::TubeSegment> segments = std::move(deviceOrder_);
   setTubes(segments, radius_);

@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 #include <optional>
 #include <span>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "../../shaders/glsl/shared/render_types.h"
@@ -22,6 +24,7 @@
 #include "gpu/backend.hpp"
 #include "render/image/image.hpp"
 #include "render_kernel.hpp"
+#include "tube_forest.hpp"
 #include "tube_geometry.hpp"
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
@@ -66,8 +69,9 @@ class TubeRenderer {
   void setTubes(std::span<const shared::TubeSegment> segments, float radius);
   // Adds `added` to the tubes (`all`: every tube, the added ones included, in any order). The
   // ray tracing backends build the added boxes' structure, merged with the last ones when they
-  // are not much larger, and the instance list over all; `compute`, a change of radius, or more
-  // than kMaxAppendedStructures structures make it setTubes(all, radius).
+  // are not much larger, and the instance list over all; `compute` does the same with its host
+  // BVH (TubeForest). A change of radius, or more structures than either keeps, make it
+  // setTubes(all, radius).
   void appendTubes(std::span<const shared::TubeSegment> added,
                    std::span<const shared::TubeSegment> all, float radius);
   static constexpr std::size_t kMaxAppendedStructures = 48;
@@ -101,6 +105,10 @@ class TubeRenderer {
  private:
   // Points the descriptor set at the current buffers; after any of them was replaced.
   void writeDescriptors();
+  // Makes `buffer` hold at least `contents` (growing it, keeping what it holds) and copies the
+  // byte ranges [first, end) of `contents` into it.
+  void writeRanges(vk::Buffer& buffer, std::string_view name, std::span<const std::byte> contents,
+                   std::span<const std::pair<std::size_t, std::size_t>> ranges);
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
@@ -114,6 +122,7 @@ class TubeRenderer {
   bool appended_ = false;
   std::optional<vk::TlasBuilder> appendedTlas_;
   vk::Buffer appendStaging_;
+  TubeForest forest_;  // compute: the segments and BVH nodes as the buffers hold them
   AppendTimes appendTimes_;
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;
