@@ -80,6 +80,9 @@ flow::RoundCosts GpuTracer::roundCosts(const flow::TraceOptions& options) const 
     if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
       deviceLocal = std::max(deviceLocal, memory.memoryHeaps[i].size);
   costs.mostBudget = std::min<std::uint64_t>(std::uint64_t(8) << 30, deviceLocal / 4);
+  // A software device's memory is the host's, which the collected traces need.
+  if (ctx_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+    costs.mostBudget = std::uint64_t(2) << 30;
   costs.stepsPerLine = 128;
   return costs;
 }
