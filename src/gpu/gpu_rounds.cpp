@@ -72,6 +72,48 @@ class StagedLayout {
   std::uint64_t bytesPerPoint_ = 0;
 };
 
+// Unpacks the `count` points a staging slot holds (laid out as `layout`) into `block` from point
+// `first` on. Kernels work in cell units, or offsets from regions' corners (line_state.h);
+// positions are converted to physical coordinates in double precision, like the CPU path's.
+void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t first,
+                 std::size_t count, bool withVorticity, bool withRegionIds,
+                 const flow::VectorVolume& volume, flow::RoundBlock& block) {
+  const std::size_t channels = volume.channelCount();
+  const bricks::WorldTransform& transform = volume.transform;
+  const std::vector<shared::Region>& regions = volume.regions.regions;
+  const auto* cells = layout.in<glm::vec3>(slot, 0, count);
+  const auto* times = layout.in<float>(slot, 1, count);
+  const auto* vectors = layout.in<glm::vec3>(slot, 2, count);
+  const auto* values = layout.in<float>(slot, 3, count);
+  const auto* vorticity = withVorticity ? layout.in<glm::vec3>(slot, 4, count) : nullptr;
+  const auto* ids =
+      withRegionIds ? layout.in<std::int32_t>(slot, layout.arrays().size() - 1, count) : nullptr;
+  constexpr std::size_t kGrain = std::size_t(1) << 14;
+  tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
+    const std::size_t from = chunk * kGrain, n = std::min(kGrain, count - from);
+    const std::size_t to = first + from;
+    std::memcpy(block.times.data() + to, times + from, n * sizeof(float));
+    std::memcpy(block.vectors.data() + to, vectors + from, n * sizeof(glm::vec3));
+    std::memcpy(block.channels.data() + to * channels, values + from * channels,
+                n * channels * sizeof(float));
+    if (vorticity)
+      std::memcpy(block.vorticity.data() + to, vorticity + from, n * sizeof(glm::vec3));
+    for (std::size_t i = from; i < from + n; ++i) {
+      if (ids) {  // deep positions: offsets from the regions' corners, kept precise
+        const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
+                                      ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
+                                      : glm::ivec3(0);
+        const flow::SplitPosition split = flow::splitPosition(
+            transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
+        block.positions[first + i] = split.high;
+        block.positionsLow[first + i] = split.low;
+      } else {
+        block.positions[first + i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
+      }
+    }
+  });
+}
+
 }  // namespace
 
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
@@ -280,10 +322,6 @@ flow::RoundBlock GpuRounds::readRound(const shared::RoundSummary& summary, std::
   if (b.withRegionIds) block.positionsLow.resize(points);
   times_.submitSeconds += clock.seconds();
 
-  // Kernels work in cell units, or offsets from regions' corners (line_state.h); positions are
-  // converted in double precision like the CPU path's.
-  const bricks::WorldTransform& transform = volume_->transform;
-  const std::vector<shared::Region>& regions = volume_->regions.regions;
   for (std::size_t piece = 0; piece < pieces; ++piece) {
     clock.restart();
     vk::Submission& copy = staging_.submission(piece % slots);
@@ -299,38 +337,7 @@ flow::RoundBlock GpuRounds::readRound(const shared::RoundSummary& summary, std::
       block.lines.assign(reported, reported + lines);
     }
     const auto [first, count] = piecePoints(piece);
-    const auto* cells = layout.in<glm::vec3>(slot, 0, count);
-    const auto* times = layout.in<float>(slot, 1, count);
-    const auto* vectors = layout.in<glm::vec3>(slot, 2, count);
-    const auto* values = layout.in<float>(slot, 3, count);
-    const auto* vorticity = options_.vorticity ? layout.in<glm::vec3>(slot, 4, count) : nullptr;
-    const auto* ids = b.withRegionIds
-                          ? layout.in<std::int32_t>(slot, layout.arrays().size() - 1, count)
-                          : nullptr;
-    constexpr std::size_t kGrain = std::size_t(1) << 14;
-    tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
-      const std::size_t from = chunk * kGrain, n = std::min(kGrain, count - from);
-      const std::size_t to = first + from;
-      std::memcpy(block.times.data() + to, times + from, n * sizeof(float));
-      std::memcpy(block.vectors.data() + to, vectors + from, n * sizeof(glm::vec3));
-      std::memcpy(block.channels.data() + to * channels, values + from * channels,
-                  n * channels * sizeof(float));
-      if (vorticity)
-        std::memcpy(block.vorticity.data() + to, vorticity + from, n * sizeof(glm::vec3));
-      for (std::size_t i = from; i < from + n; ++i) {
-        if (ids) {  // deep positions: offsets from the regions' corners, kept precise
-          const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
-                                        ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
-                                        : glm::ivec3(0);
-          const flow::SplitPosition split = flow::splitPosition(
-              transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
-          block.positions[first + i] = split.high;
-          block.positionsLow[first + i] = split.low;
-        } else {
-          block.positions[first + i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
-        }
-      }
-    });
+    unpackPiece(layout, slot, first, count, options_.vorticity, b.withRegionIds, *volume_, block);
     times_.unpackSeconds += clock.seconds();
     clock.restart();
     if (piece + slots < pieces) submitPiece(piece + slots);
