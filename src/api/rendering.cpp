@@ -75,8 +75,6 @@ void checkImageOptions(const RenderOptions& o) {
                      fmt::format("{} is not a finite number >= 0", o.volumeOpacity));
 }
 
-// The colour field's scale: the kind asked for, over --range or the values' own range (the
-// positive values' for a log scale).
 render::ScaleKind scaleKindOf(const RenderOptions& o) {
   const std::optional<render::ScaleKind> kind = render::parseScaleKind(o.colourScale);
   if (!kind)
@@ -96,7 +94,8 @@ render::ValueRange widenSeen(render::ValueRange seen, render::ScaleKind kind,
 
 render::ValueRange nothingSeen() { return {INFINITY, -INFINITY}; }
 
-// --range, or the values seen.
+// The colour field's scale: the kind asked for, over --range or the values seen (the positive
+// values' for a log scale).
 render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange seen) {
   const render::ScaleKind kind = scaleKindOf(o);
   render::ColourScale scale;

@@ -6,28 +6,30 @@ namespace amrstream::flow {
 
 namespace {
 
-// Copies point `from` of `source` to the end of `target`'s columns.
-void appendPoint(TraceSet& target, const TraceSet& source, std::uint64_t from) {
-  const std::size_t channels = source.channelCount();
+// Copies point `from` of `source` (a TraceSet or a RoundBlock of `channels` values per point) to
+// the end of `target`'s columns.
+template <typename Points>
+void appendPoint(TraceSet& target, const Points& source, std::size_t channels,
+                 std::uint64_t from) {
   target.positions.push_back(source.positions[from]);
-  if (source.precisePositions) target.positionsLow.push_back(source.positionsLow[from]);
+  if (!source.positionsLow.empty()) target.positionsLow.push_back(source.positionsLow[from]);
   target.times.push_back(source.times[from]);
   target.vectors.push_back(source.vectors[from]);
   for (std::size_t c = 0; c < channels; ++c)
     target.channels.push_back(source.channels[from * channels + c]);
-  if (source.withVorticity) target.vorticity.push_back(source.vorticity[from]);
+  if (!source.vorticity.empty()) target.vorticity.push_back(source.vorticity[from]);
 }
 
-// Writes point `from` of `source` over point `to` of `target`.
-void setPoint(TraceSet& target, std::uint64_t to, const TraceSet& source, std::uint64_t from) {
-  const std::size_t channels = source.channelCount();
+// Writes point `from` of the round over point `to` of `target`.
+void setPoint(TraceSet& target, std::uint64_t to, const RoundBlock& source, std::size_t channels,
+              std::uint64_t from) {
   target.positions[to] = source.positions[from];
-  if (source.precisePositions) target.positionsLow[to] = source.positionsLow[from];
+  if (!source.positionsLow.empty()) target.positionsLow[to] = source.positionsLow[from];
   target.times[to] = source.times[from];
   target.vectors[to] = source.vectors[from];
   std::copy_n(source.channels.begin() + std::ptrdiff_t(from * channels), channels,
               target.channels.begin() + std::ptrdiff_t(to * channels));
-  if (source.withVorticity) target.vorticity[to] = source.vorticity[from];
+  if (!source.vorticity.empty()) target.vorticity[to] = source.vorticity[from];
 }
 
 TraceSet emptyLike(const TraceSet& shape, bool precise) {
@@ -67,37 +69,31 @@ std::size_t ProgressiveTraces::advance(std::uint32_t steps) {
     lineSteps_[line.line] = line.steps;
   }
 
-  // The round as lines of their own, in its order.
-  TraceSet added = emptyLike(recent_, !round.positionsLow.empty());
-  added.positions = round.positions;
-  added.positionsLow = round.positionsLow;
-  added.times = round.times;
-  added.vectors = round.vectors;
-  added.channels = round.channels;
-  added.vorticity = round.vorticity;
+  const bool precise = !round.positionsLow.empty();
+  const std::size_t channels = recent_.channelCount();
   if (tails_.times.empty()) {  // one slot per line, once the first round says what points hold
     const std::size_t lines = hasTail_.size();
-    tails_ = emptyLike(recent_, added.precisePositions);
+    tails_ = emptyLike(recent_, precise);
     tails_.positions.resize(lines);
-    if (added.precisePositions) tails_.positionsLow.resize(lines);
+    if (precise) tails_.positionsLow.resize(lines);
     tails_.times.resize(lines);
     tails_.vectors.resize(lines);
-    tails_.channels.resize(lines * tails_.channelCount());
+    tails_.channels.resize(lines * channels);
     if (tails_.withVorticity) tails_.vorticity.resize(lines);
   }
   const LineLayout& layout = accumulator_.layout();
-  TraceSet recent = emptyLike(recent_, added.precisePositions);
+  TraceSet recent = emptyLike(recent_, precise);
   std::uint64_t point = 0;
   for (const shared::LineRound& line : round.lines) {
     recent.seedIds.push_back(layout.seedIds[line.line]);
     recent.directions.push_back(layout.directions[line.line]);
     recent.steps.push_back(line.steps);
     recent.reasons.push_back(line.reason);
-    if (hasTail_[line.line] && line.points > 0) appendPoint(recent, tails_, line.line);
-    for (std::uint32_t k = 0; k < line.points; ++k) appendPoint(recent, added, point + k);
+    if (hasTail_[line.line] && line.points > 0) appendPoint(recent, tails_, channels, line.line);
+    for (std::uint32_t k = 0; k < line.points; ++k) appendPoint(recent, round, channels, point + k);
     recent.offsets.push_back(recent.positions.size());
     if (line.points > 0) {
-      setPoint(tails_, line.line, added, point + line.points - 1);
+      setPoint(tails_, line.line, round, channels, point + line.points - 1);
       hasTail_[line.line] = true;
     }
     point += line.points;

@@ -102,7 +102,6 @@ class GpuTracer {
   void timeKernels(bool on) { timeKernels_ = on; }
   // Replaces the staging ring the points come back through (tests use slots of a few points).
   void setStaging(std::size_t slots, std::uint64_t slotBytes);
-  std::uint64_t stagingBytes() const { return staging_->hostBytes(); }
 
  private:
   // What a round costs, and the automatic budget's bounds on this device.

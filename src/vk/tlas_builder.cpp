@@ -55,10 +55,10 @@ TlasBuilder::TlasBuilder(const Context& ctx, std::uint32_t capacity, std::string
                                 VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                                     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                                 fmt::format("{} instances", name))),
-      tlas_(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-            sizesFor(ctx, capacity).accelerationStructureSize, fmt::format("{} TLAS", name)),
-      scratch_(ctx, sizesFor(ctx, capacity).buildScratchSize,
-               fmt::format("{} TLAS scratch", name)) {
+      sizes_(sizesFor(ctx, capacity)),
+      tlas_(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes_.accelerationStructureSize,
+            fmt::format("{} TLAS", name)),
+      scratch_(ctx, sizes_.buildScratchSize, fmt::format("{} TLAS scratch", name)) {
   if (capacity == 0 || capacity > ctx.accelerationStructureProperties().maxInstanceCount)
     throw std::length_error(fmt::format("TlasBuilder: {} instances", capacity));
   // Instance data must be 16-byte aligned.

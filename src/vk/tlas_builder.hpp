@@ -35,6 +35,7 @@ class TlasBuilder {
   const Context* ctx_;
   std::uint32_t capacity_;
   Buffer instances_;  // host-visible: written by the host, read by the build
+  VkAccelerationStructureBuildSizesInfoKHR sizes_;  // for `capacity` instances
   AccelerationStructure tlas_;
   ScratchBuffer scratch_;
 };
