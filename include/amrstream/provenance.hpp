@@ -22,4 +22,11 @@ struct TraceProvenance {
 std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& provenance,
                                                      const flow::VectorVolume& volume);
 
+// What any output made from a dataset records: the amrstream version, the input and its format,
+// the vector, the point-data channels, the periodic axes and the interpolant, then the
+// simulation time and units where the input has them.
+std::vector<output::FieldDataArray> datasetProvenance(const std::string& source,
+                                                      const bricks::DatasetInfo& info,
+                                                      const flow::VectorVolume& volume);
+
 }  // namespace amrstream

@@ -5,27 +5,52 @@
 
 namespace amrstream {
 
+namespace {
+
+std::vector<output::FieldDataArray> inputFields(const std::string& source,
+                                                const bricks::DatasetInfo& info,
+                                                const flow::VectorVolume& volume) {
+  using output::textField;
+  std::string pointData;
+  for (const std::string& name : volume.channelNames)
+    pointData += (pointData.empty() ? "" : ",") + name;
+  const std::string periodic = axesText(volume.periodic);
+  return {
+      textField("amrstream", "amrstream " AMRSTREAM_VERSION),
+      textField("Input", source),
+      textField("InputFormat", info.format),
+      textField("Vector", volume.vectorName),
+      textField("PointDataChannels", pointData.empty() ? "none" : pointData),
+      textField("Periodic", periodic.empty() ? "none" : periodic),
+      textField("Interpolant", interpolantName(volume.interpolant)),
+  };
+}
+
+void addTimeAndUnits(const bricks::DatasetInfo& info, std::vector<output::FieldDataArray>& fields) {
+  if (info.time) fields.push_back(output::numberField("SimulationTime", *info.time));
+  if (!info.timeUnit.empty()) fields.push_back(output::textField("TimeUnit", info.timeUnit));
+  if (!info.lengthUnit.empty()) fields.push_back(output::textField("LengthUnit", info.lengthUnit));
+}
+
+}  // namespace
+
+std::vector<output::FieldDataArray> datasetProvenance(const std::string& source,
+                                                      const bricks::DatasetInfo& info,
+                                                      const flow::VectorVolume& volume) {
+  std::vector<output::FieldDataArray> fields = inputFields(source, info, volume);
+  addTimeAndUnits(info, fields);
+  return fields;
+}
+
 std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
                                                      const flow::VectorVolume& volume) {
   using output::integerField;
   using output::numberField;
   using output::textField;
   const flow::TraceOptions& options = p.options;
-  const bricks::DatasetInfo& info = p.info;
-  std::string pointData;
-  for (const std::string& name : volume.channelNames)
-    pointData += (pointData.empty() ? "" : ",") + name;
-  const std::string periodic = axesText(volume.periodic);
-
-  std::vector<output::FieldDataArray> fields{
-      textField("amrstream", "amrstream " AMRSTREAM_VERSION),
-      textField("Input", p.source),
-      textField("InputFormat", info.format),
-      textField("Vector", volume.vectorName),
-      textField("PointDataChannels", pointData.empty() ? "none" : pointData),
-      textField("Periodic", periodic.empty() ? "none" : periodic),
+  std::vector<output::FieldDataArray> fields = inputFields(p.source, p.info, volume);
+  const std::vector<output::FieldDataArray> tracing{
       textField("Seeds", p.seeds),
-      textField("Interpolant", interpolantName(volume.interpolant)),
       textField("StepMode", stepModeName(options.stepMode)),
       numberField("StepSize", options.stepSize),
       textField("Integrator", integratorName(options.integrator)),
@@ -36,14 +61,13 @@ std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
       numberField("TerminalSpeed", options.terminalSpeed),
       textField("Backend", p.report.backend + " on " + p.report.device),
   };
+  fields.insert(fields.end(), tracing.begin(), tracing.end());
   if (options.integrator == flow::Integrator::Rk45) {
     fields.push_back(numberField("Tolerance", options.tolerance));
     fields.push_back(numberField("MinStep", options.minStep));
     fields.push_back(numberField("MaxStep", options.maxStep));
   }
-  if (info.time) fields.push_back(numberField("SimulationTime", *info.time));
-  if (!info.timeUnit.empty()) fields.push_back(textField("TimeUnit", info.timeUnit));
-  if (!info.lengthUnit.empty()) fields.push_back(textField("LengthUnit", info.lengthUnit));
+  addTimeAndUnits(p.info, fields);
   return fields;
 }
 

@@ -13,6 +13,7 @@
 #include "pathlines_command.hpp"
 #include "progress.hpp"
 #include "render_command.hpp"
+#include "resample_command.hpp"
 #include "trace_command.hpp"
 #include "dist/mpi_world.hpp"
 #include "dist/rank_agreement.hpp"
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   amrstream::cli::addGenCommand(app);
   amrstream::cli::addDevicesCommand(app);
   amrstream::cli::addConvertCommand(app);
+  amrstream::cli::addResampleCommand(app);
   amrstream::cli::addRenderCommand(app);
 #ifdef AMRSTREAM_HAVE_VIEWER
   amrstream::cli::addViewCommand(app);

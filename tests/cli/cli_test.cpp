@@ -368,3 +368,28 @@ TEST_F(Cli, EnzoIsPeriodicAsItsParameterFileSays) {
 }
 
 }  // namespace
+
+// resample: bad grids, boxes and channels fail naming the option, before any file is written.
+TEST_F(Cli, ResampleRefusesBadGridsAndLeavesNoFile) {
+  const std::string out = " --out " + path("g.vti");
+  const struct {
+    std::string options, message;
+  } cases[] = {
+      {"--dims 0", "--dims"},
+      {"--dims 4,4", "--dims: give one count (the longest axis) or three"},
+      {"--dims 65535,65535,65535", "more than the"},
+      {"--box 1,0,0,0,1,1", "--box: each upper bound must be above its lower bound"},
+      {"--point-data nosuch", "nosuch"},
+      {"--compression gzip", "--compression"},
+  };
+  for (const auto& c : cases) {
+    const Outcome r = run("resample builtin:rotation" + kSmall + " " + c.options + out);
+    EXPECT_NE(r.status, 0) << c.options;
+    EXPECT_THAT(r.output, HasSubstr(c.message)) << c.options;
+    EXPECT_FALSE(fs::exists(path("g.vti"))) << c.options;
+  }
+  const Outcome r = run("resample builtin:rotation" + kSmall + " --dims 8" + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("8 x 8 x 8 points"));
+  EXPECT_TRUE(fs::exists(path("g.vti")));
+}
