@@ -45,6 +45,9 @@ struct RenderOptions {
   std::optional<float> tubeRadius;           // finest cells
   std::optional<double> tubeRadiusPhysical;  // the input's length units
   float tubeRadiusOfView = 0.003f;           // without either: a fraction of the view's height
+  // Below 1: tubes as thick as the colour field is high, from this fraction of the radius at the
+  // colour range's low end to the whole radius at its high end (in the colour scale's terms).
+  float radiusByColour = 1.0f;
   std::string colourBy = "speed";
   std::string colourMap = "viridis";
   std::string colourScale = "linear";  // "log" or "symlog"

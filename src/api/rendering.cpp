@@ -219,6 +219,10 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   }
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
+  if (!(o.radiusByColour > 0.0f && o.radiusByColour <= 1.0f))
+    throw InputError("--radius-by-colour",
+                     fmt::format("{} is outside (0, 1]", o.radiusByColour));
+  s.leastRadiusFraction = o.radiusByColour;
   updateTubes(scene, o, cells, volume, traces);
 
   if (!o.volume.empty()) {

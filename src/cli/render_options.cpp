@@ -71,6 +71,13 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
       ->check(CLI::Range(1e-6f, 0.5f))
       ->excludes(cells)
       ->excludes(physical);
+  command
+      .add_option("--radius-by-colour", o.radiusByColour,
+                  "tubes as thick as the colour field is high: this fraction of the radius at "
+                  "the colour range's low end, the whole radius at its high end (0 to 1; 1: "
+                  "one radius)")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6f, 1.0f));
   command.add_option("--colour-by", o.colourBy,
                      "speed, time (IntegrationTime) or a scalar channel sampled along the tubes")
       ->capture_default_str();

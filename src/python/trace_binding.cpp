@@ -169,7 +169,8 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
                        std::string frame, std::optional<std::vector<double>> lookAt,
                        std::optional<std::vector<double>> viewBox, std::optional<float> tubeRadius,
                        std::optional<double> tubeRadiusPhysical, float tubeRadiusOfView,
-                       std::string colourBy, std::string colourMap, std::string colourScale,
+                       float radiusByColour, std::string colourBy, std::string colourMap,
+                       std::string colourScale,
                        std::optional<double> symlogWidth,
                        std::optional<std::vector<float>> range, std::string outline, bool axes,
                        bool triad, bool scaleBar,
@@ -201,6 +202,7 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
   o.tubeRadius = tubeRadius;
   o.tubeRadiusPhysical = tubeRadiusPhysical;
   o.tubeRadiusOfView = tubeRadiusOfView;
+  o.radiusByColour = radiusByColour;
   o.colourBy = std::move(colourBy);
   o.colourMap = std::move(colourMap);
   o.colourScale = std::move(colourScale);
@@ -347,7 +349,8 @@ void bindTraces(py::module_& m) {
            py::arg("frame") = "traces", py::arg("look_at") = py::none(),
            py::arg("view_box") = py::none(), py::arg("tube_radius") = py::none(),
            py::arg("tube_radius_physical") = py::none(), py::arg("tube_radius_view") = 0.003f,
-           py::arg("colour_by") = "speed", py::arg("colour_map") = "viridis",
+           py::arg("radius_by_colour") = 1.0f, py::arg("colour_by") = "speed",
+           py::arg("colour_map") = "viridis",
            py::arg("colour_scale") = "linear", py::arg("symlog_width") = py::none(),
            py::arg("range") = py::none(), py::arg("outline") = "domain",
            py::arg("axes") = false, py::arg("triad") = true, py::arg("scale_bar") = false,

@@ -101,4 +101,13 @@ std::vector<shared::TubeSegment> boxOutline(glm::vec3 lower, glm::vec3 upper) {
   return edges;
 }
 
+float segmentRadius(const shared::TubeSegment& segment, float radius, float leastFraction,
+                    const ValueRange& range) {
+  if (std::min(segment.valueA, segment.valueB) < 0.1f * AMRSTREAM_OUTLINE_VALUE) return radius;
+  const float span = range.max - range.min;
+  const float mean = 0.5f * segment.valueA + 0.5f * segment.valueB;
+  const float t = span > 0.0f ? std::clamp((mean - range.min) / span, 0.0f, 1.0f) : 1.0f;
+  return radius * (leastFraction + (1.0f - leastFraction) * t);
+}
+
 }  // namespace amrstream::render

@@ -82,7 +82,8 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
             (linearVolume ? AMRSTREAM_RENDER_LINEAR_VOLUME : 0u) |
             (orthographic ? AMRSTREAM_RENDER_ORTHOGRAPHIC : 0u) |
             (settings.flatBackground ? AMRSTREAM_RENDER_FLAT_BACKGROUND : 0u) |
-            (settings.transparent ? AMRSTREAM_RENDER_TRANSPARENT : 0u);
+            (settings.transparent ? AMRSTREAM_RENDER_TRANSPARENT : 0u) |
+            (settings.leastRadiusFraction < 1.0f ? AMRSTREAM_RENDER_RADIUS_BY_VALUE : 0u);
   p.imageSize = {width, height};
   p.segmentCount = static_cast<std::uint32_t>(segmentCount);
   p.tubeRadius = settings.tubeRadius;
@@ -91,6 +92,7 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.aoSamples = settings.aoSamples;
   p.background = settings.background;
   p.outlineColour = settings.outlineColour;
+  p.leastRadiusFraction = settings.leastRadiusFraction;
   p.aoDistance = settings.aoDistance;
   p.domainLower = glm::vec3(volume.domain.lower);
   p.domainUpper = glm::vec3(volume.domain.upper);

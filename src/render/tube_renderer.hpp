@@ -48,6 +48,9 @@ struct RenderSettings {
   bool flatBackground = false;  // else a gentle vertical gradient of `background`
   bool transparent = false;     // no background: the image's alpha is the coverage
   glm::vec3 outlineColour{0.75f};  // of segments with AMRSTREAM_OUTLINE_VALUE values
+  // Below 1: tube radii follow the colour field, from this fraction of tubeRadius at the low end
+  // of colourRange to tubeRadius at the high end (segmentRadius).
+  float leastRadiusFraction = 1.0f;
 
   bool operator==(const RenderSettings&) const = default;
 };

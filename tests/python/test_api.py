@@ -259,7 +259,8 @@ def test_render_camera_and_colour_options_equal_cli_png(cloud, cloud_seeds, tmp_
     require_backend("compute")
     look = ["--width", 96, "--height", 64, "--frames", 2, "--view", "+x", "--up", "+y",
             "--projection", "orthographic", "--fov", 50, "--zoom", 1.2, "--colour-by", "dens",
-            "--colour-scale", "log", "--colour-map", "inferno", "--tube-radius-view", 0.01]
+            "--colour-scale", "log", "--colour-map", "inferno", "--tube-radius-view", 0.01,
+            "--radius-by-colour", 0.3]
     write_seeds(tmp_path / "seeds.txt", cloud_seeds)
     run_cli("render", "builtin:cloud", *SMALL_CLI, "--seeds", tmp_path / "seeds.txt",
             "--steps", 300, "--direction", "both", "--backend", "compute", *look,
@@ -268,7 +269,7 @@ def test_render_camera_and_colour_options_equal_cli_png(cloud, cloud_seeds, tmp_
     image = t.render(width=96, height=64, frames=2, view="+x", up="+y",
                      projection="orthographic", fov=50, zoom=1.2, colour_by="dens",
                      colour_scale="log", colour_map="inferno", tube_radius_view=0.01,
-                     backend="compute")
+                     radius_by_colour=0.3, backend="compute")
     reader = vtk.vtkPNGReader()
     reader.SetFileName(str(tmp_path / "cli.png"))
     reader.Update()
@@ -280,6 +281,8 @@ def test_render_camera_and_colour_options_equal_cli_png(cloud, cloud_seeds, tmp_
         t.render(width=32, height=32, colour_scale="log", range=(-1, 1), backend="compute")
     with pytest.raises(ValueError, match="no view 'front'"):
         t.render(width=32, height=32, view="front", backend="compute")
+    with pytest.raises(ValueError, match=r"radius-by-colour: 0 is outside \(0, 1\]"):
+        t.render(width=32, height=32, radius_by_colour=0.0, backend="compute")
 
 
 @pytest.mark.parametrize("backend", ["cpu", "compute"])

@@ -90,9 +90,13 @@ class TubeRendererTest : public testing::GpuTest,
   // centre) and compares every pixel with the ray-segment distance; pixels whose distance is
   // within `edge` radii of the radius count as ambiguous. Orthographic oracle rays start on a
   // plane behind every segment, as tall as the view at the target.
+  // With `leastFraction` below 1, radii follow the segments' values over [0, 1]
+  // (segmentRadius); `oracleLeastFraction` is the oracle's (the same unless a test shows that a
+  // wrong one fails).
   PixelCheck checkTubePixels(const flow::VectorVolume& volume,
                              const std::vector<shared::TubeSegment>& segments, float radius,
-                             const OrbitCamera& camera, double edge) {
+                             const OrbitCamera& camera, double edge, float leastFraction = 1.0f,
+                             std::optional<float> oracleLeastFraction = std::nullopt) {
     TubeRenderer renderer(ctx(), GetParam(), volume, {});
     renderer.setTubes(segments, radius);
     const std::array<glm::vec3, 2> red{glm::vec3(1, 0, 0), glm::vec3(1, 0, 0)};
@@ -101,7 +105,13 @@ class TubeRendererTest : public testing::GpuTest,
     RenderSettings settings;
     settings.tubeRadius = radius;
     settings.ambientOcclusion = false;
+    settings.colourRange = {0.0f, 1.0f};
+    settings.leastRadiusFraction = leastFraction;
     renderer.renderFrame(camera, settings);
+    std::vector<double> radii;
+    for (const auto& s : segments)
+      radii.push_back(segmentRadius(s, radius, oracleLeastFraction.value_or(leastFraction),
+                                    settings.colourRange));
     const Image image = renderer.readImage();
 
     const bool perspective = camera.projection == Projection::Perspective;
@@ -120,15 +130,17 @@ class TubeRendererTest : public testing::GpuTest,
         const glm::dvec3 d = perspective ? glm::normalize(glm::dvec3(view.forward) + offset)
                                          : glm::dvec3(view.forward);
         const glm::dvec3 o = perspective ? glm::dvec3(view.eye) : behind + offset;
-        double distance = 1e300;
-        for (const auto& s : segments)
-          distance = std::min(distance, raySegmentDistance(o, d, s.a, s.b));
-        if (std::abs(distance - radius) < edge * radius) {
+        // The ray's distance to the nearest capsule surface, in that capsule's radii.
+        double margin = 1e300;
+        for (std::size_t i = 0; i < segments.size(); ++i)
+          margin = std::min(
+              margin, raySegmentDistance(o, d, segments[i].a, segments[i].b) / radii[i] - 1.0);
+        if (std::abs(margin) < edge) {
           ++check.ambiguous;
           continue;
         }
         const Rgba8 c = image.at(x, y);
-        const bool hit = distance < radius, shown = c.r > 50 && c.r > c.b + 30;
+        const bool hit = margin < 0.0, shown = c.r > 50 && c.r > c.b + 30;
         check.tubePixels += hit;
         check.mismatches += hit != shown;
       }
@@ -155,6 +167,30 @@ TEST_P(TubeRendererTest, TubePixelsMatchAnIndependentRaySegmentTest) {
         << " on tube edges skipped), "
         << (projection == Projection::Perspective ? "perspective" : "orthographic");
   }
+}
+
+// Radii that follow the colour field: each capsule as thick as its segment's mean value says,
+// from a quarter of the radius at the range's low end to all of it at the high end; the oracle
+// with one radius for all disagrees.
+TEST_P(TubeRendererTest, TubeRadiiFollowTheColourFieldWhenAsked) {
+  const flow::VectorVolume volume = smallVolume();
+  const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  std::vector<shared::TubeSegment> segments =
+      randomSegments(lower, upper - lower, 120, 3.0f, 11, 10);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (shared::TubeSegment& s : segments) {
+    s.valueA = unit(random);
+    s.valueB = unit(random);
+  }
+  const OrbitCamera camera =
+      frameBox(looking(30.0f, 20.0f), lower, upper, float(kWidth) / kHeight, 1.6f);
+  const PixelCheck check = checkTubePixels(volume, segments, 0.8f, camera, 0.03, 0.25f);
+  EXPECT_GT(check.tubePixels, kWidth * kHeight / 80);
+  EXPECT_EQ(check.mismatches, 0u) << "of " << check.tubePixels << " tube pixels";
+  const PixelCheck oneRadius = checkTubePixels(volume, segments, 0.8f, camera, 0.03, 0.25f, 1.0f);
+  EXPECT_GT(oneRadius.mismatches, check.tubePixels / 10)
+      << "one radius for every tube should not match";
 }
 
 // Thin tubes in the far corner of a deep domain (a 12-level nest, 16,384 finest cells

@@ -1,4 +1,4 @@
-// Ray against the tubes' capsules. Needs the segments buffer and params.tubeRadius.
+// Ray against the tubes' capsules. Needs the segments buffer and the params.
 
 const uint kNoSegment = 0xffffffffu;
 
@@ -39,7 +39,20 @@ float enterCapsule(vec3 o, vec3 d, vec3 a, vec3 b, float r) {
   return tb < 0.0 ? ta : min(ta, tb);
 }
 
+// A segment's radius: tubeRadius, or with AMRSTREAM_RENDER_RADIUS_BY_VALUE, from
+// leastRadiusFraction of it at valueMin to all of it at valueMax by the mean of the segment's two
+// values (outline segments keep tubeRadius). The host's twin: render::segmentRadius.
+float segmentRadius(TubeSegment s) {
+  if ((params.flags & AMRSTREAM_RENDER_RADIUS_BY_VALUE) == 0u ||
+      min(s.valueA, s.valueB) < 0.1 * AMRSTREAM_OUTLINE_VALUE)
+    return params.tubeRadius;
+  const float span = params.valueMax - params.valueMin;
+  const float mean = 0.5 * s.valueA + 0.5 * s.valueB;
+  const float t = span > 0.0 ? clamp((mean - params.valueMin) / span, 0.0, 1.0) : 1.0;
+  return params.tubeRadius * mix(params.leastRadiusFraction, 1.0, t);
+}
+
 float enterSegment(uint id, vec3 o, vec3 d) {
   const TubeSegment s = segments[id];
-  return enterCapsule(o, d, s.a, s.b, params.tubeRadius);
+  return enterCapsule(o, d, s.a, s.b, segmentRadius(s));
 }

@@ -9,7 +9,9 @@ namespace amrstream::shared {
 #endif
 
 // One piece of a tube: the capsule of radius RenderParams::tubeRadius around segment [a, b], with
-// the colour field's value at both ends (a == b: a sphere).
+// the colour field's value at both ends (a == b: a sphere). With AMRSTREAM_RENDER_RADIUS_BY_VALUE
+// the radius is smaller where the values are lower (segmentRadius in capsule.glsl), never larger,
+// so bounding boxes built for tubeRadius hold every capsule.
 struct TubeSegment {
   vec3 a;
   float valueA;
@@ -33,6 +35,7 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u  // parallel rays from the plane through the eye
 #define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u  // the background colour as it is, no gradient
 #define AMRSTREAM_RENDER_TRANSPARENT 64u  // no background: the image's alpha is the coverage
+#define AMRSTREAM_RENDER_RADIUS_BY_VALUE 128u  // tube radii follow the colour field
 
 // The context volume's transfer function runs from this colour at the low end of its range to
 // this one at the high end (render_frame.glsl's transferColour; the volume's colour bar).
@@ -70,7 +73,9 @@ struct RenderParams {
   float volumeOpacity;  // extinction per finest cell at the top of the transfer function
   float volumeStepScale;  // ray-march step in units of the region's finest cell width
   vec3 outlineColour;
-  uint pad0;
+  // With AMRSTREAM_RENDER_RADIUS_BY_VALUE: the radius at valueMin as a fraction of tubeRadius
+  // (tubeRadius itself at valueMax, and in proportion between).
+  float leastRadiusFraction;
 };
 
 #ifdef __cplusplus
