@@ -5,11 +5,13 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
+#include "flow/vector_volume.hpp"
 #include "synth/generators.hpp"
 
 namespace amrstream {
@@ -19,6 +21,21 @@ using Dataset = bricks::AmrField;
 // A FLASH, Enzo, AMReX, Gerris or ExaBricks file (recognised by content), or builtin:NAME sized
 // by `builtin`. Throws InputError naming the input and the problem.
 Dataset load(const std::string& input, const synth::GeneratorOptions& builtin = {});
+
+// A dataset whose channels are read when they are needed: the cells with some channels, and a
+// source of every channel by name (flow::fillVolumeValues takes it). ExaBricks files keep one
+// channel a file, so a channel is read from its file only when asked for and freed after; other
+// inputs are loaded whole and their channels given from memory.
+struct DeferredDataset {
+  // Without channels (an .exa: add those needed before the volume's values with addChannel) or
+  // with all; release it once the volume's layout and the seeds are made (`channels` keeps what
+  // it still needs).
+  std::shared_ptr<Dataset> cells;
+  flow::ChannelCatalog catalog;  // every channel
+  flow::ChannelSource channels;  // any channel, by name
+};
+
+DeferredDataset loadDeferred(const std::string& input, const synth::GeneratorOptions& builtin);
 
 // Leaf cells given as arrays. Levels count up from the coarsest (0, as yt, Enzo and AMReX number
 // them), each twice as fine as the one before; corners are the cells' lower corners in cells of

@@ -28,6 +28,16 @@ struct Field {
 // Throws InputError naming the missing channel or the bad option.
 Field buildField(const Dataset& cells, const FieldOptions& options);
 
+// What buildField builds from a dataset's channel names and what it says of itself: the vector,
+// and the volume's options (periodic axes, point data, interpolant). For a volume built in two
+// steps, its layout before the values (flow::buildCellLayout, then flow::fillVolumeValues).
+struct FieldPlan {
+  flow::VectorChannels vector;
+  flow::VolumeOptions volume;
+};
+FieldPlan planField(const flow::ChannelCatalog& channels, const bricks::DatasetInfo& info,
+                    const FieldOptions& options);
+
 // "auto", "none", or the periodic axes, e.g. "x,y,z" or "xz".
 flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::DatasetInfo& info);
 std::string axesText(const flow::PeriodicAxes& axes);  // "x,z"; empty for none

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "formats/exa_format.hpp"
 #include "formats/load_input.hpp"
 #include "util/input_error.hpp"
 
@@ -11,6 +12,32 @@ namespace amrstream {
 
 Dataset load(const std::string& input, const synth::GeneratorOptions& builtin) {
   return formats::loadInput(input, builtin);
+}
+
+DeferredDataset loadDeferred(const std::string& input, const synth::GeneratorOptions& builtin) {
+  if (formats::detectFormat(input) == formats::Format::ExaBricks) {
+    formats::ExaCells exa = formats::readExaCells(input);
+    DeferredDataset deferred{std::make_shared<Dataset>(std::move(exa.field)), {}, {}};
+    deferred.catalog.source = deferred.cells->source();
+    for (const formats::ExaChannelFile& file : exa.channels)
+      deferred.catalog.names.push_back(file.name);
+    deferred.channels = [files = std::move(exa.channels)](const std::string& name,
+                                                          const flow::ChannelUse& use) {
+      const auto file = std::find_if(files.begin(), files.end(), [&](const auto& f) {
+        return f.name == name;
+      });
+      if (file == files.end())
+        throw std::logic_error("loadDeferred: no channel '" + name + "' was listed");
+      use(formats::readExaChannel(*file));
+    };
+    return deferred;
+  }
+  auto whole = std::make_shared<Dataset>(load(input, builtin));
+  DeferredDataset deferred{whole, flow::catalogOf(*whole), {}};
+  deferred.channels = [whole](const std::string& name, const flow::ChannelUse& use) {
+    use(whole->channel(name).values);
+  };
+  return deferred;
 }
 
 Dataset fromCells(CellArrays cells) {

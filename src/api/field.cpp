@@ -43,16 +43,23 @@ std::string interpolantName(flow::Interpolant interpolant) {
   return interpolant == flow::Interpolant::Linear ? "linear" : "tent";
 }
 
+FieldPlan planField(const flow::ChannelCatalog& channels, const bricks::DatasetInfo& info,
+                    const FieldOptions& options) {
+  FieldPlan plan;
+  plan.vector = flow::chooseVectorChannels(channels, options.vector);
+  plan.volume.periodic = periodicAxes(options.periodic, info);
+  plan.volume.pointData = flow::choosePointData(channels, plan.vector, options.pointData);
+  plan.volume.interpolant = parseInterpolant(options.interpolant);
+  return plan;
+}
+
 Field buildField(const Dataset& cells, const FieldOptions& options) {
+  const FieldPlan plan = planField(flow::catalogOf(cells), cells.info(), options);
   Field field;
   field.source = cells.source();
   field.info = cells.info();
-  field.vector = flow::chooseVectorChannels(cells, options.vector);
-  flow::VolumeOptions volumeOptions;
-  volumeOptions.periodic = periodicAxes(options.periodic, cells.info());
-  volumeOptions.pointData = flow::choosePointData(cells, field.vector, options.pointData);
-  volumeOptions.interpolant = parseInterpolant(options.interpolant);
-  field.volume = flow::buildVectorVolume(cells, field.vector, volumeOptions, &field.times);
+  field.vector = plan.vector;
+  field.volume = flow::buildVectorVolume(cells, field.vector, plan.volume, &field.times);
   return field;
 }
 

@@ -49,8 +49,8 @@ std::vector<output::FieldDataArray> provenanceFields(const TraceProvenance& p,
   using output::textField;
   const flow::TraceOptions& options = p.options;
   std::vector<output::FieldDataArray> fields = inputFields(p.source, p.info, volume);
+  fields.insert(fields.end() - 1, textField("Seeds", p.seeds));  // before Interpolant, as ever
   const std::vector<output::FieldDataArray> tracing{
-      textField("Seeds", p.seeds),
       textField("StepMode", stepModeName(options.stepMode)),
       numberField("StepSize", options.stepSize),
       textField("Integrator", integratorName(options.integrator)),

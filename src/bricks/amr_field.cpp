@@ -38,16 +38,14 @@ std::size_t firstFailing(std::size_t n, Predicate bad) {
 // Open-addressing set of non-zero 64-bit keys, filled concurrently with compare-and-swap.
 class ConcurrentKeySet {
  public:
-  explicit ConcurrentKeySet(std::size_t expected) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * expected) capacity *= 2;
-    slots_ = std::vector<std::atomic<std::uint64_t>>(capacity);
-    mask_ = capacity - 1;
-  }
+  // 1.5 slots a key: at most two thirds full, so probes stay short, in 12 bytes a key (a power
+  // of two would take 16 to 32: the largest transient of loading a big dataset).
+  explicit ConcurrentKeySet(std::size_t expected)
+      : slots_(std::max<std::size_t>(16, expected + expected / 2)) {}
 
   // False when the key was already present.
   bool insert(std::uint64_t key) {
-    for (std::size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+    for (std::size_t i = slotOf(key);; i = next(i)) {
       std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
       if (current == key) return false;
       if (current == 0) {
@@ -58,7 +56,7 @@ class ConcurrentKeySet {
   }
 
   bool contains(std::uint64_t key) const {
-    for (std::size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+    for (std::size_t i = slotOf(key);; i = next(i)) {
       const std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
       if (current == key) return true;
       if (current == 0) return false;
@@ -66,16 +64,20 @@ class ConcurrentKeySet {
   }
 
  private:
-  static std::size_t hash(std::uint64_t x) {  // splitmix64 finaliser
+  static std::uint64_t hash(std::uint64_t x) {  // splitmix64 finaliser
     x ^= x >> 30;
     x *= 0xbf58476d1ce4e5b9ull;
     x ^= x >> 27;
     x *= 0x94d049bb133111ebull;
-    return static_cast<std::size_t>(x ^ (x >> 31));
+    return x ^ (x >> 31);
   }
+  // The hash scaled onto the slots (Lemire's multiply-shift), any count of slots.
+  std::size_t slotOf(std::uint64_t key) const {
+    return std::size_t((unsigned __int128)hash(key) * slots_.size() >> 64);
+  }
+  std::size_t next(std::size_t i) const { return i + 1 == slots_.size() ? 0 : i + 1; }
 
   std::vector<std::atomic<std::uint64_t>> slots_;
-  std::size_t mask_ = 0;
 };
 
 // The corners of one level's cells, keyed by their index in the level's grid within the box of
@@ -221,6 +223,29 @@ void AmrField::validateTransform() const {
   }
 }
 
+void AmrField::addChannel(Channel channel) {
+  checkChannelShape(channel);
+  if (findChannel(channel.name))
+    throw InputError(source_, fmt::format("channel '{}' appears twice", channel.name));
+  checkChannelValues(channel);
+  channels_.push_back(std::move(channel));
+}
+
+void AmrField::checkChannelShape(const Channel& c) const {
+  if (c.name.empty()) throw InputError(source_, "a channel has an empty name");
+  if (c.values.size() != lowers_.size())
+    throw InputError(source_, fmt::format("channel '{}' has {} values for {} cells", c.name,
+                                          c.values.size(), lowers_.size()));
+}
+
+void AmrField::checkChannelValues(const Channel& c) const {
+  const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
+  if (std::size_t i = firstFailing(c.values.size(), notFinite); i < c.values.size())
+    throw InputError(source_,
+                     fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name,
+                                 c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
+}
+
 void AmrField::validate() {
   const std::size_t n = lowers_.size();
   if (n == 0) throw InputError(source_, "the dataset has no cells");
@@ -229,12 +254,9 @@ void AmrField::validate() {
 
   std::set<std::string, std::less<>> names;
   for (const Channel& c : channels_) {
-    if (c.name.empty()) throw InputError(source_, "a channel has an empty name");
+    checkChannelShape(c);
     if (!names.insert(c.name).second)
       throw InputError(source_, fmt::format("channel '{}' appears twice", c.name));
-    if (c.values.size() != n)
-      throw InputError(source_, fmt::format("channel '{}' has {} values for {} cells", c.name,
-                                            c.values.size(), n));
   }
 
   if (std::size_t i = firstFailing(n, [&](std::size_t i) { return levels_[i] > kMaxLevel; }); i < n)
@@ -251,13 +273,7 @@ void AmrField::validate() {
                                           describeCell(i, lowers_[i], levels_[i], info_),
                                           cellWidth(levels_[i])));
 
-  for (const Channel& c : channels_) {
-    const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
-    if (std::size_t i = firstFailing(n, notFinite); i < n)
-      throw InputError(source_,
-                       fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name,
-                                   c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
-  }
+  for (const Channel& c : channels_) checkChannelValues(c);
 
   // The box of each level's corners (in one pass), then of all cells in 64 bits: a corner near
   // INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.

@@ -68,6 +68,10 @@ class AmrField {
   static int cellWidth(int level) { return 1 << level; }
 
   const std::vector<Channel>& channels() const { return channels_; }
+  // Adds a channel, checked as the constructor checks channels (InputError naming the source).
+  // Readers add channels after the cells so that the cells' checks, whose sets are the largest
+  // transient of loading, do not take their memory beside the channels'.
+  void addChannel(Channel channel);
   std::optional<std::size_t> findChannel(std::string_view name) const;
   // Throws InputError listing the available channels when `name` is absent.
   const Channel& channel(std::string_view name) const;
@@ -85,6 +89,8 @@ class AmrField {
 
  private:
   void validate();  // also sets bounds_
+  void checkChannelShape(const Channel& channel) const;
+  void checkChannelValues(const Channel& channel) const;
   void validateTransform() const;
 
   std::vector<glm::ivec3> lowers_;

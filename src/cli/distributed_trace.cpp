@@ -92,7 +92,7 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   job.backend.deviceSlot = unsigned(world.localRank());
   PreparedInput input = dist::agreed(world, [&] {
     checkFiles();
-    PreparedInput prepared = prepareInput(job);
+    PreparedInput prepared = prepareInput(job, true, CellsAfter::Release);
     prepared.releaseField();
     prepared.options.keepHistory = keepHistory;
     return prepared;

@@ -94,7 +94,7 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
     return;
   }
   checkFiles();
-  PreparedInput input = prepareInput(o.job);
+  PreparedInput input = prepareInput(o.job, true, CellsAfter::Release);
   input.releaseField();  // the volume holds the vector and the point data
   input.options.keepHistory = !o.endpointsOnly;
   const bool stagePeak = resetStagePeak();

@@ -51,23 +51,48 @@ RunFiles jobFiles(const TraceJobOptions& o) {
   return files;
 }
 
-PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
+PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter after) {
   Stopwatch clock;
   PreparedInput input;
-  input.cells.emplace(load(o.dataset.input, o.dataset.generator));
-  const bricks::AmrField& cells = input.field();
+  // Deferred: the channels stay in their files until the volume's layout and the seeds are made
+  // and the cells freed, so one channel at a time is in memory beside the volume (.exa inputs).
+  const bool deferred = after == CellsAfter::Release && withSeeds;
+  DeferredDataset data =
+      deferred ? loadDeferred(o.dataset.input, o.dataset.generator)
+               : DeferredDataset{
+                     std::make_shared<Dataset>(load(o.dataset.input, o.dataset.generator)), {}, {}};
+  if (!deferred) data.catalog = flow::catalogOf(*data.cells);
+  const bricks::AmrField& cells = *data.cells;
   input.info = cells.info();
   input.source = cells.source();
   const double loadSeconds = clock.seconds();
-  const flow::VectorChannels vector = flow::chooseVectorChannels(cells, o.field.vector);
+  const FieldPlan plan = planField(data.catalog, cells.info(), o.field);
+  const flow::VectorChannels& vector = plan.vector;
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} = ({}, {}, {}){} [{:.2f} s]\n",
              cells.source(), withCommas(cells.cellCount()),
              cells.info().fileLevel(cells.coarsestLevel()),
              cells.info().fileLevel(cells.finestLevel()), vector.name, vector.channels[0],
              vector.channels[1], vector.channels[2], bricks::timeAndUnitsClause(cells.info()),
              loadSeconds);
-  Field field = buildField(cells, o.field);
-  input.volume = std::move(field.volume);
+  flow::VolumeBuildTimes times;
+  if (deferred) {
+    input.volume = flow::buildCellLayout(cells, plan.volume, &times);
+    // The seeds' density channel after the layout, whose build needs memory beside the cells.
+    const std::string& density = o.seeds.density;
+    if (!density.empty() && !cells.findChannel(density)) {
+      data.catalog.require(density);  // listing every channel when it is absent
+      data.channels(density, [&](std::span<const float> values) {
+        data.cells->addChannel({density, {values.begin(), values.end()}});
+      });
+    }
+    input.seeds = chooseSeeds(o.seeds, domainOf(input.volume), &cells, input.seedDescription);
+    data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
+    flow::fillVolumeValues(input.volume, vector, plan.volume, input.source, data.channels,
+                           &times);
+  } else {
+    input.volume = flow::buildVectorVolume(cells, vector, plan.volume, &times);
+    input.cells = data.cells;
+  }
   const flow::VectorVolume& volume = input.volume;
   const std::size_t images = volume.bricks.size() - volume.originalBrickCount;
   fmt::print("structure  {} bricks{} [{:.2f} s], {} regions [{:.2f} s]{}\n",
@@ -75,9 +100,9 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
              images > 0 ? fmt::format(" + {} periodic images ({})", withCommas(images),
                                       axesText(volume.periodic))
                         : std::string(),
-             field.times.bricks, withCommas(volume.regions.regions.size()), field.times.regions,
+             times.bricks, withCommas(volume.regions.regions.size()), times.regions,
              volume.interpolant == flow::Interpolant::Linear
-                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]", field.times.gradients)
+                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]", times.gradients)
                  : std::string());
   if (!withSeeds) return input;
 
@@ -87,7 +112,9 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds) {
   if (o.trace.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
   fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
-  input.seeds = chooseSeeds(o.seeds, domainOf(volume), &cells, input.seedDescription);
+  if (!deferred)
+    input.seeds =
+        chooseSeeds(o.seeds, domainOf(volume), input.cells.get(), input.seedDescription);
   flow::SeedList& seeds = input.seeds;
   placeSeeds(volume, seeds);
   if (!o.seedsOut.empty()) output::writeSeedFile(o.seedsOut, seeds);

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -48,8 +49,9 @@ RunFiles jobFiles(const TraceJobOptions& o);
 
 // The input loaded and prepared for tracing.
 struct PreparedInput {
-  // The cells; released by `trace` once the volume holds what it needs (see releaseField).
-  std::optional<bricks::AmrField> cells;
+  // The cells; released by `trace` once the volume holds what it needs (see releaseField), and
+  // never held with CellsAfter::Release.
+  std::shared_ptr<const bricks::AmrField> cells;
   bricks::DatasetInfo info;  // what the input says of itself, kept when the cells go
   std::string source;        // the input's name
   flow::VectorVolume volume;
@@ -67,10 +69,17 @@ struct PreparedInput {
   }
 };
 
+// Whether the caller needs the cells once the volume and the seeds are made (render and view
+// colour by channels and show them) or not (trace): then an .exa's channels are read one at a
+// time while the volume takes them, after the cells are freed, and PreparedInput::cells stays
+// empty.
+enum class CellsAfter { Keep, Release };
+
 // Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,
 // printing the input, structure, seeds and stepping lines. Without `withSeeds`, stops after the
 // structure (for traces read from a file).
-PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true);
+PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true,
+                           CellsAfter after = CellsAfter::Keep);
 
 // Traces with the requested backend (with a progress line) and records what ran in
 // input.report. The points stay in the rounds that made them.

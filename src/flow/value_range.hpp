@@ -16,8 +16,9 @@ namespace amrstream::flow {
 inline constexpr float kMaxVectorComponent = 1e18f;  // |v|² stays below 3e36
 inline constexpr float kMaxPointDataValue = 1e36f;   // a sum of 64 weighted values stays finite
 
-// Throws InputError naming the field's source, the channel, the cell and the bound.
-void checkArithmeticRange(const bricks::AmrField& field, const VectorChannels& vector,
-                          std::span<const std::string> pointData);
+// Throws InputError naming `source`, the channel, the cell and the bound when a value's
+// magnitude passes `bound`.
+void checkChannelRange(std::span<const float> values, const std::string& source,
+                       const std::string& name, float bound, const char* role);
 
 }  // namespace amrstream::flow

@@ -51,40 +51,58 @@ std::string vectorName(const std::array<std::string, 3>& c) {
   return c[0] + "_" + c[1] + "_" + c[2];
 }
 
-std::string channelList(const bricks::AmrField& field) {
-  std::string names;
-  for (const bricks::Channel& c : field.channels()) names += (names.empty() ? "" : ", ") + c.name;
-  return names.empty() ? "none" : names;
-}
-
 }  // namespace
 
+bool ChannelCatalog::has(const std::string& name) const {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void ChannelCatalog::require(const std::string& name) const {
+  if (!has(name))
+    throw InputError(source, fmt::format("no channel named '{}' (channels: {})", name, list()));
+}
+
+std::string ChannelCatalog::list() const {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text.empty() ? "none" : text;
+}
+
+ChannelCatalog catalogOf(const bricks::AmrField& field) {
+  ChannelCatalog catalog{field.source(), {}};
+  for (const bricks::Channel& c : field.channels()) catalog.names.push_back(c.name);
+  return catalog;
+}
+
 VectorChannels chooseVectorChannels(const bricks::AmrField& field, const std::string& request) {
+  return chooseVectorChannels(catalogOf(field), request);
+}
+
+VectorChannels chooseVectorChannels(const ChannelCatalog& field, const std::string& request) {
   VectorChannels result;
   if (request.empty()) {
     for (const auto& triplet : kKnownTriplets) {
-      if (field.findChannel(triplet[0]) && field.findChannel(triplet[1]) &&
-          field.findChannel(triplet[2])) {
+      if (field.has(triplet[0]) && field.has(triplet[1]) && field.has(triplet[2])) {
         result.channels = {triplet[0], triplet[1], triplet[2]};
         result.name = vectorName(result.channels);
         return result;
       }
     }
-    throw InputError(field.source(),
+    throw InputError(field.source,
                      fmt::format("no velocity or magnetic field channels found; choose three with "
                                  "--vector a,b,c (channels: {})",
-                                 channelList(field)));
+                                 field.list()));
   }
 
   std::vector<std::string> names;
   std::istringstream parts(request);
   for (std::string part; std::getline(parts, part, ',');) names.push_back(part);
   if (names.size() != 3 || request.back() == ',')
-    throw InputError(field.source(), fmt::format("--vector '{}' must name exactly three channels "
-                                                 "separated by commas",
-                                                 request));
+    throw InputError(field.source, fmt::format("--vector '{}' must name exactly three channels "
+                                               "separated by commas",
+                                               request));
   std::copy(names.begin(), names.end(), result.channels.begin());
-  for (const std::string& name : result.channels) field.channel(name);  // throws if missing
+  for (const std::string& name : result.channels) field.require(name);
   result.name = vectorName(result.channels);
   return result;
 }

@@ -175,25 +175,57 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
 
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const VolumeOptions& options, VolumeBuildTimes* times) {
-  checkArithmeticRange(field, vector, options.pointData);
+  for (const std::string& name : vector.channels) field.channel(name);  // throw before building
+  for (const std::string& name : options.pointData) field.channel(name);
   VolumeBuildTimes local;
   VectorVolume volume = buildCellLayout(field, options, &local);
+  const ChannelSource fromField = [&field](const std::string& name, const ChannelUse& use) {
+    use(field.channel(name).values);
+  };
+  fillVolumeValues(volume, vector, options, field.source(), fromField, &local);
+  if (times) *times = local;
+  return volume;
+}
 
+void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
+                      const VolumeOptions& options, const std::string& source,
+                      const ChannelSource& channels, VolumeBuildTimes* times) {
   Stopwatch clock;
-  const bricks::Channel* channels[3];
-  for (int c = 0; c < 3; ++c) channels[c] = &field.channel(vector.channels[c]);
-  std::vector<const bricks::Channel*> pointData;
-  for (const std::string& name : options.pointData) pointData.push_back(&field.channel(name));
-  const std::size_t slots = volume.cellIds.size(), channelCount = pointData.size();
-  volume.values.resize(slots);
-  volume.channelValues.resize(slots * channelCount);
-  tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
-    const std::uint32_t cell = volume.cellIds[slot];
-    volume.values[slot] =
-        glm::vec3(channels[0]->values[cell], channels[1]->values[cell], channels[2]->values[cell]);
-    for (std::size_t c = 0; c < channelCount; ++c)
-      volume.channelValues[slot * channelCount + c] = pointData[c]->values[cell];
-  });
+  const std::size_t slots = volume.cellIds.size(), channelCount = options.pointData.size();
+  volume.values.assign(slots, glm::vec3(0.0f));
+  volume.channelValues.assign(slots * channelCount, 0.0f);
+  // Every slot's cell must have a value: the source's cells are the layout's.
+  const std::size_t cellsNeeded =
+      volume.cellIds.empty()
+          ? 0
+          : std::size_t(*std::max_element(volume.cellIds.begin(), volume.cellIds.end())) + 1;
+  const auto checkCount = [&](const std::string& name, std::span<const float> values) {
+    if (values.size() < cellsNeeded)
+      throw std::logic_error(fmt::format("fillVolumeValues: channel '{}' has {} values, fewer "
+                                         "than the layout's {} cells",
+                                         name, values.size(), cellsNeeded));
+  };
+  for (int c = 0; c < 3; ++c) {
+    const std::string& name = vector.channels[c];
+    channels(name, [&](std::span<const float> values) {
+      checkCount(name, values);
+      checkChannelRange(values, source, name, kMaxVectorComponent, "the vector component");
+      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
+        volume.values[slot][c] = values[volume.cellIds[slot]];
+      });
+    });
+  }
+  for (std::size_t c = 0; c < channelCount; ++c) {
+    const std::string& name = options.pointData[c];
+    channels(name, [&](std::span<const float> values) {
+      checkCount(name, values);
+      checkChannelRange(values, source, name, kMaxPointDataValue, "the point-data channel");
+      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
+        volume.channelValues[slot * channelCount + c] = values[volume.cellIds[slot]];
+      });
+    });
+  }
+  VolumeBuildTimes local = times ? *times : VolumeBuildTimes{};
   local.gather = clock.seconds();
 
   volume.channelNames = options.pointData;
@@ -207,7 +239,6 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
     local.gradients = clock.seconds();
   }
   if (times) *times = local;
-  return volume;
 }
 
 std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
@@ -221,21 +252,26 @@ std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolum
 
 std::vector<std::string> choosePointData(const bricks::AmrField& field,
                                          const VectorChannels& vector, const std::string& request) {
+  return choosePointData(catalogOf(field), vector, request);
+}
+
+std::vector<std::string> choosePointData(const ChannelCatalog& channels,
+                                         const VectorChannels& vector, const std::string& request) {
   std::vector<std::string> names;
   if (request.empty() || request == "none") return names;
   if (request == "all") {
-    for (const bricks::Channel& c : field.channels())
-      if (std::find(vector.channels.begin(), vector.channels.end(), c.name) ==
+    for (const std::string& name : channels.names)
+      if (std::find(vector.channels.begin(), vector.channels.end(), name) ==
           vector.channels.end())
-        names.push_back(c.name);
+        names.push_back(name);
     return names;
   }
   std::stringstream list(request);
   for (std::string name; std::getline(list, name, ',');) {
     if (name.empty()) continue;
-    if (!field.findChannel(name))
+    if (!channels.has(name))
       throw InputError("--point-data", fmt::format("no channel '{}' in {}; the channels are: {}",
-                                                   name, field.source(), channelList(field)));
+                                                   name, channels.source, channels.list()));
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
   return names;

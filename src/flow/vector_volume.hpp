@@ -10,6 +10,8 @@
 // the sampler needs no other change. Images never create values and never hold seeds.
 
 #include <array>
+#include <functional>
+#include <span>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
@@ -100,6 +102,20 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
                                const VolumeOptions& options = {},
                                VolumeBuildTimes* times = nullptr);
 
+// Gives a channel's values in cell order (one per cell of the layout's field) to the function
+// it is passed, once; they may be read from a file then and freed after (formats::readExaCells),
+// so that one channel at a time is in memory beside the volume.
+using ChannelUse = std::function<void(std::span<const float> values)>;
+using ChannelSource = std::function<void(const std::string& name, const ChannelUse& use)>;
+
+// What buildVectorVolume does after buildCellLayout: the vector's values and the point data
+// (options.pointData) gathered into brick order from `channels`, checked against the float32
+// bounds (value_range.hpp; errors name `source`), and the linear interpolant's gradients. The
+// same volume as buildVectorVolume's from a field with those values.
+void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
+                      const VolumeOptions& options, const std::string& source,
+                      const ChannelSource& channels, VolumeBuildTimes* times = nullptr);
+
 // A scalar channel of `field` in the volume's brick order, for sampleScalar() and the renderer.
 // Throws InputError listing the channels when `channel` is absent.
 std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
@@ -109,6 +125,8 @@ std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolum
 // (or empty), or a comma-separated list. Throws InputError naming an unknown channel and listing
 // the available ones.
 std::vector<std::string> choosePointData(const bricks::AmrField& field,
+                                         const VectorChannels& vector, const std::string& request);
+std::vector<std::string> choosePointData(const ChannelCatalog& channels,
                                          const VectorChannels& vector, const std::string& request);
 
 }  // namespace amrstream::flow

@@ -145,7 +145,8 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
   return result;
 }
 
-// The cells file: int32 x, y, z, level per cell, checked before they become a field.
+// The cells file: int32 x, y, z, level per cell, checked before they become a field; read in
+// pieces, so that the records never sit in memory beside the whole field.
 void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lowers,
                std::vector<std::uint8_t>& levels) {
   std::ifstream in;
@@ -159,42 +160,58 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
   if (n > kMaxCells)
     throw InputError(path.string(),
                      fmt::format("holds {} cells, more than the {} accepted", n, kMaxCells));
-  std::vector<std::int32_t> records(4 * n);
-  readExactly(in, path, 0, reinterpret_cast<char*>(records.data()), size, "the cells file");
   lowers.resize(n);
   levels.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::int32_t* cell = &records[4 * i];
-    if (cell[3] < 0 || cell[3] > bricks::kMaxLevel)
-      throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
-                                                  i, cell[3], bricks::kMaxLevel));
-    lowers[i] = glm::ivec3(cell[0], cell[1], cell[2]);
-    levels[i] = static_cast<std::uint8_t>(cell[3]);
+  constexpr std::size_t kPiece = std::size_t(1) << 20;  // cells
+  std::vector<std::int32_t> records(4 * std::min<std::uint64_t>(n, kPiece));
+  for (std::size_t first = 0; first < n; first += kPiece) {
+    const std::size_t count = std::min<std::size_t>(kPiece, n - first);
+    readExactly(in, path, first * kCellBytes, reinterpret_cast<char*>(records.data()),
+                count * kCellBytes, "the cells file");
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::int32_t* cell = &records[4 * k];
+      const std::size_t i = first + k;
+      if (cell[3] < 0 || cell[3] > bricks::kMaxLevel)
+        throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
+                                                    i, cell[3], bricks::kMaxLevel));
+      lowers[i] = glm::ivec3(cell[0], cell[1], cell[2]);
+      levels[i] = static_cast<std::uint8_t>(cell[3]);
+    }
   }
   requireCellsWithinExtent(lowers, levels, path.string());
 }
 
-// One float32 per cell; the size is checked before anything is allocated.
-bricks::Channel readScalars(const std::string& name, const std::filesystem::path& path,
-                            const std::filesystem::path& cellsPath,
-                            std::span<const glm::ivec3> lowers) {
-  const std::size_t n = lowers.size();
-  std::ifstream in;
+// Opens a scalars file and checks that it holds one float32 for each of `cells` cells.
+std::uint64_t openScalars(std::ifstream& in, const std::filesystem::path& path,
+                          std::size_t cells, const std::filesystem::path& cellsPath) {
   const std::uint64_t size = openRegularFile(in, path, "the scalars file");
-  if (size != n * sizeof(float))
+  if (size != cells * sizeof(float))
     throw InputError(path.string(),
                      fmt::format("holds {} bytes ({} float32 values) but {} has {} cells", size,
-                                 double(size) / sizeof(float), cellsPath.string(), n));
-  bricks::Channel channel{name, std::vector<float>(n)};
-  readExactly(in, path, 0, reinterpret_cast<char*>(channel.values.data()), size,
-              "the scalars file");
-  for (std::size_t i = 0; i < n; ++i)
-    if (const auto problem = unusableFieldValue(channel.values[i]))
+                                 double(size) / sizeof(float), cellsPath.string(), cells));
+  return size;
+}
+
+// One float32 per cell; the size is checked before anything is allocated. Errors give the
+// cell's lower corner when `lowers` holds the cells.
+std::vector<float> readScalars(const std::string& name, const std::filesystem::path& path,
+                               const std::filesystem::path& cellsPath, std::size_t cells,
+                               std::span<const glm::ivec3> lowers) {
+  std::ifstream in;
+  const std::uint64_t size = openScalars(in, path, cells, cellsPath);
+  std::vector<float> values(cells);
+  readExactly(in, path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
+  for (std::size_t i = 0; i < cells; ++i)
+    if (const auto problem = unusableFieldValue(values[i]))
       throw InputError(path.string(),
-                       fmt::format("channel '{}': the value of cell {} (lower corner {}, {}, {}) "
-                                   "is {}",
-                                   name, i, lowers[i].x, lowers[i].y, lowers[i].z, *problem));
-  return channel;
+                       lowers.empty()
+                           ? fmt::format("channel '{}': the value of cell {} is {}", name, i,
+                                         *problem)
+                           : fmt::format("channel '{}': the value of cell {} (lower corner {}, "
+                                         "{}, {}) is {}",
+                                         name, i, lowers[i].x, lowers[i].y, lowers[i].z,
+                                         *problem));
+  return values;
 }
 
 std::string lineOf(int line) {
@@ -203,7 +220,7 @@ std::string lineOf(int line) {
 
 }  // namespace
 
-bricks::AmrField readExa(const std::filesystem::path& config) {
+ExaCells readExaCells(const std::filesystem::path& config) {
   const ExaConfig exa = parseConfig(config);
   std::vector<glm::ivec3> lowers;
   std::vector<std::uint8_t> levels;
@@ -214,10 +231,16 @@ bricks::AmrField readExa(const std::filesystem::path& config) {
                      fmt::format("origin ({}) and spacing ({}) cannot place the cells: {}",
                                  lineOf(exa.originLine), lineOf(exa.spacingLine), *problem));
 
-  std::vector<bricks::Channel> channels;
-  for (const auto& [name, path] : exa.scalars)
-    channels.push_back(readScalars(name, path, exa.cells, lowers));
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), exa.transform,
+  std::vector<ExaChannelFile> files;
+  for (const auto& [name, path] : exa.scalars) {
+    for (const ExaChannelFile& earlier : files)
+      if (earlier.name == name)
+        throw InputError(config.string(), fmt::format("the channel '{}' is named twice", name));
+    files.push_back({name, path, exa.cells, lowers.size()});
+    std::ifstream in;
+    openScalars(in, path, lowers.size(), exa.cells);  // a missing or short file fails first
+  }
+  bricks::AmrField field(std::move(lowers), std::move(levels), {}, exa.transform,
                          config.string());
   bricks::DatasetInfo info = exa.info;
   info.format = "ExaBricks";
@@ -225,7 +248,19 @@ bricks::AmrField readExa(const std::filesystem::path& config) {
   info.levelsCountDown = false;
   info.levelName = "ExaBricks level (0 = finest)";
   field.setInfo(std::move(info));
-  return field;
+  return {std::move(field), std::move(files)};
+}
+
+std::vector<float> readExaChannel(const ExaChannelFile& channel) {
+  return readScalars(channel.name, channel.path, channel.cellsPath, channel.cellCount, {});
+}
+
+bricks::AmrField readExa(const std::filesystem::path& config) {
+  ExaCells exa = readExaCells(config);
+  for (const ExaChannelFile& file : exa.channels)
+    exa.field.addChannel({file.name, readScalars(file.name, file.path, file.cellsPath,
+                                                 exa.field.cellCount(), exa.field.lowers())});
+  return std::move(exa.field);
 }
 
 std::optional<double> readExaTime(const std::filesystem::path& config) {

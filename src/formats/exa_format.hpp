@@ -17,6 +17,9 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "bricks/amr_field.hpp"
 
@@ -29,6 +32,29 @@ namespace amrstream::formats {
 // .scalars file, the channel and the first such cell). The field's DatasetInfo holds the optional
 // lines above and ExaBricks level numbering (0 = finest).
 bricks::AmrField readExa(const std::filesystem::path& config);
+
+// One channel of an .exa, to be read when it is needed.
+struct ExaChannelFile {
+  std::string name;
+  std::filesystem::path path;       // the .scalars file
+  std::filesystem::path cellsPath;  // the .cells file, for messages
+  std::size_t cellCount = 0;
+};
+
+// The cells of an .exa without their channels, and every channel's file in the config's order,
+// to be read one at a time when needed (readExaChannel; AmrField::addChannel): a dataset's
+// channels need not all be in memory at once, nor beside the cells' checks. Every scalars file's
+// size is checked here, so that a missing or short one fails before any work; otherwise errors
+// are readExa's.
+struct ExaCells {
+  bricks::AmrField field;
+  std::vector<ExaChannelFile> channels;
+};
+ExaCells readExaCells(const std::filesystem::path& config);
+
+// One channel's values, one per cell in .cells order, checked as readExa checks them (the error
+// names the cell by its index).
+std::vector<float> readExaChannel(const ExaChannelFile& channel);
 
 // The `time` line's value (nullopt without one), reading only the config: its lines are checked
 // as readExa checks them, but the cells and scalar files are not opened.

@@ -363,6 +363,35 @@ TEST_F(ExaFormat, NonFiniteValuesNameTheFileTheChannelAndTheCell) {
   EXPECT_THAT(errorOf(config), HasSubstr("is infinite"));
 }
 
+// The cells first, without channels, then one channel at a time: the same cells and values as
+// readExa's; every scalars file is checked for its size up front, each channel's values when it
+// is read.
+TEST_F(ExaFormat, CellsFirstThenChannelsOneAtATimeGiveReadExasField) {
+  const fs::path config = writeSample();
+  const bricks::AmrField whole = readExa(config);
+  const ExaCells cells = readExaCells(config);
+  EXPECT_TRUE(cells.field.channels().empty());
+  ASSERT_EQ(cells.field.cellCount(), whole.cellCount());
+  EXPECT_TRUE(std::equal(whole.lowers().begin(), whole.lowers().end(),
+                         cells.field.lowers().begin()));
+  EXPECT_TRUE(std::equal(whole.levels().begin(), whole.levels().end(),
+                         cells.field.levels().begin()));
+  ASSERT_EQ(cells.channels.size(), whole.channels().size());
+  for (std::size_t c = 0; c < cells.channels.size(); ++c) {
+    EXPECT_EQ(cells.channels[c].name, whole.channels()[c].name);
+    EXPECT_EQ(readExaChannel(cells.channels[c]), whole.channels()[c].values);
+  }
+
+  poke(dir_ / "sample.vz.scalars", 3, std::numeric_limits<float>::infinity());
+  const ExaCells poked = readExaCells(config);  // values are not read yet
+  EXPECT_THAT(testing::inputErrorOf([&] { readExaChannel(poked.channels[2]); }),
+              HasSubstr((dir_ / "sample.vz.scalars").string() +
+                        ": channel 'vz': the value of cell 3 is infinite"));
+  fs::resize_file(dir_ / "sample.vy.scalars", 8);
+  EXPECT_THAT(testing::inputErrorOf([&] { readExaCells(config); }),
+              HasSubstr((dir_ / "sample.vy.scalars").string() + ": holds 8 bytes"));
+}
+
 TEST_F(ExaFormat, AFailedWriteLeavesNoFile) {
   const bricks::AmrField field = testing::randomAmr(7);
   // The .exa comes last: a directory in its place fails the set after the data files were done.

@@ -255,6 +255,27 @@ def test_cloud_traces_equal_cli_vtp(backend, cloud, cloud_seeds, tmp_path):
     assert_traces_match_file(t, cli)
 
 
+def test_cli_trace_of_an_exa_reads_channels_one_at_a_time_and_equals_the_whole_load(tmp_path):
+    """`trace` reads an .exa's channels one at a time, after the layout (the density for the
+    seeds, then each channel the volume takes): the seeds and the traces equal those of the
+    whole dataset loaded at once (the builtin it was written from, and Python's load)."""
+    run_cli("gen", "cloud", *SMALL_CLI, "--out", tmp_path / "c")
+    common = ["--seed-density", "dens", "--count", 40, "--steps", 200, "--backend", "cpu"]
+    run_cli("trace", tmp_path / "c.exa", *common, "--seeds-out", tmp_path / "exa_seeds.txt",
+            "--out", tmp_path / "exa.vtp")
+    run_cli("trace", "builtin:cloud", *SMALL_CLI, *common,
+            "--seeds-out", tmp_path / "builtin_seeds.txt", "--out", tmp_path / "builtin.vtp")
+    assert (tmp_path / "exa_seeds.txt").read_text() == (tmp_path / "builtin_seeds.txt").read_text()
+    seeds = np.loadtxt(tmp_path / "exa_seeds.txt", ndmin=2)
+    t = amrstream.trace(amrstream.load(str(tmp_path / "c.exa")), seeds, steps=200,
+                        backend="cpu")
+    exa = Vtp(tmp_path / "exa.vtp")
+    assert_same_vtp(exa, Vtp(tmp_path / "builtin.vtp"),
+                    ignore_field_data=("Seeds", "Input", "InputFormat", "SimulationTime"))
+    assert_traces_match_file(t, exa)
+    assert set(t.point_data) == {"dens"}
+
+
 def test_render_camera_and_colour_options_equal_cli_png(cloud, cloud_seeds, tmp_path):
     require_backend("compute")
     look = ["--width", 96, "--height", 64, "--frames", 2, "--view", "+x", "--up", "+y",
