@@ -2,6 +2,7 @@
 // clear message and a non-zero exit status.
 
 #include <gmock/gmock.h>
+#include <sys/stat.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,6 +134,18 @@ TEST_F(Cli, BadOptionsFail) {
   r = run("gen rotation --levels 12 --out " + path("x"));
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("levels"));
+}
+
+// An output is written beside its target and renamed over it: a FIFO (or a device such as
+// /dev/null) must be refused, not replaced by a regular file.
+TEST_F(Cli, AnOutputThatIsNotARegularFileIsRefused) {
+  ASSERT_EQ(::mkfifo(path("pipe.vtp").c_str(), 0600), 0);
+  const Outcome r = run("trace builtin:rotation" + kSmall +
+                        " --backend cpu --steps 5 --count 4 --out " + path("pipe.vtp"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("exists and is not a regular file"));
+  EXPECT_FALSE(fs::is_regular_file(path("pipe.vtp")));
+  EXPECT_TRUE(fs::is_fifo(path("pipe.vtp")));
 }
 
 TEST_F(Cli, UnwritableOutputFails) {
