@@ -45,7 +45,7 @@ void runViewBenchmark(const ViewOptions& o) {
              o.frames);
 
   std::vector<double> frames, growing, trace, tubes, render, segments, upload, structures,
-      instances;
+      instances, device;
   std::size_t steps = 0;
   for (std::uint32_t f = 0; f < o.frames; ++f) {
     const bool grew = !session.traces().finished();
@@ -61,6 +61,7 @@ void runViewBenchmark(const ViewOptions& o) {
       upload.push_back(t.append.upload);
       structures.push_back(t.append.structures);
       instances.push_back(t.append.instances);
+      device.push_back(t.append.device);
     }
     render.push_back(t.renderSeconds);
   }
@@ -75,8 +76,9 @@ void runViewBenchmark(const ViewOptions& o) {
              ms(mean(std::vector<double>(render.begin(), render.begin() + growing.size()))),
              growing.empty() ? 0.0 : ms(growing.back()));
   fmt::print("tubes      while growing, mean: segments {:.2f} ms, upload {:.2f} ms, structures "
-             "{:.2f} ms, instance list {:.2f} ms\n",
-             ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)));
+             "{:.2f} ms, instance list {:.2f} ms, device {:.2f} ms\n",
+             ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)),
+             ms(mean(device)));
   fmt::print("traces     {} particle-steps, {} tube segments at the end\n", steps,
              session.scene().segments.size());
   checkValidation(ctx);

@@ -1,5 +1,8 @@
 #include "tube_renderer.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,11 +32,14 @@ VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
 std::vector<VkAabbPositionsKHR> segmentBoxes(std::span<const shared::TubeSegment> segments,
                                              float radius) {
   std::vector<VkAabbPositionsKHR> boxes(segments.size());
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    const glm::vec3 lo = glm::min(segments[i].a, segments[i].b) - radius;
-    const glm::vec3 hi = glm::max(segments[i].a, segments[i].b) + radius;
-    boxes[i] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segments.size(), 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        const glm::vec3 lo = glm::min(segments[i].a, segments[i].b) - radius;
+                        const glm::vec3 hi = glm::max(segments[i].a, segments[i].b) + radius;
+                        boxes[i] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+                      }
+                    });
   return boxes;
 }
 
@@ -178,7 +184,8 @@ void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float
 
 void TubeRenderer::writeRanges(vk::Buffer& buffer, std::string_view name,
                                std::span<const std::byte> contents,
-                               std::span<const std::pair<std::size_t, std::size_t>> ranges) {
+                               std::span<const std::pair<std::size_t, std::size_t>> ranges,
+                               VkCommandBuffer cmd) {
   if (buffer.size() < contents.size()) {  // room for as many again, keeping what is there
     vk::Buffer grown = vk::Buffer::deviceLocal(
         *ctx_, 2 * contents.size(), kAppendable | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
@@ -191,23 +198,22 @@ void TubeRenderer::writeRanges(vk::Buffer& buffer, std::string_view name,
   }
   std::size_t bytes = 0;
   for (const auto& [first, end] : ranges) bytes += end - first;
-  if (appendStaging_.size() < bytes)  // kept: making pinned memory is slow
-    appendStaging_ = vk::Buffer::upload(*ctx_, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                        "tubes (staging)");
+  vk::Buffer& staging = appendStaging_[stagingUsed_++];
+  if (staging.size() < bytes)  // kept: making pinned memory is slow
+    staging = vk::Buffer::upload(*ctx_, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                 "tubes (staging)");
   std::vector<VkBufferCopy> regions;
   std::size_t at = 0;
   for (const auto& [first, end] : ranges) {
     if (end <= first) continue;
-    std::memcpy(appendStaging_.mapped().data() + at, contents.data() + first, end - first);
+    std::memcpy(staging.mapped().data() + at, contents.data() + first, end - first);
     regions.push_back({at, first, end - first});
     at += end - first;
   }
   if (regions.empty()) return;
-  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
-    vkCmdCopyBuffer(cmd, appendStaging_.handle(), buffer.handle(),
-                    static_cast<std::uint32_t>(regions.size()), regions.data());
-    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
-  });
+  vkCmdCopyBuffer(cmd, staging.handle(), buffer.handle(),
+                  static_cast<std::uint32_t>(regions.size()), regions.data());
+  vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
 }
 
 void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
@@ -235,24 +241,31 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   frames_ = 0;
   descriptorsStale_ = true;
   constexpr std::size_t kSegment = sizeof(shared::TubeSegment), kNode = sizeof(shared::TubeBvhNode);
+  // The copies and builds of this append go to the device in one submission.
+  vk::OneShotCommands commands(*ctx_);
+  stagingUsed_ = 0;
   if (compute) {  // the forest rebuilt its last chunk on the host
     appendTimes_.structures = clock.seconds();
     clock.restart();
     const std::pair<std::size_t, std::size_t> segmentRange{
         forest_.firstChangedSegment() * kSegment, count * kSegment};
     writeRanges(segments_, "tube segments", std::as_bytes(std::span(forest_.segments())),
-                std::span(&segmentRange, 1));
+                std::span(&segmentRange, 1), commands.handle());
     const std::array<std::pair<std::size_t, std::size_t>, 2> nodeRanges{
         {{0, TubeForest::kTopNodes * kNode},
          {forest_.firstChangedNode() * kNode, forest_.nodes().size() * kNode}}};
-    writeRanges(bvhNodes_, "tube BVH", std::as_bytes(std::span(forest_.nodes())), nodeRanges);
+    writeRanges(bvhNodes_, "tube BVH", std::as_bytes(std::span(forest_.nodes())), nodeRanges,
+                commands.handle());
     appendTimes_.upload = clock.seconds();
+    clock.restart();
+    commands.submitAndWait();
+    appendTimes_.device = clock.seconds();
     return;
   }
   deviceOrder_.insert(deviceOrder_.end(), added.begin(), added.end());
   const std::pair<std::size_t, std::size_t> addedRange{first * kSegment, count * kSegment};
   writeRanges(segments_, "tube segments", std::as_bytes(std::span(deviceOrder_)),
-              std::span(&addedRange, 1));
+              std::span(&addedRange, 1), commands.handle());
   appendTimes_.upload = clock.seconds();
   clock.restart();
   // The new boxes' structure takes global ids from its first segment on (aabb_scene.hpp). Like
@@ -266,21 +279,26 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
     blases.pop_back();
   }
   const std::span<const shared::TubeSegment> rebuilt = std::span(deviceOrder_).subspan(from);
-  for (vk::AabbBlas& blas :
-       vk::buildAabbBlas(*ctx_, segmentBoxes(rebuilt, radius), "tubes", 0, false)) {
+  for (vk::AabbBlas& blas : vk::recordAabbBlas(*ctx_, commands.handle(),
+                                               segmentBoxes(rebuilt, radius), "tubes",
+                                               appendBuild_)) {
     blas.firstBox += static_cast<std::uint32_t>(from);
     blases.push_back(std::move(blas));
   }
   appendTimes_.structures = clock.seconds();
   clock.restart();
   if (blases.size() > kMaxAppendedStructures) {  // split beyond the BLAS size limit
+    commands.submitAndWait();
     setTubes(all, radius);
     appendTimes_.structures += clock.seconds();
     return;
   }
   if (!appendedTlas_) appendedTlas_.emplace(*ctx_, kMaxAppendedStructures, "appended tubes");
-  appendedTlas_->build(blases);
+  appendedTlas_->record(commands.handle(), blases);
   appendTimes_.instances = clock.seconds();
+  clock.restart();
+  commands.submitAndWait();
+  appendTimes_.device = clock.seconds();
   scene_->boxCount = static_cast<std::uint32_t>(count);
   appended_ = true;
 }
@@ -292,8 +310,17 @@ void TubeRenderer::consolidateTubes() {
     return setTubes(segments, radius_);
   }
   if (!scene_ || scene_->blases.size() <= 1) return;
-  const std::vector<shared::TubeSegment> segments = std::move(deviceOrder_);
-  setTubes(segments, radius_);
+  // The segments are on the device already, in deviceOrder_: only their structure is made again,
+  // as one compacted BLAS (or as few as the size limit allows) under the same instance list.
+  std::vector<vk::AabbBlas> blases =
+      vk::buildAabbBlas(*ctx_, segmentBoxes(deviceOrder_, radius_), "tubes");
+  if (blases.size() > kMaxAppendedStructures) {
+    const std::vector<shared::TubeSegment> segments = std::move(deviceOrder_);
+    return setTubes(segments, radius_);
+  }
+  scene_->blases = std::move(blases);
+  appendedTlas_->build(scene_->blases);
+  descriptorsStale_ = true;
 }
 
 void TubeRenderer::setColourMap(std::span<const glm::vec3> table) {

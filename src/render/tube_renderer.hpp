@@ -10,6 +10,7 @@
 // tracing pipeline with a capsule intersection shader (`pipeline`). The volume is located through
 // the regions' kd-tree on every backend.
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
@@ -80,8 +81,11 @@ class TubeRenderer {
   static constexpr std::size_t kMaxAppendedStructures = 48;
   // Host wall time of the last appendTubes: the segments' upload, the structures' build (with
   // their boxes) and the instance list's; all in `structures` when it set the tubes whole.
+  // Host seconds of an append: writing the new segments to staging memory and recording their
+  // copy, making the boxes and recording the structures' builds, writing the instance list;
+  // then the one submission's wait for the device to do it all.
   struct AppendTimes {
-    double upload = 0.0, structures = 0.0, instances = 0.0;
+    double upload = 0.0, structures = 0.0, instances = 0.0, device = 0.0;
   };
   const AppendTimes& lastAppendTimes() const { return appendTimes_; }
   // Rebuilds appended tubes as one structure, as setTubes would have built them (rays cross
@@ -108,10 +112,12 @@ class TubeRenderer {
  private:
   // Points the descriptor set at the current buffers; after any of them was replaced.
   void writeDescriptors();
-  // Makes `buffer` hold at least `contents` (growing it, keeping what it holds) and copies the
-  // byte ranges [first, end) of `contents` into it.
+  // Makes `buffer` hold at least `contents` (growing it, keeping what it holds, at once) and
+  // records into `cmd` the copy of the byte ranges [first, end) of `contents` into it, through
+  // the next of appendStaging_ (stagingUsed_ counts them per append).
   void writeRanges(vk::Buffer& buffer, std::string_view name, std::span<const std::byte> contents,
-                   std::span<const std::pair<std::size_t, std::size_t>> ranges);
+                   std::span<const std::pair<std::size_t, std::size_t>> ranges,
+                   VkCommandBuffer cmd);
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;
@@ -124,7 +130,9 @@ class TubeRenderer {
   // After appendTubes, scene_'s BLASes are instanced by appendedTlas_, not by scene_->tlas.
   bool appended_ = false;
   std::optional<vk::TlasBuilder> appendedTlas_;
-  vk::Buffer appendStaging_;
+  std::array<vk::Buffer, 2> appendStaging_;  // one per buffer an append writes (compute: two)
+  std::size_t stagingUsed_ = 0;
+  vk::BlasBuildBuffers appendBuild_;  // the appended structures' box and scratch buffers
   TubeForest forest_;  // compute: the segments and BVH nodes as the buffers hold them
   AppendTimes appendTimes_;
   std::optional<vk::AabbScene> scene_;

@@ -61,9 +61,12 @@ uint64_t maxBoxesPerScene(const Context& ctx, uint32_t override) {
   return kMaxCustomIndex + maxBoxesPerBlas(ctx, override);
 }
 
-std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
-                                    std::string_view name, uint32_t maxPrimitivesOverride,
-                                    bool compact) {
+namespace {
+
+// buildAabbBlas, or with `into` (no compaction, `reuse` given) recordAabbBlas.
+std::vector<AabbBlas> makeAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
+                                   std::string_view name, uint32_t maxPrimitivesOverride,
+                                   bool compact, BlasBuildBuffers* reuse, VkCommandBuffer into) {
   requireAccelerationStructures(ctx, "buildAabbBlas");
   const DeviceFunctions& f = ctx.functions();
   const uint32_t limit = maxBoxesPerBlas(ctx, maxPrimitivesOverride);
@@ -81,13 +84,22 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
   constexpr std::size_t kHostReadBoxes = std::size_t(1) << 16;
-  Buffer boxBuffer;
+  Buffer ownBoxes;
+  Buffer* hostBoxes = reuse ? &reuse->hostBoxes : &ownBoxes;
   if (boxes.size() <= kHostReadBoxes) {
-    boxBuffer = Buffer::upload(ctx, boxes.size_bytes(), kInput, fmt::format("{} boxes", name));
-    std::memcpy(boxBuffer.mapped().data(), boxes.data(), boxes.size_bytes());
+    if (hostBoxes->size() < boxes.size_bytes())
+      *hostBoxes = Buffer::upload(ctx, reuse ? 2 * boxes.size_bytes() : boxes.size_bytes(),
+                                  kInput, fmt::format("{} boxes", name));
+    std::memcpy(hostBoxes->mapped().data(), boxes.data(), boxes.size_bytes());
   } else {
-    boxBuffer = uploadToDeviceLocal(ctx, boxes, kInput, fmt::format("{} boxes", name));
+    ownBoxes = uploadToDeviceLocal(ctx, boxes, kInput, fmt::format("{} boxes", name));
+    hostBoxes = &ownBoxes;
+    if (reuse) {  // kept until the recorded builds have run
+      reuse->deviceBoxes = std::move(ownBoxes);
+      hostBoxes = &reuse->deviceBoxes;
+    }
   }
+  const Buffer& boxBuffer = *hostBoxes;
 
   // One geometry per BLAS, each reading its slice of the one box array (the slice address stays
   // a multiple of 8 bytes, as AABB data requires; a 32-bit primitiveOffset could overflow).
@@ -123,14 +135,19 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
     scratchSize = std::max(scratchSize, sizes.buildScratchSize);
   }
 
-  const ScratchBuffer scratch(ctx, scratchSize, fmt::format("{} BLAS scratch", name));
+  std::optional<ScratchBuffer> ownScratch;
+  std::optional<ScratchBuffer>& scratchSlot = reuse ? reuse->scratch : ownScratch;
+  if (!scratchSlot || scratchSlot->size() < scratchSize)
+    scratchSlot.emplace(ctx, reuse ? 2 * scratchSize : scratchSize,
+                        fmt::format("{} BLAS scratch", name));
+  const ScratchBuffer& scratch = *scratchSlot;
   const auto count = static_cast<uint32_t>(blases.size());
   const UniqueHandle<VkQueryPool> queries =
       compact ? compactedSizeQueries(ctx, count) : UniqueHandle<VkQueryPool>();
   std::vector<VkAccelerationStructureKHR> handles;
   for (const AabbBlas& blas : blases) handles.push_back(blas.structure.handle());
 
-  submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+  const auto recordBuilds = [&](VkCommandBuffer cmd) {
     if (compact) vkCmdResetQueryPool(cmd, queries.get(), 0, count);
     for (size_t i = 0; i < blases.size(); ++i) {
       build.dstAccelerationStructure = handles[i];
@@ -151,9 +168,14 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
       f.vkCmdWriteAccelerationStructuresPropertiesKHR(
           cmd, count, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
           queries.get(), 0);
-    else  // later submissions (the TLAS build) read these BLASes
+    else  // later commands (the TLAS build) read these BLASes
       memoryBarrier(cmd, access::kAccelerationStructureWrite, access::kAny);
-  });
+  };
+  if (into != VK_NULL_HANDLE) {
+    recordBuilds(into);
+    return blases;
+  }
+  submitAndWait(ctx, recordBuilds);
   if (!compact) return blases;
 
   std::vector<VkDeviceSize> compactedSizes(count);
@@ -186,6 +208,20 @@ std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPo
     if (compacted[i].handle() != VK_NULL_HANDLE) blases[i].structure = std::move(compacted[i]);
   }
   return blases;
+}
+
+}  // namespace
+
+std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
+                                    std::string_view name, uint32_t maxPrimitivesOverride,
+                                    bool compact, BlasBuildBuffers* reuse) {
+  return makeAabbBlas(ctx, boxes, name, maxPrimitivesOverride, compact, reuse, VK_NULL_HANDLE);
+}
+
+std::vector<AabbBlas> recordAabbBlas(const Context& ctx, VkCommandBuffer cmd,
+                                     std::span<const VkAabbPositionsKHR> boxes,
+                                     std::string_view name, BlasBuildBuffers& reuse) {
+  return makeAabbBlas(ctx, boxes, name, 0, false, &reuse, cmd);
 }
 
 }  // namespace amrstream::vk

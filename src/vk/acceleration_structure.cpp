@@ -63,6 +63,7 @@ ScratchBuffer::ScratchBuffer(const Context& ctx, VkDeviceSize size, std::string_
       ctx, size + alignment - 1,
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, name);
   address_ = (buffer_.deviceAddress() + alignment - 1) / alignment * alignment;
+  size_ = size;
 }
 
 }  // namespace amrstream::vk

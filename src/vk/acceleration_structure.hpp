@@ -46,10 +46,12 @@ class ScratchBuffer {
   // Aligned for VkAccelerationStructureBuildGeometryInfoKHR::scratchData.
   VkDeviceAddress deviceAddress() const { return address_; }
   VkBuffer handle() const { return buffer_.handle(); }
+  VkDeviceSize size() const { return size_; }  // usable bytes from deviceAddress()
 
  private:
   Buffer buffer_;
   VkDeviceAddress address_ = 0;
+  VkDeviceSize size_ = 0;
 };
 
 }  // namespace amrstream::vk

@@ -67,6 +67,11 @@ TlasBuilder::TlasBuilder(const Context& ctx, std::uint32_t capacity, std::string
 }
 
 const AccelerationStructure& TlasBuilder::build(std::span<const AabbBlas> blases) {
+  submitAndWait(*ctx_, [&](VkCommandBuffer cmd) { record(cmd, blases); });
+  return tlas_;
+}
+
+void TlasBuilder::record(VkCommandBuffer cmd, std::span<const AabbBlas> blases) {
   if (blases.size() > capacity_)
     throw std::length_error(fmt::format("TlasBuilder: {} instances exceed its capacity {}",
                                         blases.size(), capacity_));
@@ -87,19 +92,16 @@ const AccelerationStructure& TlasBuilder::build(std::span<const AabbBlas> blases
   build.dstAccelerationStructure = tlas_.handle();
   build.scratchData.deviceAddress = scratch_.deviceAddress();
   const auto count = static_cast<std::uint32_t>(instances.size());
-  submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
-    // The BLAS builds, and earlier traversals of this TLAS, before this build reads the one
-    // and rewrites the other.
-    memoryBarrier(cmd, access::kAny,
-                  {VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                   VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                       VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR});
-    const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
-    const VkAccelerationStructureBuildRangeInfoKHR* rangePointer = &range;
-    ctx_->functions().vkCmdBuildAccelerationStructuresKHR(cmd, 1, &build, &rangePointer);
-    memoryBarrier(cmd, access::kAccelerationStructureWrite, access::kAny);
-  });
-  return tlas_;
+  // The BLAS builds, and earlier traversals of this TLAS, before this build reads the one and
+  // rewrites the other.
+  memoryBarrier(cmd, access::kAny,
+                {VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                 VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                     VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR});
+  const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
+  const VkAccelerationStructureBuildRangeInfoKHR* rangePointer = &range;
+  ctx_->functions().vkCmdBuildAccelerationStructuresKHR(cmd, 1, &build, &rangePointer);
+  memoryBarrier(cmd, access::kAccelerationStructureWrite, access::kAny);
 }
 
 }  // namespace amrstream::vk

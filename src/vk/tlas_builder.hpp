@@ -27,6 +27,10 @@ class TlasBuilder {
   // visible to later commands on the context's queue. Throws std::length_error for more
   // instances than the capacity or a first box past 24 bits.
   const AccelerationStructure& build(std::span<const AabbBlas> blases);
+  // The same build recorded into `cmd` (after anything recorded before it, such as the BLAS
+  // builds): the instance list is written now, so nothing may use the TLAS from an earlier
+  // submission until `cmd` has run.
+  void record(VkCommandBuffer cmd, std::span<const AabbBlas> blases);
   const AccelerationStructure& tlas() const { return tlas_; }
   // The TLAS, to outlive the builder (buildTlas).
   AccelerationStructure takeTlas() && { return std::move(tlas_); }
