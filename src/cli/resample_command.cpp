@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -19,7 +17,6 @@
 #include "output_paths.hpp"
 #include "progress.hpp"
 #include "trace_job.hpp"
-#include "util/host_memory.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -36,47 +33,6 @@ struct ResampleOptions {
   std::string out = "resample.vti";
 };
 
-// Points per axis: three counts as given, or one count for the box's longest axis and as many
-// on the others as keep the grid's cells nearest to cubes (at least 1).
-std::array<std::uint32_t, 3> gridDims(const std::vector<std::uint64_t>& dims,
-                                      const glm::dvec3& extent) {
-  if (dims.size() == 3)
-    return {std::uint32_t(dims[0]), std::uint32_t(dims[1]), std::uint32_t(dims[2])};
-  const double longest = std::max({extent.x, extent.y, extent.z});
-  std::array<std::uint32_t, 3> out{};
-  for (int a = 0; a < 3; ++a)
-    out[a] = std::max<std::uint32_t>(
-        1, std::uint32_t(std::lround(double(dims[0]) * extent[a] / longest)));
-  return out;
-}
-
-flow::UniformGridSpec gridSpec(const ResampleOptions& o, const flow::VectorVolume& volume) {
-  flow::UniformGridSpec spec;
-  const bricks::CellBox& domain = volume.domain;
-  spec.lower = volume.transform.toPhysical(glm::dvec3(domain.lower));
-  spec.upper = volume.transform.toPhysical(glm::dvec3(domain.upper));
-  if (o.box.size() == 6) {
-    spec.lower = {o.box[0], o.box[1], o.box[2]};
-    spec.upper = {o.box[3], o.box[4], o.box[5]};
-    if (!glm::all(glm::lessThan(spec.lower, spec.upper)))
-      throw InputError("--box", "each upper bound must be above its lower bound");
-  }
-  spec.dims = gridDims(o.dims, spec.upper - spec.lower);
-  return spec;
-}
-
-// The grid's host memory: the vector, the channels and the mask, refused beyond 3/4 of the
-// machine's memory before anything is sampled.
-void checkGridSize(const flow::UniformGridSpec& spec, std::size_t channels) {
-  const double bytes = double(spec.pointCount()) * double(12 + 4 * channels + 1);
-  const double limit = kTraceMemoryShare * physicalMemoryBytes();
-  if (limit > 0.0 && bytes > limit)
-    throw InputError("--dims", fmt::format("{} x {} x {} points need {:.1f} GiB, more than the "
-                                           "{:.1f} GiB (3/4 of the memory) this machine allows",
-                                           spec.dims[0], spec.dims[1], spec.dims[2],
-                                           bytes / 0x1p30, limit / 0x1p30));
-}
-
 std::string channelList(const flow::VectorVolume& volume) {
   std::string names;
   for (const std::string& name : volume.channelNames) names += (names.empty() ? "" : ", ") + name;
@@ -85,8 +41,7 @@ std::string channelList(const flow::VectorVolume& volume) {
 
 void runResample(const ResampleOptions& o) {
   checkBuiltinSize(o.dataset);
-  if (o.dims.size() != 1 && o.dims.size() != 3)
-    throw InputError("--dims", "give one count (the longest axis) or three (NX,NY,NZ)");
+  flow::checkGridCounts(o.dims);
   RunFiles files;
   files.addInputs(datasetFiles(o.dataset.input));
   files.addOutput("--out", o.out);
@@ -107,8 +62,7 @@ void runResample(const ResampleOptions& o) {
              channelList(volume),
              interpolantName(volume.interpolant), clock.seconds());
 
-  const flow::UniformGridSpec spec = gridSpec(o, volume);
-  checkGridSize(spec, volume.channelCount());
+  const flow::UniformGridSpec spec = flow::uniformGridSpec(volume, o.dims, o.box);
   clock.restart();
   flow::UniformGrid grid;
   {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -25,6 +26,16 @@ struct UniformGridSpec {
   glm::dvec3 origin() const { return lower + 0.5 * spacing(); }  // the first point
   std::uint64_t pointCount() const { return std::uint64_t(dims[0]) * dims[1] * dims[2]; }
 };
+
+// The grid of `dims` points per axis (three counts, or one for the box's longest axis and the
+// others in proportion, at least 1) over `box` (lower x, y, z, upper x, y, z; empty: the domain).
+// Throws InputError naming --dims or --box for counts outside 1..65535, a wrong number of them,
+// or a box whose upper corner is not above its lower one, and naming --dims when the grid would
+// not fit in 3/4 of the machine's memory (13 bytes a point and 4 more per channel).
+UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std::uint64_t> dims,
+                                std::span<const double> box = {});
+// The counts' checks alone, before there is a volume.
+void checkGridCounts(std::span<const std::uint64_t> dims);
 
 struct UniformGrid {
   UniformGridSpec spec;

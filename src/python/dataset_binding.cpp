@@ -9,6 +9,7 @@
 #include "amrstream/field.hpp"
 #include "bindings.hpp"
 #include "flow/seeds.hpp"
+#include "flow/uniform_resample.hpp"
 #include "numpy_views.hpp"
 #include "prepared_field.hpp"
 
@@ -27,6 +28,50 @@ std::vector<std::string> channelNames(const Dataset& d) {
   std::vector<std::string> names;
   for (const bricks::Channel& c : d.channels()) names.push_back(c.name);
   return names;
+}
+
+// Field.resample: the grid's arrays indexed [i, j, k] (x first, as yt's covering grids), views
+// over one grid that the returned arrays keep alive.
+py::dict resampled(const PreparedField& p, py::object dims,
+                   std::optional<std::vector<double>> box) {
+  std::vector<std::uint64_t> counts;
+  if (py::isinstance<py::int_>(dims))
+    counts.push_back(dims.cast<std::uint64_t>());
+  else
+    counts = dims.cast<std::vector<std::uint64_t>>();
+  const flow::VectorVolume& volume = p.field.volume;
+  const flow::UniformGridSpec spec =
+      flow::uniformGridSpec(volume, counts, box.value_or(std::vector<double>{}));
+  auto grid = std::make_shared<flow::UniformGrid>();
+  {
+    py::gil_scoped_release unlocked;
+    *grid = flow::resampleUniform(volume, spec);
+  }
+  const py::capsule owner(new std::shared_ptr<flow::UniformGrid>(grid), [](void* g) {
+    delete static_cast<std::shared_ptr<flow::UniformGrid>*>(g);
+  });
+  const auto nx = py::ssize_t(spec.dims[0]), ny = py::ssize_t(spec.dims[1]),
+             nz = py::ssize_t(spec.dims[2]);
+  const std::size_t channels = volume.channelCount();
+  const auto strides = [&](py::ssize_t bytes) {  // of point (i, j, k), `bytes` per point
+    return std::vector<py::ssize_t>{bytes, bytes * nx, bytes * nx * ny};
+  };
+  py::dict out;
+  out["origin"] = tuple3(spec.origin());
+  out["spacing"] = tuple3(spec.spacing());
+  out["dims"] = py::make_tuple(nx, ny, nz);
+  std::vector<py::ssize_t> vectorStrides = strides(sizeof(glm::vec3));
+  vectorStrides.push_back(sizeof(float));
+  out[py::str(volume.vectorName)] = readOnly(py::array_t<float>(
+      {nx, ny, nz, py::ssize_t(3)}, vectorStrides, &grid->vectors[0].x, owner));
+  for (std::size_t c = 0; c < channels; ++c)
+    out[py::str(volume.channelNames[c])] = readOnly(py::array_t<float>(
+        {nx, ny, nz}, strides(py::ssize_t(channels * sizeof(float))), grid->channels.data() + c,
+        owner));
+  out["valid"] = readOnly(py::array_t<bool>({nx, ny, nz}, strides(1),
+                                            reinterpret_cast<const bool*>(grid->valid.data()),
+                                            owner));
+  return out;
 }
 
 // The file's level of every cell, as the file numbers its levels.
@@ -185,6 +230,14 @@ void bindDataset(py::module_& m) {
       .def_property_readonly(
           "domain_right_edge",
           [](const PreparedField& p) { return tuple3(flow::domainUpper(p.field.volume)); })
+      .def("resample", &resampled, py::arg("dims") = 128, py::kw_only(),
+           py::arg("box") = py::none(),
+           "The reconstructed vector and point data on a uniform grid, as `amrstream resample` "
+           "makes it: points at the centres of dims (N for the box's longest axis, or (NX, NY, "
+           "NZ)) equal cells of `box` (x0, y0, z0, x1, y1, z1; default the domain). Returns a "
+           "dict: 'origin' (the first point), 'spacing', 'dims', the vector (NX, NY, NZ, 3) and "
+           "each channel (NX, NY, NZ) as float32 indexed [i, j, k], and 'valid' (NX, NY, NZ) "
+           "bool, False (and zeros) where no region covers a point.")
       .def("__repr__", [](const PreparedField& p) {
         const Field& f = p.field;
         return fmt::format("<amrstream.Field {} of {}: point data [{}], {} bricks, {} regions>",
