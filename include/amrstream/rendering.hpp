@@ -13,6 +13,7 @@
 #include "amrstream/backend.hpp"
 #include "amrstream/dataset.hpp"
 #include "amrstream/log.hpp"
+#include "flow/integrator.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
 #include "render/camera.hpp"
@@ -49,6 +50,7 @@ struct RenderOptions {
   // colour range's low end to the whole radius at its high end (in the colour scale's terms).
   float radiusByColour = 1.0f;
   std::string colourBy = "speed";
+  std::string timeUnit;  // IntegrationTime's unit, on the colour bar of --colour-by time; "": none
   std::string colourMap = "viridis";
   std::string colourScale = "linear";  // "log" or "symlog"
   std::optional<double> symlogWidth;   // symlog's linear half-width; default 1e-3 of the range
@@ -77,10 +79,15 @@ struct RenderScene {
   render::ColourScale colourScale;
   render::ValueRange colourSeen;  // the finite values the tubes carry (positive ones for log)
   std::string colourLabel;
+  std::string colourUnit;  // empty where the data give none
   std::vector<float> contextScalars;    // brick-ordered; empty without --volume
   render::ChannelValues colourChannel;  // the --colour-by channel, when it is one
   render::OrbitCamera camera;
 };
+
+// The unit of IntegrationTime: the input's length unit in `arc` mode (arc length), its time
+// unit in `cell` and `time` modes; empty when the input does not say.
+std::string integrationTimeUnit(flow::StepMode mode, const bricks::DatasetInfo& info);
 
 // Sets the tube radius and what depends on it (the ambient-occlusion ray length).
 void setTubeRadius(render::RenderSettings& settings, float radius);

@@ -155,6 +155,10 @@ std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
 
 }  // namespace
 
+std::string integrationTimeUnit(flow::StepMode mode, const bricks::DatasetInfo& info) {
+  return mode == flow::StepMode::Arc ? shortLengthUnit(info) : info.timeUnit;
+}
+
 void setTubeRadius(render::RenderSettings& settings, float radius) {
   settings.tubeRadius = radius;
   settings.aoDistance = 8.0f * radius;  // occluders within a few tube widths
@@ -205,6 +209,7 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
+  scene.colourUnit = o.colourBy == "time" ? o.timeUnit : std::string();
 
   render::RenderSettings& s = scene.settings;
   if (o.background == "transparent") {

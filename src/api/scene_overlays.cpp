@@ -85,7 +85,8 @@ void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScen
   if (!colourBars) return;
   const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
   render::drawColourBar(
-      image, {scene.colourMap, scene.colourScale, scene.colourLabel, "", {}, 0, light});
+      image, {scene.colourMap, scene.colourScale, scene.colourLabel, scene.colourUnit, {}, 0,
+              light});
   if (scene.settings.volume) {
     render::ColourBar bar = volumeBar(o, scene);
     bar.light = light;

@@ -61,11 +61,14 @@ void runRender(const RenderCommandOptions& o) {
     traces = output::readVtpTraces(o.traces);
     checkTracesInDomain(o.traces, traces, input.volume);
   }
+  RenderOptions look = o.look;
+  // Traces read from a file carry no step mode here: their IntegrationTime's unit is not known.
+  if (o.traces.empty()) look.timeUnit = integrationTimeUnit(input.options.stepMode, input.info);
   RenderedImage rendered;
   {
     Progress progress("rendering", o.frames);
     rendered = renderImage(
-        o.job.backend, o.look, input.field(), input.volume, traces, o.frames, o.colourBar,
+        o.job.backend, look, input.field(), input.volume, traces, o.frames, o.colourBar,
         [&](std::uint32_t done, std::uint32_t) { progress.update(done); }, printLine);
   }
   render::writePng(o.out, rendered.image);

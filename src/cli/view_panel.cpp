@@ -101,6 +101,7 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
           o.look.colourBy = f;
           o.look.range.clear();
           scene.colourLabel = f == "speed" ? "|" + session.traces().traces().vectorName + "|" : f;
+          scene.colourUnit = f == "time" ? o.look.timeUnit : std::string();
           session.rebuildTubes();
         }
       ImGui::EndCombo();

@@ -14,6 +14,7 @@ ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu
     : options_(options), ctx_(&ctx), backend_(backend), input_(std::move(input)),
       tracer_(ctx, backend, input_.volume) {
   startTraces();
+  options_.look.timeUnit = integrationTimeUnit(input_.options.stepMode, input_.info);
   scene_ = prepareScene(options_.look, input_.field(), input_.volume, traces_->traces());
   renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
   setColourMap(scene_.colourMap);

@@ -204,6 +204,10 @@ py::array renderTraces(const Traces& t, std::uint32_t width, std::uint32_t heigh
   o.tubeRadiusOfView = tubeRadiusOfView;
   o.radiusByColour = radiusByColour;
   o.colourBy = std::move(colourBy);
+  for (const output::FieldDataArray& f : t.provenance)  // IntegrationTime's unit by step mode
+    if (const auto* text = std::get_if<std::vector<std::string>>(&f.values);
+        f.name == "StepMode" && text && !text->empty())
+      o.timeUnit = integrationTimeUnit(parseStepMode(text->front()), t.field->field.info);
   o.colourMap = std::move(colourMap);
   o.colourScale = std::move(colourScale);
   o.symlogWidth = symlogWidth;

@@ -124,5 +124,23 @@ TEST_F(RenderOptionChecks, TheDefaultTubeRadiusIsAFractionOfTheView) {
               0.5f * scene.settings.tubeRadius, 1e-4f * viewHeight);
 }
 
+// IntegrationTime is an arc length in `arc` mode and a time otherwise: the colour bar of
+// --colour-by time shows the input's length or time unit, and nothing the input does not give.
+TEST_F(RenderOptionChecks, ColouringByTimeShowsIntegrationTimesUnit) {
+  bricks::DatasetInfo info;
+  info.lengthUnit = "cm (code length 3.1e24 cm)";
+  info.timeUnit = "s";
+  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Arc, info), "cm");
+  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Cell, info), "s");
+  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Time, info), "s");
+  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Time, bricks::DatasetInfo{}), "");
+  RenderOptions o;
+  o.timeUnit = "s";
+  o.colourBy = "time";
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_).colourUnit, "s");
+  o.colourBy = "speed";
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_).colourUnit, "");
+}
+
 }  // namespace
 }  // namespace amrstream
