@@ -58,9 +58,8 @@ void runResample(const ResampleOptions& o) {
   fmt::print("structure  {} bricks, {} regions, vector {}, point data {}, interpolant {} "
              "[{:.2f} s]\n",
              withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
-             volume.vectorName,
-             channelList(volume),
-             interpolantName(volume.interpolant), clock.seconds());
+             volume.vectorName, channelList(volume), interpolantName(volume.interpolant),
+             clock.seconds());
 
   const flow::UniformGridSpec spec = flow::uniformGridSpec(volume, o.dims, o.box);
   clock.restart();

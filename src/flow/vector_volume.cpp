@@ -80,12 +80,6 @@ CentredCells centreCells(const bricks::AmrField& field, std::vector<shared::Bric
   return {{bounds.lower - centre, bounds.upper - centre}, transform};
 }
 
-std::string channelList(const bricks::AmrField& field) {
-  std::string names;
-  for (const bricks::Channel& c : field.channels()) names += (names.empty() ? "" : ", ") + c.name;
-  return names;
-}
-
 }  // namespace
 
 namespace {

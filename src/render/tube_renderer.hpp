@@ -79,11 +79,10 @@ class TubeRenderer {
   void appendTubes(std::span<const shared::TubeSegment> added,
                    std::span<const shared::TubeSegment> all, float radius);
   static constexpr std::size_t kMaxAppendedStructures = 48;
-  // Host wall time of the last appendTubes: the segments' upload, the structures' build (with
-  // their boxes) and the instance list's; all in `structures` when it set the tubes whole.
-  // Host seconds of an append: writing the new segments to staging memory and recording their
-  // copy, making the boxes and recording the structures' builds, writing the instance list;
-  // then the one submission's wait for the device to do it all.
+  // Host seconds of the last appendTubes: writing the new segments to staging memory and
+  // recording their copy, making the boxes and recording the structures' builds, writing the
+  // instance list; then the one submission's wait for the device to do it all. All in
+  // `structures` when it set the tubes whole.
   struct AppendTimes {
     double upload = 0.0, structures = 0.0, instances = 0.0, device = 0.0;
   };

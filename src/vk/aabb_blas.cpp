@@ -63,7 +63,7 @@ uint64_t maxBoxesPerScene(const Context& ctx, uint32_t override) {
 
 namespace {
 
-// buildAabbBlas, or with `into` (no compaction, `reuse` given) recordAabbBlas.
+// buildAabbBlas (no `reuse`, no `into`), or recordAabbBlas (both, no compaction).
 std::vector<AabbBlas> makeAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
                                    std::string_view name, uint32_t maxPrimitivesOverride,
                                    bool compact, BlasBuildBuffers* reuse, VkCommandBuffer into) {
@@ -214,8 +214,8 @@ std::vector<AabbBlas> makeAabbBlas(const Context& ctx, std::span<const VkAabbPos
 
 std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
                                     std::string_view name, uint32_t maxPrimitivesOverride,
-                                    bool compact, BlasBuildBuffers* reuse) {
-  return makeAabbBlas(ctx, boxes, name, maxPrimitivesOverride, compact, reuse, VK_NULL_HANDLE);
+                                    bool compact) {
+  return makeAabbBlas(ctx, boxes, name, maxPrimitivesOverride, compact, nullptr, VK_NULL_HANDLE);
 }
 
 std::vector<AabbBlas> recordAabbBlas(const Context& ctx, VkCommandBuffer cmd,

@@ -50,21 +50,22 @@ uint64_t maxBoxesPerScene(const Context& ctx, uint32_t override = 0);
 // while). On return the builds are complete and visible to later acceleration-structure builds
 // on the context's queue. Throws std::length_error for more boxes than the id scheme above can
 // address.
-// With `reuse`, the build takes its box buffer (for small box sets, read from host-visible
-// memory) and its scratch buffer from there when they are large enough, and leaves them there
-// (made larger when they were not): for structures built frame after frame, which would
+std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
+                                    std::string_view name, uint32_t maxPrimitivesOverride = 0,
+                                    bool compact = true);
+
+// The box buffer (small box sets are read from host-visible memory; large ones from a
+// device-local copy) and the scratch buffer of recordAabbBlas, kept from build to build and made
+// larger when they are not large enough: for structures built frame after frame, which would
 // otherwise make pinned and device memory every time.
 struct BlasBuildBuffers {
   Buffer hostBoxes;
-  Buffer deviceBoxes;  // recordAabbBlas: a large set's boxes, until the builds have run
+  Buffer deviceBoxes;
   std::optional<ScratchBuffer> scratch;
 };
-std::vector<AabbBlas> buildAabbBlas(const Context& ctx, std::span<const VkAabbPositionsKHR> boxes,
-                                    std::string_view name, uint32_t maxPrimitivesOverride = 0,
-                                    bool compact = true, BlasBuildBuffers* reuse = nullptr);
 
-// The same builds (not compacted) recorded into `cmd` instead of submitted: the BLASes are
-// usable once `cmd` has run, and the buffers in `reuse` must not be reused or freed before.
+// buildAabbBlas's builds (not compacted) recorded into `cmd` instead of submitted: the BLASes
+// are usable once `cmd` has run, and the buffers in `reuse` must not be reused or freed before.
 std::vector<AabbBlas> recordAabbBlas(const Context& ctx, VkCommandBuffer cmd,
                                      std::span<const VkAabbPositionsKHR> boxes,
                                      std::string_view name, BlasBuildBuffers& reuse);
