@@ -1,6 +1,7 @@
 #pragma once
 // Tracing on the chosen backend: the CPU reference or a GPU backend on a Vulkan device.
 
+#include <memory>
 #include <span>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include "amrstream/log.hpp"
 #include "flow/integrator.hpp"
 #include "flow/stored_traces.hpp"
+#include "flow/trace_view.hpp"
 #include "flow/vector_volume.hpp"
 
 namespace amrstream {
@@ -34,6 +36,33 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
                          std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                          const flow::TraceProgress& progress = {}, TraceReport* report = nullptr,
                          HostValues hostValues = HostValues::Keep, const Log& log = {});
+
+// Where a GPU trace's points wait until they are written: in host memory, or on the device that
+// traced them, copied out as they are written (host memory then holds a few windows of lines
+// instead of every point). Auto keeps them on a GPU (not a software device) where they fit.
+enum class TraceStore { Auto, Host, Device };
+
+// Traces held for a writer, wherever their points are; a device's traces keep the device open.
+class HeldTraces {
+ public:
+  virtual ~HeldTraces() = default;
+  virtual const flow::TraceView& view() const = 0;
+  // Whether the points are on the device (TraceStore::Device's result where they fit).
+  virtual bool onDevice() const = 0;
+};
+
+// As trace(), the points kept where `store` says: on the device where a GPU backend traces and
+// TraceStore::Device is asked (or Auto, on a GPU) and every line's maxSteps + 1 points fit (see
+// gpu::GpuTracer::traceOnDevice), else in host memory as trace() keeps them. `volume` must
+// outlive the result.
+std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
+                                            flow::VectorVolume& volume,
+                                            std::span<const glm::dvec3> seeds,
+                                            const flow::TraceOptions& options, TraceStore store,
+                                            const flow::TraceProgress& progress = {},
+                                            TraceReport* report = nullptr,
+                                            HostValues hostValues = HostValues::Keep,
+                                            const Log& log = {});
 
 // The ReasonForTermination's name, e.g. "out of domain".
 const char* reasonName(int reason);

@@ -32,26 +32,23 @@ const char* reasonName(int reason) {
   }
 }
 
-flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volume,
-                         std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
-                         const flow::TraceProgress& progress, TraceReport* report,
-                         HostValues hostValues, const Log& log) {
-  TraceReport local;
-  TraceReport& t = report ? *report : local;
-  const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
-  const gpu::Backend backend = choice.backend;
+namespace {
+
+// A GPU backend's device, open with the volume on it.
+struct GpuSession {
+  GpuSession(vk::Context context, gpu::Backend backend, flow::VectorVolume& volume)
+      : ctx(std::move(context)), tracer(ctx, backend, volume) {}
+  vk::Context ctx;
+  gpu::GpuTracer tracer;
+};
+
+// Opens the device for a GPU backend and uploads the volume, saying so on `log`.
+std::unique_ptr<GpuSession> openDevice(const BackendRequest& request,
+                                       const BackendChoice& choice, flow::VectorVolume& volume,
+                                       TraceReport& t, HostValues hostValues, const Log& log) {
   Stopwatch clock;
-  if (backend == gpu::Backend::Cpu) {
-    say(log, fmt::format("tracing    on the CPU reference ({} threads)",
-                         tbb::info::default_concurrency()));
-    t.backend = "cpu";
-    t.device = fmt::format("{} threads", tbb::info::default_concurrency());
-    flow::StoredTraces traces = flow::traceToRounds(volume, seeds, options, progress);
-    t.traceSeconds = clock.seconds();
-    return traces;
-  }
-  const vk::Context ctx = createContext(request, choice);
-  gpu::GpuTracer tracer(ctx, backend, volume);
+  auto session =
+      std::make_unique<GpuSession>(createContext(request, choice), choice.backend, volume);
   if (hostValues == HostValues::Release) {
     decltype(volume.values)().swap(volume.values);
     decltype(volume.channelValues)().swap(volume.channelValues);
@@ -60,19 +57,19 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
     decltype(volume.channelGradients)().swap(volume.channelGradients);
   }
   t.setupSeconds = clock.seconds();
-  t.backend = gpu::backendName(backend);
-  t.device = ctx.deviceName();
+  t.backend = gpu::backendName(choice.backend);
+  t.device = session->ctx.deviceName();
+  const gpu::TracerSetup& setup = session->tracer.setup();
   say(log,
       fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
                   "{:.2f} s, kernels {:.2f} s]",
-                  gpu::backendName(backend), ctx.deviceName(), t.setupSeconds,
-                  tracer.setup().uploadSeconds, tracer.setup().structureSeconds,
-                  tracer.setup().pipelineSeconds));
-  clock.restart();
-  flow::StoredTraces traces = tracer.traceToRounds(seeds, options, progress);
-  t.traceSeconds = clock.seconds();
-  checkValidation(ctx);
-  const gpu::TraceRunStats& run = tracer.lastRun();
+                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds,
+                  setup.structureSeconds, setup.pipelineSeconds));
+  return session;
+}
+
+// Where a GPU trace's host time went.
+void sayRounds(const gpu::TraceRunStats& run, const Log& log) {
   say(log,
       fmt::format("rounds     {} in {} batch{}: plan {:.3f} s, buffers {:.3f} s, lines {:.3f} s, "
                   "submitting "
@@ -81,7 +78,105 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
                   run.rounds, run.batches, run.batches == 1 ? "" : "es", run.planSeconds,
                   run.buffersSeconds, run.linesSeconds, run.submitSeconds, run.roundWaitSeconds,
                   run.copyWaitSeconds, run.unpackSeconds, run.collectSeconds, run.storeSeconds));
+}
+
+flow::StoredTraces traceOnTheCpu(flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
+                                 const flow::TraceOptions& options,
+                                 const flow::TraceProgress& progress, TraceReport& t,
+                                 const Log& log) {
+  say(log, fmt::format("tracing    on the CPU reference ({} threads)",
+                       tbb::info::default_concurrency()));
+  t.backend = "cpu";
+  t.device = fmt::format("{} threads", tbb::info::default_concurrency());
+  Stopwatch clock;
+  flow::StoredTraces traces = flow::traceToRounds(volume, seeds, options, progress);
+  t.traceSeconds = clock.seconds();
   return traces;
+}
+
+flow::StoredTraces traceOnHost(gpu::GpuTracer& tracer, const vk::Context& ctx,
+                               std::span<const glm::dvec3> seeds,
+                               const flow::TraceOptions& options,
+                               const flow::TraceProgress& progress, TraceReport& t,
+                               const Log& log) {
+  Stopwatch clock;
+  flow::StoredTraces traces = tracer.traceToRounds(seeds, options, progress);
+  t.traceSeconds = clock.seconds();
+  checkValidation(ctx);
+  sayRounds(tracer.lastRun(), log);
+  return traces;
+}
+
+class HostTraces final : public HeldTraces {
+ public:
+  explicit HostTraces(flow::StoredTraces traces) : traces_(std::move(traces)) {}
+  const flow::TraceView& view() const override { return traces_; }
+  bool onDevice() const override { return false; }
+
+ private:
+  flow::StoredTraces traces_;
+};
+
+class TracesOnDevice final : public HeldTraces {
+ public:
+  TracesOnDevice(std::unique_ptr<GpuSession> session, std::unique_ptr<gpu::DeviceTraces> traces)
+      : session_(std::move(session)), traces_(std::move(traces)) {}
+  const flow::TraceView& view() const override { return *traces_; }
+  bool onDevice() const override { return true; }
+
+ private:
+  std::unique_ptr<GpuSession> session_;
+  std::unique_ptr<gpu::DeviceTraces> traces_;  // declared last: freed before the device
+};
+
+}  // namespace
+
+flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volume,
+                         std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
+                         const flow::TraceProgress& progress, TraceReport* report,
+                         HostValues hostValues, const Log& log) {
+  TraceReport local;
+  TraceReport& t = report ? *report : local;
+  const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  if (choice.backend == gpu::Backend::Cpu)
+    return traceOnTheCpu(volume, seeds, options, progress, t, log);
+  const std::unique_ptr<GpuSession> session =
+      openDevice(request, choice, volume, t, hostValues, log);
+  return traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log);
+}
+
+std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
+                                            flow::VectorVolume& volume,
+                                            std::span<const glm::dvec3> seeds,
+                                            const flow::TraceOptions& options, TraceStore store,
+                                            const flow::TraceProgress& progress,
+                                            TraceReport* report, HostValues hostValues,
+                                            const Log& log) {
+  TraceReport local;
+  TraceReport& t = report ? *report : local;
+  const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  if (choice.backend == gpu::Backend::Cpu)
+    return std::make_unique<HostTraces>(
+        traceOnTheCpu(volume, seeds, options, progress, t, log));
+  std::unique_ptr<GpuSession> session = openDevice(request, choice, volume, t, hostValues, log);
+  const bool software =
+      session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (store == TraceStore::Device || (store == TraceStore::Auto && !software)) {
+    Stopwatch clock;
+    std::unique_ptr<gpu::DeviceTraces> kept =
+        session->tracer.traceOnDevice(seeds, options, progress);
+    if (kept) {
+      t.traceSeconds = clock.seconds();
+      checkValidation(session->ctx);
+      sayRounds(session->tracer.lastRun(), log);
+      say(log, fmt::format("points     kept on the device ({:.2f} GiB), copied out as written",
+                           double(kept->deviceBytes()) / 0x1p30));
+      return std::make_unique<TracesOnDevice>(std::move(session), std::move(kept));
+    }
+    say(log, "points     to host memory: they might not fit in the device's");
+  }
+  return std::make_unique<HostTraces>(
+      traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log));
 }
 
 }  // namespace amrstream

@@ -31,7 +31,14 @@ struct TraceCommandOptions {
   std::string distribute = "seeds";
   bool pieces = false;
   std::uint32_t haloSteps = 4;
+  std::string traceStore = "auto";
 };
+
+TraceStore traceStoreNamed(const std::string& name) {
+  if (name == "host") return TraceStore::Host;
+  if (name == "device") return TraceStore::Device;
+  return TraceStore::Auto;
+}
 
 output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesystem::path& path,
                                  const flow::TraceView& traces, const PreparedInput& input) {
@@ -99,11 +106,12 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   input.options.keepHistory = !o.endpointsOnly;
   const bool stagePeak = resetStagePeak();
   // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
-  const flow::StoredTraces traces = runTraces(o.job, input, HostValues::Release);
+  const std::unique_ptr<HeldTraces> traces =
+      runTracesForWriting(o.job, input, traceStoreNamed(o.traceStore), HostValues::Release);
   const std::uint64_t tracingPeak = stagePeakResidentBytes();
   resetStagePeak();
   Stopwatch clock;
-  const output::VtpCounts written = writeTraceFile(o, o.out, traces, input);
+  const output::VtpCounts written = writeTraceFile(o, o.out, traces->view(), input);
   fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", o.out,
              withCommas(written.lines), withCommas(written.points), clock.seconds());
   printMemory(stagePeak, tracingPeak);
@@ -130,6 +138,13 @@ void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
                    "domain) or unwrapped (one polyline continuing past the face)")
       ->capture_default_str()
       ->check(CLI::IsMember({"split", "unwrapped"}));
+  command
+      ->add_option("--trace-store", options->traceStore,
+                   "where a GPU trace's points wait to be written: device (the GPU's memory, "
+                   "copied out as the file is written, where every line's steps fit), host, or "
+                   "auto (device on a GPU, host on a software device)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "host", "device"}));
   addDistributeOption(*command, options->distribute);
   command
       ->add_option("--halo-steps", options->haloSteps,

@@ -173,6 +173,20 @@ flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
   return stored;
 }
 
+std::unique_ptr<HeldTraces> runTracesForWriting(const TraceJobOptions& o, PreparedInput& input,
+                                                TraceStore store, HostValues hostValues) {
+  const flow::SeedList& seeds = input.seeds;
+  Progress progress("tracing", seeds.points.size());
+  std::unique_ptr<HeldTraces> held = traceForWriting(
+      o.backend, input.volume, seeds.points, input.options, store,
+      [&](std::size_t done, std::size_t lines) {
+        progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
+      },
+      &input.report, hostValues, printLine);
+  printTraceSummary(held->view().lines(), input.report);
+  return held;
+}
+
 void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string* seedsOut) {
   CLI::App* command = &app;
   auto* seedsFile =

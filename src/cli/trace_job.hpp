@@ -94,6 +94,10 @@ void printTraceSummary(const flow::TraceSet& traces, const TraceReport& report);
 flow::StoredTraces runTraces(const TraceJobOptions& o, PreparedInput& input,
                              HostValues hostValues = HostValues::Keep);
 
+// runTraces() for a writer: the points kept where `store` says (see traceForWriting).
+std::unique_ptr<HeldTraces> runTracesForWriting(const TraceJobOptions& o, PreparedInput& input,
+                                                TraceStore store, HostValues hostValues);
+
 // Prints a line of the library's log on stdout.
 void printLine(const std::string& line);
 

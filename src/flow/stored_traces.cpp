@@ -44,25 +44,7 @@ StoredTraces::StoredTraces(TraceSet lines, std::vector<RoundBlock> rounds,
     : lines_(std::move(lines)), rounds_(std::move(rounds)) {
   if (runs.size() != rounds_.size())
     throw std::invalid_argument("StoredTraces: one list of runs per round");
-  const std::size_t lineCount = lines_.lineCount();
-  std::vector<std::uint64_t> counts(lineCount + 1, 0);
-  for (const std::vector<LinePoints>& round : runs)
-    for (const LinePoints& r : round) {
-      if (r.line >= lineCount) throw std::invalid_argument("StoredTraces: no such line");
-      ++counts[r.line + 1];
-    }
-  for (std::size_t i = 0; i < lineCount; ++i) counts[i + 1] += counts[i];
-  runOffsets_ = counts;
-  runs_.resize(counts.back());
-  // Each round's list is released once placed: the peak holds the lists and the runs once.
-  for (std::uint32_t round = 0; round < rounds_.size(); ++round) {
-    std::uint32_t first = 0;
-    for (const LinePoints& r : runs[round]) {
-      runs_[counts[r.line]++] = {round, r.points, first};
-      first += r.points;
-    }
-    std::vector<LinePoints>().swap(runs[round]);
-  }
+  runs_ = LineRuns(lines_.lineCount(), runs);
 }
 
 TraceSet StoredTraces::assemble() && {
@@ -76,8 +58,7 @@ TraceSet StoredTraces::assemble() && {
     if (width > 0)
       tbb::parallel_for(std::size_t(0), out.lineCount(), [&](std::size_t line) {
         float* to = destination + out.offsets[line] * width;
-        for (std::uint64_t r = runOffsets_[line]; r < runOffsets_[line + 1]; ++r) {
-          const Run& run = runs_[r];
+        for (const PointRun& run : runs_.of(line)) {
           const float* from = columnData(rounds_[run.round], column) + run.first * width;
           to = std::copy_n(from, std::size_t(run.count) * width, to);
         }
@@ -91,30 +72,25 @@ TraceSet StoredTraces::assemble() && {
   gather(out.channels, PointColumn::Channels, &RoundBlock::channels);
   gather(out.vorticity, PointColumn::Vorticity, &RoundBlock::vorticity);
   rounds_.clear();
-  runs_.clear();
-  runOffsets_.assign(1, 0);
+  runs_ = LineRuns();
   return out;
 }
 
 std::span<const float> StoredTraces::column(PointColumn column, std::size_t line,
                                             std::vector<float>& scratch) const {
   const std::size_t width = columnWidth(lines_, column);
-  const std::uint64_t begin = runOffsets_[line], end = runOffsets_[line + 1];
-  std::uint64_t points = 0;
-  for (std::uint64_t r = begin; r < end; ++r) points += runs_[r].count;
+  const std::span<const PointRun> runs = runs_.of(line);
+  const std::uint64_t points = runs_.pointCount(line);
   if (points == 0 || width == 0 || !holdsColumn(lines_, column)) return {};
-  const auto runValues = [&](const Run& run) {
+  const auto runValues = [&](const PointRun& run) {
     return columnData(rounds_[run.round], column) + run.first * width;
   };
-  std::uint64_t nonEmpty = 0, only = begin;
-  for (std::uint64_t r = begin; r < end; ++r)
-    if (runs_[r].count > 0) ++nonEmpty, only = r;
-  if (nonEmpty == 1) return {runValues(runs_[only]), points * width};
+  const auto nonEmpty = [](const PointRun& run) { return run.count > 0; };
+  if (std::count_if(runs.begin(), runs.end(), nonEmpty) == 1)
+    return {runValues(*std::find_if(runs.begin(), runs.end(), nonEmpty)), points * width};
   scratch.resize(points * width);
   float* out = scratch.data();
-  for (std::uint64_t r = begin; r < end; ++r) {
-    out = std::copy_n(runValues(runs_[r]), runs_[r].count * width, out);
-  }
+  for (const PointRun& run : runs) out = std::copy_n(runValues(run), run.count * width, out);
   return {scratch.data(), scratch.size()};
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "line_runs.hpp"
 #include "round_block.hpp"
 #include "trace_view.hpp"
 
@@ -28,16 +29,9 @@ class StoredTraces final : public TraceView {
                                 std::vector<float>& scratch) const override;
 
  private:
-  struct Run {
-    std::uint32_t round;
-    std::uint32_t count;  // points
-    std::uint32_t first;  // the run's first point in its round (a round holds < 2^32 points)
-  };
-
   TraceSet lines_;
   std::vector<RoundBlock> rounds_;
-  std::vector<std::uint64_t> runOffsets_;  // the runs of line i: runs_[runOffsets_[i] ..]
-  std::vector<Run> runs_;
+  LineRuns runs_;
 };
 
 }  // namespace amrstream::flow

@@ -48,11 +48,23 @@ void TraceAccumulator::add(RoundBlock&& round) {
                                            "seeds or steps, or use --endpoints-only",
                                            double(maxBytes_) / 0x1p30, finished_, lineCount()));
 
+  std::vector<LinePoints> runs = takeReports(round.lines).first;
+  points_ += points;
+  result_.precisePositions = precise;
+  std::vector<shared::LineRound>().swap(round.lines);  // 16 bytes a line a round: keep 8
+  rounds_.push_back(std::move(round));
+  runs_.push_back(std::move(runs));
+}
+
+std::pair<std::vector<LinePoints>, std::uint64_t> TraceAccumulator::takeReports(
+    std::span<const shared::LineRound> lines) {
   std::vector<LinePoints> runs;
-  runs.reserve(round.lines.size());
-  for (const shared::LineRound& r : round.lines) {
+  runs.reserve(lines.size());
+  std::uint64_t points = 0;
+  for (const shared::LineRound& r : lines) {
     if (r.line >= lineCount()) throw std::invalid_argument("TraceAccumulator: no such line");
     runs.push_back({r.line, r.points});
+    points += r.points;
     pointsPerLine_[r.line] += r.points;
     result_.steps[r.line] = r.steps;
     if (r.reason != AMRSTREAM_REASON_RUNNING) {
@@ -60,10 +72,14 @@ void TraceAccumulator::add(RoundBlock&& round) {
       ++finished_;
     }
   }
+  return {std::move(runs), points};
+}
+
+void TraceAccumulator::addReports(std::span<const shared::LineRound> lines) {
+  if (!rounds_.empty())
+    throw std::logic_error("TraceAccumulator: rounds with points and rounds without mixed");
+  auto [runs, points] = takeReports(lines);
   points_ += points;
-  result_.precisePositions = precise;
-  std::vector<shared::LineRound>().swap(round.lines);  // 16 bytes a line a round: keep 8
-  rounds_.push_back(std::move(round));
   runs_.push_back(std::move(runs));
 }
 
@@ -72,19 +88,30 @@ TraceSet TraceAccumulator::snapshot() const {
   return copy.store().assemble();
 }
 
-StoredTraces TraceAccumulator::store() {
+TraceAccumulator::Lines TraceAccumulator::takeAll() {
   TraceSet lines = std::move(result_);
   lines.seedIds = std::move(layout_.seedIds);
   lines.directions = std::move(layout_.directions);
   lines.offsets.assign(pointsPerLine_.size() + 1, 0);
   for (std::size_t line = 0; line < pointsPerLine_.size(); ++line)
     lines.offsets[line + 1] = lines.offsets[line] + pointsPerLine_[line];
-  std::vector<RoundBlock> blocks = std::move(rounds_);
   std::vector<std::vector<LinePoints>> runs = std::move(runs_);
   const std::uint64_t limit = maxBytes_;
   *this = TraceAccumulator(LineLayout{}, lines);
   maxBytes_ = limit;
-  return {std::move(lines), std::move(blocks), std::move(runs)};
+  return {std::move(lines), std::move(runs)};
+}
+
+StoredTraces TraceAccumulator::store() {
+  std::vector<RoundBlock> blocks = std::move(rounds_);
+  Lines all = takeAll();
+  return {std::move(all.lines), std::move(blocks), std::move(all.runs)};
+}
+
+TraceAccumulator::Lines TraceAccumulator::takeLines() {
+  if (!rounds_.empty())
+    throw std::logic_error("TraceAccumulator: takeLines() for rounds that brought their points");
+  return takeAll();
 }
 
 TraceSet TraceAccumulator::assemble() { return store().assemble(); }

@@ -4,7 +4,9 @@
 // (StoredTraces: read line by line, or assembled into one TraceSet).
 
 #include <cstdint>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "round_block.hpp"
@@ -31,6 +33,9 @@ class TraceAccumulator {
   // columns do not match its lines, InputError when the points collected pass `maxBytes` (see
   // setMemoryLimit).
   void add(RoundBlock&& round);
+  // Takes the reports of a round whose points are kept elsewhere (a device's copy of the round,
+  // see takeLines): lines whose reason is no longer RUNNING are finished.
+  void addReports(std::span<const shared::LineRound> lines);
   // 0: no limit.
   void setMemoryLimit(std::uint64_t maxBytes) { maxBytes_ = maxBytes; }
 
@@ -44,10 +49,24 @@ class TraceAccumulator {
   // The rounds so far as they are, read line by line (for writers: no assembled copy); the
   // accumulator is left empty.
   StoredTraces store();
-  // The same, leaving the accumulator as it is (for traces that go on growing).
+  // The lines (seed ids, directions, steps, reasons, offsets) of the rounds taken by addReports,
+  // and per round the lines its points belong to; the accumulator is left empty.
+  struct Lines {
+    TraceSet lines;
+    std::vector<std::vector<LinePoints>> runs;
+  };
+  Lines takeLines();
+  // The rounds so far as store() gives them, leaving the accumulator as it is (for traces that
+  // go on growing).
   TraceSet snapshot() const;
 
  private:
+  // The lines and runs so far; the accumulator is left empty.
+  Lines takeAll();
+  // Records the round's reports; returns its runs and its points.
+  std::pair<std::vector<LinePoints>, std::uint64_t> takeReports(
+      std::span<const shared::LineRound> lines);
+
   LineLayout layout_;
   TraceSet result_;  // names, periodic box, steps and reasons so far
   std::vector<std::uint64_t> pointsPerLine_;

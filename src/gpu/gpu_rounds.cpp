@@ -6,8 +6,8 @@
 #include <cstring>
 
 #include "../../shaders/glsl/shared/round_params.h"
-#include "flow/cell_point.hpp"
-#include "flow/precise_position.hpp"
+#include "point_positions.hpp"
+#include "staged_layout.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
@@ -36,58 +36,22 @@ void copyRange(VkCommandBuffer cmd, const vk::Buffer& from, VkDeviceSize fromOff
   vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
 }
 
-// One array of the dense output as it passes through a staging slot: `count` points starting at
-// point `first` lie at `offset * count` bytes of the slot.
-struct StagedArray {
-  const vk::Buffer* source;
-  std::uint64_t bytesPerPoint;
-  std::uint64_t offset;  // the bytes per point of the arrays before it in the slot
-};
-
-// The arrays a round brings back, in the order they lie in a slot.
-class StagedLayout {
- public:
-  StagedLayout(const RoundBuffers& b, std::size_t channels, bool vorticity) {
-    add(b.densePositions, sizeof(glm::vec3));
-    add(b.denseTimes, sizeof(float));
-    add(b.denseVectors, sizeof(glm::vec3));
-    add(b.channels, channels * sizeof(float));
-    if (vorticity) add(b.vorticity, sizeof(glm::vec3));
-    if (b.withRegionIds) add(b.denseRegionIds, sizeof(std::int32_t));
-  }
-  std::uint64_t bytesPerPoint() const { return bytesPerPoint_; }
-  std::span<const StagedArray> arrays() const { return arrays_; }
-  // Where array `index` of a piece of `count` points starts in its slot.
-  template <typename T>
-  const T* in(const vk::Buffer& slot, std::size_t index, std::size_t count) const {
-    return reinterpret_cast<const T*>(slot.mapped().data() + arrays_[index].offset * count);
-  }
-
- private:
-  void add(const vk::Buffer& source, std::uint64_t bytes) {
-    arrays_.push_back({&source, bytes, bytesPerPoint_});
-    bytesPerPoint_ += bytes;
-  }
-  std::vector<StagedArray> arrays_;
-  std::uint64_t bytesPerPoint_ = 0;
-};
-
 // Unpacks the `count` points a staging slot holds (laid out as `layout`) into `block` from point
 // `first` on. Kernels work in cell units, or offsets from regions' corners (line_state.h);
 // positions are converted to physical coordinates in double precision, like the CPU path's.
 void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t first,
-                 std::size_t count, bool withVorticity, bool withRegionIds,
-                 const flow::VectorVolume& volume, flow::RoundBlock& block) {
+                 std::size_t count, const flow::VectorVolume& volume, flow::RoundBlock& block) {
   const std::size_t channels = volume.channelCount();
-  const bricks::WorldTransform& transform = volume.transform;
-  const std::vector<shared::Region>& regions = volume.regions.regions;
-  const auto* cells = layout.in<glm::vec3>(slot, 0, count);
-  const auto* times = layout.in<float>(slot, 1, count);
-  const auto* vectors = layout.in<glm::vec3>(slot, 2, count);
-  const auto* values = layout.in<float>(slot, 3, count);
-  const auto* vorticity = withVorticity ? layout.in<glm::vec3>(slot, 4, count) : nullptr;
-  const auto* ids =
-      withRegionIds ? layout.in<std::int32_t>(slot, layout.arrays().size() - 1, count) : nullptr;
+  const std::span<const std::byte> bytes = slot.mapped();
+  const auto* cells = layout.in<glm::vec3>(bytes, StagedLayout::kCells, count);
+  const auto* times = layout.in<float>(bytes, StagedLayout::kTimes, count);
+  const auto* vectors = layout.in<glm::vec3>(bytes, StagedLayout::kVectors, count);
+  const auto* values = layout.in<float>(bytes, StagedLayout::kChannels, count);
+  const bool withVorticity = layout.vorticity() < layout.arrays().size();
+  const bool withIds = layout.regionIds() < layout.arrays().size();
+  const auto* vorticity =
+      withVorticity ? layout.in<glm::vec3>(bytes, layout.vorticity(), count) : nullptr;
+  const auto* ids = withIds ? layout.in<std::int32_t>(bytes, layout.regionIds(), count) : nullptr;
   constexpr std::size_t kGrain = std::size_t(1) << 14;
   tbb::parallel_for(std::size_t(0), (count + kGrain - 1) / kGrain, [&](std::size_t chunk) {
     const std::size_t from = chunk * kGrain, n = std::min(kGrain, count - from);
@@ -98,19 +62,9 @@ void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t
                 n * channels * sizeof(float));
     if (vorticity)
       std::memcpy(block.vorticity.data() + to, vorticity + from, n * sizeof(glm::vec3));
-    for (std::size_t i = from; i < from + n; ++i) {
-      if (ids) {  // deep positions: offsets from the regions' corners, kept precise
-        const glm::ivec3 corner = ids[i] >= 0 && std::size_t(ids[i]) < regions.size()
-                                      ? flow::regionCorner(regions[std::size_t(ids[i])].lower)
-                                      : glm::ivec3(0);
-        const flow::SplitPosition split = flow::splitPosition(
-            transform.toPhysical(glm::dvec3(corner) + glm::dvec3(cells[i])));
-        block.positions[first + i] = split.high;
-        block.positionsLow[first + i] = split.low;
-      } else {
-        block.positions[first + i] = glm::vec3(transform.toPhysical(glm::dvec3(cells[i])));
-      }
-    }
+    toPhysicalPositions(volume, cells + from, ids ? ids + from : nullptr, n,
+                        block.positions.data() + to,
+                        ids ? block.positionsLow.data() + to : nullptr);
   });
 }
 
@@ -337,7 +291,7 @@ flow::RoundBlock GpuRounds::readRound(const shared::RoundSummary& summary, std::
       block.lines.assign(reported, reported + lines);
     }
     const auto [first, count] = piecePoints(piece);
-    unpackPiece(layout, slot, first, count, options_.vorticity, b.withRegionIds, *volume_, block);
+    unpackPiece(layout, slot, first, count, *volume_, block);
     times_.unpackSeconds += clock.seconds();
     clock.restart();
     if (piece + slots < pieces) submitPiece(piece + slots);
@@ -357,24 +311,99 @@ flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {
   return readRound(summary, roundLines_, {});
 }
 
+KeptRound GpuRounds::roomForRound() const {
+  const StagedLayout layout(buffers_, volume_->channelCount(), options_.vorticity);
+  const std::uint64_t most = std::uint64_t(roundLines_) * params_.pointsPerLine;
+  KeptRound kept;
+  kept.arrays.resize(layout.arrays().size());
+  // Making device memory takes time in proportion to its size: the arrays are made in parallel.
+  tbb::parallel_for(std::size_t(0), kept.arrays.size(), [&](std::size_t i) {
+    kept.arrays[i] = vk::Buffer::deviceLocal(
+        *ctx_, most * layout.arrays()[i].bytesPerPoint,
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "kept points");
+  });
+  return kept;
+}
+
+void GpuRounds::keepRound(const shared::RoundSummary& summary, std::size_t lines,
+                          const std::function<void()>& afterCopy, KeptRound& kept,
+                          std::vector<shared::LineRound>& reports) {
+  Stopwatch clock;
+  const RoundBuffers& b = buffers_;
+  const vk::Buffer& reported = b.lineRounds[parity_ ^ 1];  // the round submitted last
+  const StagedLayout layout(b, volume_->channelCount(), options_.vorticity);
+  kept.points = summary.points;
+  if (!keepCopy_) keepCopy_.emplace(*ctx_);
+  keepCopy_->submit([&](VkCommandBuffer cmd) {
+    vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                      vk::access::kTransferRead);
+    copyRange(cmd, reported, 0, b.lineRoundsOut, 0, lines * sizeof(shared::LineRound));
+    for (std::size_t i = 0; i < layout.arrays().size(); ++i)
+      copyRange(cmd, *layout.arrays()[i].source, 0, kept.arrays[i], 0,
+                summary.points * layout.arrays()[i].bytesPerPoint);
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kHostRead);
+  });
+  afterCopy();
+  times_.submitSeconds += clock.seconds();
+  clock.restart();
+  keepCopy_->wait();
+  times_.copyWaitSeconds += clock.seconds();
+  b.lineRoundsOut.invalidateMapped();
+  const auto* reportedLines =
+      reinterpret_cast<const shared::LineRound*>(b.lineRoundsOut.mapped().data());
+  reports.assign(reportedLines, reportedLines + lines);
+}
+
 // The device traces round k + 1 while the host unpacks the last pieces of round k.
-void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
-                         const std::function<void(flow::RoundBlock&&)>& consume) {
+void GpuRounds::runRounds(
+    const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+    const std::function<void()>& whileTracing,
+    const std::function<void(const shared::RoundSummary&, const std::function<void()>&)>& take) {
   if (live_ == 0) return;
   Stopwatch clock;
   submitRound(stepsFor(live_));
   times_.submitSeconds += clock.seconds();
   while (true) {
+    if (whileTracing) whileTracing();
     const shared::RoundSummary summary = finishRound();
     live_ = summary.liveLines;
-    flow::RoundBlock block = readRound(summary, roundLines_, [&] {
+    take(summary, [&] {
       if (live_ > 0) submitRound(stepsFor(live_));
     });
-    clock.restart();
-    consume(std::move(block));
-    times_.consumeSeconds += clock.seconds();
     if (live_ == 0) break;
   }
+}
+
+void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+                         const std::function<void(flow::RoundBlock&&)>& consume) {
+  runRounds(stepsFor, {}, [&](const shared::RoundSummary& summary,
+                              const std::function<void()>& submitNext) {
+    flow::RoundBlock block = readRound(summary, roundLines_, submitNext);
+    Stopwatch clock;
+    consume(std::move(block));
+    times_.consumeSeconds += clock.seconds();
+  });
+}
+
+// Each round's buffers are made while the device traces it.
+void GpuRounds::runToEndOnDevice(
+    const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+    const std::function<void(std::vector<shared::LineRound>&&, KeptRound&&)>& keep) {
+  KeptRound room;
+  runRounds(
+      stepsFor,
+      [&] {
+        Stopwatch clock;
+        room = roomForRound();
+        times_.submitSeconds += clock.seconds();
+      },
+      [&](const shared::RoundSummary& summary, const std::function<void()>& submitNext) {
+        std::vector<shared::LineRound> reports;
+        keepRound(summary, roundLines_, submitNext, room, reports);
+        Stopwatch clock;
+        keep(std::move(reports), std::move(room));
+        times_.consumeSeconds += clock.seconds();
+      });
 }
 
 GpuRounds::~GpuRounds() { staging_.waitQuietly(); }

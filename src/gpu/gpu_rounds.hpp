@@ -10,6 +10,8 @@
 // one piece, the device copies the next ones. runToEnd() submits round r + 1 as soon as the last
 // piece of round r is submitted, so that the device traces it while the host unpacks the last
 // pieces; its compaction waits for those copies before it overwrites the dense arrays.
+// runToEndOnDevice() instead copies each round's dense arrays into device buffers of their own
+// (KeptRound), made while the device traces the round, and brings back only the reports.
 
 #include <cstdint>
 #include <functional>
@@ -21,6 +23,7 @@
 #include "flow/round_tracer.hpp"
 #include "round_buffers.hpp"
 #include "round_kernels.hpp"
+#include "staged_layout.hpp"
 #include "staging_ring.hpp"
 #include "trace_kernel.hpp"
 #include "vk/descriptor_pool.hpp"
@@ -69,6 +72,12 @@ class GpuRounds final : public flow::RoundTracer {
   void runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
                 const std::function<void(flow::RoundBlock&&)>& consume);
 
+  // The same, leaving each round's points on the device: `keep` gets the round's reports and its
+  // points, copied out of the buffers the next round reuses.
+  void runToEndOnDevice(
+      const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+      const std::function<void(std::vector<shared::LineRound>&&, KeptRound&&)>& keep);
+
   const RoundTimes& times() const { return times_; }
   std::uint64_t deviceBytes() const;
 
@@ -79,6 +88,22 @@ class GpuRounds final : public flow::RoundTracer {
   // block of `lines` lines; calls `afterLastCopy` once every piece's copy is submitted.
   flow::RoundBlock readRound(const shared::RoundSummary& summary, std::size_t lines,
                              const std::function<void()>& afterLastCopy);
+
+  // Runs rounds to the end. `whileTracing` runs on the host after each round is submitted;
+  // `take` reads the round just finished and calls its second argument once it no longer needs
+  // the round's buffers before the next round overwrites them (after the copies out of them are
+  // submitted), which submits the next round.
+  void runRounds(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+                 const std::function<void()>& whileTracing,
+                 const std::function<void(const shared::RoundSummary&,
+                                          const std::function<void()>&)>& take);
+  // Device buffers for the points of the round submitted last, as many as it may emit.
+  KeptRound roomForRound() const;
+  // Copies the round submitted last into `kept` (from roomForRound) and its `lines` reports to
+  // the host.
+  void keepRound(const shared::RoundSummary& summary, std::size_t lines,
+                 const std::function<void()>& afterCopy, KeptRound& kept,
+                 std::vector<shared::LineRound>& reports);
 
   const vk::Context* ctx_;
   const TraceKernel* trace_;
@@ -97,6 +122,7 @@ class GpuRounds final : public flow::RoundTracer {
   std::size_t roundLines_ = 0;  // lines of the round submitted last
   int parity_ = 0;              // which line-round buffer the next round writes
   RoundTimes times_;
+  std::optional<vk::Submission> keepCopy_;
   // Declared last, so that destruction waits for the device before the buffers go.
   vk::Submission round_;
 };

@@ -53,6 +53,7 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
   roundKernels_ = createRoundKernels(ctx);
+  gatherKernel_ = createGatherKernel(ctx);
   setup_.pipelineSeconds = clock.seconds();
 }
 
@@ -122,16 +123,10 @@ flow::TraceSet GpuTracer::trace(std::span<const glm::dvec3> seeds,
   return traces;
 }
 
-flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
-                                            const flow::TraceOptions& options,
-                                            const flow::TraceProgress& progress) {
-  lastRun_ = {};
-  Stopwatch planClock;
-  flow::LinePlan plan = flow::planLines(*volume_, seeds, options.direction);
-  const std::size_t lines = plan.states.size();
-  flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
-  accumulator.setMemoryLimit(options.maxResultBytes);
-  lastRun_.planSeconds = planClock.seconds();
+void GpuTracer::traceBatches(std::span<const shared::LineState> states,
+                             const flow::TraceOptions& options,
+                             const std::function<void(GpuRounds&, const StepsFor&)>& run) {
+  const std::size_t lines = states.size();
   const std::size_t batch = linesPerBatch(options, lines);
   for (std::size_t first = 0; first < lines; first += batch) {
     const std::size_t count = std::min(batch, lines - first);
@@ -148,15 +143,11 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     lastRun_.buffersSeconds += clock.seconds();
     clock.restart();
     const std::vector<shared::LineState> ordered =
-        threadOrder(std::span(plan.states).subspan(first, count), spatialOrder_);
+        threadOrder(states.subspan(first, count), spatialOrder_);
     GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
                      *roundBuffers_, *staging_, timeKernels_);
     lastRun_.linesSeconds += clock.seconds();
-    rounds.runToEnd([&](std::size_t live) { return flow::stepsPerRound(options, slots, live); },
-                    [&](flow::RoundBlock&& block) {
-                      accumulator.add(std::move(block));
-                      if (progress) progress(accumulator.finishedLines(), lines);
-                    });
+    run(rounds, [&](std::size_t live) { return flow::stepsPerRound(options, slots, live); });
     const RoundTimes& t = rounds.times();
     const auto add = [](std::optional<double>& total, const std::optional<double>& part,
                         bool firstBatch) {
@@ -174,10 +165,80 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     lastRun_.unpackSeconds += t.unpackSeconds;
     lastRun_.collectSeconds += t.consumeSeconds;
   }
+}
+
+flow::LinePlan GpuTracer::planRun(std::span<const glm::dvec3> seeds,
+                                  const flow::TraceOptions& options) {
+  lastRun_ = {};
+  Stopwatch clock;
+  flow::LinePlan plan = flow::planLines(*volume_, seeds, options.direction);
+  lastRun_.planSeconds = clock.seconds();
+  return plan;
+}
+
+flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
+                                            const flow::TraceOptions& options,
+                                            const flow::TraceProgress& progress) {
+  flow::LinePlan plan = planRun(seeds, options);
+  const std::size_t lines = plan.states.size();
+  flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
+  accumulator.setMemoryLimit(options.maxResultBytes);
+  traceBatches(plan.states, options, [&](GpuRounds& rounds, const StepsFor& stepsFor) {
+    rounds.runToEnd(stepsFor, [&](flow::RoundBlock&& block) {
+      accumulator.add(std::move(block));
+      if (progress) progress(accumulator.finishedLines(), lines);
+    });
+  });
   Stopwatch storeClock;
   flow::StoredTraces stored = accumulator.store();
   lastRun_.storeSeconds = storeClock.seconds();
   return stored;
+}
+
+bool GpuTracer::fitsOnDevice(const flow::TraceOptions& options, std::size_t lines) const {
+  VkDeviceSize heap = 0;
+  const VkPhysicalDeviceMemoryProperties& memory = ctx_->memoryProperties();
+  for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      heap = std::max(heap, memory.memoryHeaps[i].size);
+  if (const std::optional<VkDeviceSize> limit = ctx_->memoryLedger().limit())
+    heap = std::min(heap, *limit);
+  const std::uint64_t taken = ctx_->memoryLedger().used() + roundCosts(options).mostBudget;
+  const std::uint64_t left = heap > taken ? heap - taken : 0;
+  const std::uint64_t pointsPerLine = options.keepHistory ? std::uint64_t(options.maxSteps) + 1 : 1;
+  const std::uint64_t bytesPerPoint =
+      flow::TraceSet::bytesPerPoint(volume_->channelCount(), options.vorticity) -
+      sizeof(glm::vec3) + (volume_->deepPositions() ? sizeof(std::int32_t) : 0);
+  const double needed = double(lines) * double(pointsPerLine) * double(bytesPerPoint);
+  return needed <= 0.8 * double(left);
+}
+
+std::unique_ptr<DeviceTraces> GpuTracer::traceOnDevice(std::span<const glm::dvec3> seeds,
+                                                       const flow::TraceOptions& options,
+                                                       const flow::TraceProgress& progress) {
+  flow::LinePlan plan = planRun(seeds, options);
+  const std::size_t lines = plan.states.size();
+  if (lines == 0 || !fitsOnDevice(options, lines)) return nullptr;
+  flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
+  std::vector<KeptRound> kept;
+  std::optional<StagedLayout> layout;
+  traceBatches(plan.states, options, [&](GpuRounds& rounds, const StepsFor& stepsFor) {
+    if (!layout) layout.emplace(*roundBuffers_, volume_->channelCount(), options.vorticity);
+    rounds.runToEndOnDevice(stepsFor,
+                            [&](std::vector<shared::LineRound>&& reports, KeptRound&& round) {
+                              accumulator.addReports(reports);
+                              kept.push_back(std::move(round));
+                              if (progress) progress(accumulator.finishedLines(), lines);
+                            });
+  });
+  Stopwatch storeClock;
+  flow::TraceAccumulator::Lines traced = accumulator.takeLines();
+  auto result =
+      std::make_unique<DeviceTraces>(*ctx_, gatherKernel_, *volume_, *layout,
+                                     std::move(traced.lines), std::move(kept),
+                                     std::move(traced.runs), traceWindow_);
+  lastRun_.storeSeconds = storeClock.seconds();
+  return result;
 }
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,

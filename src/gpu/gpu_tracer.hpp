@@ -5,12 +5,13 @@
 //
 // A trace runs its lines in batches that fit the options' memory budget (and the device's buffer
 // range and dispatch limits), each batch in rounds of steps (gpu_rounds.hpp) whose real points
-// alone come back to the host, so host and device memory stay within the budget whatever the
-// number of steps; the result is that of one run. Within a batch, threads take the lines in
+// alone come back to the host (or stay on the device: traceOnDevice), so host and device memory
+// stay within the budget whatever the number of steps; the result is that of one run. Within a batch, threads take the lines in
 // Morton order of their seeds, so that a subgroup traces neighbouring seeds through the same
 // bricks; results are returned in line order either way.
 
 #include <cstddef>
+#include <functional>
 #include <glm/glm.hpp>
 #include <map>
 #include <memory>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "backend.hpp"
+#include "device_traces.hpp"
 #include "flow/integrator.hpp"
 #include "flow/line_plan.hpp"
 #include "flow/round_tracer.hpp"
@@ -31,6 +33,8 @@
 #include "volume_buffers.hpp"
 
 namespace amrstream::gpu {
+
+class GpuRounds;
 
 // The work of the last trace().
 struct TraceRunStats {
@@ -66,6 +70,17 @@ class GpuTracer {
                                    const flow::TraceOptions& options,
                                    const flow::TraceProgress& progress = {});
 
+  // The same, the points left on the device in the rounds that made them (see DeviceTraces; the
+  // tracer must outlive them),
+  // or nothing when there are no lines or they might not fit: with history, every line's
+  // maxSteps + 1 points must fit within 80 % of the device memory left after the round buffers'
+  // budget.
+  std::unique_ptr<DeviceTraces> traceOnDevice(std::span<const glm::dvec3> seeds,
+                                              const flow::TraceOptions& options,
+                                              const flow::TraceProgress& progress = {});
+  // Whether traceOnDevice() would keep these lines' points: see there.
+  bool fitsOnDevice(const flow::TraceOptions& options, std::size_t lines) const;
+
   // Lines (flow::planLines) that advance one round per call, for progressive tracing; all in
   // one batch. The tracer must outlive the result.
   std::unique_ptr<flow::RoundTracer> startRounds(std::span<const shared::LineState> lines,
@@ -100,12 +115,22 @@ class GpuTracer {
   // Timestamps around each round's kernels (off by default: they may keep the device from
   // overlapping a round with the copy of the one before).
   void timeKernels(bool on) { timeKernels_ = on; }
+  // The bytes of one column that traceOnDevice()'s traces copy out at a time (tests use a few
+  // points).
+  void setTraceWindow(std::uint64_t bytes) { traceWindow_ = bytes; }
   // Replaces the staging ring the points come back through (tests use slots of a few points).
   void setStaging(std::size_t slots, std::uint64_t slotBytes);
 
  private:
   // What a round costs, and the automatic budget's bounds on this device.
   flow::RoundCosts roundCosts(const flow::TraceOptions& options) const;
+  // The lines of a trace of `seeds`; resets lastRun() and times the planning.
+  flow::LinePlan planRun(std::span<const glm::dvec3> seeds, const flow::TraceOptions& options);
+  // Traces `states` batch by batch; `run` runs a batch's rounds to the end with the steps per
+  // round it is given.
+  using StepsFor = std::function<std::uint32_t(std::size_t live)>;
+  void traceBatches(std::span<const shared::LineState> states, const flow::TraceOptions& options,
+                    const std::function<void(GpuRounds&, const StepsFor&)>& run);
   // The kernel taking the options' integrator's steps.
   const TraceKernel& kernelFor(const flow::TraceOptions& options);
 
@@ -118,11 +143,13 @@ class GpuTracer {
   KernelSettings settings_;
   std::map<flow::Integrator, TraceKernel> otherKernels_;  // created by the first trace needing one
   RoundKernels roundKernels_;
+  GatherKernel gatherKernel_;  // for traceOnDevice()'s traces
   std::optional<TraceKernel> probe_;            // created by the first locate()
   std::unique_ptr<RoundBuffers> roundBuffers_;  // kept for the next batch or trace that fits
   std::size_t batchLimit_ = 0;
   bool spatialOrder_ = true;
   bool timeKernels_ = false;
+  std::uint64_t traceWindow_ = DeviceTraces::kWindowBytes;
   TraceRunStats lastRun_;
 };
 
