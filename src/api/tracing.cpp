@@ -5,6 +5,7 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "gpu/gpu_tracer.hpp"
+#include "vk/vk_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream {
@@ -163,8 +164,17 @@ std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
       session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   if (store == TraceStore::Device || (store == TraceStore::Auto && !software)) {
     Stopwatch clock;
-    std::unique_ptr<gpu::DeviceTraces> kept =
-        session->tracer.traceOnDevice(seeds, options, progress);
+    std::unique_ptr<gpu::DeviceTraces> kept;
+    try {
+      kept = session->tracer.traceOnDevice(seeds, options, progress);
+      if (!kept) say(log, "points     to host memory: they might not fit in the device's");
+    } catch (const vk::VulkanError& e) {
+      // Room is made for every point a round might emit: it may run out where the points fit.
+      if (e.result() != VK_ERROR_OUT_OF_DEVICE_MEMORY) throw;
+      say(log, fmt::format("points     the device's memory ran out ({}): tracing again into "
+                           "host memory",
+                           e.what()));
+    }
     if (kept) {
       t.traceSeconds = clock.seconds();
       checkValidation(session->ctx);
@@ -173,7 +183,6 @@ std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
                            double(kept->deviceBytes()) / 0x1p30));
       return std::make_unique<TracesOnDevice>(std::move(session), std::move(kept));
     }
-    say(log, "points     to host memory: they might not fit in the device's");
   }
   return std::make_unique<HostTraces>(
       traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log));

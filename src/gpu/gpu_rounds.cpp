@@ -311,9 +311,10 @@ flow::RoundBlock GpuRounds::advance(std::uint32_t steps) {
   return readRound(summary, roundLines_, {});
 }
 
-KeptRound GpuRounds::roomForRound() const {
+KeptRound GpuRounds::roomForRound(std::uint64_t pointsLeft) const {
   const StagedLayout layout(buffers_, volume_->channelCount(), options_.vorticity);
-  const std::uint64_t most = std::uint64_t(roundLines_) * params_.pointsPerLine;
+  const std::uint64_t most =
+      std::min(std::uint64_t(roundLines_) * params_.pointsPerLine, pointsLeft);
   KeptRound kept;
   kept.arrays.resize(layout.arrays().size());
   // Making device memory takes time in proportion to its size: the arrays are made in parallel.
@@ -333,6 +334,9 @@ void GpuRounds::keepRound(const shared::RoundSummary& summary, std::size_t lines
   const vk::Buffer& reported = b.lineRounds[parity_ ^ 1];  // the round submitted last
   const StagedLayout layout(b, volume_->channelCount(), options_.vorticity);
   kept.points = summary.points;
+  for (std::size_t i = 0; i < layout.arrays().size(); ++i)
+    if (kept.arrays[i].size() < summary.points * layout.arrays()[i].bytesPerPoint)
+      throw std::logic_error("GpuRounds: a round emitted more points than it had room for");
   if (!keepCopy_) keepCopy_.emplace(*ctx_);
   keepCopy_->submit([&](VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
@@ -389,17 +393,21 @@ void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& s
 void GpuRounds::runToEndOnDevice(
     const std::function<std::uint32_t(std::size_t live)>& stepsFor,
     const std::function<void(std::vector<shared::LineRound>&&, KeptRound&&)>& keep) {
+  // No line holds more than maxSteps + 1 points: the batch's points still to come are bounded.
+  std::uint64_t pointsLeft =
+      std::uint64_t(live_) * (options_.keepHistory ? std::uint64_t(options_.maxSteps) + 1 : 1);
   KeptRound room;
   runRounds(
       stepsFor,
       [&] {
         Stopwatch clock;
-        room = roomForRound();
+        room = roomForRound(pointsLeft);
         times_.submitSeconds += clock.seconds();
       },
       [&](const shared::RoundSummary& summary, const std::function<void()>& submitNext) {
         std::vector<shared::LineRound> reports;
         keepRound(summary, roundLines_, submitNext, room, reports);
+        pointsLeft -= std::min(pointsLeft, room.points);
         Stopwatch clock;
         keep(std::move(reports), std::move(room));
         times_.consumeSeconds += clock.seconds();

@@ -97,8 +97,9 @@ class GpuRounds final : public flow::RoundTracer {
                  const std::function<void()>& whileTracing,
                  const std::function<void(const shared::RoundSummary&,
                                           const std::function<void()>&)>& take);
-  // Device buffers for the points of the round submitted last, as many as it may emit.
-  KeptRound roomForRound() const;
+  // Device buffers for the points of the round submitted last, as many as it may emit but at
+  // most `pointsLeft`.
+  KeptRound roomForRound(std::uint64_t pointsLeft) const;
   // Copies the round submitted last into `kept` (from roomForRound) and its `lines` reports to
   // the host.
   void keepRound(const shared::RoundSummary& summary, std::size_t lines,

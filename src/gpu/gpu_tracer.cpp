@@ -203,12 +203,15 @@ bool GpuTracer::fitsOnDevice(const flow::TraceOptions& options, std::size_t line
       heap = std::max(heap, memory.memoryHeaps[i].size);
   if (const std::optional<VkDeviceSize> limit = ctx_->memoryLedger().limit())
     heap = std::min(heap, *limit);
-  const std::uint64_t taken = ctx_->memoryLedger().used() + roundCosts(options).mostBudget;
+  const std::uint64_t rounds =
+      options.memoryBudget > 0 ? options.memoryBudget : roundCosts(options).mostBudget;
+  const std::uint64_t taken = ctx_->memoryLedger().used() + rounds;
   const std::uint64_t left = heap > taken ? heap - taken : 0;
   const std::uint64_t pointsPerLine = options.keepHistory ? std::uint64_t(options.maxSteps) + 1 : 1;
+  // As collected on the host, the region ids instead of the positions' low parts.
   const std::uint64_t bytesPerPoint =
-      flow::TraceSet::bytesPerPoint(volume_->channelCount(), options.vorticity) -
-      sizeof(glm::vec3) + (volume_->deepPositions() ? sizeof(std::int32_t) : 0);
+      flow::TraceSet::bytesPerPoint(volume_->channelCount(), options.vorticity) +
+      (volume_->deepPositions() ? sizeof(std::int32_t) : 0);
   const double needed = double(lines) * double(pointsPerLine) * double(bytesPerPoint);
   return needed <= 0.8 * double(left);
 }
