@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -18,13 +19,15 @@ namespace amrstream::bricks {
 
 namespace {
 
-// Lowest index in [0, n) for which `bad(i)` holds, or n. Runs in parallel.
-template <typename Predicate>
-std::size_t firstFailing(std::size_t n, Predicate bad) {
+// Lowest index in [0, n) for which `bad(state, i)` holds, or n. Runs in parallel; each range
+// of indices has a `State` of its own, made by default and seeing the range's indices in order.
+template <typename State, typename Predicate>
+std::size_t firstFailingWith(std::size_t n, Predicate bad) {
   std::atomic<std::size_t> first{n};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+    State state{};
     for (std::size_t i = range.begin(); i != range.end() && i < first.load(); ++i) {
-      if (bad(i)) {
+      if (bad(state, i)) {
         std::size_t seen = first.load();
         while (i < seen && !first.compare_exchange_weak(seen, i)) {
         }
@@ -34,6 +37,36 @@ std::size_t firstFailing(std::size_t n, Predicate bad) {
   });
   return first.load();
 }
+
+// Lowest index in [0, n) for which `bad(i)` holds, or n. Runs in parallel.
+template <typename Predicate>
+std::size_t firstFailing(std::size_t n, Predicate bad) {
+  struct None {};
+  return firstFailingWith<None>(n, [&](None&, std::size_t i) { return bad(i); });
+}
+
+// Per level, aligned corners recently found absent from the level's set, in 16 slots (a 4 x 4
+// patch of the level's cells in x and y): cells come in blocks, whose cells share their coarser
+// cells' corners, so most probes repeat one made a few cells before.
+class AbsentCorners {
+ public:
+  bool holds(std::size_t level, glm::ivec3 corner) const {
+    const unsigned slot = slotOf(level, corner);
+    return (known_[level] >> slot & 1u) != 0 && corners_[level][slot] == corner;
+  }
+  void add(std::size_t level, glm::ivec3 corner) {
+    const unsigned slot = slotOf(level, corner);
+    known_[level] |= std::uint16_t(1u << slot);
+    corners_[level][slot] = corner;
+  }
+
+ private:
+  static unsigned slotOf(std::size_t level, glm::ivec3 corner) {
+    return unsigned((corner.x >> level) & 3) | unsigned((corner.y >> level) & 3) << 2;
+  }
+  std::array<std::array<glm::ivec3, 16>, kMaxLevel + 1> corners_;
+  std::array<std::uint16_t, kMaxLevel + 1> known_{};
+};
 
 // Open-addressing set of non-zero 64-bit keys, filled concurrently with compare-and-swap.
 class ConcurrentKeySet {
@@ -318,20 +351,24 @@ void AmrField::validate() {
     throw InputError(
         source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
 
-  const auto insideCoarser = [&](std::size_t i) -> int {
+  const auto insideCoarser = [&](AbsentCorners& absent, std::size_t i) -> int {
     for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
       if (!sets[level]) continue;
       const int mask = ~(cellWidth(int(level)) - 1);
       // Corners of coarser cells are aligned in absolute coordinates, so align before shifting.
       const glm::ivec3 aligned =
           glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
+      if (absent.holds(level, aligned)) continue;
       if (sets[level]->contains(aligned)) return int(level);
+      absent.add(level, aligned);
     }
     return -1;
   };
-  if (std::size_t i = firstFailing(n, [&](std::size_t i) { return insideCoarser(i) >= 0; });
+  if (std::size_t i = firstFailingWith<AbsentCorners>(
+          n, [&](AbsentCorners& absent, std::size_t i) { return insideCoarser(absent, i) >= 0; });
       i < n) {
-    const int level = insideCoarser(i);
+    AbsentCorners none;
+    const int level = insideCoarser(none, i);
     const int mask = ~(cellWidth(level) - 1);
     throw InputError(
         source_, fmt::format("{} overlaps the level-{} cell at {},{},{}",
