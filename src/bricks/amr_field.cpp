@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -73,16 +75,22 @@ class ConcurrentKeySet {
  public:
   // 1.5 slots a key: at most two thirds full, so probes stay short, in 12 bytes a key (a power
   // of two would take 16 to 32: the largest transient of loading a big dataset).
+  // The slots come zeroed from calloc: fresh pages, zeroed by the kernel as the threads that
+  // insert first touch them, rather than by one thread up front.
   explicit ConcurrentKeySet(std::size_t expected)
-      : slots_(std::max<std::size_t>(16, expected + expected / 2)) {}
+      : count_(std::max<std::size_t>(16, expected + expected / 2)),
+        slots_(static_cast<std::uint64_t*>(std::calloc(count_, sizeof(std::uint64_t)))) {
+    if (!slots_) throw std::bad_alloc();
+  }
 
   // False when the key was already present.
   bool insert(std::uint64_t key) {
     for (std::size_t i = slotOf(key);; i = next(i)) {
-      std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
+      std::atomic_ref<std::uint64_t> slot(slots_[i]);
+      std::uint64_t current = slot.load(std::memory_order_relaxed);
       if (current == key) return false;
       if (current == 0) {
-        if (slots_[i].compare_exchange_strong(current, key)) return true;
+        if (slot.compare_exchange_strong(current, key)) return true;
         if (current == key) return false;
       }
     }
@@ -90,7 +98,8 @@ class ConcurrentKeySet {
 
   bool contains(std::uint64_t key) const {
     for (std::size_t i = slotOf(key);; i = next(i)) {
-      const std::uint64_t current = slots_[i].load(std::memory_order_relaxed);
+      const std::uint64_t current =
+          std::atomic_ref<std::uint64_t>(slots_[i]).load(std::memory_order_relaxed);
       if (current == key) return true;
       if (current == 0) return false;
     }
@@ -106,11 +115,15 @@ class ConcurrentKeySet {
   }
   // The hash scaled onto the slots (Lemire's multiply-shift), any count of slots.
   std::size_t slotOf(std::uint64_t key) const {
-    return std::size_t((unsigned __int128)hash(key) * slots_.size() >> 64);
+    return std::size_t((unsigned __int128)hash(key) * count_ >> 64);
   }
-  std::size_t next(std::size_t i) const { return i + 1 == slots_.size() ? 0 : i + 1; }
+  std::size_t next(std::size_t i) const { return i + 1 == count_ ? 0 : i + 1; }
 
-  std::vector<std::atomic<std::uint64_t>> slots_;
+  struct Free {
+    void operator()(std::uint64_t* p) const { std::free(p); }
+  };
+  std::size_t count_;
+  std::unique_ptr<std::uint64_t[], Free> slots_;
 };
 
 // The corners of one level's cells, keyed by their index in the level's grid within the box of
@@ -310,12 +323,30 @@ void AmrField::validate() {
 
   // The box of each level's corners (in one pass), then of all cells in 64 bits: a corner near
   // INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.
-  std::vector<glm::ivec3> levelLower(kMaxLevel + 1, glm::ivec3(std::numeric_limits<int>::max())),
-      levelUpper(kMaxLevel + 1, glm::ivec3(std::numeric_limits<int>::min()));
-  for (std::size_t i = 0; i < n; ++i) {
-    levelLower[levels_[i]] = glm::min(levelLower[levels_[i]], lowers_[i]);
-    levelUpper[levels_[i]] = glm::max(levelUpper[levels_[i]], lowers_[i]);
-  }
+  struct LevelBoxes {
+    std::array<glm::ivec3, kMaxLevel + 1> lower, upper;
+  };
+  LevelBoxes empty;
+  empty.lower.fill(glm::ivec3(std::numeric_limits<int>::max()));
+  empty.upper.fill(glm::ivec3(std::numeric_limits<int>::min()));
+  const LevelBoxes boxes = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n), empty,
+      [&](const tbb::blocked_range<std::size_t>& range, LevelBoxes b) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          b.lower[levels_[i]] = glm::min(b.lower[levels_[i]], lowers_[i]);
+          b.upper[levels_[i]] = glm::max(b.upper[levels_[i]], lowers_[i]);
+        }
+        return b;
+      },
+      [](LevelBoxes a, const LevelBoxes& b) {
+        for (int level = 0; level <= kMaxLevel; ++level) {
+          a.lower[level] = glm::min(a.lower[level], b.lower[level]);
+          a.upper[level] = glm::max(a.upper[level], b.upper[level]);
+        }
+        return a;
+      });
+  const auto& levelLower = boxes.lower;
+  const auto& levelUpper = boxes.upper;
   glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max());
   glm::i64vec3 upper(std::numeric_limits<std::int64_t>::min());
   for (int level = 0; level <= kMaxLevel; ++level) {

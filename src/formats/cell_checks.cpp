@@ -1,7 +1,11 @@
 #include "cell_checks.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +13,50 @@
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
+
+namespace {
+
+// The cells' bounding box in finest-cell units, with each cell's upper corner at lower +
+// 2^level (exact in double for the 32-bit corners and levels up to 255), and the first cell whose
+// level passes bricks::kMaxLevel or whose upper corner passes 2^31 - 1 (the count when none).
+// Computed in parallel: min and max are exact, so the box is that of one pass in order.
+struct CellsBox {
+  glm::dvec3 lower{std::numeric_limits<double>::infinity()};
+  glm::dvec3 upper{-std::numeric_limits<double>::infinity()};
+  std::size_t firstOutside;
+};
+
+CellsBox cellsBox(std::span<const glm::ivec3> lowers, std::span<const std::uint8_t> levels) {
+  static const std::array<double, 256> widths = [] {
+    std::array<double, 256> w{};
+    for (int level = 0; level < 256; ++level) w[std::size_t(level)] = std::ldexp(1.0, level);
+    return w;
+  }();
+  const std::size_t n = std::min(lowers.size(), levels.size());
+  constexpr double kIntMax = std::numeric_limits<std::int32_t>::max();
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n), CellsBox{.firstOutside = n},
+      [&](const tbb::blocked_range<std::size_t>& range, CellsBox box) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const glm::dvec3 corner(lowers[i]);
+          const glm::dvec3 end = corner + widths[levels[i]];
+          if (i < box.firstOutside &&
+              (levels[i] > bricks::kMaxLevel || glm::any(glm::greaterThan(end, glm::dvec3(kIntMax)))))
+            box.firstOutside = i;
+          box.lower = glm::min(box.lower, corner);
+          box.upper = glm::max(box.upper, end);
+        }
+        return box;
+      },
+      [](CellsBox a, const CellsBox& b) {
+        a.lower = glm::min(a.lower, b.lower);
+        a.upper = glm::max(a.upper, b.upper);
+        a.firstOutside = std::min(a.firstOutside, b.firstOutside);
+        return a;
+      });
+}
+
+}  // namespace
 
 std::optional<std::string> unusableFieldValue(double value) {
   if (std::isnan(value)) return "not a number";
@@ -19,23 +67,18 @@ std::optional<std::string> unusableFieldValue(double value) {
 
 void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
                               std::span<const std::uint8_t> levels, const std::string& source) {
-  constexpr std::int64_t kIntMax = std::numeric_limits<std::int32_t>::max();
-  glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max());
-  glm::i64vec3 upper(std::numeric_limits<std::int64_t>::min());
-  for (std::size_t i = 0; i < lowers.size() && i < levels.size(); ++i) {
+  if (std::min(lowers.size(), levels.size()) == 0) return;
+  const CellsBox box = cellsBox(lowers, levels);
+  if (const std::size_t i = box.firstOutside; i < std::min(lowers.size(), levels.size())) {
     if (levels[i] > bricks::kMaxLevel)
       throw InputError(source, fmt::format("cell {} has level {}, above the supported {}", i,
                                            levels[i], bricks::kMaxLevel));
-    const glm::i64vec3 corner(lowers[i]);
-    const std::int64_t width = std::int64_t{1} << levels[i];
-    const glm::i64vec3 end = corner + width;
-    if (glm::any(glm::greaterThan(end, glm::i64vec3(kIntMax))))
-      throw InputError(source, fmt::format("cell {} at ({}, {}, {}), {} finest cells wide, "
-                                           "reaches past 2^31 - 1",
-                                           i, corner.x, corner.y, corner.z, width));
-    lower = glm::min(lower, corner);
-    upper = glm::max(upper, end);
+    throw InputError(source, fmt::format("cell {} at ({}, {}, {}), {} finest cells wide, "
+                                         "reaches past 2^31 - 1",
+                                         i, lowers[i].x, lowers[i].y, lowers[i].z,
+                                         std::int64_t{1} << levels[i]));
   }
+  const glm::i64vec3 lower(box.lower), upper(box.upper);
   const glm::i64vec3 extent = upper - lower;
   const std::int64_t limit = std::int64_t{1} << bricks::kMaxExtentBits;
   for (int a = 0; a < 3 && !lowers.empty(); ++a)
@@ -48,6 +91,7 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
 std::optional<std::string> unrepresentablePositions(const bricks::WorldTransform& transform,
                                                     std::span<const glm::ivec3> lowers,
                                                     std::span<const std::uint8_t> levels) {
+  const CellsBox box = cellsBox(lowers, levels);
   for (int a = 0; a < 3; ++a) {
     const double origin = transform.origin[a], spacing = transform.spacing[a];
     const char axis = "xyz"[a];
@@ -57,11 +101,7 @@ std::optional<std::string> unrepresentablePositions(const bricks::WorldTransform
           "the spacing along {} is {}, outside the [{}, {}] that float32 "
           "positions can hold",
           axis, spacing, kMinSpacing, kMaxPositionMagnitude);
-    double lower = std::numeric_limits<double>::infinity(), upper = -lower;
-    for (std::size_t i = 0; i < lowers.size() && i < levels.size(); ++i) {
-      lower = std::min(lower, double(lowers[i][a]));
-      upper = std::max(upper, double(lowers[i][a]) + std::ldexp(1.0, levels[i]));
-    }
+    const double lower = box.lower[a], upper = box.upper[a];
     if (lowers.empty()) continue;
     const double low = origin + spacing * lower, high = origin + spacing * upper;
     const double largest = std::max(std::abs(low), std::abs(high));

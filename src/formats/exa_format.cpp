@@ -1,6 +1,8 @@
 #include "exa_format.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -168,15 +170,23 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
     const std::size_t count = std::min<std::size_t>(kPiece, n - first);
     readExactly(in, path, first * kCellBytes, reinterpret_cast<char*>(records.data()),
                 count * kCellBytes, "the cells file");
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::int32_t* cell = &records[4 * k];
-      const std::size_t i = first + k;
-      if (cell[3] < 0 || cell[3] > bricks::kMaxLevel)
-        throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
-                                                    i, cell[3], bricks::kMaxLevel));
-      lowers[i] = glm::ivec3(cell[0], cell[1], cell[2]);
-      levels[i] = static_cast<std::uint8_t>(cell[3]);
-    }
+    // Unpacked in parallel; the first cell with a level out of range is named.
+    const std::size_t bad = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, count), count,
+        [&](const tbb::blocked_range<std::size_t>& range, std::size_t firstBad) {
+          for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const std::int32_t* cell = &records[4 * k];
+            if (cell[3] < 0 || cell[3] > bricks::kMaxLevel) firstBad = std::min(firstBad, k);
+            lowers[first + k] = glm::ivec3(cell[0], cell[1], cell[2]);
+            levels[first + k] = static_cast<std::uint8_t>(cell[3]);
+          }
+          return firstBad;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+    if (bad < count)
+      throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
+                                                  first + bad, records[4 * bad + 3],
+                                                  bricks::kMaxLevel));
   }
   requireCellsWithinExtent(lowers, levels, path.string());
 }
@@ -201,7 +211,16 @@ std::vector<float> readScalars(const std::string& name, const std::filesystem::p
   const std::uint64_t size = openScalars(in, path, cells, cellsPath);
   std::vector<float> values(cells);
   readExactly(in, path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
-  for (std::size_t i = 0; i < cells; ++i)
+  // The first value a float channel cannot hold, found in parallel.
+  const std::size_t first = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, cells), cells,
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
+        for (std::size_t i = range.begin(); i != range.end() && i < found; ++i)
+          if (!std::isfinite(values[i])) return i;
+        return found;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  for (std::size_t i = first; i < cells; ++i)
     if (const auto problem = unusableFieldValue(values[i]))
       throw InputError(path.string(),
                        lowers.empty()

@@ -141,6 +141,24 @@ TEST_F(ExaFormat, RejectsNegativeLevel) {
   EXPECT_THAT(errorOf(config), HasSubstr("cell 0 has level -1"));
 }
 
+// Cells are unpacked and checked in parallel: of several bad cells, the first is named, in any
+// piece of the file.
+TEST_F(ExaFormat, NamesTheFirstOfSeveralBadCells) {
+  std::vector<std::array<std::int32_t, 4>> cells;
+  for (int i = 0; i < 5000; ++i) cells.push_back({2 * (i % 50), 2 * (i / 50), 0, 1});
+  cells[4000][3] = 99;
+  cells[1234][3] = -7;
+  cells[2500][3] = 31;
+  EXPECT_THAT(errorOf(writeCells(cells)), HasSubstr("cell 1234 has level -7"));
+  cells[1234][3] = 1;
+  cells[2500][3] = 1;
+  cells[4000][3] = 1;
+  cells[3333] = {std::numeric_limits<std::int32_t>::max() - 1, 0, 0, 1};
+  cells[4444] = {std::numeric_limits<std::int32_t>::max() - 1, 2, 0, 1};
+  EXPECT_THAT(errorOf(writeCells(cells)), HasSubstr("cell 3333 at (2147483646, 0, 0), 2 finest "
+                                                    "cells wide, reaches past 2^31 - 1"));
+}
+
 TEST_F(ExaFormat, RejectsMalformedConfigWithLineNumbers) {
   writeSample();
   const fs::path config = dir_ / "bad.exa";
