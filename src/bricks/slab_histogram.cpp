@@ -1,5 +1,7 @@
 #include "slab_histogram.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <climits>
@@ -29,6 +31,10 @@ struct Slab {
     upper = glm::max(upper, o.upper);
   }
   U64 area() const { return U64(upper.x - lower.x) * U64(upper.y - lower.y); }
+};
+
+struct Histograms {
+  std::vector<Slab> slabs[3];  // per axis, one per slab of the node
 };
 
 struct Candidate {
@@ -80,14 +86,39 @@ GridBounds sideBounds(const std::vector<Slab>& slabs, const GridBounds& node, in
 HistogramSplit histogramSplit(std::span<const GridCell> cells, const GridBounds& bounds,
                               int maxAlignment) {
   const glm::ivec3 e = bounds.extent();
-  std::vector<Slab> slabs[3];
-  for (int axis = 0; axis < 3; ++axis) slabs[axis].assign(std::size_t(e[axis]), Slab{});
-  for (const GridCell& c : cells) {
-    const glm::ivec3 g = c.g - bounds.lower;
-    slabs[0][g.x].add({c.g.y, c.g.z});
-    slabs[1][g.y].add({c.g.z, c.g.x});
-    slabs[2][g.z].add({c.g.x, c.g.y});
+  // The histograms of large nodes are summed over pieces of the cells in parallel: a slab's
+  // count and bounds do not depend on the order its cells come in.
+  const auto histograms = [&](std::size_t from, std::size_t to) {
+    Histograms h;
+    for (int axis = 0; axis < 3; ++axis) h.slabs[axis].assign(std::size_t(e[axis]), Slab{});
+    for (std::size_t i = from; i < to; ++i) {
+      const GridCell& c = cells[i];
+      const glm::ivec3 g = c.g - bounds.lower;
+      h.slabs[0][g.x].add({c.g.y, c.g.z});
+      h.slabs[1][g.y].add({c.g.z, c.g.x});
+      h.slabs[2][g.z].add({c.g.x, c.g.y});
+    }
+    return h;
+  };
+  constexpr std::size_t kPiece = std::size_t(1) << 18;
+  const std::size_t slabCount = std::size_t(e.x) + std::size_t(e.y) + std::size_t(e.z);
+  Histograms all;
+  if (cells.size() < 2 * kPiece || slabCount * 8 > cells.size()) {
+    all = histograms(0, cells.size());
+  } else {
+    const std::size_t pieces = (cells.size() + kPiece - 1) / kPiece;
+    std::vector<Histograms> parts(pieces);
+    tbb::parallel_for(std::size_t(0), pieces, [&](std::size_t p) {
+      parts[p] = histograms(p * kPiece, std::min(cells.size(), (p + 1) * kPiece));
+    });
+    all = std::move(parts[0]);
+    tbb::parallel_for(0, 3, [&](int axis) {
+      for (std::size_t p = 1; p < pieces; ++p)
+        for (std::size_t s = 0; s < all.slabs[axis].size(); ++s)
+          all.slabs[axis][s].merge(parts[p].slabs[axis][s]);
+    });
   }
+  std::vector<Slab>(&slabs)[3] = all.slabs;
 
   Candidate gap;
   for (int axis = 0; axis < 3; ++axis)

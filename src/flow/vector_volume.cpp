@@ -186,8 +186,11 @@ void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
                       const ChannelSource& channels, VolumeBuildTimes* times) {
   Stopwatch clock;
   const std::size_t slots = volume.cellIds.size(), channelCount = options.pointData.size();
-  volume.values.assign(slots, glm::vec3(0.0f));
-  volume.channelValues.assign(slots * channelCount, 0.0f);
+  // Every slot of both is written below (all three components, every channel).
+  volume.values.clear();
+  volume.values.resize(slots);
+  volume.channelValues.clear();
+  volume.channelValues.resize(slots * channelCount);
   // Every slot's cell must have a value: the source's cells are the layout's.
   const std::size_t cellsNeeded =
       volume.cellIds.empty()

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bricks/amr_field.hpp"
+#include "column.hpp"
 #include "bricks/brick_builder.hpp"
 #include "bricks/region_builder.hpp"
 #include "vector_selection.hpp"
@@ -36,12 +37,13 @@ enum class Interpolant { Tent, Linear };
 struct VectorVolume {
   std::vector<shared::Brick> bricks;   // originals first, then periodic images
   std::size_t originalBrickCount = 0;  // bricks before the images
-  std::vector<glm::vec3> values;       // brick-ordered, see shared::Brick::valueOffset
+  // Columns: made without zeroing, so the threads that fill them touch their pages first.
+  Column<glm::vec3> values;            // brick-ordered, see shared::Brick::valueOffset
   std::vector<std::uint32_t> cellIds;  // the field's cell at each value slot
   // Point data: scalar channels sampled along the traces, brick-ordered and interleaved:
   // channel c of slot s is channelValues[s * channelNames.size() + c].
   std::vector<std::string> channelNames;
-  std::vector<float> channelValues;
+  Column<float> channelValues;
   // Linear interpolant only: per slot, the gradients (per finest cell) of the vector's three
   // components, then of each channel (channelGradients[s * channelNames.size() + c]).
   Interpolant interpolant = Interpolant::Tent;
