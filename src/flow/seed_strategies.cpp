@@ -1,11 +1,17 @@
 #include "seed_strategies.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <random>
+#include <span>
 
 #include "sampler.hpp"
 #include "util/input_error.hpp"
@@ -16,6 +22,72 @@ namespace {
 
 // 53 random bits -> [0, 1), the same on every standard library (see randomSeedsInBox).
 double unitRandom(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
+
+// A float's bits as an unsigned key in the floats' order (-0 just below +0).
+std::uint32_t orderKey(float value) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
+  return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+}
+
+}  // namespace
+
+// Two histograms of 2^16 buckets: of the keys' high halves, then of the low halves of the keys
+// in the bucket holding the rank.
+float valueAtRank(std::span<const float> values, std::size_t rank) {
+  using Histogram = std::vector<std::uint64_t>;
+  const auto histogram = [&](auto bucketOf) {
+    tbb::enumerable_thread_specific<Histogram> perThread(Histogram(std::size_t(1) << 16, 0));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, values.size(), std::size_t(1) << 16),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        Histogram& h = perThread.local();
+                        for (std::size_t i = range.begin(); i != range.end(); ++i)
+                          if (const auto b = bucketOf(orderKey(values[i]))) ++h[*b];
+                      });
+    Histogram all(std::size_t(1) << 16, 0);
+    for (const Histogram& h : perThread)
+      for (std::size_t k = 0; k < all.size(); ++k) all[k] += h[k];
+    return all;
+  };
+  // The bucket holding the rank, and the rank within it.
+  const auto locate = [](const Histogram& h, std::size_t& within) {
+    std::uint32_t bucket = 0;
+    while (within >= h[bucket]) within -= h[bucket++];
+    return bucket;
+  };
+  std::size_t within = rank;
+  const std::uint32_t high = locate(
+      histogram([](std::uint32_t key) { return std::optional<std::uint32_t>(key >> 16); }), within);
+  const std::uint32_t low = locate(histogram([high](std::uint32_t key) {
+                                     return key >> 16 == high
+                                                ? std::optional<std::uint32_t>(key & 0xffffu)
+                                                : std::nullopt;
+                                   }),
+                                   within);
+  const std::uint32_t key = high << 16 | low;
+  const std::uint32_t bits = key & 0x80000000u ? key & 0x7fffffffu : ~key;
+  return std::bit_cast<float>(bits);
+}
+
+namespace {
+
+// The indices of the values at or above `threshold`, in increasing order, found in parallel.
+std::vector<std::uint32_t> indicesAtOrAbove(std::span<const float> values, float threshold) {
+  constexpr std::size_t kBlock = std::size_t(1) << 16;
+  const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
+  std::vector<std::size_t> counts(blocks + 1, 0);
+  tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+    for (std::size_t i = b * kBlock; i < std::min(values.size(), (b + 1) * kBlock); ++i)
+      counts[b + 1] += values[i] >= threshold;
+  });
+  std::partial_sum(counts.begin(), counts.end(), counts.begin());
+  std::vector<std::uint32_t> out(counts.back());
+  tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+    std::size_t at = counts[b];
+    for (std::size_t i = b * kBlock; i < std::min(values.size(), (b + 1) * kBlock); ++i)
+      if (values[i] >= threshold) out[at++] = std::uint32_t(i);
+  });
+  return out;
+}
 
 }  // namespace
 
@@ -85,15 +157,11 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
                      fmt::format("{} is not a percentile in [0, 100]", options.percentile));
 
   // The value at the percentile (nearest rank), then every cell at or above it.
-  std::vector<float> sorted = channel.values;
-  const std::size_t rank =
-      std::min(sorted.size() - 1,
-               std::size_t(std::floor(options.percentile / 100.0 * double(sorted.size()))));
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(rank), sorted.end());
-  const float threshold = sorted[rank];
-  std::vector<std::uint32_t> candidates;
-  for (std::size_t i = 0; i < channel.values.size(); ++i)
-    if (channel.values[i] >= threshold) candidates.push_back(std::uint32_t(i));
+  const std::size_t rank = std::min(
+      channel.values.size() - 1,
+      std::size_t(std::floor(options.percentile / 100.0 * double(channel.values.size()))));
+  const float threshold = valueAtRank(channel.values, rank);
+  const std::vector<std::uint32_t> candidates = indicesAtOrAbove(channel.values, threshold);
 
   std::vector<double> cumulative;
   if (options.weighted) {

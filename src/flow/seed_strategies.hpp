@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <string>
 
 #include "bricks/amr_field.hpp"
@@ -41,5 +42,10 @@ struct DensestCellsOptions {
 // Seeds uniformly inside randomly chosen candidate cells (with repetition). Throws InputError
 // for an unknown channel, a percentile outside [0, 100], or weights that are not positive.
 SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOptions& options);
+
+// The value of rank `rank` (0-based, < values.size()) among finite `values` in increasing order:
+// what std::nth_element would place there, up to the sign of a zero (which compares equal).
+// Two parallel histogram passes over the values' bits.
+float valueAtRank(std::span<const float> values, std::size_t rank);
 
 }  // namespace amrstream::flow

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 
 #include "flow_test_support.hpp"
 #include "input_error_of.hpp"
@@ -121,6 +123,29 @@ TEST(SeedStrategies, DensestCellsSeedsLieInCellsAboveThePercentile) {
   EXPECT_EQ(seedsInDensestCells(field, options).points, seeds.points);  // reproducible
   options.seed = 6;
   EXPECT_NE(seedsInDensestCells(field, options).points, seeds.points);
+}
+
+// The percentile's value is found by histograms of the values' bits: it must be what
+// nth_element gives, at every rank, with negatives, both zeros, repeats and large magnitudes,
+// over several threads' pieces.
+TEST(SeedStrategies, ValueAtRankIsNthElement) {
+  std::mt19937 rng(11);
+  std::vector<float> values(300000);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::uint32_t r = rng();
+    values[i] = r % 7 == 0 ? 0.0f
+                : r % 7 == 1 ? -0.0f
+                : r % 7 == 2 ? float(int(r % 100) - 50)
+                : std::ldexp(float(r % 1000) - 500.0f, int(r % 60) - 30);
+  }
+  for (const std::size_t rank : {std::size_t(0), std::size_t(1), std::size_t(12345),
+                                 values.size() / 2, values.size() * 9 / 10, values.size() - 2,
+                                 values.size() - 1}) {
+    std::vector<float> sorted = values;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(rank), sorted.end());
+    EXPECT_EQ(valueAtRank(values, rank), sorted[rank]) << "rank " << rank;
+  }
+  EXPECT_EQ(valueAtRank(std::vector<float>{3.5f}, 0), 3.5f);
 }
 
 TEST(SeedStrategies, WeightedPicksCellsInProportionToTheirValue) {
