@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "../../shaders/glsl/shared/gather_params.h"
 #include "point_positions.hpp"
 #include "vk/context.hpp"
 #include "vk/commands.hpp"
@@ -64,98 +63,92 @@ std::span<const float> DeviceTraces::column(flow::PointColumn column, std::size_
   return {window->values.data() + first * width, lines_.pointCount(line) * width};
 }
 
-void DeviceTraces::fetch(Fetcher& fetcher, flow::PointColumn column, std::size_t line) const {
+std::vector<std::size_t> DeviceTraces::arraysOf(flow::PointColumn column) const {
   using flow::PointColumn;
-  const bool positions = column == PointColumn::Positions || column == PointColumn::PositionsLow;
-  // The arrays to copy: the cells (and region ids) for positions, else the column's own.
-  std::vector<std::size_t> arrays;
   switch (column) {
     case PointColumn::Positions:
     case PointColumn::PositionsLow:
-      arrays.push_back(StagedLayout::kCells);
-      if (lines_.precisePositions) arrays.push_back(regionIdArray_);
-      break;
+      if (lines_.precisePositions) return {StagedLayout::kCells, regionIdArray_};
+      return {StagedLayout::kCells};
     case PointColumn::Times:
-      arrays.push_back(StagedLayout::kTimes);
-      break;
+      return {StagedLayout::kTimes};
     case PointColumn::Vectors:
-      arrays.push_back(StagedLayout::kVectors);
-      break;
+      return {StagedLayout::kVectors};
     case PointColumn::Channels:
-      arrays.push_back(StagedLayout::kChannels);
-      break;
+      return {StagedLayout::kChannels};
     case PointColumn::Vorticity:
-      arrays.push_back(vorticityArray_);
-      break;
+      return {vorticityArray_};
   }
+  return {};
+}
+
+DeviceTraces::WindowPlan DeviceTraces::planWindow(const std::vector<std::size_t>& arrays,
+                                                  std::size_t line) const {
   std::uint64_t bytesPerPoint = 0;
   for (const std::size_t array : arrays) bytesPerPoint += arrayBytes_[array];
-
   // Whole lines from `line` on, as many as fit the window's bytes (at least one).
   const std::vector<std::uint64_t>& offsets = lines_.offsets;
   const std::uint64_t most = std::max<std::uint64_t>(1, windowBytes_ / bytesPerPoint);
-  std::size_t end = std::upper_bound(offsets.begin() + line + 1, offsets.end(),
-                                     offsets[line] + most) -
-                    offsets.begin() - 1;
-  end = std::clamp(end, line + 1, lines_.lineCount());
-  const std::uint64_t points = offsets[end] - offsets[line];
-
-  // Each array of the window lies whole in the staging buffer, one after the other; each run of
-  // a line is one region of the copy from its round's array.
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<shared::GatherRegion>> groups;
-  std::vector<std::uint64_t> base;
-  std::uint64_t at = 0;
+  WindowPlan plan;
+  plan.firstLine = line;
+  plan.endLine = std::upper_bound(offsets.begin() + line + 1, offsets.end(),
+                                  offsets[line] + most) -
+                 offsets.begin() - 1;
+  plan.endLine = std::clamp(plan.endLine, line + 1, lines_.lineCount());
+  plan.points = offsets[plan.endLine] - offsets[line];
   for (const std::size_t array : arrays) {
-    base.push_back(at);
-    at += points * arrayBytes_[array];
+    plan.base.push_back(plan.bytes);
+    plan.bytes += plan.points * arrayBytes_[array];
   }
+
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<shared::GatherRegion>> groups;
   const auto words = [](std::uint64_t bytes) { return static_cast<std::uint32_t>(bytes / 4); };
-  for (std::size_t l = line; l < end; ++l) {
+  for (std::size_t l = line; l < plan.endLine; ++l) {
     std::uint64_t point = offsets[l] - offsets[line];
     for (const flow::PointRun& run : runs_.of(l)) {
       if (run.count == 0) continue;
       for (std::size_t k = 0; k < arrays.size(); ++k) {
         const std::uint64_t bytes = arrayBytes_[arrays[k]];
         groups[{run.round, arrays[k]}].push_back({words(run.first * bytes),
-                                                  words(base[k] + point * bytes),
+                                                  words(plan.base[k] + point * bytes),
                                                   words(run.count * bytes), 0});
       }
       point += run.count;
     }
   }
-  std::vector<shared::GatherRegion> regions;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> spans;  // per group: first, count
   for (const auto& [source, list] : groups) {
-    spans.emplace_back(static_cast<std::uint32_t>(regions.size()),
-                       static_cast<std::uint32_t>(list.size()));
-    regions.insert(regions.end(), list.begin(), list.end());
+    plan.groups.push_back({source.first, source.second, std::uint32_t(plan.regions.size()),
+                           std::uint32_t(list.size())});
+    plan.regions.insert(plan.regions.end(), list.begin(), list.end());
   }
+  return plan;
+}
 
+void DeviceTraces::gather(Fetcher& fetcher, const WindowPlan& plan) const {
   {
     const std::lock_guard lock(submitting_);
-    if (fetcher.copy) fetcher.copy->wait();
-    if (fetcher.staging.size() < at)
+    if (fetcher.staging.size() < plan.bytes)
       fetcher.staging = vk::Buffer::readback(
-          *ctx_, std::max(at, windowBytes_),
+          *ctx_, std::max(plan.bytes, windowBytes_),
           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "trace window");
-    const std::uint64_t regionBytes = regions.size() * sizeof(shared::GatherRegion);
+    const std::uint64_t regionBytes = plan.regions.size() * sizeof(shared::GatherRegion);
     if (fetcher.regions.size() < regionBytes)
       fetcher.regions = vk::Buffer::upload(*ctx_, 2 * regionBytes,
                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "gather regions");
-    std::memcpy(fetcher.regions.mapped().data(), regions.data(), regionBytes);
-    if (!fetcher.pool || fetcher.poolSets < groups.size()) {
-      fetcher.poolSets = std::max<std::uint32_t>(16, 2 * std::uint32_t(groups.size()));
+    std::memcpy(fetcher.regions.mapped().data(), plan.regions.data(), regionBytes);
+    if (!fetcher.pool || fetcher.poolSets < plan.groups.size()) {
+      fetcher.poolSets = std::max<std::uint32_t>(16, 2 * std::uint32_t(plan.groups.size()));
       const VkDescriptorPoolSize perSet{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGatherBindingCount};
       fetcher.pool.emplace(*ctx_, fetcher.poolSets, std::span(&perSet, 1));
     } else {
       fetcher.pool->reset();
     }
     std::vector<VkDescriptorSet> sets;
-    for (const auto& [source, list] : groups) {
+    for (const WindowPlan::Group& group : plan.groups) {
       sets.push_back(fetcher.pool->allocate(gather_->setLayout.get()));
       const std::array<vk::DescriptorTarget, kGatherBindingCount> targets{
           vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                               rounds_[source.first].arrays[source.second].handle()},
+                               rounds_[group.round].arrays[group.array].handle()},
           vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fetcher.staging.handle()},
           vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fetcher.regions.handle()}};
       vk::writeDescriptors(*ctx_, sets.back(), targets);
@@ -168,13 +161,14 @@ void DeviceTraces::fetch(Fetcher& fetcher, flow::PointColumn column, std::size_t
                         {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather_->pipeline.get());
       for (std::size_t g = 0; g < sets.size(); ++g) {
+        const WindowPlan::Group& group = plan.groups[g];
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather_->layout.get(), 0, 1,
                                 &sets[g], 0, nullptr);
-        for (std::uint32_t done = 0; done < spans[g].second; done += most) {
-          const shared::GatherParams params{spans[g].first + done};
+        for (std::uint32_t done = 0; done < group.count; done += most) {
+          const shared::GatherParams params{group.first + done};
           vkCmdPushConstants(cmd, gather_->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                              sizeof(params), &params);
-          vkCmdDispatch(cmd, std::min(most, spans[g].second - done), 1, 1);
+          vkCmdDispatch(cmd, std::min(most, group.count - done), 1, 1);
         }
       }
       vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
@@ -188,29 +182,33 @@ void DeviceTraces::fetch(Fetcher& fetcher, flow::PointColumn column, std::size_t
     throw std::runtime_error(fmt::format("the Vulkan validation layer reported {} errors",
                                          ctx_->validationErrorCount()));
   fetcher.staging.invalidateMapped();
-  const std::byte* staged = fetcher.staging.mapped().data();
+}
 
-  if (positions) {
+void DeviceTraces::fetch(Fetcher& fetcher, flow::PointColumn column, std::size_t line) const {
+  using flow::PointColumn;
+  const WindowPlan plan = planWindow(arraysOf(column), line);
+  gather(fetcher, plan);
+  const std::byte* staged = fetcher.staging.mapped().data();
+  if (column == PointColumn::Positions || column == PointColumn::PositionsLow) {
     Window& high = fetcher.windows[columnIndex(PointColumn::Positions)];
     Window& low = fetcher.windows[columnIndex(PointColumn::PositionsLow)];
-    high.values.resize(points * 3);
-    low.values.resize(lines_.precisePositions ? points * 3 : 0);
-    toPhysicalPositions(*volume_, reinterpret_cast<const glm::vec3*>(staged + base[0]),
-                        lines_.precisePositions
-                            ? reinterpret_cast<const std::int32_t*>(staged + base[1])
-                            : nullptr,
-                        points, reinterpret_cast<glm::vec3*>(high.values.data()),
-                        lines_.precisePositions ? reinterpret_cast<glm::vec3*>(low.values.data())
-                                                : nullptr);
-    high.firstLine = low.firstLine = line;
-    high.endLine = low.endLine = end;
+    const bool precise = lines_.precisePositions;
+    high.values.resize(plan.points * 3);
+    low.values.resize(precise ? plan.points * 3 : 0);
+    toPhysicalPositions(
+        *volume_, reinterpret_cast<const glm::vec3*>(staged + plan.base[0]),
+        precise ? reinterpret_cast<const std::int32_t*>(staged + plan.base[1]) : nullptr,
+        plan.points, reinterpret_cast<glm::vec3*>(high.values.data()),
+        precise ? reinterpret_cast<glm::vec3*>(low.values.data()) : nullptr);
+    high.firstLine = low.firstLine = plan.firstLine;
+    high.endLine = low.endLine = plan.endLine;
     return;
   }
   Window& window = fetcher.windows[columnIndex(column)];
-  window.values.resize(points * bytesPerPoint / sizeof(float));
-  std::memcpy(window.values.data(), staged, points * bytesPerPoint);
-  window.firstLine = line;
-  window.endLine = end;
+  window.values.resize(plan.bytes / sizeof(float));
+  std::memcpy(window.values.data(), staged, plan.bytes);
+  window.firstLine = plan.firstLine;
+  window.endLine = plan.endLine;
 }
 
 }  // namespace amrstream::gpu

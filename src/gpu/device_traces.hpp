@@ -20,6 +20,7 @@
 #include "flow/line_runs.hpp"
 #include "flow/trace_view.hpp"
 #include "flow/vector_volume.hpp"
+#include "../../shaders/glsl/shared/gather_params.h"
 #include "gather_kernel.hpp"
 #include "staged_layout.hpp"
 #include "vk/descriptor_pool.hpp"
@@ -61,6 +62,26 @@ class DeviceTraces final : public flow::TraceView {
     std::uint32_t poolSets = 0;
     std::array<Window, kColumns> windows;
   };
+  // A window's lines, its arrays' places in the staging buffer (one after the other), and the
+  // gather's regions (one per run of a line), grouped by the round and array they read.
+  struct WindowPlan {
+    struct Group {
+      std::size_t round, array;
+      std::uint32_t first, count;  // its regions
+    };
+    std::size_t firstLine = 0, endLine = 0;
+    std::uint64_t points = 0, bytes = 0;
+    std::vector<std::uint64_t> base;  // per array read
+    std::vector<Group> groups;
+    std::vector<shared::GatherRegion> regions;
+  };
+
+  // The layout's arrays a column is read from: the cells (and region ids) for positions.
+  std::vector<std::size_t> arraysOf(flow::PointColumn column) const;
+  // The window of `arrays` from `line` on: whole lines, about windowBytes, at least one line.
+  WindowPlan planWindow(const std::vector<std::size_t>& arrays, std::size_t line) const;
+  // Runs the plan's gather into the fetcher's staging buffer and waits for it.
+  void gather(Fetcher& fetcher, const WindowPlan& plan) const;
   // Fills the windows of `column` (for positions: of both parts) with the lines from `line` on.
   void fetch(Fetcher& fetcher, flow::PointColumn column, std::size_t line) const;
 
