@@ -141,11 +141,18 @@ TEST_F(ExaFormat, RejectsNegativeLevel) {
   EXPECT_THAT(errorOf(config), HasSubstr("cell 0 has level -1"));
 }
 
-// Cells are unpacked and checked in parallel: of several bad cells, the first is named, in any
-// piece of the file.
+// Cells are unpacked and checked in parallel: of several bad cells, the first is named,
+// wherever they lie.
 TEST_F(ExaFormat, NamesTheFirstOfSeveralBadCells) {
   std::vector<std::array<std::int32_t, 4>> cells;
-  for (int i = 0; i < 5000; ++i) cells.push_back({2 * (i % 50), 2 * (i / 50), 0, 1});
+  for (int i = 0; i < 150000; ++i) cells.push_back({2 * (i % 50), 2 * (i / 50), 0, 1});
+  cells[140000][3] = 99;
+  cells[70000][3] = -7;
+  cells[100000][3] = 31;
+  EXPECT_THAT(errorOf(writeCells(cells)), HasSubstr("cell 70000 has level -7"));
+  cells[70000][3] = 1;
+  cells[100000][3] = 1;
+  cells[140000][3] = 1;
   cells[4000][3] = 99;
   cells[1234][3] = -7;
   cells[2500][3] = 31;
