@@ -47,8 +47,6 @@ class HeldTraces {
  public:
   virtual ~HeldTraces() = default;
   virtual const flow::TraceView& view() const = 0;
-  // Whether the points are on the device (TraceStore::Device's result where they fit).
-  virtual bool onDevice() const = 0;
 };
 
 // As trace(), the points kept where `store` says: on the device where a GPU backend traces and

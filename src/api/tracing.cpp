@@ -112,7 +112,6 @@ class HostTraces final : public HeldTraces {
  public:
   explicit HostTraces(flow::StoredTraces traces) : traces_(std::move(traces)) {}
   const flow::TraceView& view() const override { return traces_; }
-  bool onDevice() const override { return false; }
 
  private:
   flow::StoredTraces traces_;
@@ -123,7 +122,6 @@ class TracesOnDevice final : public HeldTraces {
   TracesOnDevice(std::unique_ptr<GpuSession> session, std::unique_ptr<gpu::DeviceTraces> traces)
       : session_(std::move(session)), traces_(std::move(traces)) {}
   const flow::TraceView& view() const override { return *traces_; }
-  bool onDevice() const override { return true; }
 
  private:
   std::unique_ptr<GpuSession> session_;

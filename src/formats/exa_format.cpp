@@ -18,6 +18,7 @@
 #include "file_set_writer.hpp"
 #include "input_bytes.hpp"
 #include "text_numbers.hpp"
+#include "util/first_failing.hpp"
 #include "util/input_error.hpp"
 
 namespace amrstream::formats {
@@ -211,25 +212,17 @@ std::vector<float> readScalars(const std::string& name, const std::filesystem::p
   const std::uint64_t size = openScalars(in, path, cells, cellsPath);
   std::vector<float> values(cells);
   readExactly(in, path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
-  // The first value a float channel cannot hold, found in parallel.
-  const std::size_t first = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, cells), cells,
-      [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
-        for (std::size_t i = range.begin(); i != range.end() && i < found; ++i)
-          if (!std::isfinite(values[i])) return i;
-        return found;
-      },
-      [](std::size_t a, std::size_t b) { return std::min(a, b); });
-  for (std::size_t i = first; i < cells; ++i)
-    if (const auto problem = unusableFieldValue(values[i]))
-      throw InputError(path.string(),
-                       lowers.empty()
-                           ? fmt::format("channel '{}': the value of cell {} is {}", name, i,
-                                         *problem)
-                           : fmt::format("channel '{}': the value of cell {} (lower corner {}, "
-                                         "{}, {}) is {}",
-                                         name, i, lowers[i].x, lowers[i].y, lowers[i].z,
-                                         *problem));
+  const std::size_t i = firstFailing(
+      cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
+  if (i < cells) {
+    const std::string problem = *unusableFieldValue(values[i]);
+    throw InputError(path.string(),
+                     lowers.empty()
+                         ? fmt::format("channel '{}': the value of cell {} is {}", name, i, problem)
+                         : fmt::format("channel '{}': the value of cell {} (lower corner {}, {}, "
+                                       "{}) is {}",
+                                       name, i, lowers[i].x, lowers[i].y, lowers[i].z, problem));
+  }
   return values;
 }
 

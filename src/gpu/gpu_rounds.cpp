@@ -316,13 +316,10 @@ KeptRound GpuRounds::roomForRound(std::uint64_t pointsLeft) const {
   const std::uint64_t most =
       std::min(std::uint64_t(roundLines_) * params_.pointsPerLine, pointsLeft);
   KeptRound kept;
-  kept.arrays.resize(layout.arrays().size());
-  // Making device memory takes time in proportion to its size: the arrays are made in parallel.
-  tbb::parallel_for(std::size_t(0), kept.arrays.size(), [&](std::size_t i) {
-    kept.arrays[i] = vk::Buffer::deviceLocal(
-        *ctx_, most * layout.arrays()[i].bytesPerPoint,
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "kept points");
-  });
+  for (const StagedArray& array : layout.arrays())
+    kept.arrays.push_back(vk::Buffer::deviceLocal(
+        *ctx_, most * array.bytesPerPoint,
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "kept points"));
   return kept;
 }
 
