@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "amrstream/dataset.hpp"
+#include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "flow/vector_volume.hpp"
 
@@ -52,9 +53,11 @@ void checkSeedRequest(const SeedRequest& request);
 
 // The seeds and, in `description`, which strategy made them. Density seeding needs the cells.
 // Throws InputError naming the option at fault, the request checked (checkSeedRequest) before any
-// seed is made.
+// seed is made. `shared`: the cells' values are shared out among processes (MPI ranks over
+// data), which choose density seeds together.
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
-                           std::string& description);
+                           std::string& description,
+                           const flow::SharedCells* shared = nullptr);
 
 // Moves seeds on the domain's upper faces just inside (the domain is half-open) and throws
 // InputError when a seed lies outside.

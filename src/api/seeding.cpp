@@ -83,7 +83,7 @@ void checkSeedRequest(const SeedRequest& request) {
 }
 
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
-                           std::string& description) {
+                           std::string& description, const flow::SharedCells* shared) {
   checkSeedRequest(request);
   if (!request.points.empty()) {
     description = "given points";
@@ -108,7 +108,7 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
                               request.density, request.percentile,
                               request.weighted ? ", weighted by it" : "", request.seed);
     return flow::seedsInDensestCells(*cells, {request.density, request.percentile, request.weighted,
-                                              request.count, request.seed});
+                                              request.count, request.seed, shared});
   }
   auto [lo, hi] = seedBox(request, domain);
   // Keep seeds off the domain's open upper faces, where rounding to float could put them.

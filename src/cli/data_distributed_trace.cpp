@@ -12,7 +12,9 @@
 #include "dist/rank_agreement.hpp"
 #include "dist/run_stitching.hpp"
 #include "dist/trace_exchange.hpp"
+#include "dist/value_windows.hpp"
 #include "flow/line_plan.hpp"
+#include "formats/load_input.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -33,27 +35,107 @@ struct RankPart {
   flow::LinePlan plan;
   double halo = 0.0;  // finest cells
   std::size_t allBricks = 0;
+  formats::WindowedRead read;  // pieces 0: the whole input was read
 };
+
+// How far a rank's lines go past its part before they are handed on (margin), how far their
+// samples reach (halo) and the cells it keeps for them (kept), in finest cells.
+struct RankReach {
+  double margin = 0.0, halo = 0.0, kept = 0.0;
+};
+
+RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& options,
+                    std::uint32_t haloSteps) {
+  float widest = 0.0f;
+  for (const shared::Region& region : volume.regions.regions)
+    widest = std::max(widest, region.finestCellWidth);
+  // A step's stages from anywhere lines stay before they are handed on (the part and a margin),
+  // or from the domain's padding next to it.
+  const dist::StepReach reach = dist::stepReach(volume, options);
+  RankReach r;
+  r.margin = (haloSteps - 1) * reach.step * 1.01;
+  r.halo = r.margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
+  // The linear interpolant's gradients at the cells samples reach fit their face neighbours.
+  r.kept = r.halo + (volume.interpolant == flow::Interpolant::Linear ? 2.0 * widest : 0.0);
+  return r;
+}
+
+// Over data, a rank reads the values of its part and what it keeps around it alone where the
+// format allows, and where the part follows from the cells' layout alone: in arc mode, where a
+// step's reach does not depend on the field's speed.
+bool readsItsPartAlone(const TraceJobOptions& job) {
+  return formats::readsValueWindows(formats::detectFormat(job.dataset.input)) &&
+         job.trace.stepMode == "arc";
+}
+
+// The part the whole input gives each rank, found from the cells' layout alone (no values read;
+// the same cells give the same partition), and the window of values this rank reads: its part
+// grown by the cells it keeps and two finest cells, and the cells whose tents reach them.
+struct RankWindow {
+  dist::DataPartition partition;  // finest-cell units of the field
+  formats::ValueWindow window;
+};
+
+RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
+                      std::uint32_t haloSteps) {
+  const formats::ValueWindow nothing;
+  const bricks::AmrField layoutCells =
+      formats::loadInput(job.dataset.input, job.dataset.generator, &nothing);
+  const FieldPlan plan = planField(flow::catalogOf(layoutCells), layoutCells.info(), job.field);
+  const flow::VectorVolume layout = flow::buildCellLayout(layoutCells, plan.volume);
+  const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps);
+  RankWindow r;
+  r.partition = dist::partitionCells(layoutCells, world.size(), reach.halo);
+  r.window = dist::partWindow(r.partition, world.rank(), reach.kept + 2.0, layoutCells.bounds(),
+                              layout.periodic);
+  return r;
+}
+
+std::string pieceNoun(const std::string& input) {
+  switch (formats::detectFormat(input)) {
+    case formats::Format::Amrex:
+      return "boxes";
+    case formats::Format::Enzo:
+      return "grids";
+    case formats::Format::Flash:
+      return "leaf blocks";
+    default:
+      return "pieces";
+  }
+}
+
+std::string wholeReadReason(const TraceJobOptions& job) {
+  const formats::Format format = formats::detectFormat(job.dataset.input);
+  if (!formats::readsValueWindows(format))
+    return fmt::format("{} inputs are read whole", formats::formatName(format));
+  return fmt::format("in {} mode a step's reach depends on the field's speed", job.trace.stepMode);
+}
 
 RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
                      std::uint32_t haloSteps) {
   RankPart rank;
   PreparedInput& input = rank.input;
-  input = prepareInput(job);
+  std::optional<InputShare> share;
+  if (readsItsPartAlone(job)) {
+    RankWindow window = rankWindow(world, job, haloSteps);
+    share.emplace();
+    share->window = std::move(window.window);
+    share->cells = dist::shareOverRanks(world);
+    share->markOwned = [&world, partition = std::move(window.partition)](
+                           const bricks::AmrField& cells, std::vector<std::uint8_t>& owned) {
+      // Every rank has read its window (a rank that failed to is in the agreement of the phase
+      // around) before they choose the seeds together.
+      dist::agreed(world, [] {});
+      owned = dist::ownedCells(cells, partition, world.rank());
+    };
+  }
+  input = prepareInput(job, true, CellsAfter::Keep, share ? &*share : nullptr);
+  if (share) rank.read = share->read;
   checkDataVolume(input.volume);
   input.options.keepHistory = keepHistory;
   const bricks::AmrField& cells = input.field();
-  float widest = 0.0f;
-  for (const shared::Region& region : input.volume.regions.regions)
-    widest = std::max(widest, region.finestCellWidth);
-  // A step's stages from anywhere lines stay before they are handed on (the part and a margin),
-  // or from the domain's padding next to it.
-  const dist::StepReach reach = dist::stepReach(input.volume, input.options);
-  const double margin = (haloSteps - 1) * reach.step * 1.01;
-  rank.halo = margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
-  // The linear interpolant's gradients at the cells samples reach fit their face neighbours.
-  const double kept =
-      rank.halo + (input.volume.interpolant == flow::Interpolant::Linear ? 2.0 * widest : 0.0);
+  const RankReach reach = rankReach(input.volume, input.options, haloSteps);
+  rank.halo = reach.halo;
   rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
   // origin.
@@ -63,7 +145,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     rank.partition.upper[k] += shift;
   }
   input.options.pauseOutside =
-      dist::pauseBox(rank.partition, world.rank(), margin, input.volume.periodic);
+      dist::pauseBox(rank.partition, world.rank(), reach.margin, input.volume.periodic);
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
 
@@ -73,7 +155,8 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   part.pointData = input.volume.channelNames;
   part.periodic = input.volume.periodic;
   part.interpolant = input.volume.interpolant;
-  part.keepAround = flow::VolumeOptions::Box{glm::dvec3(lower) - kept, glm::dvec3(upper) + kept};
+  part.keepAround =
+      flow::VolumeOptions::Box{glm::dvec3(lower) - reach.kept, glm::dvec3(upper) + reach.kept};
   input.volume = flow::buildVectorVolume(
       cells, flow::chooseVectorChannels(cells, job.field.vector), part);
   input.releaseField();
@@ -149,6 +232,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   const std::vector<double> rankSent = world.gatherToRoot(double(stats.linesSent));
   const std::vector<double> rankTracing = world.gatherToRoot(stats.traceSeconds);
   const std::vector<double> rankExchange = world.gatherToRoot(stats.exchangeSeconds);
+  const std::vector<double> rankRead = world.gatherToRoot(double(rank.read.piecesRead));
   const double handOffs = world.sumOverRanks(double(stats.linesSent));
   const auto printRanks = [&] {
     fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
@@ -158,6 +242,11 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), stats.rounds,
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
                perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
+    if (rank.read.pieces > 0)
+      fmt::print("read       each rank its part's values: {} of {} {}\n",
+                 perRank(rankRead, "{:.0f}"), rank.read.pieces, pieceNoun(job.dataset.input));
+    else
+      fmt::print("read       every rank the whole input: {}\n", wholeReadReason(job));
     if (gpuTracer) {
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));

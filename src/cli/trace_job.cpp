@@ -8,6 +8,7 @@
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
 #include "dataset_files.hpp"
+#include "formats/load_input.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
 #include "output/seed_file_writer.hpp"
@@ -51,16 +52,21 @@ RunFiles jobFiles(const TraceJobOptions& o) {
   return files;
 }
 
-PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter after) {
+PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter after,
+                           InputShare* share) {
   Stopwatch clock;
   PreparedInput input;
   // Deferred: the channels stay in their files until the volume's layout and the seeds are made
   // and the cells freed, so one channel at a time is in memory beside the volume (.exa inputs).
-  const bool deferred = after == CellsAfter::Release && withSeeds;
+  const bool deferred = after == CellsAfter::Release && withSeeds && !share;
   DeferredDataset data =
-      deferred ? loadDeferred(o.dataset.input, o.dataset.generator)
-               : DeferredDataset{
-                     std::make_shared<Dataset>(load(o.dataset.input, o.dataset.generator)), {}, {}};
+      deferred
+          ? loadDeferred(o.dataset.input, o.dataset.generator)
+          : DeferredDataset{std::make_shared<Dataset>(formats::loadInput(
+                                o.dataset.input, o.dataset.generator,
+                                share ? &share->window : nullptr, share ? &share->read : nullptr)),
+                            {},
+                            {}};
   if (!deferred) data.catalog = flow::catalogOf(*data.cells);
   const bricks::AmrField& cells = *data.cells;
   input.info = cells.info();
@@ -112,9 +118,13 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter 
   if (o.trace.vorticity) pointData += std::string(pointData.empty() ? "" : ", ") + "vorticity";
   fmt::print("point data {}\n", pointData.empty() ? "none" : pointData);
 
+  if (share && !o.seeds.density.empty()) {
+    share->markOwned(*input.cells, share->owned);
+    share->cells.owned = share->owned;
+  }
   if (!deferred)
-    input.seeds =
-        chooseSeeds(o.seeds, domainOf(volume), input.cells.get(), input.seedDescription);
+    input.seeds = chooseSeeds(o.seeds, domainOf(volume), input.cells.get(), input.seedDescription,
+                              share ? &share->cells : nullptr);
   flow::SeedList& seeds = input.seeds;
   placeSeeds(volume, seeds);
   if (!o.seedsOut.empty()) output::writeSeedFile(o.seedsOut, seeds);

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -16,6 +17,7 @@
 #include "flow/seeds.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
+#include "formats/value_window.hpp"
 #include "output_paths.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
@@ -75,11 +77,23 @@ struct PreparedInput {
 // empty.
 enum class CellsAfter { Keep, Release };
 
+// An MPI rank's share of the input over data: the values of `window` alone (formats that read
+// part of their values; the other cells' values are 0), and density seeds chosen with the other
+// ranks from the cells `markOwned` marks as this rank's (one rank's each), called once the
+// input is read and only for density seeds.
+struct InputShare {
+  formats::ValueWindow window;
+  std::function<void(const bricks::AmrField&, std::vector<std::uint8_t>& owned)> markOwned;
+  flow::SharedCells cells;  // sumCounts and gatherCells set by the caller
+  std::vector<std::uint8_t> owned;
+  formats::WindowedRead read;  // what was read
+};
+
 // Loads the input, builds bricks and regions, chooses and checks the seeds and the stepping,
 // printing the input, structure, seeds and stepping lines. Without `withSeeds`, stops after the
 // structure (for traces read from a file).
 PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds = true,
-                           CellsAfter after = CellsAfter::Keep);
+                           CellsAfter after = CellsAfter::Keep, InputShare* share = nullptr);
 
 // Traces with the requested backend (with a progress line) and records what ran in
 // input.report. The points stay in the rounds that made them.

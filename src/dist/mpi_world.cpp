@@ -6,6 +6,7 @@
 #include <sched.h>
 
 #include <cstdlib>
+#include <limits>
 #include <thread>
 #include <stdexcept>
 
@@ -71,6 +72,36 @@ std::vector<double> MpiWorld::gatherToRoot(double value) const {
   std::vector<double> values(isRoot() ? std::size_t(size_) : 0u, value);
   if (active_) MPI_Gather(&value, 1, MPI_DOUBLE, values.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   return values;
+}
+
+void MpiWorld::sumOverRanks(std::vector<std::uint64_t>& counts) const {
+  if (active_)
+    MPI_Allreduce(MPI_IN_PLACE, counts.data(), int(counts.size()), MPI_UINT64_T, MPI_SUM,
+                  MPI_COMM_WORLD);
+}
+
+std::vector<std::byte> MpiWorld::gatherToAll(std::span<const std::byte> bytes) const {
+  if (!active_) return {bytes.begin(), bytes.end()};
+  if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+    throw std::length_error(
+        fmt::format("{} bytes to gather from one rank: 2 GiB at most", bytes.size()));
+  const int mine = int(bytes.size());
+  const std::size_t ranks = static_cast<std::size_t>(size_);
+  std::vector<int> counts(ranks), displacements(ranks);
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::size_t total = 0;
+  for (int k = 0; k < size_; ++k) {
+    if (total > std::size_t(std::numeric_limits<int>::max()))
+      throw std::length_error("more than 2 GiB to gather in all");
+    displacements[std::size_t(k)] = int(total);
+    total += std::size_t(counts[std::size_t(k)]);
+  }
+  if (total > std::size_t(std::numeric_limits<int>::max()))
+    throw std::length_error("more than 2 GiB to gather in all");
+  std::vector<std::byte> all(total);
+  MPI_Allgatherv(bytes.data(), mine, MPI_BYTE, all.data(), counts.data(), displacements.data(),
+                 MPI_BYTE, MPI_COMM_WORLD);
+  return all;
 }
 
 void MpiWorld::abort(int code) const {

@@ -3,6 +3,9 @@
 // started the process, so a plain run neither initialises MPI nor needs a launcher, and sees a
 // world of one rank.
 
+#include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +43,10 @@ class MpiWorld {
   double maxOverRanks(double value) const;
   double sumOverRanks(double value) const;
   std::vector<double> gatherToRoot(double value) const;
+  // Collective: `counts` summed element-wise over the ranks, on every rank.
+  void sumOverRanks(std::vector<std::uint64_t>& counts) const;
+  // Collective: every rank's bytes (under 2 GiB from each), in rank order, on every rank.
+  std::vector<std::byte> gatherToAll(std::span<const std::byte> bytes) const;
 
   // Ends every rank at once (MPI_Abort), for a failure outside the points where ranks agree on
   // errors (rank_agreement.hpp); exits with `code` in a world of one.

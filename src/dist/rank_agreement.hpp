@@ -31,13 +31,17 @@ class RankFailure : public std::runtime_error {
 // the failure as it was.
 void agreeOnFailure(const MpiWorld& world, std::exception_ptr failure);
 
-// Runs `phase` and agrees on its outcome: its result where every rank succeeded.
+// Runs `phase` and agrees on its outcome: its result where every rank succeeded. A phase may
+// agree within itself (before a collective of its own): a RankFailure from there, which every
+// rank has agreed on already, passes through.
 template <typename Phase>
 auto agreed(const MpiWorld& world, Phase&& phase) -> decltype(phase()) {
   std::exception_ptr failure;
   if constexpr (std::is_void_v<decltype(phase())>) {
     try {
       phase();
+    } catch (const RankFailure&) {
+      throw;
     } catch (...) {
       failure = std::current_exception();
     }
@@ -46,6 +50,8 @@ auto agreed(const MpiWorld& world, Phase&& phase) -> decltype(phase()) {
     std::optional<decltype(phase())> result;
     try {
       result.emplace(phase());
+    } catch (const RankFailure&) {
+      throw;
     } catch (...) {
       failure = std::current_exception();
     }

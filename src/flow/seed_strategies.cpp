@@ -33,19 +33,22 @@ std::uint32_t orderKey(float value) {
 
 // Two histograms of 2^16 buckets: of the keys' high halves, then of the low halves of the keys
 // in the bucket holding the rank.
-float valueAtRank(std::span<const float> values, std::size_t rank) {
+float valueAtRank(std::span<const float> values, std::size_t rank, const SharedCells* shared) {
   using Histogram = std::vector<std::uint64_t>;
   const auto histogram = [&](auto bucketOf) {
     tbb::enumerable_thread_specific<Histogram> perThread(Histogram(std::size_t(1) << 16, 0));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, values.size(), std::size_t(1) << 16),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         Histogram& h = perThread.local();
-                        for (std::size_t i = range.begin(); i != range.end(); ++i)
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          if (shared && !shared->owned[i]) continue;
                           if (const auto b = bucketOf(orderKey(values[i]))) ++h[*b];
+                        }
                       });
     Histogram all(std::size_t(1) << 16, 0);
     for (const Histogram& h : perThread)
       for (std::size_t k = 0; k < all.size(); ++k) all[k] += h[k];
+    if (shared) shared->sumCounts(all);
     return all;
   };
   // The bucket holding the rank, and the rank within it.
@@ -70,23 +73,50 @@ float valueAtRank(std::span<const float> values, std::size_t rank) {
 
 namespace {
 
-// The indices of the values at or above `threshold`, in increasing order, found in parallel.
-std::vector<std::uint32_t> indicesAtOrAbove(std::span<const float> values, float threshold) {
+// The indices of the values at or above `threshold`, in increasing order, found in parallel;
+// with `owned`, among those where it is not 0.
+std::vector<std::uint32_t> indicesAtOrAbove(std::span<const float> values, float threshold,
+                                            std::span<const std::uint8_t> owned) {
   constexpr std::size_t kBlock = std::size_t(1) << 16;
   const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
+  const auto counted = [&](std::size_t i) {
+    return values[i] >= threshold && (owned.empty() || owned[i]);
+  };
   std::vector<std::size_t> counts(blocks + 1, 0);
   tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
     for (std::size_t i = b * kBlock; i < std::min(values.size(), (b + 1) * kBlock); ++i)
-      counts[b + 1] += values[i] >= threshold;
+      counts[b + 1] += counted(i);
   });
   std::partial_sum(counts.begin(), counts.end(), counts.begin());
   std::vector<std::uint32_t> out(counts.back());
   tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
     std::size_t at = counts[b];
     for (std::size_t i = b * kBlock; i < std::min(values.size(), (b + 1) * kBlock); ++i)
-      if (values[i] >= threshold) out[at++] = std::uint32_t(i);
+      if (counted(i)) out[at++] = std::uint32_t(i);
   });
   return out;
+}
+
+// The candidates' cells and values: this process's, or with `shared` every process's.
+std::pair<std::vector<std::uint32_t>, std::vector<float>> candidateCells(
+    std::span<const float> values, float threshold, const SharedCells* shared) {
+  std::vector<std::uint32_t> cells =
+      indicesAtOrAbove(values, threshold, shared ? shared->owned : std::span<const std::uint8_t>());
+  if (shared) {
+    std::vector<std::pair<std::uint32_t, float>> mine;
+    mine.reserve(cells.size());
+    for (const std::uint32_t c : cells) mine.emplace_back(c, values[c]);
+    const std::vector<std::pair<std::uint32_t, float>> all = shared->gatherCells(std::move(mine));
+    std::pair<std::vector<std::uint32_t>, std::vector<float>> result;
+    for (const auto& [cell, value] : all) {
+      result.first.push_back(cell);
+      result.second.push_back(value);
+    }
+    return result;
+  }
+  std::vector<float> candidateValues(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) candidateValues[i] = values[cells[i]];
+  return {std::move(cells), std::move(candidateValues)};
 }
 
 }  // namespace
@@ -160,20 +190,21 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
   const std::size_t rank = std::min(
       channel.values.size() - 1,
       std::size_t(std::floor(options.percentile / 100.0 * double(channel.values.size()))));
-  const float threshold = valueAtRank(channel.values, rank);
-  const std::vector<std::uint32_t> candidates = indicesAtOrAbove(channel.values, threshold);
+  const float threshold = valueAtRank(channel.values, rank, options.shared);
+  const auto [candidates, candidateValues] =
+      candidateCells(channel.values, threshold, options.shared);
 
   std::vector<double> cumulative;
   if (options.weighted) {
     cumulative.reserve(candidates.size());
     double sum = 0.0;
-    for (std::uint32_t c : candidates) {
-      if (!(channel.values[c] > 0.0f))
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (!(candidateValues[i] > 0.0f))
         throw InputError(field.source(),
                          fmt::format("--seed-weighted needs positive values of '{}', but cell {} "
                                      "has {}",
-                                     options.channel, c, channel.values[c]));
-      cumulative.push_back(sum += channel.values[c]);
+                                     options.channel, candidates[i], candidateValues[i]));
+      cumulative.push_back(sum += candidateValues[i]);
     }
   }
 

@@ -4,6 +4,9 @@
 // among the cells with the highest values of a scalar. All in physical coordinates.
 
 #include <cstdint>
+#include <functional>
+#include <utility>
+#include <vector>
 #include <glm/glm.hpp>
 #include <span>
 #include <string>
@@ -31,12 +34,27 @@ bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits);
 SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::dvec3 upper,
                             std::size_t count, std::uint64_t seed);
 
+// Cells whose values are shared out among processes (MPI ranks over data, each holding the
+// values of its part): each process counts the cells it owns, and the two functions combine
+// what the processes found, so that every process chooses the seeds one process would.
+struct SharedCells {
+  std::span<const std::uint8_t> owned;  // per cell: 1 where this process counts it
+  // Element-wise sums over the processes, in place.
+  std::function<void(std::vector<std::uint64_t>&)> sumCounts;
+  // Every process's cells (indices) with their values, each process giving its own in increasing
+  // order: all of them, in increasing order.
+  std::function<std::vector<std::pair<std::uint32_t, float>>(
+      std::vector<std::pair<std::uint32_t, float>>)>
+      gatherCells;
+};
+
 struct DensestCellsOptions {
   std::string channel;       // the scalar, e.g. "dens"
   double percentile = 90.0;  // candidate cells have values at or above this percentile
   bool weighted = false;     // pick candidates with probability proportional to the value
   std::size_t count = 256;
   std::uint64_t seed = 1;
+  const SharedCells* shared = nullptr;  // this process holds some of the values only
 };
 
 // Seeds uniformly inside randomly chosen candidate cells (with repetition). Throws InputError
@@ -45,7 +63,9 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
 
 // The value of rank `rank` (0-based, < values.size()) among finite `values` in increasing order:
 // what std::nth_element would place there, up to the sign of a zero (which compares equal).
-// Two parallel histogram passes over the values' bits.
-float valueAtRank(std::span<const float> values, std::size_t rank);
+// Two parallel histogram passes over the values' bits. With `shared`, among every process's
+// owned values.
+float valueAtRank(std::span<const float> values, std::size_t rank,
+                  const SharedCells* shared = nullptr);
 
 }  // namespace amrstream::flow

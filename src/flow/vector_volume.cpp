@@ -14,10 +14,6 @@
 
 namespace amrstream::flow {
 
-namespace {
-
-// The shifts of -1, 0 or +1 periods along each periodic axis (none along the others), the zero
-// shift first.
 std::vector<glm::ivec3> periodicShifts(const PeriodicAxes& periodic) {
   std::vector<glm::ivec3> shifts{glm::ivec3(0)};
   for (int z = -1; z <= 1; ++z)
@@ -31,6 +27,8 @@ std::vector<glm::ivec3> periodicShifts(const PeriodicAxes& periodic) {
       }
   return shifts;
 }
+
+namespace {
 
 // Images of the bricks across the periodic faces: for every non-zero periodic shift, the shifted
 // brick whose domain reaches into the domain box.

@@ -86,6 +86,10 @@ struct VolumeOptions {
   Interpolant interpolant = Interpolant::Tent;
 };
 
+// The shifts of -1, 0 or +1 periods along each periodic axis (none along the others), the zero
+// shift first.
+std::vector<glm::ivec3> periodicShifts(const PeriodicAxes& periodic);
+
 struct VolumeBuildTimes {
   double bricks = 0.0;  // seconds
   double regions = 0.0;

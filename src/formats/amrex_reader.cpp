@@ -187,6 +187,24 @@ Box coarsen(const Box& box, int ratio) {
           glm::ivec3(down(box.hi.x), down(box.hi.y), down(box.hi.z))};
 }
 
+// A FAB left unread (outside a window) must still hold its box's values, at 4 bytes or more
+// each: the box's cells are laid out from the layout alone.
+void requireFabBytes(const fs::path& file, const FabEntry& fab,
+                     const std::vector<long long>& offsets, const Box& stored, int ncomp) {
+  std::error_code error;
+  const std::uint64_t size = fs::file_size(file, error);
+  if (error) throw InputError(file.string(), "cannot read its size: " + error.message());
+  const std::uint64_t end =
+      nextFabOffset(offsets, fab.offset).value_or(std::max(size, std::uint64_t(fab.offset)));
+  const std::uint64_t held = std::min(end, size) - std::min(std::uint64_t(fab.offset), size);
+  const double needed = double(amrex::cellCount(stored, file.string())) * ncomp * 4.0;
+  if (double(held) < needed)
+    throw InputError(file.string(),
+                     fmt::format("FAB at byte {} holds {} bytes, fewer than the {:.0f} its box {} "
+                                 "needs",
+                                 fab.offset, held, needed, boxText(fab.box)));
+}
+
 fs::path plotfileHeader(const fs::path& directory) {
   const fs::path headerPath = directory / "Header";
   std::error_code ec;
@@ -202,7 +220,8 @@ void requireFile(const fs::path& path, const std::string& problem) {
 
 }  // namespace
 
-bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
+bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow* window,
+                                   WindowedRead* read) {
   const fs::path headerPath = plotfileHeader(directory);
   const PlotHeader h = parseHeader(headerPath);
   const int levels = h.finestLevel + 1;
@@ -267,11 +286,34 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
     for (const FabEntry& fab : layouts[l].fabs) {
       const fs::path file = levelDir / fab.file;
       requireFile(file, fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
+      // A box that finer boxes cover (they are disjoint) has no leaves: its data is not read.
+      std::uint64_t coveredCells = 0;
+      for (const Box& cover : covering) {
+        const glm::i64vec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
+        if (glm::all(glm::lessThanEqual(lo, hi))) {
+          const glm::i64vec3 n = hi - lo + std::int64_t(1);
+          coveredCells += std::uint64_t(n.x * n.y * n.z);
+        }
+      }
+      const glm::i64vec3 boxCells =
+          glm::i64vec3(fab.box.hi) - glm::i64vec3(fab.box.lo) + std::int64_t(1);
+      const bool leaves = coveredCells < std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
       const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+      const bool wanted =
+          leaves &&
+          (!window || window->meets(fab.box.lo * widths[l] - finestDomain.lo,
+                                    (fab.box.hi + 1) * widths[l] - finestDomain.lo, widths[l]));
+      if (read) {
+        ++read->pieces;
+        read->piecesRead += wanted;
+      }
+      if (!leaves) continue;
       const std::vector<double> values =
-          amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
-                         nextFabOffset(offsets.at(fab.file), fab.offset), stored, ncomp);
-      // The FAB's data is in hand: the box's cells fit in memory and in int arithmetic.
+          wanted ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
+                                  nextFabOffset(offsets.at(fab.file), fab.offset), stored, ncomp)
+                 : std::vector<double>();
+      if (!wanted) requireFabBytes(file, fab, offsets.at(fab.file), stored, ncomp);
+      // The box's cells fit in int arithmetic and in memory: its FAB on disk holds them.
       const glm::ivec3 size(fab.box.size());
       std::vector<bool> covered(amrex::cellCount(fab.box, file.string()), false);
       for (const Box& cover : covering) {
@@ -298,6 +340,10 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory) {
             const std::size_t point =
                 (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
             for (int c = 0; c < ncomp; ++c) {
+              if (!wanted) {
+                channels[c].values.push_back(0.0f);
+                continue;
+              }
               const double value = values[c * points + point];
               if (const auto problem = unusableFieldValue(value))
                 throw InputError(file.string(),

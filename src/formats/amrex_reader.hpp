@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include "bricks/amr_field.hpp"
+#include "value_window.hpp"
 
 namespace amrstream::formats {
 
@@ -24,7 +25,10 @@ namespace amrstream::formats {
 // declared value type does not fill its bytes exactly (float32 declared over float64 data), a
 // truncated FAB, or a value that is not finite or beyond the float range (naming the FAB file,
 // the variable and the cell).
-bricks::AmrField readAmrexPlotfile(const std::filesystem::path& directory);
+// With a window, only the boxes meeting it are read (value_window.hpp), and `read` counts them.
+bricks::AmrField readAmrexPlotfile(const std::filesystem::path& directory,
+                                   const ValueWindow* window = nullptr,
+                                   WindowedRead* read = nullptr);
 
 // The Header's time alone, parsing only the Header (no level data); errors as readAmrexPlotfile's.
 double amrexPlotfileTime(const std::filesystem::path& directory);

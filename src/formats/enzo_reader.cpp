@@ -419,7 +419,7 @@ Siblings findSiblings(const fs::path& file) {
 
 }  // namespace
 
-bricks::AmrField readEnzo(const fs::path& file) {
+bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, WindowedRead* read) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const auto sib = findSiblings(file);
   const bool hasHierarchy = present(sib.hierarchy);
@@ -468,6 +468,11 @@ bricks::AmrField readEnzo(const fs::path& file) {
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;
 
   for (const auto& g : grids) {
+    const bool wanted = !window || window->meets(g.lower, g.lower + g.dims * g.width, g.width);
+    if (read) {
+      ++read->pieces;
+      read->piecesRead += wanted;
+    }
     const fs::path path = sib.dir / g.file;
     auto it = files.find(g.file);
     if (it == files.end()) {
@@ -489,8 +494,9 @@ bricks::AmrField readEnzo(const fs::path& file) {
     }
     // The fields first: their storage bounds the grid's size before anything else is allocated.
     std::vector<std::vector<double>> fields;
-    for (const auto& c : channels)
-      fields.push_back(readField(group.get(), path, groupName, c.name, g.dims));
+    if (wanted)
+      for (const auto& c : channels)
+        fields.push_back(readField(group.get(), path, groupName, c.name, g.dims));
     const auto covered = coveredCells(g, grids, table);
 
     const auto level = static_cast<std::uint8_t>(finest - g.level);
@@ -502,6 +508,10 @@ bricks::AmrField readEnzo(const fs::path& file) {
           lowers.push_back(g.lower + glm::ivec3(i, j, k) * g.width);
           levels.push_back(level);
           for (std::size_t c = 0; c < channels.size(); ++c) {
+            if (!wanted) {
+              channels[c].values.push_back(0.0f);
+              continue;
+            }
             const double value = fields[c][index];
             if (const auto problem = unusableFieldValue(value))
               throw InputError(path.string(),

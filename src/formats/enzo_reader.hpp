@@ -12,11 +12,14 @@
 #include <filesystem>
 
 #include "bricks/amr_field.hpp"
+#include "value_window.hpp"
 
 namespace amrstream::formats {
 
 // Throws InputError naming the file (and the dataset) for unreadable or inconsistent input.
-bricks::AmrField readEnzo(const std::filesystem::path& file);
+// With a window, only the grids meeting it are read (value_window.hpp), and `read` counts them.
+bricks::AmrField readEnzo(const std::filesystem::path& file, const ValueWindow* window = nullptr,
+                          WindowedRead* read = nullptr);
 
 // The parameter file of the dataset `file` belongs to (`file` itself, or PREFIX for a `.hierarchy`,
 // `.harrays` or `.cpuNNNN` sibling), as readEnzo finds it; it need not exist. Throws InputError

@@ -64,6 +64,40 @@ H5T_class_t FlashFile::typeClass(const std::string& name, const Handle& set,
   return H5Tget_class(type.get());
 }
 
+std::vector<double> FlashFile::readBlocks(const std::string& name,
+                                          const std::vector<std::size_t>& blocks) const {
+  const Handle set = open(name);
+  std::vector<hsize_t> shape = dims(name, set);
+  std::size_t size = 0;
+  if (typeClass(name, set, &size) != H5T_FLOAT || (size != 4 && size != 8))
+    fail(name, "expected float32 or float64 data");
+  requireStoredValues(set.get(), path_, name);
+  hsize_t perBlock = 1;
+  for (std::size_t a = 1; a < shape.size(); ++a) perBlock *= shape[a];
+  std::vector<double> values(blocks.size() * perBlock);
+  if (blocks.empty() || perBlock == 0) return values;
+  const Handle space(H5Dget_space(set.get()), H5Sclose);
+  if (!space.valid() || H5Sselect_none(space.get()) < 0) fail(name, "cannot read the dataspace");
+  std::vector<hsize_t> start(shape.size(), 0), count = shape;
+  for (std::size_t i = 0; i < blocks.size();) {
+    std::size_t run = 1;
+    while (i + run < blocks.size() && blocks[i + run] == blocks[i] + run) ++run;
+    if (blocks[i] + run > shape[0]) fail(name, fmt::format("has no block {}", blocks[i] + run - 1));
+    start[0] = blocks[i];
+    count[0] = run;
+    if (H5Sselect_hyperslab(space.get(), H5S_SELECT_OR, start.data(), nullptr, count.data(),
+                            nullptr) < 0)
+      fail(name, "cannot select its blocks");
+    i += run;
+  }
+  const hsize_t all = values.size();
+  const Handle memory(H5Screate_simple(1, &all, nullptr), H5Sclose);
+  if (!memory.valid() || H5Dread(set.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(),
+                                 H5P_DEFAULT, values.data()) < 0)
+    fail(name, "cannot read the data");
+  return values;
+}
+
 std::vector<std::string> FlashFile::readStrings(const std::string& name) const {
   Handle set = open(name);
   Handle fileType(H5Dget_type(set.get()), H5Tclose);

@@ -43,6 +43,11 @@ class FlashFile {
   template <typename T>
   Array<T> read(const std::string& name, const std::string& why = "") const;
 
+  // The values of the blocks `blocks` (increasing indices along the first axis) of a float
+  // dataset, as doubles, block after block: the rest is not read.
+  std::vector<double> readBlocks(const std::string& name,
+                                 const std::vector<std::size_t>& blocks) const;
+
   // Strings, fixed length (any padding) or variable length, cut at the first NUL and trimmed of
   // blanks.
   std::vector<std::string> readStrings(const std::string& name) const;

@@ -63,7 +63,8 @@ struct Leaf {
 
 }  // namespace
 
-bricks::AmrField readFlash(const std::filesystem::path& path) {
+bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow* window,
+                           WindowedRead* read) {
   const FlashFile file(path);
   const auto names = file.readStrings("unknown names");
   if (names.empty()) file.fail("unknown names", "lists no variables");
@@ -228,12 +229,37 @@ bricks::AmrField readFlash(const std::filesystem::path& path) {
   if (const auto problem = unrepresentablePositions(transform, lowers, levels))
     file.fail("bounding box", "the leaves cannot be placed: " + *problem);
 
+  // With a window, the leaves meeting it, each at its place in the values read.
+  constexpr std::size_t kNotRead = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> blocksRead, readSlot(window ? nb : 0, kNotRead);
+  if (window)
+    for (const Leaf& leaf : leaves) {
+      const int w = 1 << leaf.level;
+      glm::ivec3 upper = leaf.lower + glm::ivec3(shape.n[0], shape.n[1], shape.n[2]) * w;
+      if (axes == 2) upper.z = 1 << coarsest;
+      if (!window->meets(leaf.lower, upper, w)) continue;
+      readSlot[leaf.block] = blocksRead.size();
+      blocksRead.push_back(leaf.block);
+    }
+  if (read) {
+    read->pieces += leaves.size();
+    read->piecesRead += window ? blocksRead.size() : leaves.size();
+  }
+
   std::vector<bricks::Channel> channels;
   for (const std::string& name : names) {
-    const auto data = file.read<double>(name, " (listed in 'unknown names')");
+    const std::vector<double> data =
+        window ? file.readBlocks(name, blocksRead)
+               : file.read<double>(name, " (listed in 'unknown names')").values;
     bricks::Channel channel{name, std::vector<float>(source.size())};
     for (std::size_t c = 0; c < source.size(); ++c) {
-      const double v = data.values[source[c]];
+      std::size_t from = source[c];
+      if (window) {
+        const std::size_t slot = readSlot[from / perBlock];
+        if (slot == kNotRead) continue;  // the value stays 0
+        from = slot * perBlock + from % perBlock;
+      }
+      const double v = data[from];
       if (const auto problem = unusableFieldValue(v)) {
         const std::size_t block = source[c] / perBlock, at = source[c] % perBlock;
         file.fail(name, fmt::format("value {} of block {} cell (i, j, k) = ({}, {}, {}) is {}", v,

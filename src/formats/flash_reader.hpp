@@ -18,6 +18,7 @@
 #include <filesystem>
 
 #include "bricks/amr_field.hpp"
+#include "value_window.hpp"
 
 namespace amrstream::formats {
 
@@ -26,6 +27,9 @@ namespace amrstream::formats {
 // before allocating), strings it cannot read, bounding boxes that give no finite, resolvable
 // positions, or a leaf value that is not finite or beyond the float range (naming the dataset,
 // the block and the cell).
-bricks::AmrField readFlash(const std::filesystem::path& file);
+// With a window, only the leaf blocks meeting it are read (value_window.hpp), and `read` counts
+// them.
+bricks::AmrField readFlash(const std::filesystem::path& file, const ValueWindow* window = nullptr,
+                           WindowedRead* read = nullptr);
 
 }  // namespace amrstream::formats

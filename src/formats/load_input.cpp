@@ -106,8 +106,13 @@ Format detectFormat(const std::string& input) {
   notRecognised(input, "no known extension or signature");
 }
 
+bool readsValueWindows(Format format) {
+  return format == Format::Amrex || format == Format::Enzo || format == Format::Flash;
+}
+
 bricks::AmrField loadInput(const std::string& input,
-                           const synth::GeneratorOptions& generatorOptions) {
+                           const synth::GeneratorOptions& generatorOptions,
+                           const ValueWindow* window, WindowedRead* read) {
   switch (detectFormat(input)) {
     case Format::Builtin:
       return synth::generate(std::string_view(input).substr(kBuiltinPrefix.size()),
@@ -115,11 +120,11 @@ bricks::AmrField loadInput(const std::string& input,
     case Format::ExaBricks:
       return readExa(input);
     case Format::Amrex:
-      return readAmrexPlotfile(input);
+      return readAmrexPlotfile(input, window, read);
     case Format::Enzo:
-      return readEnzo(input);
+      return readEnzo(input, window, read);
     case Format::Flash:
-      return readFlash(input);
+      return readFlash(input, window, read);
     case Format::Gerris:
       return readGerris(input);
   }

@@ -8,6 +8,7 @@
 
 #include "bricks/amr_field.hpp"
 #include "synth/generators.hpp"
+#include "value_window.hpp"
 
 namespace amrstream::formats {
 
@@ -19,8 +20,12 @@ std::string_view formatName(Format format);
 // a device), or is in no known format ("format not recognised", naming the formats tried).
 Format detectFormat(const std::string& input);
 
+// Whether the format reads the values of a window alone: AMReX, Enzo and FLASH.
+bool readsValueWindows(Format format);
 // `generatorOptions` sizes builtin datasets. Throws InputError for unknown formats or kinds.
+// `window`: see value_window.hpp; formats that cannot read part of their values read them all.
 bricks::AmrField loadInput(const std::string& input,
-                           const synth::GeneratorOptions& generatorOptions);
+                           const synth::GeneratorOptions& generatorOptions,
+                           const ValueWindow* window = nullptr, WindowedRead* read = nullptr);
 
 }  // namespace amrstream::formats

@@ -8,10 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include "dist/gathered_traces.hpp"
@@ -418,6 +423,102 @@ TEST_F(MpiDataTraceTest, LinearInterpolantAcrossTheParts) {
   expectDataRanksAgree("trace builtin:cloud --backend cpu --count 80 --steps 500 "
                        "--interpolant linear --vorticity --halo-steps 1",
                        {2, 3});
+}
+
+// What a run over data printed of the values each rank read ("read       each rank its part's
+// values: 48 / 64 of 73 boxes"): each rank's pieces, then the whole's; empty when it printed
+// none.
+std::vector<long> piecesRead(const std::string& output) {
+  const std::string label = "each rank its part's values: ";
+  std::size_t at = output.find(label);
+  if (at == std::string::npos) return {};
+  std::vector<long> counts;
+  at += label.size();
+  std::istringstream line(output.substr(at, output.find('\n', at) - at));
+  std::string word;
+  while (line >> word)
+    if (std::isdigit(static_cast<unsigned char>(word[0]))) counts.push_back(std::stol(word));
+  return counts;
+}
+
+// FLASH, AMReX and Enzo outputs over data: each rank reads the values of the blocks, boxes or
+// grids near its part alone (the first pass lays the cells out from the metadata), and the
+// ranks choose density seeds together from the cells each owns (weighted by it on FLASH's):
+// one process's file, bit for bit, while some rank reads less than all.
+TEST_F(MpiDataTraceTest, RealInputsEachRankReadingItsPart) {
+  const std::filesystem::path real(AMRSTREAM_REAL_DATA_DIR);
+  struct Case {
+    std::filesystem::path input;
+    std::string options;
+    std::initializer_list<int> ranks;
+  };
+  const Case cases[] = {
+      {real / "flash-2d-nanowire" / "nanowire_arrayhdf5_plt_cnt_0100",
+       "--vector tele,tion,depo --count 300 --steps 500 --seed-density dens --seed-weighted",
+       {2, 4}},
+      {real / "amrex-pelelmex-3d" / "example_plt_3d",
+       "--count 200 --steps 300 --seed-density density --point-data density,temp",
+       {3, 5}},
+      {real / "enzo-moving7" / "DD0010" / "moving7_0010",
+       "--count 200 --steps 1500 --seed-density Density --interpolant linear --vorticity",
+       {5}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.input.string());
+    if (!std::filesystem::exists(c.input)) {
+      std::cout << "skipped: real data " << c.input << " is absent\n";
+      continue;
+    }
+    const std::string output =
+        expectDataRanksAgree("trace " + c.input.string() + " --backend cpu " + c.options, c.ranks);
+    const std::vector<long> counts = piecesRead(output);
+    ASSERT_EQ(counts.size(), std::size_t(*std::prev(c.ranks.end()) + 1)) << output;
+    EXPECT_LT(*std::min_element(counts.begin(), counts.end() - 1), counts.back()) << output;
+  }
+  // In cell mode a step's reach depends on the speed: every rank reads the whole input.
+  const std::filesystem::path amrex = real / "amrex-pelelmex-3d" / "example_plt_3d";
+  if (!std::filesystem::exists(amrex)) return;
+  const std::string output = expectDataRanksAgree(
+      "trace " + amrex.string() + " --backend cpu --count 50 --steps 200 --step-mode cell", {2});
+  EXPECT_THAT(output, HasSubstr("every rank the whole input: in cell mode"));
+}
+
+// A bad value in a box that some ranks read and others do not: every rank ends with the error of
+// the lowest failing rank, also when the ranks would have chosen density seeds together, and no
+// file is written.
+TEST_F(MpiDataTraceTest, ABadValueInOneRanksWindowEndsEveryRank) {
+  const std::filesystem::path real =
+      std::filesystem::path(AMRSTREAM_REAL_DATA_DIR) / "amrex-pelelmex-3d" / "example_plt_3d";
+  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data " << real << " is absent";
+  const std::filesystem::path copy = dir_ / "plt";
+  std::filesystem::copy(real, copy, std::filesystem::copy_options::recursive);
+  // The first value (x_velocity) of the finest box at the domain's upper corner becomes NaN:
+  // ranks 3 and 4 of 5 read it, ranks 0 to 2 do not.
+  bool found = false;
+  for (const auto& entry : std::filesystem::directory_iterator(copy / "Level_2")) {
+    if (entry.path().filename().string().rfind("Cell_D", 0) != 0) continue;
+    std::fstream fab(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(fab)), std::istreambuf_iterator<char>());
+    const std::size_t header = bytes.find("((24,24,24) (31,31,31) (0,0,0))");
+    if (header == std::string::npos) continue;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    fab.seekp(std::streamoff(bytes.find('\n', header) + 1));
+    fab.write(reinterpret_cast<const char*>(&nan), sizeof nan);
+    found = true;
+  }
+  ASSERT_TRUE(found);
+  for (const std::string seeds : {"--seed-density density", "--seed-grid 4,4,4"}) {
+    SCOPED_TRACE(seeds);
+    const testing::Outcome run = testing::runAmrstream(
+        "trace " + copy.string() + " --backend cpu --steps 100 --distribute data " + seeds +
+            " --out " + path("out.vtp"),
+        "timeout 120 env " + launcher(5));
+    EXPECT_EQ(run.status, 2) << run.output;
+    EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 3 of 5: "));
+    EXPECT_THAT(run.output, HasSubstr("variable 'x_velocity' at level-2 cell (24, 24, 24) is"));
+    EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+    EXPECT_FALSE(std::filesystem::exists(path("out.vtp")));
+  }
 }
 
 }  // namespace
