@@ -175,6 +175,18 @@ std::string describeCell(std::size_t i, glm::ivec3 lower, int level, const Datas
 
 AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
                    std::vector<Channel> channels, WorldTransform transform, std::string source)
+    : AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+               std::move(source), nullptr) {}
+
+AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                   std::vector<Channel> channels, WorldTransform transform, std::string source,
+                   const CheckedCells& checked)
+    : AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+               std::move(source), &checked) {}
+
+AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                   std::vector<Channel> channels, WorldTransform transform, std::string source,
+                   const CheckedCells* checked)
     : lowers_(std::move(lowers)),
       levels_(std::move(levels)),
       channels_(std::move(channels)),
@@ -182,7 +194,7 @@ AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> lev
       source_(std::move(source)) {
   info_.levelsCountDown = false;
   info_.levelName = "level (0 = finest)";
-  validate();
+  validate(checked);
 }
 
 AmrField::AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
@@ -267,7 +279,7 @@ void AmrField::checkChannelValues(const Channel& c) const {
                                  c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
 }
 
-void AmrField::validate() {
+void AmrField::validate(const CheckedCells* checked) {
   const std::size_t n = lowers_.size();
   if (n == 0) throw InputError(source_, "the dataset has no cells");
   if (levels_.size() != n)
@@ -343,6 +355,12 @@ void AmrField::validate() {
   const CellBox box{glm::ivec3(lower), glm::ivec3(upper)};
   bounds_ = box;
   validateTransform();
+
+  if (checked) {
+    if (lowers_ != checked->lowers || levels_ != checked->levels)
+      throw InputError(source_, "its cells differ from those of a first read (did it change?)");
+    return;
+  }
 
   // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
   // inside a coarser one finds that cell's aligned corner in the coarser level's set.

@@ -51,6 +51,13 @@ struct CellBox {
   glm::ivec3 upper{0};
 };
 
+// The corners and levels of cells an AmrField has checked, kept to check a second read of the
+// same input cheaply (an MPI rank reads an output twice: its layout, then its part's values).
+struct CheckedCells {
+  std::vector<glm::ivec3> lowers;
+  std::vector<std::uint8_t> levels;
+};
+
 class AmrField {
  public:
   // `source` names where the data came from (a path or builtin:NAME); it prefixes every error.
@@ -61,6 +68,12 @@ class AmrField {
   AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
            std::vector<Channel> channels, WorldTransform transform, std::string source,
            DatasetInfo info);
+
+  // The same for cells that must equal `checked`, whose overlap check (the longest) is then
+  // skipped; InputError naming the source when they differ.
+  AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+           std::vector<Channel> channels, WorldTransform transform, std::string source,
+           const CheckedCells& checked);
 
   std::size_t cellCount() const { return lowers_.size(); }
   std::span<const glm::ivec3> lowers() const { return lowers_; }
@@ -88,7 +101,10 @@ class AmrField {
   std::vector<std::size_t> cellsPerLevel() const;  // indexed by level, up to coarsestLevel()
 
  private:
-  void validate();  // also sets bounds_
+  AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+           std::vector<Channel> channels, WorldTransform transform, std::string source,
+           const CheckedCells* checked);
+  void validate(const CheckedCells* checked = nullptr);  // also sets bounds_
   void checkChannelShape(const Channel& channel) const;
   void checkChannelValues(const Channel& channel) const;
   void validateTransform() const;

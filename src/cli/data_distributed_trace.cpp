@@ -1,6 +1,7 @@
 #include "data_distributed_trace.hpp"
 
 #include <fmt/format.h>
+#include <tbb/info.h>
 
 #include <algorithm>
 #include <optional>
@@ -44,14 +45,15 @@ struct RankReach {
   double margin = 0.0, halo = 0.0, kept = 0.0;
 };
 
+// `fastest`: the fastest vector, when the volume holds part of the values.
 RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& options,
-                    std::uint32_t haloSteps) {
+                    std::uint32_t haloSteps, std::optional<double> fastest = std::nullopt) {
   float widest = 0.0f;
   for (const shared::Region& region : volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
   // A step's stages from anywhere lines stay before they are handed on (the part and a margin),
   // or from the domain's padding next to it.
-  const dist::StepReach reach = dist::stepReach(volume, options);
+  const dist::StepReach reach = dist::stepReach(volume, options, fastest);
   RankReach r;
   r.margin = (haloSteps - 1) * reach.step * 1.01;
   r.halo = r.margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
@@ -61,11 +63,36 @@ RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
 }
 
 // Over data, a rank reads the values of its part and what it keeps around it alone where the
-// format allows, and where the part follows from the cells' layout alone: in arc mode, where a
-// step's reach does not depend on the field's speed.
+// format allows, in arc mode (a step's reach follows from the cells' layout) and in cell mode
+// with the tent interpolant (it also needs the fastest cell, which the ranks find together); in
+// time mode the default step depends on the fastest vector too, and the linear interpolant's
+// reach on its steepest gradient.
 bool readsItsPartAlone(const TraceJobOptions& job) {
   return formats::readsValueWindows(formats::detectFormat(job.dataset.input)) &&
-         job.trace.stepMode == "arc";
+         (job.trace.stepMode == "arc" ||
+          (job.trace.stepMode == "cell" && job.field.interpolant == "tent"));
+}
+
+// The fastest vector of the whole input: each rank reads its part of a first cut alone.
+double fastestOverRanks(const dist::MpiWorld& world, const TraceJobOptions& job,
+                        const bricks::AmrField& layoutCells) {
+  const dist::DataPartition first = dist::partitionCells(layoutCells, world.size(), 0.0);
+  const formats::ValueWindow window =
+      dist::partWindow(first, world.rank(), 0.0, layoutCells.bounds(), {});
+  // Agreed before the collective: a rank that fails to read ends every rank.
+  const double mine = dist::agreed(world, [&] {
+    const bricks::AmrField part =
+        formats::loadInput(job.dataset.input, job.dataset.generator, &window);
+    const flow::VectorChannels vector = flow::chooseVectorChannels(part, job.field.vector);
+    const std::vector<float>& x = part.channel(vector.channels[0]).values;
+    const std::vector<float>& y = part.channel(vector.channels[1]).values;
+    const std::vector<float>& z = part.channel(vector.channels[2]).values;
+    double fastest = 0.0;  // as stepReach finds it over a whole volume's values
+    for (std::size_t c = 0; c < x.size(); ++c)
+      fastest = std::max(fastest, double(glm::length(glm::vec3(x[c], y[c], z[c]))));
+    return fastest;
+  });
+  return world.maxOverRanks(mine);
 }
 
 // The part the whole input gives each rank, found from the cells' layout alone (no values read;
@@ -74,6 +101,8 @@ bool readsItsPartAlone(const TraceJobOptions& job) {
 struct RankWindow {
   dist::DataPartition partition;  // finest-cell units of the field
   formats::ValueWindow window;
+  bricks::CheckedCells cells;  // the layout, which the second read must give
+  std::optional<double> fastest;  // in cell mode
 };
 
 RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
@@ -83,11 +112,14 @@ RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
       formats::loadInput(job.dataset.input, job.dataset.generator, &nothing);
   const FieldPlan plan = planField(flow::catalogOf(layoutCells), layoutCells.info(), job.field);
   const flow::VectorVolume layout = flow::buildCellLayout(layoutCells, plan.volume);
-  const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps);
   RankWindow r;
+  if (job.trace.stepMode == "cell") r.fastest = fastestOverRanks(world, job, layoutCells);
+  const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps, r.fastest);
   r.partition = dist::partitionCells(layoutCells, world.size(), reach.halo);
   r.window = dist::partWindow(r.partition, world.rank(), reach.kept + 2.0, layoutCells.bounds(),
                               layout.periodic);
+  r.cells.lowers.assign(layoutCells.lowers().begin(), layoutCells.lowers().end());
+  r.cells.levels.assign(layoutCells.levels().begin(), layoutCells.levels().end());
   return r;
 }
 
@@ -108,7 +140,9 @@ std::string wholeReadReason(const TraceJobOptions& job) {
   const formats::Format format = formats::detectFormat(job.dataset.input);
   if (!formats::readsValueWindows(format))
     return fmt::format("{} inputs are read whole", formats::formatName(format));
-  return fmt::format("in {} mode a step's reach depends on the field's speed", job.trace.stepMode);
+  if (job.trace.stepMode == "time")
+    return "in time mode the default step and a step's reach depend on the fastest vector";
+  return "with the linear interpolant in cell mode a step's reach depends on its gradients";
 }
 
 RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
@@ -116,10 +150,15 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   RankPart rank;
   PreparedInput& input = rank.input;
   std::optional<InputShare> share;
+  std::optional<double> fastest;
+  bricks::CheckedCells checkedCells;
   if (readsItsPartAlone(job)) {
     RankWindow window = rankWindow(world, job, haloSteps);
+    fastest = window.fastest;
+    checkedCells = std::move(window.cells);
     share.emplace();
     share->window = std::move(window.window);
+    share->window.checked = &checkedCells;
     share->cells = dist::shareOverRanks(world);
     share->markOwned = [&world, partition = std::move(window.partition)](
                            const bricks::AmrField& cells, std::vector<std::uint8_t>& owned) {
@@ -130,11 +169,12 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     };
   }
   input = prepareInput(job, true, CellsAfter::Keep, share ? &*share : nullptr);
+  checkedCells = {};
   if (share) rank.read = share->read;
   checkDataVolume(input.volume);
   input.options.keepHistory = keepHistory;
   const bricks::AmrField& cells = input.field();
-  const RankReach reach = rankReach(input.volume, input.options, haloSteps);
+  const RankReach reach = rankReach(input.volume, input.options, haloSteps, fastest);
   rank.halo = reach.halo;
   rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
@@ -169,10 +209,12 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                               std::uint32_t haloSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
+  Stopwatch preparing;
   RankPart rank = dist::agreed(world, [&] {
     checkFiles();
     return prepareRank(world, job, keepHistory, haloSteps);
   });
+  const std::vector<double> rankPreparing = world.gatherToRoot(preparing.seconds());
   PreparedInput& input = rank.input;
 
   std::vector<shared::LineState> owned;
@@ -188,7 +230,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     const BackendChoice choice = chooseBackend(job.backend, BackendUse::Trace, printLine);
     input.report.backend = gpu::backendName(choice.backend);
     if (choice.backend == gpu::Backend::Cpu) {
-      input.report.device = "cpu";
+      input.report.device = fmt::format("{} threads", tbb::info::default_concurrency());
       return dist::cpuRoundAdvance(input.volume, input.options);
     }
     Stopwatch setup;
@@ -243,10 +285,12 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
                perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
                perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
     if (rank.read.pieces > 0)
-      fmt::print("read       each rank its part's values: {} of {} {}\n",
-                 perRank(rankRead, "{:.0f}"), rank.read.pieces, pieceNoun(job.dataset.input));
+      fmt::print("read       each rank its part's values: {} of {} {}; reading and building {} s\n",
+                 perRank(rankRead, "{:.0f}"), rank.read.pieces, pieceNoun(job.dataset.input),
+                 perRank(rankPreparing, "{:.2f}"));
     else
-      fmt::print("read       every rank the whole input: {}\n", wholeReadReason(job));
+      fmt::print("read       every rank the whole input: {}; reading and building {} s\n",
+                 wholeReadReason(job), perRank(rankPreparing, "{:.2f}"));
     if (gpuTracer) {
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));

@@ -56,21 +56,26 @@ static_assert(kDpStageWeights > 24.6 && kDpStageWeights < 24.7);
 
 }  // namespace
 
-StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options) {
+StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options,
+                    std::optional<double> knownFastest) {
   float widest = 0.0f;
   for (const shared::Region& region : volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
   double fastest = 0.0;
-  for (const glm::vec3& v : volume.values) fastest = std::max(fastest, double(glm::length(v)));
-  if (volume.interpolant == flow::Interpolant::Linear) {
-    // Three gradients (one per component) per value slot, in values per finest cell.
-    double steepest = 0.0;
-    const std::vector<glm::vec3>& g = volume.vectorGradients;
-    for (std::size_t slot = 0; slot + 2 < g.size(); slot += 3)
-      steepest = std::max(steepest, std::sqrt(double(glm::dot(g[slot], g[slot]) +
-                                                     glm::dot(g[slot + 1], g[slot + 1]) +
-                                                     glm::dot(g[slot + 2], g[slot + 2]))));
-    fastest += steepest * 0.5 * std::sqrt(3.0) * widest;
+  if (knownFastest) {
+    fastest = *knownFastest;
+  } else {
+    for (const glm::vec3& v : volume.values) fastest = std::max(fastest, double(glm::length(v)));
+    if (volume.interpolant == flow::Interpolant::Linear) {
+      // Three gradients (one per component) per value slot, in values per finest cell.
+      double steepest = 0.0;
+      const std::vector<glm::vec3>& g = volume.vectorGradients;
+      for (std::size_t slot = 0; slot + 2 < g.size(); slot += 3)
+        steepest = std::max(steepest, std::sqrt(double(glm::dot(g[slot], g[slot]) +
+                                                       glm::dot(g[slot + 1], g[slot + 1]) +
+                                                       glm::dot(g[slot + 2], g[slot + 2]))));
+      fastest += steepest * 0.5 * std::sqrt(3.0) * widest;
+    }
   }
   const bool rk45 = options.integrator == flow::Integrator::Rk45;
   const double h = rk45 ? std::max(options.maxStep, options.stepSize) : options.stepSize;

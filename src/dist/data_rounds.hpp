@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
@@ -30,7 +31,10 @@ struct StepReach {
   double step = 0.0;
   double stage = 0.0;
 };
-StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options);
+// `fastest`: the fastest vector the interpolant can give, when known from elsewhere (ranks that
+// hold part of the values).
+StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& options,
+                    std::optional<double> fastest = std::nullopt);
 
 // The box a rank's lines stay in: its part grown by `margin` finest cells, and without bound
 // beyond the faces that lie on the domain's, but for periodic axes (the points beyond have no

@@ -356,8 +356,8 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
           }
     }
   }
-  bricks::AmrField field(std::move(lowers), std::move(ourLevels), std::move(channels), transform,
-                         directory.string());
+  bricks::AmrField field = checkedField(std::move(lowers), std::move(ourLevels),
+                                        std::move(channels), transform, directory.string(), window);
   std::vector<int> internalLevels;
   for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
   field.setInfo(readAmrexInfo(directory, h.time, internalLevels));

@@ -525,8 +525,8 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
   const bricks::WorldTransform transform{domain.left, finestDx};
   if (const auto problem = unrepresentablePositions(transform, lowers, levels))
     throw InputError(table.string(), "the grids cannot be placed: " + *problem);
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
-                         file.string());
+  bricks::AmrField field = checkedField(std::move(lowers), std::move(levels), std::move(channels),
+                                        transform, file.string(), window);
   field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
   return field;
 }

@@ -271,8 +271,8 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
     channels.push_back(std::move(channel));
   }
 
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
-                         path.string());
+  bricks::AmrField field = checkedField(std::move(lowers), std::move(levels), std::move(channels),
+                                        transform, path.string(), window);
   field.setInfo(flash::readFlashInfo(file, rmax, axes));
   return field;
 }

@@ -5,6 +5,7 @@
 // places with the value 0 in every channel, and their data is not read.
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
@@ -16,6 +17,9 @@ struct ValueWindow {
   // A piece whose cells are w finest cells wide is read when it meets a box grown by
   // cellsAround * w: cells whose tents, or whose neighbours' tents, reach into a box.
   double cellsAround = 3.0;
+  // The cells a first read of the same input laid out and checked: the field read must have
+  // them, and their (long) overlap check is not repeated.
+  const bricks::CheckedCells* checked = nullptr;
 
   // Whether the cells [lower, upper), each `width` finest cells wide, are read.
   bool meets(glm::ivec3 lower, glm::ivec3 upper, int width) const {
@@ -27,6 +31,19 @@ struct ValueWindow {
     return false;
   }
 };
+
+// The field a reader read, checked: against `window->checked` when there is one.
+inline bricks::AmrField checkedField(std::vector<glm::ivec3> lowers,
+                                     std::vector<std::uint8_t> levels,
+                                     std::vector<bricks::Channel> channels,
+                                     bricks::WorldTransform transform, std::string source,
+                                     const ValueWindow* window) {
+  if (window && window->checked)
+    return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+                            std::move(source), *window->checked);
+  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+                          std::move(source));
+}
 
 // What a windowed read read: `pieces` is 0 when the format reads whole (ExaBricks, Gerris,
 // builtin datasets).

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "formats/load_input.hpp"
+#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -68,6 +69,25 @@ void expectWindowedReads(const fs::path& input) {
     if (read.piecesRead < read.pieces) EXPECT_GT(zeroed, 0u);
   }
   EXPECT_TRUE(skippedSome) << "every window read every piece of " << input;
+
+  // A second read checked against the first's cells gives the same field; against other cells
+  // it fails, naming the input.
+  bricks::CheckedCells checked{{whole.lowers().begin(), whole.lowers().end()},
+                               {whole.levels().begin(), whole.levels().end()}};
+  ValueWindow again = windowsIn(whole.bounds()).front();
+  again.checked = &checked;
+  const bricks::AmrField second = loadInput(input.string(), {}, &again);
+  EXPECT_EQ(second.cellCount(), whole.cellCount());
+  EXPECT_EQ(second.bounds().upper, whole.bounds().upper);
+  checked.lowers.back().x += 1 << checked.levels.back();
+  try {
+    loadInput(input.string(), {}, &again);
+    ADD_FAILURE() << "cells that differ from the first read's were accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("differ from those of a first read"),
+              std::string::npos)
+        << error.what();
+  }
 
   // An empty window reads no values at all.
   const ValueWindow nothing;
