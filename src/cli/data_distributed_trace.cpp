@@ -102,6 +102,8 @@ struct RankWindow {
   dist::DataPartition partition;  // finest-cell units of the field
   formats::ValueWindow window;
   bricks::CheckedCells cells;  // the layout, which the second read must give
+  flow::VectorVolume layout;   // the cells' bricks and regions, without values
+  flow::VolumeBuildTimes layoutTimes;
   std::optional<double> fastest;  // in cell mode
 };
 
@@ -111,8 +113,9 @@ RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
   const bricks::AmrField layoutCells =
       formats::loadInput(job.dataset.input, job.dataset.generator, &nothing);
   const FieldPlan plan = planField(flow::catalogOf(layoutCells), layoutCells.info(), job.field);
-  const flow::VectorVolume layout = flow::buildCellLayout(layoutCells, plan.volume);
   RankWindow r;
+  r.layout = flow::buildCellLayout(layoutCells, plan.volume, &r.layoutTimes);
+  const flow::VectorVolume& layout = r.layout;
   if (job.trace.stepMode == "cell") r.fastest = fastestOverRanks(world, job, layoutCells);
   const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps, r.fastest);
   r.partition = dist::partitionCells(layoutCells, world.size(), reach.halo);
@@ -151,6 +154,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   PreparedInput& input = rank.input;
   std::optional<InputShare> share;
   std::optional<double> fastest;
+  std::optional<dist::DataPartition> partition;  // found from the layout, in the field's units
   bricks::CheckedCells checkedCells;
   if (readsItsPartAlone(job)) {
     RankWindow window = rankWindow(world, job, haloSteps);
@@ -159,7 +163,10 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     share.emplace();
     share->window = std::move(window.window);
     share->window.checked = &checkedCells;
+    share->layout = std::move(window.layout);
+    share->layoutTimes = window.layoutTimes;
     share->cells = dist::shareOverRanks(world);
+    partition = window.partition;
     share->markOwned = [&world, partition = std::move(window.partition)](
                            const bricks::AmrField& cells, std::vector<std::uint8_t>& owned) {
       // Every rank has read its window (a rank that failed to is in the agreement of the phase
@@ -176,7 +183,8 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   const bricks::AmrField& cells = input.field();
   const RankReach reach = rankReach(input.volume, input.options, haloSteps, fastest);
   rank.halo = reach.halo;
-  rank.partition = dist::partitionCells(cells, world.size(), rank.halo);
+  rank.partition =
+      partition ? std::move(*partition) : dist::partitionCells(cells, world.size(), rank.halo);
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
   // origin.
   const glm::ivec3 shift = input.volume.domain.lower - cells.bounds().lower;

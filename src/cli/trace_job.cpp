@@ -95,6 +95,19 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter 
     data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
     flow::fillVolumeValues(input.volume, vector, plan.volume, input.source, data.channels,
                            &times);
+  } else if (share && share->layout) {
+    // The cells' layout, built from the same cells before their values were read.
+    input.volume = std::move(*share->layout);
+    share->layout.reset();
+    times = share->layoutTimes;
+    for (const std::string& name : vector.channels) cells.channel(name);  // throw before filling
+    flow::fillVolumeValues(
+        input.volume, vector, plan.volume, input.source,
+        [&cells](const std::string& name, const flow::ChannelUse& use) {
+          use(cells.channel(name).values);
+        },
+        &times);
+    input.cells = data.cells;
   } else {
     input.volume = flow::buildVectorVolume(cells, vector, plan.volume, &times);
     input.cells = data.cells;

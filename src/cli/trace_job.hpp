@@ -86,6 +86,10 @@ struct InputShare {
   std::function<void(const bricks::AmrField&, std::vector<std::uint8_t>& owned)> markOwned;
   flow::SharedCells cells;  // sumCounts and gatherCells set by the caller
   std::vector<std::uint8_t> owned;
+  // When given, the volume's layout built from the same cells (and how long it took): only the
+  // values are filled in.
+  std::optional<flow::VectorVolume> layout;
+  flow::VolumeBuildTimes layoutTimes;
   formats::WindowedRead read;  // what was read
 };
 

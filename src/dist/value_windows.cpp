@@ -1,5 +1,8 @@
 #include "value_windows.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -29,11 +32,15 @@ std::vector<std::uint8_t> ownedCells(const bricks::AmrField& field, const DataPa
   std::vector<std::uint8_t> owned(field.cellCount());
   const std::span<const glm::ivec3> lowers = field.lowers();
   const std::span<const std::uint8_t> levels = field.levels();
-  for (std::size_t c = 0; c < owned.size(); ++c) {
-    const glm::dvec3 centre =
-        glm::dvec3(lowers[c]) + 0.5 * double(bricks::AmrField::cellWidth(levels[c]));
-    owned[c] = partition.ownerOf(centre) == rank;
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, owned.size(), std::size_t(1) << 16),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t c = range.begin(); c != range.end(); ++c) {
+                        const glm::dvec3 centre =
+                            glm::dvec3(lowers[c]) +
+                            0.5 * double(bricks::AmrField::cellWidth(levels[c]));
+                        owned[c] = partition.ownerOf(centre) == rank;
+                      }
+                    });
   return owned;
 }
 

@@ -14,6 +14,7 @@
 #include "amrex_info.hpp"
 #include "amrex_text.hpp"
 #include "cell_checks.hpp"
+#include "cell_sink.hpp"
 #include "input_bytes.hpp"
 #include "text_numbers.hpp"
 #include "util/input_error.hpp"
@@ -263,10 +264,8 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
     layouts.push_back(parseCellHeader(cellH, ncomp, h.gridCounts[l], h.domains[l], l));
   }
 
-  std::vector<glm::ivec3> lowers;
-  std::vector<std::uint8_t> ourLevels;
-  std::vector<bricks::Channel> channels;
-  for (const std::string& name : h.names) channels.push_back({name, {}});
+  CellSink sink(window, directory.string());
+  for (const std::string& name : h.names) sink.addChannel(name);
   for (int l = 0; l < levels; ++l) {
     const fs::path levelDir = (directory / h.levelPaths[l]).parent_path();
     const int ourLevel = std::countr_zero(static_cast<unsigned>(widths[l]));
@@ -308,6 +307,11 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
         read->piecesRead += wanted;
       }
       if (!leaves) continue;
+      if (!wanted && sink.skipsPieces()) {
+        requireFabBytes(file, fab, offsets.at(fab.file), stored, ncomp);
+        sink.skip(std::size_t(boxCells.x * boxCells.y * boxCells.z) - coveredCells);
+        continue;
+      }
       const std::vector<double> values =
           wanted ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
                                   nextFabOffset(offsets.at(fab.file), fab.offset), stored, ncomp)
@@ -334,16 +338,12 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
           for (int i = 0; i < size.x; ++i, ++index) {
             if (covered[index]) continue;
             const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
-            lowers.push_back(cell * widths[l] - finestDomain.lo);
-            ourLevels.push_back(static_cast<std::uint8_t>(ourLevel));
+            const std::size_t at =
+                sink.cell(cell * widths[l] - finestDomain.lo, static_cast<std::uint8_t>(ourLevel));
             const glm::ivec3 s = glm::ivec3(i, j, k) + layouts[l].nghost;
             const std::size_t point =
                 (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
-            for (int c = 0; c < ncomp; ++c) {
-              if (!wanted) {
-                channels[c].values.push_back(0.0f);
-                continue;
-              }
+            for (int c = 0; wanted && c < ncomp; ++c) {
               const double value = values[c * points + point];
               if (const auto problem = unusableFieldValue(value))
                 throw InputError(file.string(),
@@ -351,13 +351,12 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
                                              "({}, {}, {}) is {} ({})",
                                              fab.offset, h.names[c], l, cell.x, cell.y, cell.z,
                                              *problem, value));
-              channels[c].values.push_back(static_cast<float>(value));
+              sink.set(std::size_t(c), at, static_cast<float>(value));
             }
           }
     }
   }
-  bricks::AmrField field = checkedField(std::move(lowers), std::move(ourLevels),
-                                        std::move(channels), transform, directory.string(), window);
+  bricks::AmrField field = sink.finish(transform);
   std::vector<int> internalLevels;
   for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
   field.setInfo(readAmrexInfo(directory, h.time, internalLevels));

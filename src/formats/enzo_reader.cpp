@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cell_checks.hpp"
+#include "cell_sink.hpp"
 #include "enzo_info.hpp"
 #include "enzo_parameters.hpp"
 #include "hdf5_checks.hpp"
@@ -461,9 +462,8 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
   }
   const glm::dvec3 finestDx = placeGrids(grids, domain, table);
 
-  std::vector<glm::ivec3> lowers;
-  std::vector<std::uint8_t> levels;
-  std::vector<bricks::Channel> channels;
+  CellSink sink(window, file.string());
+  std::vector<std::string> channels;
   std::map<std::string, Handle> files;
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;
 
@@ -472,6 +472,11 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
     if (read) {
       ++read->pieces;
       read->piecesRead += wanted;
+    }
+    if (!wanted && sink.skipsPieces() && !channels.empty()) {
+      const auto covered = coveredCells(g, grids, table);
+      sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)));
+      continue;
     }
     const fs::path path = sib.dir / g.file;
     auto it = files.find(g.file);
@@ -488,15 +493,16 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
       if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) < 0)
         throw InputError(path.string(), fmt::format("HDF5 could not list group {}", groupName));
       for (auto& name : names)
-        if (!name.starts_with("particle_")) channels.push_back({name, {}});
+        if (!name.starts_with("particle_")) channels.push_back(name);
       if (channels.empty())
         throw InputError(path.string(), fmt::format("group {} has no field datasets", groupName));
+      for (const std::string& name : channels) sink.addChannel(name);
     }
     // The fields first: their storage bounds the grid's size before anything else is allocated.
     std::vector<std::vector<double>> fields;
     if (wanted)
-      for (const auto& c : channels)
-        fields.push_back(readField(group.get(), path, groupName, c.name, g.dims));
+      for (const std::string& name : channels)
+        fields.push_back(readField(group.get(), path, groupName, name, g.dims));
     const auto covered = coveredCells(g, grids, table);
 
     const auto level = static_cast<std::uint8_t>(finest - g.level);
@@ -505,28 +511,22 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
       for (int j = 0; j < g.dims.y; ++j)
         for (int i = 0; i < g.dims.x; ++i, ++index) {
           if (covered[index]) continue;
-          lowers.push_back(g.lower + glm::ivec3(i, j, k) * g.width);
-          levels.push_back(level);
-          for (std::size_t c = 0; c < channels.size(); ++c) {
-            if (!wanted) {
-              channels[c].values.push_back(0.0f);
-              continue;
-            }
+          const std::size_t at = sink.cell(g.lower + glm::ivec3(i, j, k) * g.width, level);
+          for (std::size_t c = 0; wanted && c < channels.size(); ++c) {
             const double value = fields[c][index];
             if (const auto problem = unusableFieldValue(value))
               throw InputError(path.string(),
                                fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
                                            "{}) is {}",
-                                           groupName, channels[c].name, value, i, j, k, *problem));
-            channels[c].values.push_back(static_cast<float>(value));
+                                           groupName, channels[c], value, i, j, k, *problem));
+            sink.set(c, at, static_cast<float>(value));
           }
         }
   }
   const bricks::WorldTransform transform{domain.left, finestDx};
-  if (const auto problem = unrepresentablePositions(transform, lowers, levels))
+  if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     throw InputError(table.string(), "the grids cannot be placed: " + *problem);
-  bricks::AmrField field = checkedField(std::move(lowers), std::move(levels), std::move(channels),
-                                        transform, file.string(), window);
+  bricks::AmrField field = sink.finish(transform);
   field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
   return field;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cell_checks.hpp"
+#include "cell_sink.hpp"
 #include "flash_file.hpp"
 #include "flash_info.hpp"
 #include "hdf5_checks.hpp"
@@ -202,33 +203,6 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
                       "into a uniform slab: too many",
                       leafCells, std::min(kMaxCells, kMaxSlabGrowth * leafCells)));
   }
-  std::vector<glm::ivec3> lowers;
-  std::vector<std::uint8_t> levels;
-  std::vector<std::size_t> source;  // index into a variable's data
-  lowers.reserve(total);
-  levels.reserve(total);
-  source.reserve(total);
-  for (const Leaf& leaf : leaves) {
-    const int w = 1 << leaf.level;
-    const int copies = axes == 2 ? 1 << (coarsest - leaf.level) : 1;
-    for (int k = 0; k < shape.n[2]; ++k)
-      for (int j = 0; j < shape.n[1]; ++j)
-        for (int i = 0; i < shape.n[0]; ++i) {
-          const std::size_t from = leaf.block * perBlock +
-                                   (static_cast<std::size_t>(k) * shape.n[1] + j) * shape.n[0] + i;
-          for (int c = 0; c < copies; ++c) {
-            const int z = axes == 2 ? c * w : leaf.lower.z + k * w;
-            lowers.emplace_back(leaf.lower.x + i * w, leaf.lower.y + j * w, z);
-            levels.push_back(static_cast<std::uint8_t>(leaf.level));
-            source.push_back(from);
-          }
-        }
-  }
-
-  const bricks::WorldTransform transform{domainLo, dxf};
-  if (const auto problem = unrepresentablePositions(transform, lowers, levels))
-    file.fail("bounding box", "the leaves cannot be placed: " + *problem);
-
   // With a window, the leaves meeting it, each at its place in the values read.
   constexpr std::size_t kNotRead = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> blocksRead, readSlot(window ? nb : 0, kNotRead);
@@ -246,33 +220,61 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
     read->piecesRead += window ? blocksRead.size() : leaves.size();
   }
 
-  std::vector<bricks::Channel> channels;
-  for (const std::string& name : names) {
+  CellSink sink(window, path.string());
+  for (const std::string& name : names) sink.addChannel(name);
+  sink.reserve(total);
+  // The cells whose values are read: their indices into a variable's data and, with a window
+  // (else they are all the cells, in order), their own.
+  std::vector<std::size_t> froms, ats;
+  froms.reserve(window ? 0 : total);
+  for (const Leaf& leaf : leaves) {
+    const int w = 1 << leaf.level;
+    const int copies = axes == 2 ? 1 << (coarsest - leaf.level) : 1;
+    const bool wanted = !window || readSlot[leaf.block] != kNotRead;
+    if (!wanted && sink.skipsPieces()) {
+      sink.skip(perBlock * std::size_t(copies));
+      continue;
+    }
+    for (int k = 0; k < shape.n[2]; ++k)
+      for (int j = 0; j < shape.n[1]; ++j)
+        for (int i = 0; i < shape.n[0]; ++i) {
+          const std::size_t from = leaf.block * perBlock +
+                                   (static_cast<std::size_t>(k) * shape.n[1] + j) * shape.n[0] + i;
+          for (int c = 0; c < copies; ++c) {
+            const int z = axes == 2 ? c * w : leaf.lower.z + k * w;
+            const std::size_t at =
+                sink.cell(glm::ivec3(leaf.lower.x + i * w, leaf.lower.y + j * w, z),
+                          static_cast<std::uint8_t>(leaf.level));
+            if (!wanted) continue;
+            froms.push_back(from);
+            if (window) ats.push_back(at);
+          }
+        }
+  }
+
+  const bricks::WorldTransform transform{domainLo, dxf};
+  if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
+    file.fail("bounding box", "the leaves cannot be placed: " + *problem);
+
+  for (std::size_t channel = 0; channel < names.size(); ++channel) {
+    const std::string& name = names[channel];
     const std::vector<double> data =
         window ? file.readBlocks(name, blocksRead)
                : file.read<double>(name, " (listed in 'unknown names')").values;
-    bricks::Channel channel{name, std::vector<float>(source.size())};
-    for (std::size_t c = 0; c < source.size(); ++c) {
-      std::size_t from = source[c];
-      if (window) {
-        const std::size_t slot = readSlot[from / perBlock];
-        if (slot == kNotRead) continue;  // the value stays 0
-        from = slot * perBlock + from % perBlock;
-      }
-      const double v = data[from];
+    for (std::size_t i = 0; i < froms.size(); ++i) {
+      const std::size_t from = froms[i], at = window ? ats[i] : i;
+      const double v = data[window ? readSlot[from / perBlock] * perBlock + from % perBlock : from];
       if (const auto problem = unusableFieldValue(v)) {
-        const std::size_t block = source[c] / perBlock, at = source[c] % perBlock;
+        const std::size_t block = from / perBlock, inBlock = from % perBlock;
         file.fail(name, fmt::format("value {} of block {} cell (i, j, k) = ({}, {}, {}) is {}", v,
-                                    block, at % shape.n[0], at / shape.n[0] % shape.n[1],
-                                    at / shape.n[0] / shape.n[1], *problem));
+                                    block, inBlock % shape.n[0], inBlock / shape.n[0] % shape.n[1],
+                                    inBlock / shape.n[0] / shape.n[1], *problem));
       }
-      channel.values[c] = static_cast<float>(v);
+      sink.set(channel, at, static_cast<float>(v));
     }
-    channels.push_back(std::move(channel));
   }
 
-  bricks::AmrField field = checkedField(std::move(lowers), std::move(levels), std::move(channels),
-                                        transform, path.string(), window);
+  bricks::AmrField field = sink.finish(transform);
   field.setInfo(flash::readFlashInfo(file, rmax, axes));
   return field;
 }

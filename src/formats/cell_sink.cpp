@@ -1,0 +1,55 @@
+#include "cell_sink.hpp"
+
+#include <utility>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::formats {
+
+namespace {
+
+[[noreturn]] void differs(const std::string& source) {
+  throw InputError(source, "its cells differ from those of a first read (did it change?)");
+}
+
+}  // namespace
+
+CellSink::CellSink(const ValueWindow* window, std::string source)
+    : checked_(window ? window->checked : nullptr), window_(window), source_(std::move(source)) {}
+
+void CellSink::reserve(std::size_t cells) {
+  if (checked_) return;
+  lowers_.reserve(cells);
+  levels_.reserve(cells);
+  for (bricks::Channel& channel : channels_) channel.values.reserve(cells);
+}
+
+void CellSink::addChannel(std::string name) {
+  channels_.push_back(
+      {std::move(name), std::vector<float>(checked_ ? checked_->lowers.size() : lowers_.size())});
+}
+
+std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
+  if (checked_) {
+    if (at_ >= checked_->lowers.size() || checked_->lowers[at_] != lower ||
+        checked_->levels[at_] != level)
+      differs(source_);
+    return at_++;
+  }
+  lowers_.push_back(lower);
+  levels_.push_back(level);
+  for (bricks::Channel& channel : channels_) channel.values.push_back(0.0f);
+  return lowers_.size() - 1;
+}
+
+bricks::AmrField CellSink::finish(bricks::WorldTransform transform) {
+  if (checked_) {
+    if (at_ != checked_->lowers.size()) differs(source_);
+    lowers_ = checked_->lowers;
+    levels_ = checked_->levels;
+  }
+  return checkedField(std::move(lowers_), std::move(levels_), std::move(channels_), transform,
+                      std::move(source_), window_);
+}
+
+}  // namespace amrstream::formats

@@ -1,0 +1,53 @@
+#pragma once
+// Where a reader puts the leaf cells it lays out and their values. A first (or only) read
+// appends them. A second read of the same input against the cells a first read checked
+// (ValueWindow::checked) writes values in place instead: it skips the pieces outside its window
+// by their cell counts and compares the cells it lays out with the first read's.
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "bricks/amr_field.hpp"
+#include "value_window.hpp"
+
+namespace amrstream::formats {
+
+class CellSink {
+ public:
+  CellSink(const ValueWindow* window, std::string source);
+
+  // A second read that lays out only the pieces it reads (the others: skip()).
+  bool skipsPieces() const { return checked_ != nullptr; }
+  // Room for `cells` cells (a first read).
+  void reserve(std::size_t cells);
+  // Adds a channel, every cell's value 0 until set.
+  void addChannel(std::string name);
+  std::size_t channelCount() const { return channels_.size(); }
+  // The next cell's index; on a second read, InputError unless it is the first read's.
+  std::size_t cell(glm::ivec3 lower, std::uint8_t level);
+  void set(std::size_t channel, std::size_t cell, float value) {
+    channels_[channel].values[cell] = value;
+  }
+  // On a second read: the next `count` cells, of a piece not read.
+  void skip(std::size_t count) { at_ += count; }
+  // The field, checked (against the first read's cells on a second read).
+  bricks::AmrField finish(bricks::WorldTransform transform);
+
+  // The cells laid out so far (a first read), for checks before finish.
+  const std::vector<glm::ivec3>& lowers() const { return lowers_; }
+  const std::vector<std::uint8_t>& levels() const { return levels_; }
+
+ private:
+  const bricks::CheckedCells* checked_ = nullptr;
+  const ValueWindow* window_ = nullptr;
+  std::string source_;
+  std::vector<glm::ivec3> lowers_;
+  std::vector<std::uint8_t> levels_;
+  std::vector<bricks::Channel> channels_;
+  std::size_t at_ = 0;  // second read: the next cell
+};
+
+}  // namespace amrstream::formats
