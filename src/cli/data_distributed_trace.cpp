@@ -109,10 +109,13 @@ struct RankWindow {
 
 RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
                       std::uint32_t haloSteps) {
-  const formats::ValueWindow nothing;
+  formats::ValueWindow nothing;
+  nothing.withChannels = false;
+  formats::WindowedRead read;
   const bricks::AmrField layoutCells =
-      formats::loadInput(job.dataset.input, job.dataset.generator, &nothing);
-  const FieldPlan plan = planField(flow::catalogOf(layoutCells), layoutCells.info(), job.field);
+      formats::loadInput(job.dataset.input, job.dataset.generator, &nothing, &read);
+  const FieldPlan plan = planField(flow::ChannelCatalog{layoutCells.source(), read.channels},
+                                   layoutCells.info(), job.field);
   RankWindow r;
   r.layout = flow::buildCellLayout(layoutCells, plan.volume, &r.layoutTimes);
   const flow::VectorVolume& layout = r.layout;

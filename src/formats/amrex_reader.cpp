@@ -264,7 +264,7 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
     layouts.push_back(parseCellHeader(cellH, ncomp, h.gridCounts[l], h.domains[l], l));
   }
 
-  CellSink sink(window, directory.string());
+  CellSink sink(window, directory.string(), read);
   for (const std::string& name : h.names) sink.addChannel(name);
   for (int l = 0; l < levels; ++l) {
     const fs::path levelDir = (directory / h.levelPaths[l]).parent_path();

@@ -14,8 +14,11 @@ namespace {
 
 }  // namespace
 
-CellSink::CellSink(const ValueWindow* window, std::string source)
-    : checked_(window ? window->checked : nullptr), window_(window), source_(std::move(source)) {}
+CellSink::CellSink(const ValueWindow* window, std::string source, WindowedRead* read)
+    : checked_(window ? window->checked : nullptr),
+      window_(window),
+      read_(read),
+      source_(std::move(source)) {}
 
 void CellSink::reserve(std::size_t cells) {
   if (checked_) return;
@@ -25,8 +28,14 @@ void CellSink::reserve(std::size_t cells) {
 }
 
 void CellSink::addChannel(std::string name) {
+  names_.push_back(name);
+  if (window_ && !window_->withChannels) return;
   channels_.push_back(
       {std::move(name), std::vector<float>(checked_ ? checked_->lowers.size() : lowers_.size())});
+}
+
+void CellSink::set(std::size_t channel, std::size_t cell, float value) {
+  if (!channels_.empty()) channels_[channel].values[cell] = value;
 }
 
 std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
@@ -43,6 +52,7 @@ std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
 }
 
 bricks::AmrField CellSink::finish(bricks::WorldTransform transform) {
+  if (read_) read_->channels = names_;
   if (checked_) {
     if (at_ != checked_->lowers.size()) differs(source_);
     lowers_ = checked_->lowers;

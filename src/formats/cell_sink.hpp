@@ -17,7 +17,8 @@ namespace amrstream::formats {
 
 class CellSink {
  public:
-  CellSink(const ValueWindow* window, std::string source);
+  // `read`, when given, receives the channels' names.
+  CellSink(const ValueWindow* window, std::string source, WindowedRead* read = nullptr);
 
   // A second read that lays out only the pieces it reads (the others: skip()).
   bool skipsPieces() const { return checked_ != nullptr; }
@@ -28,9 +29,7 @@ class CellSink {
   std::size_t channelCount() const { return channels_.size(); }
   // The next cell's index; on a second read, InputError unless it is the first read's.
   std::size_t cell(glm::ivec3 lower, std::uint8_t level);
-  void set(std::size_t channel, std::size_t cell, float value) {
-    channels_[channel].values[cell] = value;
-  }
+  void set(std::size_t channel, std::size_t cell, float value);
   // On a second read: the next `count` cells, of a piece not read.
   void skip(std::size_t count) { at_ += count; }
   // The field, checked (against the first read's cells on a second read).
@@ -43,6 +42,8 @@ class CellSink {
  private:
   const bricks::CheckedCells* checked_ = nullptr;
   const ValueWindow* window_ = nullptr;
+  WindowedRead* read_ = nullptr;
+  std::vector<std::string> names_;
   std::string source_;
   std::vector<glm::ivec3> lowers_;
   std::vector<std::uint8_t> levels_;

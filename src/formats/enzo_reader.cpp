@@ -462,7 +462,7 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
   }
   const glm::dvec3 finestDx = placeGrids(grids, domain, table);
 
-  CellSink sink(window, file.string());
+  CellSink sink(window, file.string(), read);
   std::vector<std::string> channels;
   std::map<std::string, Handle> files;
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;

@@ -220,7 +220,7 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
     read->piecesRead += window ? blocksRead.size() : leaves.size();
   }
 
-  CellSink sink(window, path.string());
+  CellSink sink(window, path.string(), read);
   for (const std::string& name : names) sink.addChannel(name);
   sink.reserve(total);
   // The cells whose values are read: their indices into a variable's data and, with a window

@@ -5,6 +5,7 @@
 // places with the value 0 in every channel, and their data is not read.
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct ValueWindow {
   // The cells a first read of the same input laid out and checked: the field read must have
   // them, and their (long) overlap check is not repeated.
   const bricks::CheckedCells* checked = nullptr;
+  // False: the cells alone, with no channel (a read for the cells' layout; their names are in
+  // WindowedRead::channels).
+  bool withChannels = true;
 
   // Whether the cells [lower, upper), each `width` finest cells wide, are read.
   bool meets(glm::ivec3 lower, glm::ivec3 upper, int width) const {
@@ -49,6 +53,7 @@ inline bricks::AmrField checkedField(std::vector<glm::ivec3> lowers,
 // builtin datasets).
 struct WindowedRead {
   std::size_t pieces = 0, piecesRead = 0;
+  std::vector<std::string> channels;  // the channels' names
 };
 
 }  // namespace amrstream::formats

@@ -98,6 +98,17 @@ void expectWindowedReads(const fs::path& input) {
         << error.what();
   }
 
+  // The cells alone: no channel, their names reported.
+  ValueWindow cellsOnly;
+  cellsOnly.withChannels = false;
+  WindowedRead names;
+  const bricks::AmrField cells = loadInput(input.string(), {}, &cellsOnly, &names);
+  EXPECT_EQ(cells.cellCount(), whole.cellCount());
+  EXPECT_TRUE(cells.channels().empty());
+  ASSERT_EQ(names.channels.size(), whole.channels().size());
+  for (std::size_t k = 0; k < names.channels.size(); ++k)
+    EXPECT_EQ(names.channels[k], whole.channels()[k].name);
+
   // An empty window reads no values at all.
   const ValueWindow nothing;
   WindowedRead read;
