@@ -1,10 +1,12 @@
 #include "amrex_reader.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +20,7 @@
 #include "input_bytes.hpp"
 #include "text_numbers.hpp"
 #include "util/input_error.hpp"
+#include "util/input_file.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -192,9 +195,7 @@ Box coarsen(const Box& box, int ratio) {
 // each: the box's cells are laid out from the layout alone.
 void requireFabBytes(const fs::path& file, const FabEntry& fab,
                      const std::vector<long long>& offsets, const Box& stored, int ncomp) {
-  std::error_code error;
-  const std::uint64_t size = fs::file_size(file, error);
-  if (error) throw InputError(file.string(), "cannot read its size: " + error.message());
+  const std::uint64_t size = regularFileSize(file);  // refuses directories and FIFOs by name
   const std::uint64_t end =
       nextFabOffset(offsets, fab.offset).value_or(std::max(size, std::uint64_t(fab.offset)));
   const std::uint64_t held = std::min(end, size) - std::min(std::uint64_t(fab.offset), size);
@@ -266,10 +267,21 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
 
   CellSink sink(window, directory.string(), read);
   for (const std::string& name : h.names) sink.addChannel(name);
+  // Which boxes have leaves and are read, and where their cells go, box after box (the cells'
+  // order); then the boxes in parallel.
+  struct FabPlan {
+    int level = 0;
+    const FabEntry* fab = nullptr;
+    std::size_t at = 0;  // its first cell
+    bool wanted = false;
+  };
+  std::vector<FabPlan> plans;
+  std::vector<std::vector<Box>> coverings(static_cast<std::size_t>(levels));  // finer, coarsened
+  std::vector<std::map<std::string, std::vector<long long>>> levelOffsets;
+  std::size_t total = 0;
   for (int l = 0; l < levels; ++l) {
     const fs::path levelDir = (directory / h.levelPaths[l]).parent_path();
-    const int ourLevel = std::countr_zero(static_cast<unsigned>(widths[l]));
-    std::vector<Box> covering;  // the finer level's boxes, coarsened to this level
+    std::vector<Box>& covering = coverings[std::size_t(l)];
     if (l < h.finestLevel) {
       const int ratio = h.ratios[l];
       for (const FabEntry& fine : layouts[l + 1].fabs) {
@@ -281,7 +293,7 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
         covering.push_back(coarsen(fine.box, ratio));
       }
     }
-    const auto offsets = fabOffsets(layouts[l]);
+    levelOffsets.push_back(fabOffsets(layouts[l]));
     for (const FabEntry& fab : layouts[l].fabs) {
       const fs::path file = levelDir / fab.file;
       requireFile(file, fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
@@ -296,31 +308,42 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
       }
       const glm::i64vec3 boxCells =
           glm::i64vec3(fab.box.hi) - glm::i64vec3(fab.box.lo) + std::int64_t(1);
-      const bool leaves = coveredCells < std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
-      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+      const std::uint64_t cells = std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
       const bool wanted =
-          leaves &&
+          coveredCells < cells &&
           (!window || window->meets(fab.box.lo * widths[l] - finestDomain.lo,
                                     (fab.box.hi + 1) * widths[l] - finestDomain.lo, widths[l]));
       if (read) {
         ++read->pieces;
         read->piecesRead += wanted;
       }
-      if (!leaves) continue;
-      if (!wanted && sink.skipsPieces()) {
-        requireFabBytes(file, fab, offsets.at(fab.file), stored, ncomp);
-        sink.skip(std::size_t(boxCells.x * boxCells.y * boxCells.z) - coveredCells);
-        continue;
-      }
+      if (coveredCells == cells) continue;
+      // The box's cells are laid out before any FAB is read: its FAB must hold them.
+      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+      requireFabBytes(file, fab, levelOffsets.back().at(fab.file), stored, ncomp);
+      if (wanted || !sink.skipsPieces()) plans.push_back({l, &fab, total, wanted});
+      total += cells - coveredCells;
+    }
+  }
+  sink.presize(total);
+
+  std::vector<std::exception_ptr> failures(plans.size());
+  tbb::parallel_for(std::size_t(0), plans.size(), [&](std::size_t p) {
+    try {
+      const FabPlan& plan = plans[p];
+      const int l = plan.level;
+      const FabEntry& fab = *plan.fab;
+      const fs::path file = (directory / h.levelPaths[l]).parent_path() / fab.file;
+      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
       const std::vector<double> values =
-          wanted ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
-                                  nextFabOffset(offsets.at(fab.file), fab.offset), stored, ncomp)
-                 : std::vector<double>();
-      if (!wanted) requireFabBytes(file, fab, offsets.at(fab.file), stored, ncomp);
-      // The box's cells fit in int arithmetic and in memory: its FAB on disk holds them.
+          plan.wanted
+              ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
+                               nextFabOffset(levelOffsets[std::size_t(l)].at(fab.file), fab.offset),
+                               stored, ncomp)
+              : std::vector<double>();
       const glm::ivec3 size(fab.box.size());
       std::vector<bool> covered(amrex::cellCount(fab.box, file.string()), false);
-      for (const Box& cover : covering) {
+      for (const Box& cover : coverings[std::size_t(l)]) {
         const glm::ivec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
         for (int k = lo.z; k <= hi.z; ++k)
           for (int j = lo.y; j <= hi.y; ++j)
@@ -330,20 +353,20 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
                   true;
             }
       }
+      const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(widths[l])));
       const glm::ivec3 storedSize(stored.size());
       const std::size_t points = amrex::cellCount(stored, file.string());
-      std::size_t index = 0;
+      std::size_t index = 0, at = plan.at;
       for (int k = 0; k < size.z; ++k)
         for (int j = 0; j < size.y; ++j)
           for (int i = 0; i < size.x; ++i, ++index) {
             if (covered[index]) continue;
             const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
-            const std::size_t at =
-                sink.cell(cell * widths[l] - finestDomain.lo, static_cast<std::uint8_t>(ourLevel));
+            sink.place(at, cell * widths[l] - finestDomain.lo, ourLevel);
             const glm::ivec3 s = glm::ivec3(i, j, k) + layouts[l].nghost;
             const std::size_t point =
                 (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
-            for (int c = 0; wanted && c < ncomp; ++c) {
+            for (int c = 0; plan.wanted && c < ncomp; ++c) {
               const double value = values[c * points + point];
               if (const auto problem = unusableFieldValue(value))
                 throw InputError(file.string(),
@@ -353,9 +376,15 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
                                              *problem, value));
               sink.set(std::size_t(c), at, static_cast<float>(value));
             }
+            ++at;
           }
+    } catch (...) {
+      failures[p] = std::current_exception();
     }
-  }
+  });
+  // The first box's failure in the cells' order, as one box after another would meet it.
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
   bricks::AmrField field = sink.finish(transform);
   std::vector<int> internalLevels;
   for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));

@@ -51,10 +51,30 @@ std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
   return lowers_.size() - 1;
 }
 
+void CellSink::presize(std::size_t cells) {
+  presized_ = true;
+  if (checked_) {
+    if (cells != checked_->lowers.size()) differs(source_);
+    return;
+  }
+  lowers_.resize(cells);
+  levels_.resize(cells);
+  for (bricks::Channel& channel : channels_) channel.values.resize(cells);
+}
+
+void CellSink::place(std::size_t at, glm::ivec3 lower, std::uint8_t level) {
+  if (checked_) {
+    if (checked_->lowers[at] != lower || checked_->levels[at] != level) differs(source_);
+    return;
+  }
+  lowers_[at] = lower;
+  levels_[at] = level;
+}
+
 bricks::AmrField CellSink::finish(bricks::WorldTransform transform) {
   if (read_) read_->channels = names_;
   if (checked_) {
-    if (at_ != checked_->lowers.size()) differs(source_);
+    if (!presized_ && at_ != checked_->lowers.size()) differs(source_);
     lowers_ = checked_->lowers;
     levels_ = checked_->levels;
   }

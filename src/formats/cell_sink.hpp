@@ -32,6 +32,12 @@ class CellSink {
   void set(std::size_t channel, std::size_t cell, float value);
   // On a second read: the next `count` cells, of a piece not read.
   void skip(std::size_t count) { at_ += count; }
+
+  // Pieces laid out in parallel, each at cells it knows: room for `cells` cells in all (on a
+  // second read, InputError unless the first read's count), then place() for each cell, from
+  // any thread, and set() for its values, instead of cell() and skip().
+  void presize(std::size_t cells);
+  void place(std::size_t at, glm::ivec3 lower, std::uint8_t level);
   // The field, checked (against the first read's cells on a second read).
   bricks::AmrField finish(bricks::WorldTransform transform);
 
@@ -49,6 +55,7 @@ class CellSink {
   std::vector<std::uint8_t> levels_;
   std::vector<bricks::Channel> channels_;
   std::size_t at_ = 0;  // second read: the next cell
+  bool presized_ = false;
 };
 
 }  // namespace amrstream::formats
