@@ -1,9 +1,14 @@
 #include "data_partition.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace amrstream::dist {
 
@@ -41,6 +46,36 @@ Cut medianCut(Centres::iterator first, Centres::iterator last, glm::ivec3 lower,
   return cut;
 }
 
+// The centres in each plane along `axis` (planes from `lower`, clamped to the box), at index
+// plane + 1; in parallel pieces when there are many centres and few planes.
+std::vector<std::int64_t> planeCounts(Centres::iterator first, Centres::iterator last, int axis,
+                                      int lower, int planes) {
+  using Counts = std::vector<std::int64_t>;
+  const auto count = [&](Centres::iterator from, Centres::iterator to, Counts& counts) {
+    for (auto c = from; c != to; ++c) {
+      const std::int64_t at = std::clamp<std::int64_t>((*c)[axis] / 2 - lower, 0, planes - 1);
+      ++counts[std::size_t(at) + 1];
+    }
+  };
+  const std::size_t cells = std::size_t(last - first);
+  constexpr std::size_t kPiece = std::size_t(1) << 18;
+  if (cells < 4 * kPiece || planes > (1 << 16)) {
+    Counts counts(std::size_t(planes) + 1, 0);
+    count(first, last, counts);
+    return counts;
+  }
+  tbb::enumerable_thread_specific<Counts> perThread(Counts(std::size_t(planes) + 1, 0));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, kPiece),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      count(first + std::ptrdiff_t(range.begin()),
+                            first + std::ptrdiff_t(range.end()), perThread.local());
+                    });
+  Counts counts(std::size_t(planes) + 1, 0);
+  for (const Counts& piece : perThread)
+    for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += piece[i];
+  return counts;
+}
+
 // The cut, on any axis, that makes the larger of the two sides' cells per part smallest, each
 // side counted with the cells within `halo` finest cells of the cut that it will hold as well:
 // a cut through sparse cells costs less halo than one through a dense filament.
@@ -57,11 +92,7 @@ Cut haloAwareCut(Centres::iterator first, Centres::iterator last, glm::ivec3 low
     const int planes = extent[axis];
     if (planes < 2) continue;
     // below[i]: centres below plane lower + i.
-    std::vector<std::int64_t> below(std::size_t(planes) + 1, 0);
-    for (auto c = first; c != last; ++c) {
-      const std::int64_t at = std::clamp<std::int64_t>((*c)[axis] / 2 - lower[axis], 0, planes - 1);
-      ++below[std::size_t(at) + 1];
-    }
+    std::vector<std::int64_t> below = planeCounts(first, last, axis, lower[axis], planes);
     for (std::size_t i = 1; i < below.size(); ++i) below[i] += below[i - 1];
     for (int i = 1; i < planes; ++i) {
       const double left = double(below[std::size_t(std::min<std::int64_t>(i + reach, planes))]);
@@ -117,9 +148,12 @@ int DataPartition::ownerOf(glm::dvec3 p) const {
 
 DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo) {
   Centres centres(field.cellCount());
-  for (std::size_t i = 0; i < centres.size(); ++i)
-    centres[i] = std::int64_t(2) * glm::i64vec3(field.lowers()[i]) +
-                 (std::int64_t(1) << field.levels()[i]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, centres.size(), std::size_t(1) << 16),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i)
+                        centres[i] = std::int64_t(2) * glm::i64vec3(field.lowers()[i]) +
+                                     (std::int64_t(1) << field.levels()[i]);
+                    });
   DataPartition partition;
   partition.lower.resize(std::size_t(std::max(parts, 1)));
   partition.upper.resize(partition.lower.size());

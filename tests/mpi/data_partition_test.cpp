@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 #include "random_amr.hpp"
 #include "synth/generators.hpp"
@@ -73,6 +76,47 @@ TEST(DataPartition, CutsAvoidDenseCellsWhenRanksHoldAHalo) {
                     cellsHeld(f, p.lower[1], p.upper[1], halo));
   };
   EXPECT_LE(largest(aware), largest(median));
+}
+
+// Over a million cells the planes' counts are taken in parallel pieces: the cut of two parts
+// is still the one a plain count of every centre's plane gives (the cost as partitionCells
+// states it: the larger side's cells per part, each side with the cells within the halo).
+TEST(DataPartition, ParallelPlaneCountsGiveTheSequentialCut) {
+  synth::GeneratorOptions g;
+  g.levels = 4;
+  g.targetCells = 1'500'000;
+  const bricks::AmrField f = synth::generate("cloud", g);
+  ASSERT_GT(f.cellCount(), std::size_t(1) << 20);
+  const double halo = 20.0;
+  const DataPartition p = partitionCells(f, 2, halo);
+  const glm::ivec3 lower = f.bounds().lower, extent = f.bounds().upper - lower;
+  const std::int64_t reach = std::int64_t(std::ceil(halo));
+  const double total = double(f.cellCount());
+  double bestCost = std::numeric_limits<double>::infinity();
+  int bestAxis = -1, bestPlane = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<std::int64_t> below(std::size_t(extent[axis]) + 1, 0);
+    for (std::size_t i = 0; i < f.cellCount(); ++i) {
+      const std::int64_t twice = 2 * std::int64_t(f.lowers()[i][axis]) + (1 << f.levels()[i]);
+      ++below[std::size_t(std::clamp<std::int64_t>(twice / 2 - lower[axis], 0, extent[axis] - 1)) +
+              1];
+    }
+    for (std::size_t i = 1; i < below.size(); ++i) below[i] += below[i - 1];
+    for (int i = 1; i < extent[axis]; ++i) {
+      const double left =
+          double(below[std::size_t(std::min<std::int64_t>(i + reach, extent[axis]))]);
+      const double right = total - double(below[std::size_t(std::max<std::int64_t>(i - reach, 0))]);
+      const double cost = std::max(left, right);
+      if (cost < bestCost) {
+        bestCost = cost;
+        bestAxis = axis;
+        bestPlane = lower[axis] + i;
+      }
+    }
+  }
+  ASSERT_GE(bestAxis, 0);
+  EXPECT_EQ(p.upper[0][bestAxis], bestPlane);
+  EXPECT_EQ(p.lower[1][bestAxis], bestPlane);
 }
 
 }  // namespace
