@@ -208,8 +208,14 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   part.interpolant = input.volume.interpolant;
   part.keepAround =
       flow::VolumeOptions::Box{glm::dvec3(lower) - reach.kept, glm::dvec3(upper) + reach.kept};
-  input.volume = flow::buildVectorVolume(
-      cells, flow::chooseVectorChannels(cells, job.field.vector), part);
+  // Cropped from the whole volume's bricks, which the cells gave, without building them again.
+  flow::VectorVolume cropped = flow::cropCellLayout(input.volume, part);
+  flow::fillVolumeValues(cropped, flow::chooseVectorChannels(cells, job.field.vector), part,
+                         input.source,
+                         [&cells](const std::string& name, const flow::ChannelUse& use) {
+                           use(cells.channel(name).values);
+                         });
+  input.volume = std::move(cropped);
   input.releaseField();
   return rank;
 }

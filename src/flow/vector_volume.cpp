@@ -137,13 +137,11 @@ void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box,
 
 }  // namespace
 
-VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions& options,
-                             VolumeBuildTimes* times) {
-  Stopwatch clock;
-  bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
-  const CentredCells centred = centreCells(field, brickSet.bricks);
-  if (options.keepAround)
-    keepAround(brickSet, *options.keepAround, centred.domain, options.periodic);
+namespace {
+
+// A layout from its bricks (centred, kept): their periodic images, the regions.
+VectorVolume finishLayout(bricks::BrickSet brickSet, const CentredCells& centred,
+                          const VolumeOptions& options, Stopwatch& clock, VolumeBuildTimes* times) {
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {
@@ -163,6 +161,29 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
   volume.periodic = options.periodic;
   volume.transform = centred.transform;
   return volume;
+}
+
+}  // namespace
+
+VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions& options,
+                             VolumeBuildTimes* times) {
+  Stopwatch clock;
+  bricks::BrickSet brickSet = bricks::buildBricks(field, options.bricks);
+  const CentredCells centred = centreCells(field, brickSet.bricks);
+  if (options.keepAround)
+    keepAround(brickSet, *options.keepAround, centred.domain, options.periodic);
+  return finishLayout(std::move(brickSet), centred, options, clock, times);
+}
+
+VectorVolume cropCellLayout(const VectorVolume& whole, const VolumeOptions& options,
+                            VolumeBuildTimes* times) {
+  Stopwatch clock;
+  bricks::BrickSet brickSet;
+  brickSet.bricks.assign(whole.bricks.begin(),
+                         whole.bricks.begin() + std::ptrdiff_t(whole.originalBrickCount));
+  brickSet.cellIds = whole.cellIds;
+  if (options.keepAround) keepAround(brickSet, *options.keepAround, whole.domain, options.periodic);
+  return finishLayout(std::move(brickSet), {whole.domain, whole.transform}, options, clock, times);
 }
 
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,

@@ -104,6 +104,12 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
                              VolumeBuildTimes* times = nullptr);
 
 // Throws InputError (listing the channels) when a point-data channel is absent.
+// The layout buildCellLayout makes with `options` from the cells `whole` was built from (with
+// the same brick options, all of them kept), made from whole's bricks instead of the cells:
+// for an MPI rank's part (options.keepAround).
+VectorVolume cropCellLayout(const VectorVolume& whole, const VolumeOptions& options,
+                            VolumeBuildTimes* times = nullptr);
+
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const VolumeOptions& options = {},
                                VolumeBuildTimes* times = nullptr);

@@ -1,10 +1,12 @@
 // A volume built in two steps, the layout and then the values from a channel source (one channel
 // at a time, as an .exa's files give them), equals the one buildVectorVolume builds from the
-// whole field, with either interpolant and with point data.
+// whole field, with either interpolant and with point data; a part cropped from a whole
+// layout equals the part built from the cells.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "flow/vector_volume.hpp"
 #include "flow_test_support.hpp"
@@ -48,6 +50,32 @@ TEST(FillVolumeValues, TheLayoutThenTheValuesEqualsTheWholeBuild) {
     EXPECT_EQ(twoSteps.vectorName, whole.vectorName);
     EXPECT_EQ(twoSteps.interpolant, whole.interpolant);
     EXPECT_EQ(twoSteps.cellIds, whole.cellIds);
+  }
+}
+
+// A rank's part cropped from the whole volume's bricks equals the part built from the cells,
+// brick for brick, with and without periodic axes (whose images follow the kept bricks).
+TEST(FillVolumeValues, APartCroppedFromTheWholeEqualsOneBuiltFromTheCells) {
+  const bricks::AmrField field = fieldWithDensity();
+  for (const bool periodic : {false, true}) {
+    SCOPED_TRACE(periodic ? "periodic" : "bounded");
+    VolumeOptions options;
+    options.periodic = {periodic, periodic, false};
+    const VectorVolume whole = buildCellLayout(field, options);
+    const glm::dvec3 middle = 0.5 * glm::dvec3(whole.domain.lower + whole.domain.upper);
+    options.keepAround = VolumeOptions::Box{glm::dvec3(whole.domain.lower) - 3.0, middle};
+    const VectorVolume built = buildCellLayout(field, options);
+    const VectorVolume cropped = cropCellLayout(whole, options);
+    ASSERT_EQ(cropped.bricks.size(), built.bricks.size());
+    ASSERT_LT(built.originalBrickCount, whole.originalBrickCount);
+    EXPECT_EQ(cropped.originalBrickCount, built.originalBrickCount);
+    for (std::size_t b = 0; b < built.bricks.size(); ++b)
+      ASSERT_EQ(std::memcmp(&cropped.bricks[b], &built.bricks[b], sizeof(shared::Brick)), 0) << b;
+    EXPECT_EQ(cropped.cellIds, built.cellIds);
+    EXPECT_EQ(cropped.regions.regions.size(), built.regions.regions.size());
+    EXPECT_EQ(cropped.regions.regionBricks, built.regions.regionBricks);
+    EXPECT_EQ(cropped.domain.lower, built.domain.lower);
+    EXPECT_EQ(cropped.domain.upper, built.domain.upper);
   }
 }
 
