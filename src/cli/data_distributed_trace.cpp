@@ -210,11 +210,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
       flow::VolumeOptions::Box{glm::dvec3(lower) - reach.kept, glm::dvec3(upper) + reach.kept};
   // Cropped from the whole volume's bricks, which the cells gave, without building them again.
   flow::VectorVolume cropped = flow::cropCellLayout(input.volume, part);
-  flow::fillVolumeValues(cropped, flow::chooseVectorChannels(cells, job.field.vector), part,
-                         input.source,
-                         [&cells](const std::string& name, const flow::ChannelUse& use) {
-                           use(cells.channel(name).values);
-                         });
+  flow::fillVolumeValues(cropped, cells, flow::chooseVectorChannels(cells, job.field.vector), part);
   input.volume = std::move(cropped);
   input.releaseField();
   return rank;

@@ -100,13 +100,7 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter 
     input.volume = std::move(*share->layout);
     share->layout.reset();
     times = share->layoutTimes;
-    for (const std::string& name : vector.channels) cells.channel(name);  // throw before filling
-    flow::fillVolumeValues(
-        input.volume, vector, plan.volume, input.source,
-        [&cells](const std::string& name, const flow::ChannelUse& use) {
-          use(cells.channel(name).values);
-        },
-        &times);
+    flow::fillVolumeValues(input.volume, cells, vector, plan.volume, &times);
     input.cells = data.cells;
   } else {
     input.volume = flow::buildVectorVolume(cells, vector, plan.volume, &times);

@@ -61,10 +61,10 @@ StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
   float widest = 0.0f;
   for (const shared::Region& region : volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
-  double fastest = 0.0;
+  double fastest = 0.0;  // arc mode's reach does not depend on it
   if (knownFastest) {
     fastest = *knownFastest;
-  } else {
+  } else if (options.stepMode != flow::StepMode::Arc) {
     for (const glm::vec3& v : volume.values) fastest = std::max(fastest, double(glm::length(v)));
     if (volume.interpolant == flow::Interpolant::Linear) {
       // Three gradients (one per component) per value slot, in values per finest cell.

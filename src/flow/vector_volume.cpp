@@ -192,12 +192,20 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
   for (const std::string& name : options.pointData) field.channel(name);
   VolumeBuildTimes local;
   VectorVolume volume = buildCellLayout(field, options, &local);
+  fillVolumeValues(volume, field, vector, options, &local);
+  if (times) *times = local;
+  return volume;
+}
+
+void fillVolumeValues(VectorVolume& volume, const bricks::AmrField& field,
+                      const VectorChannels& vector, const VolumeOptions& options,
+                      VolumeBuildTimes* times) {
+  for (const std::string& name : vector.channels) field.channel(name);  // throw before filling
+  for (const std::string& name : options.pointData) field.channel(name);
   const ChannelSource fromField = [&field](const std::string& name, const ChannelUse& use) {
     use(field.channel(name).values);
   };
-  fillVolumeValues(volume, vector, options, field.source(), fromField, &local);
-  if (times) *times = local;
-  return volume;
+  fillVolumeValues(volume, vector, options, field.source(), fromField, times);
 }
 
 void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,

@@ -127,6 +127,11 @@ using ChannelSource = std::function<void(const std::string& name, const ChannelU
 void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
                       const VolumeOptions& options, const std::string& source,
                       const ChannelSource& channels, VolumeBuildTimes* times = nullptr);
+// The same from the channels of `field`, the cells the layout was made from; InputError before
+// anything is filled when one is absent.
+void fillVolumeValues(VectorVolume& volume, const bricks::AmrField& field,
+                      const VectorChannels& vector, const VolumeOptions& options,
+                      VolumeBuildTimes* times = nullptr);
 
 // A scalar channel of `field` in the volume's brick order, for sampleScalar() and the renderer.
 // Throws InputError listing the channels when `channel` is absent.

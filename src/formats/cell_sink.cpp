@@ -12,6 +12,18 @@ namespace {
   throw InputError(source, "its cells differ from those of a first read (did it change?)");
 }
 
+// The field a reader read, checked: against `window->checked` when there is one.
+bricks::AmrField checkedField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
+                              std::vector<bricks::Channel> channels,
+                              bricks::WorldTransform transform, std::string source,
+                              const ValueWindow* window) {
+  if (window && window->checked)
+    return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+                            std::move(source), *window->checked);
+  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
+                          std::move(source));
+}
+
 }  // namespace
 
 CellSink::CellSink(const ValueWindow* window, std::string source, WindowedRead* read)

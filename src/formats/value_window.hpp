@@ -36,19 +36,6 @@ struct ValueWindow {
   }
 };
 
-// The field a reader read, checked: against `window->checked` when there is one.
-inline bricks::AmrField checkedField(std::vector<glm::ivec3> lowers,
-                                     std::vector<std::uint8_t> levels,
-                                     std::vector<bricks::Channel> channels,
-                                     bricks::WorldTransform transform, std::string source,
-                                     const ValueWindow* window) {
-  if (window && window->checked)
-    return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
-                            std::move(source), *window->checked);
-  return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
-                          std::move(source));
-}
-
 // What a windowed read read: `pieces` is 0 when the format reads whole (ExaBricks, Gerris,
 // builtin datasets).
 struct WindowedRead {
