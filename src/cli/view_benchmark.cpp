@@ -44,8 +44,9 @@ void runViewBenchmark(const ViewOptions& o) {
              gpu::backendName(choice.backend), ctx.deviceName(), o.look.width, o.look.height,
              o.frames);
 
-  std::vector<double> frames, growing, trace, tubes, render, segments, upload, structures,
-      instances, device;
+  std::vector<double> frames, growing, trace, tubes, render, renderSubmit, renderDevice, segments,
+      upload, structures, instances, device;
+  std::vector<ViewFrameTimes> growingTimes;
   std::size_t steps = 0;
   for (std::uint32_t f = 0; f < o.frames; ++f) {
     const bool grew = !session.traces().finished();
@@ -54,6 +55,7 @@ void runViewBenchmark(const ViewOptions& o) {
     frames.push_back(clock.seconds());
     const ViewFrameTimes& t = session.lastFrameTimes();
     if (grew) {
+      growingTimes.push_back(t);
       growing.push_back(frames.back());
       trace.push_back(t.traceSeconds);
       tubes.push_back(t.tubesSeconds);
@@ -64,17 +66,45 @@ void runViewBenchmark(const ViewOptions& o) {
       device.push_back(t.append.device);
     }
     render.push_back(t.renderSeconds);
+    renderDevice.push_back(t.renderDeviceSeconds);
+    renderSubmit.push_back(t.renderSubmitSeconds);
   }
   const auto ms = [](double seconds) { return 1e3 * seconds; };
   fmt::print("frames     {} in {:.2f} s: median {:.2f} ms, 95th percentile {:.2f} ms, slowest "
              "{:.2f} ms\n",
              frames.size(), mean(frames) * double(frames.size()), ms(percentile(frames, 0.5)),
              ms(percentile(frames, 0.95)), ms(percentile(frames, 1.0)));
-  fmt::print("growing    {} frames while traces ran: mean {:.2f} ms (tracing {:.2f}, tubes {:.2f}, "
-             "rendering {:.2f}), last {:.2f} ms\n",
-             growing.size(), ms(mean(growing)), ms(mean(trace)), ms(mean(tubes)),
-             ms(mean(std::vector<double>(render.begin(), render.begin() + growing.size()))),
-             growing.empty() ? 0.0 : ms(growing.back()));
+  const auto whileGrowing = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin(), v.begin() + std::ptrdiff_t(growing.size()));
+  };
+  const auto afterwards = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + std::ptrdiff_t(growing.size()), v.end());
+  };
+  const std::size_t slowest =
+      std::distance(growing.begin(), std::max_element(growing.begin(), growing.end()));
+  if (!growing.empty()) {
+    const ViewFrameTimes& t = growingTimes[slowest];
+    fmt::print(
+        "growing    {} frames while traces ran: median {:.2f} ms; the slowest, frame {}, "
+        "{:.2f} ms: tracing {:.2f}, segments {:.2f}, structures {:.2f}, upload {:.2f}, "
+        "device {:.2f}, rendering {:.2f}\n",
+        growing.size(), ms(percentile(growing, 0.5)), slowest + 1, ms(growing[slowest]),
+        ms(t.traceSeconds), ms(t.segmentsSeconds), ms(t.append.structures), ms(t.append.upload),
+        ms(t.append.device), ms(t.renderSeconds));
+  }
+  fmt::print(
+      "growing    {} frames while traces ran: mean {:.2f} ms (tracing {:.2f}, tubes {:.2f}, "
+      "rendering {:.2f} of which submitting {:.2f}; the frame on the device {:.2f}), last "
+      "{:.2f} ms\n",
+      growing.size(), ms(mean(growing)), ms(mean(trace)), ms(mean(tubes)),
+      ms(mean(whileGrowing(render))), ms(mean(whileGrowing(renderSubmit))),
+      ms(mean(whileGrowing(renderDevice))), growing.empty() ? 0.0 : ms(growing.back()));
+  const std::vector<double> still = afterwards(frames);
+  fmt::print("still      {} frames after: median {:.2f} ms, slowest {:.2f} ms (frame {} of them)\n",
+             still.size(), ms(percentile(still, 0.5)), ms(percentile(still, 1.0)),
+             still.empty()
+                 ? 0
+                 : 1 + std::distance(still.begin(), std::max_element(still.begin(), still.end())));
   fmt::print("tubes      while growing, mean: segments {:.2f} ms, upload {:.2f} ms, structures "
              "{:.2f} ms, instance list {:.2f} ms, device {:.2f} ms\n",
              ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)),

@@ -36,15 +36,33 @@ void ViewSession::rebuildTubes() {
   renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
 }
 
-void ViewSession::growTubes() {
+bool ViewSession::growTubes() {
+  vkQueueWaitIdle(ctx_->queue());
+  // compute makes the new segments and grows its BVH on the host: meanwhile the device renders
+  // the tubes (and their colour range) as they were before this round, which therefore show one
+  // frame later.
+  const bool renderMeanwhile = backend_ == gpu::Backend::Compute && renderer_->segmentCount() > 0 &&
+                               renderer_->tubeRadius() == scene_.settings.tubeRadius;
   Stopwatch clock;
+  if (renderMeanwhile) {
+    renderer_->submitFrame(scene_.camera, scene_.settings);
+    times_.renderSeconds = times_.renderSubmitSeconds = clock.seconds();
+    clock.restart();
+  }
   const std::optional<std::vector<shared::TubeSegment>> added =
       appendTubes(scene_, options_.look, input_.field(), input_.volume, traces_->recent());
   times_.segmentsSeconds = clock.seconds();
-  if (!added) return rebuildTubes();
-  vkQueueWaitIdle(ctx_->queue());
+  if (!added) {
+    clock.restart();
+    renderer_->waitForFrame();
+    times_.renderSeconds += clock.seconds();
+    rebuildTubes();
+    return renderMeanwhile;
+  }
   renderer_->appendTubes(*added, scene_.segments, scene_.settings.tubeRadius);
   times_.append = renderer_->lastAppendTimes();
+  times_.renderSeconds += times_.append.frameWait;
+  return renderMeanwhile;
 }
 
 void ViewSession::setColourMap(render::ColourMap map) {
@@ -79,25 +97,29 @@ void ViewSession::frameAll() {
 std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
   times_ = {};
   std::size_t taken = 0;
+  if (width != renderer_->width() || height != renderer_->height()) {
+    vkQueueWaitIdle(ctx_->queue());
+    renderer_->resize(width, height);
+  }
+  bool rendered = false;
   Stopwatch clock;
   if (!paused && !traces_->finished()) {
     taken = traces_->advance(options_.stepsPerFrame);
     times_.traceSeconds = clock.seconds();
     clock.restart();
-    growTubes();
+    rendered = growTubes();
     if (traces_->finished()) {
       vkQueueWaitIdle(ctx_->queue());
-      renderer_->consolidateTubes();
+      renderer_->consolidateTubes(true);
     }
-    times_.tubesSeconds = clock.seconds();
+    times_.tubesSeconds = clock.seconds() - times_.renderSeconds;
   }
-  if (width != renderer_->width() || height != renderer_->height()) {
-    vkQueueWaitIdle(ctx_->queue());
-    renderer_->resize(width, height);
+  if (!rendered) {
+    clock.restart();
+    renderer_->renderFrame(scene_.camera, scene_.settings);
+    times_.renderSeconds = clock.seconds();
   }
-  clock.restart();
-  renderer_->renderFrame(scene_.camera, scene_.settings);
-  times_.renderSeconds = clock.seconds();
+  times_.renderDeviceSeconds = renderer_->lastFrameSeconds().value_or(0.0);
   return taken;
 }
 

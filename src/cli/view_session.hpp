@@ -30,7 +30,10 @@ struct ViewFrameTimes {
   double tubesSeconds = 0;   // tube segments, their upload and the tubes' structure
   double segmentsSeconds = 0;  // of which making and colouring the new segments on the host
   render::TubeRenderer::AppendTimes append;  // and the renderer's parts
-  double renderSeconds = 0;  // rendering the frame, to its completion
+  double renderSeconds = 0;        // rendering the frame, to its completion (with compute while the
+                                   // traces grow, beside building the tubes' BVH on the host)
+  double renderSubmitSeconds = 0;  // of which recording and submitting it, when not waited for
+  double renderDeviceSeconds = 0;  // the frame's own time on the device (timestamps)
 };
 
 class ViewSession {
@@ -38,8 +41,9 @@ class ViewSession {
   ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu::Backend backend,
               PreparedInput input);
 
-  // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; then renders one
-  // frame at this size. Returns the particle-steps taken.
+  // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; renders one frame
+  // at this size (with compute, of the tubes before this round, while their BVH grows on the
+  // host), complete on return. Returns the particle-steps taken.
   std::size_t step(std::uint32_t width, std::uint32_t height);
   const ViewFrameTimes& lastFrameTimes() const { return times_; }
 
@@ -51,7 +55,8 @@ class ViewSession {
   void rebuildTubes();
   // Adds the tubes of what the last round of tracing added (rebuilds them all when the colours
   // of the old ones would change).
-  void growTubes();
+  // Returns whether it rendered the frame (compute, before the new tubes are in place).
+  bool growTubes();
   void setColourMap(render::ColourMap map);
   // Reloads the context volume for options().look.volume (empty: none).
   void reloadVolume();

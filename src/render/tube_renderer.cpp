@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -115,7 +116,11 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
 
 TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
                            const flow::VectorVolume& volume, std::span<const float> contextScalars)
-    : ctx_(&ctx), volume_(&volume), kernel_(createRenderKernel(ctx, backend)), timer_(ctx) {
+    : ctx_(&ctx),
+      volume_(&volume),
+      kernel_(createRenderKernel(ctx, backend)),
+      timer_(ctx),
+      frame_(ctx) {
   if (!contextScalars.empty() && contextScalars.size() != volume.values.size())
     throw std::invalid_argument("TubeRenderer: context scalars must have one value per cell");
   hasScalars_ = !contextScalars.empty();
@@ -158,6 +163,8 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
 }
 
 void TubeRenderer::setTubes(std::span<const shared::TubeSegment> segments, float radius) {
+  dropConsolidation();
+  waitForFrame();
   segmentCount_ = segments.size();
   radius_ = radius;
   tubesLower_ = glm::vec3(INFINITY), tubesUpper_ = glm::vec3(-INFINITY);
@@ -220,7 +227,14 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
                                std::span<const shared::TubeSegment> all, float radius) {
   appendTimes_ = {};
   if (added.empty()) return;
+  dropConsolidation();
   Stopwatch clock;
+  const auto waitForTheFrame = [&] {
+    Stopwatch waiting;
+    waitForFrame();
+    appendTimes_.frameWait += waiting.seconds();
+    clock.restart();
+  };
   const std::size_t first = segmentCount_, count = first + added.size();
   const bool compute = kernel_.backend == gpu::Backend::Compute;
   // A long run of appended structures makes every ray test many boxes: past a number, they are
@@ -228,7 +242,10 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   const bool whole = radius != radius_ || count > 0xFFFFFF ||
                      (compute ? forest_.nodes().empty()
                               : !scene_ || scene_->blases.size() >= kMaxAppendedStructures);
+  // compute's forest is host memory alone: a frame in flight may go on while it grows.
+  if (!compute || whole) waitForTheFrame();
   if (whole || (compute && !forest_.append(added, radius))) {
+    waitForTheFrame();
     setTubes(all, radius);
     appendTimes_.structures = clock.seconds();
     return;
@@ -246,7 +263,7 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   stagingUsed_ = 0;
   if (compute) {  // the forest rebuilt its last chunk on the host
     appendTimes_.structures = clock.seconds();
-    clock.restart();
+    waitForTheFrame();
     const std::pair<std::size_t, std::size_t> segmentRange{
         forest_.firstChangedSegment() * kSegment, count * kSegment};
     writeRanges(segments_, "tube segments", std::as_bytes(std::span(forest_.segments())),
@@ -303,13 +320,34 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   appended_ = true;
 }
 
-void TubeRenderer::consolidateTubes() {
+void TubeRenderer::consolidateTubes(bool inBackground) {
   if (kernel_.backend == gpu::Backend::Compute) {
-    if (forest_.chunks() <= 1) return;
+    if (forest_.chunks() <= 1 || consolidated_.valid()) return;
+    if (inBackground) {
+      // forest_ stays as it is until the result is adopted or dropped (both wait for the task).
+      // Making and filling buffers is free-threaded; recording and submitting are left to
+      // adoptConsolidated, on this thread.
+      consolidated_ = std::async(std::launch::async, [this, radius = radius_] {
+        Consolidated whole;
+        whole.forest.reset(forest_.segments(), radius);
+        const auto staged = [&](auto items, const char* name) {
+          const std::span<const std::byte> bytes = std::as_bytes(std::span(items));
+          vk::Buffer buffer =
+              vk::Buffer::upload(*ctx_, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, name);
+          std::memcpy(buffer.mapped().data(), bytes.data(), bytes.size());
+          return buffer;
+        };
+        whole.segments = staged(whole.forest.segments(), "tube segments (staging)");
+        whole.nodes = staged(whole.forest.nodes(), "tube BVH (staging)");
+        return whole;
+      });
+      return;
+    }
     const std::vector<shared::TubeSegment> segments = forest_.segments();
     return setTubes(segments, radius_);
   }
   if (!scene_ || scene_->blases.size() <= 1) return;
+  waitForFrame();
   // The segments are on the device already, in deviceOrder_: only their structure is made again,
   // as one compacted BLAS (or as few as the size limit allows) under the same instance list.
   std::vector<vk::AabbBlas> blases =
@@ -323,8 +361,43 @@ void TubeRenderer::consolidateTubes() {
   descriptorsStale_ = true;
 }
 
+std::size_t TubeRenderer::tubeStructures() const {
+  if (kernel_.backend == gpu::Backend::Compute) return forest_.chunks();
+  return scene_ ? scene_->blases.size() : 0;
+}
+
+void TubeRenderer::adoptConsolidated(bool wait) {
+  if (!consolidated_.valid()) return;
+  if (!wait && consolidated_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  Consolidated whole = consolidated_.get();
+  waitForFrame();
+  constexpr VkBufferUsageFlags kTarget = kAppendable | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  vk::Buffer segments =
+      vk::Buffer::deviceLocal(*ctx_, whole.segments.size(), kTarget, "tube segments");
+  vk::Buffer nodes = vk::Buffer::deviceLocal(*ctx_, whole.nodes.size(), kTarget, "tube BVH");
+  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+    const VkBufferCopy segmentBytes{0, 0, whole.segments.size()},
+        nodeBytes{0, 0, whole.nodes.size()};
+    vkCmdCopyBuffer(cmd, whole.segments.handle(), segments.handle(), 1, &segmentBytes);
+    vkCmdCopyBuffer(cmd, whole.nodes.handle(), nodes.handle(), 1, &nodeBytes);
+    vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+  });
+  forest_ = std::move(whole.forest);
+  segments_ = std::move(segments);
+  bvhNodes_ = std::move(nodes);
+  frames_ = 0;
+  descriptorsStale_ = true;
+}
+
+void TubeRenderer::dropConsolidation() {
+  if (!consolidated_.valid()) return;
+  consolidated_.wait();
+  consolidated_ = {};
+}
+
 void TubeRenderer::setColourMap(std::span<const glm::vec3> table) {
   if (table.size() < 2) throw std::invalid_argument("TubeRenderer: a colour map needs 2 entries");
+  waitForFrame();
   colourMap_ = vk::uploadToDeviceLocal(*ctx_, table, kStorage, "colour map");
   frames_ = 0;
   descriptorsStale_ = true;
@@ -334,6 +407,7 @@ void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
   if (width == 0 || height == 0)
     throw std::invalid_argument("TubeRenderer: the image needs at least one pixel");
   if (width == width_ && height == height_) return;
+  waitForFrame();
   const VkDeviceSize pixelCount = VkDeviceSize(width) * height;
   accumulation_ = vk::Buffer::deviceLocal(*ctx_, pixelCount * sizeof(glm::vec4), kStorage,
                                           "accumulation");
@@ -376,12 +450,14 @@ void TubeRenderer::writeDescriptors() {
   descriptorsStale_ = false;
 }
 
-void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& settings) {
+void TubeRenderer::submitFrame(const OrbitCamera& camera, const RenderSettings& settings) {
   if (width_ == 0) throw std::logic_error("TubeRenderer: resize() before renderFrame()");
   if (segmentCount_ > 0 && settings.tubeRadius != radius_)
     throw std::invalid_argument("TubeRenderer: the tubes were built for another radius");
   if (settings.volume && !hasScalars_)
     throw std::invalid_argument("TubeRenderer: the volume needs context scalars");
+  waitForFrame();
+  adoptConsolidated(false);
   if (lastCamera_ != camera || lastSettings_ != settings) frames_ = 0;
   lastCamera_ = camera;
   lastSettings_ = settings;
@@ -389,11 +465,11 @@ void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& 
   const shared::RenderParams params =
       makeParams(camera, settings, *volume_, width_, height_, frames_, segmentCount_, linearVolume_,
                  tubesLower_, tubesUpper_);
-  // The previous frame has completed (renderFrame waits), so the buffer is free to rewrite.
+  // The previous frame has completed, so the buffer is free to rewrite.
   std::memcpy(params_.mapped().data(), &params, sizeof(params));
   if (descriptorsStale_) writeDescriptors();
 
-  vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+  frame_.submit([&](VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, kernel_.bindPoint, kernel_.pipeline.get());
     vkCmdBindDescriptorSets(cmd, kernel_.bindPoint, kernel_.pipelineLayout.get(), 0, 1, &set_, 0,
                             nullptr);
@@ -409,11 +485,17 @@ void TubeRenderer::renderFrame(const OrbitCamera& camera, const RenderSettings& 
     timer_.stop(cmd);
     vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kAny);
   });
-  lastFrameSeconds_ = timer_.seconds();
   ++frames_;
 }
 
+void TubeRenderer::waitForFrame() const {
+  if (!frame_.pending()) return;
+  frame_.wait();
+  lastFrameSeconds_ = timer_.seconds();
+}
+
 Image TubeRenderer::readImage() const {
+  waitForFrame();
   Image image;
   image.width = width_;
   image.height = height_;

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <future>
 #include <glm/glm.hpp>
 #include <optional>
 #include <span>
@@ -30,6 +31,7 @@
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
 #include "vk/gpu_timer.hpp"
+#include "vk/submission.hpp"
 #include "vk/tlas_builder.hpp"
 
 namespace amrstream::render {
@@ -64,6 +66,9 @@ class TubeRenderer {
   // cell gradients here).
   TubeRenderer(const vk::Context& ctx, gpu::Backend backend, const flow::VectorVolume& volume,
                std::span<const float> contextScalars);
+  // A background consolidation's task refers to the renderer.
+  TubeRenderer(const TubeRenderer&) = delete;
+  TubeRenderer& operator=(const TubeRenderer&) = delete;
 
   gpu::Backend backend() const { return kernel_.backend; }
   bool hasContextScalars() const { return hasScalars_; }
@@ -85,11 +90,18 @@ class TubeRenderer {
   // `structures` when it set the tubes whole.
   struct AppendTimes {
     double upload = 0.0, structures = 0.0, instances = 0.0, device = 0.0;
+    double frameWait = 0.0;  // waiting for a frame submitted before (submitFrame)
   };
   const AppendTimes& lastAppendTimes() const { return appendTimes_; }
   // Rebuilds appended tubes as one structure, as setTubes would have built them (rays cross
-  // fewer boxes): for when the tubes stop growing.
-  void consolidateTubes();
+  // fewer boxes): for when the tubes stop growing. With `inBackground`, `compute` builds its host
+  // BVH on another thread while frames go on with the chunks, and the first renderFrame after it
+  // is done puts it in place (the ray tracing backends build on the device, at once).
+  void consolidateTubes(bool inBackground = false);
+  // Waits for a background consolidation and puts its BVH in place.
+  void finishConsolidation() { adoptConsolidated(true); }
+  // The structures the tubes are in: compute's BVH chunks, or the bottom-level structures.
+  std::size_t tubeStructures() const;
   std::size_t segmentCount() const { return segmentCount_; }
   float tubeRadius() const { return radius_; }
   void setColourMap(std::span<const glm::vec3> table);  // at least 2 entries
@@ -98,7 +110,15 @@ class TubeRenderer {
 
   // Adds one frame; waits for it. Throws std::invalid_argument when settings.tubeRadius differs
   // from the tubes' or the volume is asked for without context scalars.
-  void renderFrame(const OrbitCamera& camera, const RenderSettings& settings);
+  void renderFrame(const OrbitCamera& camera, const RenderSettings& settings) {
+    submitFrame(camera, settings);
+    waitForFrame();
+  }
+  // The same without waiting: the device renders the tubes as they stand while the host goes
+  // on. Every call that changes what the frame reads (appendTubes after its host work, setTubes,
+  // resize, ...) waits for it first, and so do readImage and waitForFrame.
+  void submitFrame(const OrbitCamera& camera, const RenderSettings& settings);
+  void waitForFrame() const;
   std::uint32_t framesAccumulated() const { return frames_; }
   std::optional<double> lastFrameSeconds() const { return lastFrameSeconds_; }
 
@@ -111,6 +131,10 @@ class TubeRenderer {
  private:
   // Points the descriptor set at the current buffers; after any of them was replaced.
   void writeDescriptors();
+  // Puts the background consolidation's BVH in place once it is done; with `wait`, waits for it.
+  void adoptConsolidated(bool wait);
+  // Ends a background consolidation before the tubes change, dropping its result.
+  void dropConsolidation();
   // Makes `buffer` hold at least `contents` (growing it, keeping what it holds, at once) and
   // records into `cmd` the copy of the byte ranges [first, end) of `contents` into it, through
   // the next of appendStaging_ (stagingUsed_ counts them per append).
@@ -133,6 +157,13 @@ class TubeRenderer {
   std::size_t stagingUsed_ = 0;
   vk::BlasBuildBuffers appendBuild_;  // the appended structures' box and scratch buffers
   TubeForest forest_;  // compute: the segments and BVH nodes as the buffers hold them
+  // compute: the whole BVH built from forest_ on another thread, with its arrays already in
+  // staging buffers (declared after forest_: destroyed, and so waited for, first).
+  struct Consolidated {
+    TubeForest forest;
+    vk::Buffer segments, nodes;
+  };
+  std::future<Consolidated> consolidated_;
   AppendTimes appendTimes_;
   std::optional<vk::AabbScene> scene_;
   std::size_t segmentCount_ = 0;
@@ -149,7 +180,9 @@ class TubeRenderer {
   std::uint32_t frames_ = 0;
   std::optional<OrbitCamera> lastCamera_;
   std::optional<RenderSettings> lastSettings_;
-  std::optional<double> lastFrameSeconds_;
+  mutable std::optional<double> lastFrameSeconds_;
+  // The frame in flight (declared last: destroyed, and so waited for, before what it reads).
+  mutable vk::Submission frame_;
 };
 
 }  // namespace amrstream::render

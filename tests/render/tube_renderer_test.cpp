@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <random>
 
@@ -285,18 +286,24 @@ TEST_P(TubeRendererTest, StillFramesAccumulateAndAMovedCameraStartsAgain) {
   EXPECT_THROW(renderer.renderFrame(camera, settings), std::invalid_argument);
 }
 
+// `count` segments of a helix about the volume's axis (x = y = 16): `turn` radians and `rise` up
+// a segment, coloured from 0 to 1 along it.
+std::vector<shared::TubeSegment> helix(int count, float turn, float radius, float z0, float rise) {
+  std::vector<shared::TubeSegment> segments;
+  const auto at = [&](int i) {
+    const float t = turn * float(i);
+    return glm::vec3(16.0f + radius * std::cos(t), 16.0f + radius * std::sin(t), z0 + rise * i);
+  };
+  for (int i = 0; i < count; ++i)
+    segments.push_back({at(i), float(i) / float(count), at(i + 1), float(i + 1) / float(count)});
+  return segments;
+}
+
 // Tubes appended ten at a time (36 times, their structures merging as they go), and the same
 // made into one structure afterwards, render as the tubes set at once, pixel for pixel.
 TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
   const flow::VectorVolume volume = smallVolume();
-  std::vector<shared::TubeSegment> all;
-  for (int i = 0; i < 360; ++i) {
-    const float t = 0.05f * float(i);
-    const glm::vec3 a(16.0f + 10.0f * std::cos(t), 16.0f + 10.0f * std::sin(t), 4.0f + 0.07f * i);
-    const glm::vec3 b(16.0f + 10.0f * std::cos(t + 0.05f), 16.0f + 10.0f * std::sin(t + 0.05f),
-                      4.0f + 0.07f * (i + 1));
-    all.push_back({a, float(i) / 360.0f, b, float(i + 1) / 360.0f});
-  }
+  const std::vector<shared::TubeSegment> all = helix(360, 0.05f, 10.0f, 4.0f, 0.07f);
   const auto render = [&](const std::function<void(TubeRenderer&)>& set) {
     TubeRenderer renderer(ctx(), GetParam(), volume, {});
     set(renderer);
@@ -321,10 +328,65 @@ TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
     for (std::size_t n = 10; n < all.size(); n += 10)
       r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
     r.consolidateTubes();
+    EXPECT_EQ(r.tubeStructures(), 1u);
+  });
+  // compute builds the one BVH on another thread, keeping its chunks until it is put in place.
+  const Image inBackground = render([&](TubeRenderer& r) {
+    r.setTubes(std::span(all).first(10), 0.6f);
+    for (std::size_t n = 10; n < all.size(); n += 10)
+      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    const std::size_t appendedStructures = r.tubeStructures();
+    EXPECT_GT(appendedStructures, 1u);
+    r.consolidateTubes(true);
+    if (GetParam() == gpu::Backend::Compute) {
+      EXPECT_EQ(r.tubeStructures(), appendedStructures);
+    }
+    r.finishConsolidation();
+    EXPECT_EQ(r.tubeStructures(), 1u);
   });
   EXPECT_GT(describeContent(once).fractionNotBackground, 0.05);
   EXPECT_EQ(compareImages(appended, once, 0).maxAbsolute, 0);
   EXPECT_EQ(compareImages(consolidated, once, 0).maxAbsolute, 0);
+  EXPECT_EQ(compareImages(inBackground, once, 0).maxAbsolute, 0);
+}
+
+// A frame submitted without waiting renders the tubes as they stood: an append made meanwhile
+// (compute grows its BVH on the host during the frame) shows in the next frame.
+TEST_P(TubeRendererTest, AFrameInFlightShowsTheTubesBeforeAnAppend) {
+  const flow::VectorVolume volume = smallVolume();
+  const std::vector<shared::TubeSegment> all = helix(200, 0.08f, 9.0f, 6.0f, 0.1f);
+  const std::array<glm::vec3, 2> map{glm::vec3(0, 0, 1), glm::vec3(1, 0.5, 0)};
+  RenderSettings settings;
+  settings.tubeRadius = 0.6f;
+  settings.ambientOcclusion = false;
+  const OrbitCamera camera = frameBox(OrbitCamera{}, glm::vec3(0), glm::vec3(32), 1.5f);
+  const auto renderer = [&](std::span<const shared::TubeSegment> tubes) {
+    auto r = std::make_unique<TubeRenderer>(ctx(), GetParam(), volume, std::span<const float>());
+    r->setTubes(tubes, 0.6f);
+    r->setColourMap(map);
+    r->resize(96, 64);
+    return r;
+  };
+  const std::span<const shared::TubeSegment> before = std::span(all).first(100);
+  const Image expectedBefore = [&] {
+    auto r = renderer(before);
+    r->renderFrame(camera, settings);
+    return r->readImage();
+  }();
+  const Image expectedAfter = [&] {
+    auto r = renderer(all);
+    r->renderFrame(camera, settings);
+    return r->readImage();
+  }();
+  auto r = renderer(before);
+  r->submitFrame(camera, settings);
+  r->appendTubes(std::span(all).subspan(100), all, 0.6f);
+  const Image inFlight = r->readImage();
+  r->renderFrame(camera, settings);
+  const Image next = r->readImage();
+  EXPECT_GT(compareImages(expectedAfter, expectedBefore, 0).maxAbsolute, 0);
+  EXPECT_EQ(compareImages(inFlight, expectedBefore, 0).maxAbsolute, 0);
+  EXPECT_EQ(compareImages(next, expectedAfter, 0).maxAbsolute, 0);
 }
 
 std::string backendLabel(const ::testing::TestParamInfo<gpu::Backend>& info) {
