@@ -468,7 +468,6 @@ void vtpSeeds(const fs::path& corpus, const fs::path& scratch) {
 void seedFileSeeds(const fs::path& corpus, const fs::path& scratch) {
   flow::SeedList seeds;
   seeds.points = {{0.1, 0.2, 0.3}, {-1e-3, 5.0, 1e10}};
-  seeds.origins = {"a", "b"};
   output::writeSeedFile(scratch / "seeds.txt", seeds);
   writeSeed(corpus, "seeds", "written", readFile(scratch / "seeds.txt"));
   writeSeed(corpus, "seeds", "hand_made",

@@ -89,8 +89,7 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
     description = "given points";
     flow::SeedList seeds;
     seeds.points = request.points;
-    for (std::size_t i = 0; i < seeds.points.size(); ++i)
-      seeds.origins.push_back(fmt::format("seeds[{}]", i));
+    seeds.origin = [](std::size_t i) { return fmt::format("seeds[{}]", i); };
     return seeds;
   }
   if (!request.file.empty()) {

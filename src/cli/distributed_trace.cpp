@@ -20,10 +20,11 @@ namespace {
 
 flow::SeedList subset(const flow::SeedList& seeds, const std::vector<std::uint32_t>& indices) {
   flow::SeedList part;
-  for (const std::uint32_t i : indices) {
-    part.points.push_back(seeds.points[i]);
-    if (i < seeds.origins.size()) part.origins.push_back(seeds.origins[i]);
-  }
+  part.points.reserve(indices.size());
+  for (const std::uint32_t i : indices) part.points.push_back(seeds.points[i]);
+  part.origin = [origin = seeds.origin, indices](std::size_t i) {
+    return origin ? origin(indices[i]) : fmt::format("seed #{}", indices[i]);
+  };
   return part;
 }
 

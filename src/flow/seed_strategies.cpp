@@ -126,8 +126,8 @@ SeedList seedsAlongLine(glm::dvec3 from, glm::dvec3 to, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) {
     const double t = count == 1 ? 0.5 : double(i) / double(count - 1);
     seeds.points.push_back(from + t * (to - from));
-    seeds.origins.push_back(fmt::format("--seed-line point #{}", i));
   }
+  seeds.origin = [](std::size_t i) { return fmt::format("--seed-line point #{}", i); };
   return seeds;
 }
 
@@ -138,8 +138,11 @@ SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts) {
       for (int i = 0; i < counts.x; ++i) {
         const glm::dvec3 t = (glm::dvec3(i, j, k) + 0.5) / glm::dvec3(counts);
         seeds.points.push_back(lower + t * (upper - lower));
-        seeds.origins.push_back(fmt::format("--seed-grid point ({}, {}, {})", i, j, k));
       }
+  seeds.origin = [counts](std::size_t n) {
+    const std::size_t x = std::size_t(counts.x), y = std::size_t(counts.y);
+    return fmt::format("--seed-grid point ({}, {}, {})", n % x, n / x % y, n / (x * y));
+  };
   return seeds;
 }
 
@@ -174,9 +177,9 @@ SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::d
     const glm::dvec3 t(unitRandom(rng), unitRandom(rng), unitRandom(rng));
     const glm::dvec3 p = lower + t * (upper - lower);
     if (!insideACell(volume, volume.transform.toCellUnits(p))) continue;
-    seeds.origins.push_back(fmt::format("random seed #{}", seeds.points.size()));
     seeds.points.push_back(p);
   }
+  seeds.origin = [](std::size_t i) { return fmt::format("random seed #{}", i); };
   return seeds;
 }
 
@@ -210,6 +213,9 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
 
   std::mt19937_64 rng(options.seed);
   SeedList seeds;
+  std::vector<std::uint32_t> seedCells;
+  seeds.points.reserve(options.count);
+  seedCells.reserve(options.count);
   for (std::size_t n = 0; n < options.count; ++n) {
     std::size_t pick;
     if (options.weighted) {
@@ -226,8 +232,11 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
     const glm::dvec3 local(unitRandom(rng), unitRandom(rng), unitRandom(rng));
     const glm::dvec3 p = glm::dvec3(field.lowers()[cell]) + local * width;
     seeds.points.push_back(field.transform().toPhysical(p));
-    seeds.origins.push_back(fmt::format("densest-cell seed #{} (cell {})", n, cell));
+    seedCells.push_back(cell);
   }
+  seeds.origin = [cells = std::move(seedCells)](std::size_t n) {
+    return fmt::format("densest-cell seed #{} (cell {})", n, cells[n]);
+  };
   return seeds;
 }
 

@@ -1,8 +1,11 @@
 #include "seeds.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -47,6 +50,7 @@ std::string wholeSeedFile(const std::filesystem::path& path) {
 SeedList readSeedFile(const std::filesystem::path& path) {
   const std::string text = wholeSeedFile(path);
   SeedList seeds;
+  std::vector<std::uint32_t> lines;  // each seed's line
   std::size_t number = 0;
   for (std::size_t at = 0; at < text.size();) {
     const std::size_t end = std::min(text.find('\n', at), text.size());
@@ -57,24 +61,27 @@ SeedList readSeedFile(const std::filesystem::path& path) {
     for (char& c : line)
       if (c == ',' || c == '\t' || c == '\r') c = ' ';
     if (line.find_first_not_of(' ') == std::string::npos) continue;
-    const std::string where = fmt::format("{}:{}", path.string(), number);
+    const auto where = [&] { return fmt::format("{}:{}", path.string(), number); };
     glm::dvec3 p;
     char* cursor = line.data();
     for (int axis = 0; axis < 3; ++axis) {
       char* end = nullptr;
       p[axis] = std::strtod(cursor, &end);
       if (end == cursor)
-        throw InputError(where, fmt::format("expected three numbers 'x y z', got '{}'", line));
+        throw InputError(where(), fmt::format("expected three numbers 'x y z', got '{}'", line));
       cursor = end;
     }
     if (std::string_view(cursor).find_first_not_of(' ') != std::string_view::npos)
-      throw InputError(where, fmt::format("unexpected text after 'x y z': '{}'", cursor));
+      throw InputError(where(), fmt::format("unexpected text after 'x y z': '{}'", cursor));
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError(where, "the seed has a non-finite coordinate");
+      throw InputError(where(), "the seed has a non-finite coordinate");
     seeds.points.push_back(p);
-    seeds.origins.push_back(where);
+    lines.push_back(static_cast<std::uint32_t>(number));
   }
   if (seeds.points.empty()) throw InputError(path.string(), "the seeds file holds no seeds");
+  seeds.origin = [file = path.string(), lines = std::move(lines)](std::size_t i) {
+    return fmt::format("{}:{}", file, lines[i]);
+  };
   return seeds;
 }
 
@@ -87,8 +94,8 @@ SeedList randomSeedsInBox(glm::dvec3 lower, glm::dvec3 upper, std::size_t count,
   for (std::size_t i = 0; i < count; ++i) {
     const glm::dvec3 t(unit(), unit(), unit());
     seeds.points.push_back(lower + t * (upper - lower));
-    seeds.origins.push_back(fmt::format("random seed #{}", i));
   }
+  seeds.origin = [](std::size_t i) { return fmt::format("random seed #{}", i); };
   return seeds;
 }
 
@@ -107,23 +114,42 @@ void closeUpperFaces(const VectorVolume& volume, SeedList& seeds) {
       if (p[a] >= inside[a] && p[a] <= upper[a]) p[a] = std::min(p[a], inside[a]);
 }
 
+std::string SeedList::originOf(std::size_t i) const {
+  return origin ? origin(i) : fmt::format("seed #{}", i);
+}
+
 void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {
-  for (std::size_t i = 0; i < seeds.points.size(); ++i) {
-    const glm::dvec3 p = seeds.points[i];
-    const VectorSample sample = sampleVector(volume, toCellPoint(volume.transform.toCellUnits(p)));
-    if (sample.valid) continue;
-    if (sample.located)
-      throw InputError(seeds.origins[i],
-                       fmt::format("seed ({:g}, {:g}, {:g}) lies on the outer face of the data, "
-                                   "next to empty space, where no cell's tent function reaches: "
-                                   "move it into a cell",
-                                   p.x, p.y, p.z));
-    const glm::dvec3 lo = domainLower(volume), hi = domainUpper(volume);
-    throw InputError(seeds.origins[i],
-                     fmt::format("seed ({:g}, {:g}, {:g}) is outside the domain [{:g}, {:g}) x "
-                                 "[{:g}, {:g}) x [{:g}, {:g})",
-                                 p.x, p.y, p.z, lo.x, hi.x, lo.y, hi.y, lo.z, hi.z));
-  }
+  const auto sampleAt = [&](std::size_t i) {
+    return sampleVector(volume, toCellPoint(volume.transform.toCellUnits(seeds.points[i])));
+  };
+  // The first seed without a valid sample, found on all cores.
+  const std::size_t n = seeds.points.size();
+  std::atomic<std::size_t> first{n};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                        std::size_t known = first.load(std::memory_order_relaxed);
+                        if (i >= known) return;
+                        if (sampleAt(i).valid) continue;
+                        while (i < known && !first.compare_exchange_weak(known, i)) {
+                        }
+                        return;
+                      }
+                    });
+  const std::size_t i = first.load();
+  if (i == n) return;
+  const glm::dvec3 p = seeds.points[i];
+  if (sampleAt(i).located)
+    throw InputError(seeds.originOf(i),
+                     fmt::format("seed ({:g}, {:g}, {:g}) lies on the outer face of the data, "
+                                 "next to empty space, where no cell's tent function reaches: "
+                                 "move it into a cell",
+                                 p.x, p.y, p.z));
+  const glm::dvec3 lo = domainLower(volume), hi = domainUpper(volume);
+  throw InputError(seeds.originOf(i),
+                   fmt::format("seed ({:g}, {:g}, {:g}) is outside the domain [{:g}, {:g}) x "
+                               "[{:g}, {:g}) x [{:g}, {:g})",
+                               p.x, p.y, p.z, lo.x, hi.x, lo.y, hi.y, lo.z, hi.z));
 }
 
 }  // namespace amrstream::flow

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -13,7 +14,10 @@ namespace amrstream::flow {
 
 struct SeedList {
   std::vector<glm::dvec3> points;
-  std::vector<std::string> origins;  // per point, for errors: "seeds.txt:12", "--seed-box #3"
+  // Where point i came from, for errors ("seeds.txt:12", "random seed #3"), made only when an
+  // error names a point: millions of seeds cost no strings. Empty: "seed #i".
+  std::function<std::string(std::size_t)> origin;
+  std::string originOf(std::size_t i) const;
 };
 
 // One "x y z" per line, separated by spaces, tabs or commas; '#' starts a comment; blank lines

@@ -89,8 +89,7 @@ flow::SeedList seedListOf(py::handle seeds) {
   const std::size_t n = std::size_t(points.shape(0));
   list.points.resize(n);
   std::memcpy(list.points.data(), points.data(), n * sizeof(glm::dvec3));
-  list.origins.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) list.origins.push_back(fmt::format("seeds[{}]", i));
+  list.origin = [](std::size_t i) { return fmt::format("seeds[{}]", i); };
   return list;
 }
 

@@ -36,7 +36,7 @@ TEST(SeedFile, ReadsSpacesCommasTabsCommentsAndBlankLines) {
   EXPECT_EQ(seeds.points[0], glm::dvec3(1, 2, 3));
   EXPECT_EQ(seeds.points[1], glm::dvec3(4.5, 5, 0.6));
   EXPECT_EQ(seeds.points[2], glm::dvec3(7, 8, 9));
-  EXPECT_EQ(seeds.origins[1], path.string() + ":4");
+  EXPECT_EQ(seeds.originOf(1), path.string() + ":4");
 }
 
 TEST(SeedFile, RejectsMalformedLinesNamingTheLine) {
@@ -99,8 +99,23 @@ TEST(SeedCheck, NamesTheFirstSeedOutsideTheDomain) {
               HasSubstr(path.string() + ":3: seed (8, 1, 1) is outside the domain [0, 8) x"));
   SeedList inside;
   inside.points = {{0, 0, 0}, {7.99, 7.99, 7.99}};
-  inside.origins = {"a", "b"};
+  inside.origin = [](std::size_t i) { return std::string(i == 0 ? "a" : "b"); };
   EXPECT_NO_THROW(checkSeedsInDomain(volume, inside));
+}
+
+// The check runs on all cores; the seed it names is still the first outside, of many.
+TEST(SeedCheck, NamesTheFirstOfManySeedsOutside) {
+  const VectorVolume volume =
+      testing::volumeOf(testing::uniformGrid(8, [](auto) { return glm::vec3(1.0f); }));
+  SeedList seeds = randomSeedsInBox(glm::dvec3(0.5), glm::dvec3(7.5), 200000, 3);
+  seeds.points[150001] = {9, 1, 1};
+  seeds.points[70001] = {-1, 1, 1};
+  seeds.points[199999] = {1, 1, 20};
+  EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
+              HasSubstr("random seed #70001: seed (-1, 1, 1) is outside the domain"));
+  seeds.points[70001] = {1, 1, 1};
+  EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
+              HasSubstr("random seed #150001: seed (9, 1, 1)"));
 }
 
 TEST(SeedCheck, RefusesASeedWhereNoTentReachesSoNoSampleIsNaN) {
@@ -109,7 +124,7 @@ TEST(SeedCheck, RefusesASeedWhereNoTentReachesSoNoSampleIsNaN) {
   const VectorVolume volume = testing::volumeOf(testing::twoBlocksWithAGap());
   SeedList seeds;
   seeds.points = {{2.0, 2.0, 2.0}, {7.5, 2.0, 2.0}};
-  seeds.origins = {"a", "b"};
+  seeds.origin = [](std::size_t i) { return std::string(i == 0 ? "a" : "b"); };
   EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
               HasSubstr("b: seed (7.5, 2, 2) lies on the outer face of the data"));
 }
