@@ -186,8 +186,15 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
   const bricks::AmrField& cells = input.field();
   const RankReach reach = rankReach(input.volume, input.options, haloSteps, fastest);
   rank.halo = reach.halo;
-  rank.partition =
-      partition ? std::move(*partition) : dist::partitionCells(cells, world.size(), rank.halo);
+  if (partition) {
+    rank.partition = std::move(*partition);
+  } else {
+    // The whole input is here and so are the seeds: the cuts balance lines as well as cells.
+    std::vector<glm::dvec3> seedCells(input.seeds.points.size());
+    for (std::size_t i = 0; i < seedCells.size(); ++i)
+      seedCells[i] = cells.transform().toCellUnits(input.seeds.points[i]);
+    rank.partition = dist::partitionCells(cells, world.size(), rank.halo, seedCells);
+  }
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
   // origin.
   const glm::ivec3 shift = input.volume.domain.lower - cells.bounds().lower;

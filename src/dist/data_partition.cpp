@@ -76,57 +76,78 @@ std::vector<std::int64_t> planeCounts(Centres::iterator first, Centres::iterator
   return counts;
 }
 
-// The cut, on any axis, that makes the larger of the two sides' cells per part smallest, each
-// side counted with the cells within `halo` finest cells of the cut that it will hold as well:
-// a cut through sparse cells costs less halo than one through a dense filament.
-Cut haloAwareCut(Centres::iterator first, Centres::iterator last, glm::ivec3 lower,
-                 glm::ivec3 upper, int leftParts, int parts, double halo) {
+// The cells of a box, and the seeds in it.
+struct InBox {
+  Centres::iterator first, last, firstSeed, lastSeed;
+};
+
+// The cut, on any axis, that makes the larger of the two sides' loads smallest. A side's load is
+// its share of the cells per part, counting the cells within `halo` finest cells of the cut that
+// it will hold as well (a cut through sparse cells costs less halo than one through a dense
+// filament), or its share of the seeds per part when that is larger.
+Cut haloAwareCut(const InBox& in, glm::ivec3 lower, glm::ivec3 upper, int leftParts, int parts,
+                 double halo) {
   const glm::ivec3 extent = upper - lower;
   if (halo <= 0.0 || glm::any(glm::greaterThan(extent, glm::ivec3(kMaxPlanes))))
-    return medianCut(first, last, lower, upper, leftParts, parts);
+    return medianCut(in.first, in.last, lower, upper, leftParts, parts);
   const std::int64_t reach = std::int64_t(std::ceil(halo));
-  const double total = double(last - first);
+  const double total = double(in.last - in.first), seeds = double(in.lastSeed - in.firstSeed);
+  const double leftShare = double(leftParts) / parts, rightShare = 1.0 - leftShare;
   Cut best;
   double bestCost = std::numeric_limits<double>::infinity();
   for (int axis = 0; axis < 3; ++axis) {
     const int planes = extent[axis];
     if (planes < 2) continue;
-    // below[i]: centres below plane lower + i.
-    std::vector<std::int64_t> below = planeCounts(first, last, axis, lower[axis], planes);
-    for (std::size_t i = 1; i < below.size(); ++i) below[i] += below[i - 1];
+    // below[i]: centres below plane lower + i; seedsBelow[i] the same for the seeds.
+    std::vector<std::int64_t> below = planeCounts(in.first, in.last, axis, lower[axis], planes);
+    std::vector<std::int64_t> seedsBelow =
+        planeCounts(in.firstSeed, in.lastSeed, axis, lower[axis], planes);
+    for (std::size_t i = 1; i < below.size(); ++i) {
+      below[i] += below[i - 1];
+      seedsBelow[i] += seedsBelow[i - 1];
+    }
     for (int i = 1; i < planes; ++i) {
       const double left = double(below[std::size_t(std::min<std::int64_t>(i + reach, planes))]);
       const double right = total - double(below[std::size_t(std::max<std::int64_t>(i - reach, 0))]);
-      const double cost = std::max(left / leftParts, right / (parts - leftParts));
+      double cost = std::max(left / leftParts, right / (parts - leftParts));
+      if (seeds > 0.0) {
+        const double seedsLeft = double(seedsBelow[std::size_t(i)]);
+        cost =
+            std::max({left / (total * leftShare), right / (total * rightShare),
+                      seedsLeft / (seeds * leftShare), (seeds - seedsLeft) / (seeds * rightShare)});
+      }
       if (cost < bestCost) {
         bestCost = cost;
         best = {axis, lower[axis] + i};
       }
     }
   }
-  if (!std::isfinite(bestCost)) return medianCut(first, last, lower, upper, leftParts, parts);
+  if (!std::isfinite(bestCost)) return medianCut(in.first, in.last, lower, upper, leftParts, parts);
   return best;
 }
 
-void bisect(Centres::iterator first, Centres::iterator last, glm::ivec3 lower, glm::ivec3 upper,
-            int firstPart, int parts, double halo, DataPartition& partition) {
+void bisect(const InBox& in, glm::ivec3 lower, glm::ivec3 upper, int firstPart, int parts,
+            double halo, DataPartition& partition) {
   if (parts == 1) {
     partition.lower[std::size_t(firstPart)] = lower;
     partition.upper[std::size_t(firstPart)] = upper;
     return;
   }
   const int leftParts = parts / 2;
-  const Cut cut = haloAwareCut(first, last, lower, upper, leftParts, parts, halo);
+  const Cut cut = haloAwareCut(in, lower, upper, leftParts, parts, halo);
   const int axis = cut.axis, split = cut.plane;
-  const auto below = std::partition(first, last, [axis, split](const glm::i64vec3& c) {
+  const auto isBelow = [axis, split](const glm::i64vec3& c) {
     return c[axis] < 2 * std::int64_t(split);
-  });
+  };
+  const auto below = std::partition(in.first, in.last, isBelow);
+  const auto seedsBelow = std::partition(in.firstSeed, in.lastSeed, isBelow);
   glm::ivec3 leftUpper = upper, rightLower = lower;
   leftUpper[axis] = split;
   rightLower[axis] = split;
-  bisect(first, below, lower, leftUpper, firstPart, leftParts, halo, partition);
-  bisect(below, last, rightLower, upper, firstPart + leftParts, parts - leftParts, halo,
+  bisect({in.first, below, in.firstSeed, seedsBelow}, lower, leftUpper, firstPart, leftParts, halo,
          partition);
+  bisect({below, in.last, seedsBelow, in.lastSeed}, rightLower, upper, firstPart + leftParts,
+         parts - leftParts, halo, partition);
 }
 
 }  // namespace
@@ -146,7 +167,8 @@ int DataPartition::ownerOf(glm::dvec3 p) const {
   return best;
 }
 
-DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo) {
+DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo,
+                             std::span<const glm::dvec3> seeds) {
   Centres centres(field.cellCount());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, centres.size(), std::size_t(1) << 16),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -154,12 +176,17 @@ DataPartition partitionCells(const bricks::AmrField& field, int parts, double ha
                         centres[i] = std::int64_t(2) * glm::i64vec3(field.lowers()[i]) +
                                      (std::int64_t(1) << field.levels()[i]);
                     });
+  // A seed as a centre: its finest cell's doubled centre, so that it falls on the same side of a
+  // cut as the cell holding it.
+  Centres seedCentres(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    seedCentres[i] = std::int64_t(2) * glm::i64vec3(glm::floor(seeds[i])) + std::int64_t(1);
   DataPartition partition;
   partition.lower.resize(std::size_t(std::max(parts, 1)));
   partition.upper.resize(partition.lower.size());
   const bricks::CellBox bounds = field.bounds();
-  bisect(centres.begin(), centres.end(), bounds.lower, bounds.upper, 0, partition.parts(), halo,
-         partition);
+  bisect({centres.begin(), centres.end(), seedCentres.begin(), seedCentres.end()}, bounds.lower,
+         bounds.upper, 0, partition.parts(), halo, partition);
   return partition;
 }
 

@@ -5,6 +5,7 @@
 // cells within the halo of the cut that its ranks will hold too; so cuts avoid dense regions.
 
 #include <glm/glm.hpp>
+#include <span>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
@@ -22,6 +23,10 @@ struct DataPartition {
 
 // Deterministic: every rank computes the same partition from the same cells. `halo`: finest
 // cells each rank holds beyond its box (0: cut through the median cell of the longest axis).
-DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo);
+// With `seeds` (the field's cell units) and a halo, a side's load is the larger of its shares of
+// the cells and of the seeds, each per part: where seeds crowd, the cuts trade balanced memory
+// for balanced lines, as far as the cells' balance gets no worse than the seeds'.
+DataPartition partitionCells(const bricks::AmrField& field, int parts, double halo,
+                             std::span<const glm::dvec3> seeds = {});
 
 }  // namespace amrstream::dist

@@ -33,6 +33,14 @@ std::size_t cellsHeld(const bricks::AmrField& f, glm::ivec3 lower, glm::ivec3 up
   return held;
 }
 
+// A cloud of about 200,000 cells in 4 levels.
+bricks::AmrField smallCloud() {
+  synth::GeneratorOptions g;
+  g.levels = 4;
+  g.targetCells = 200'000;
+  return synth::generate("cloud", g);
+}
+
 TEST(DataPartition, BoxesTileTheDomain) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed)
     for (const int parts : {1, 2, 3, 5})
@@ -62,10 +70,7 @@ TEST(DataPartition, BoxesTileTheDomain) {
 }
 
 TEST(DataPartition, CutsAvoidDenseCellsWhenRanksHoldAHalo) {
-  synth::GeneratorOptions g;
-  g.levels = 4;
-  g.targetCells = 200'000;
-  const bricks::AmrField f = synth::generate("cloud", g);
+  const bricks::AmrField f = smallCloud();
   const double halo = 20.0;
   const DataPartition median = partitionCells(f, 2, 0.0);
   const std::size_t left = cellsHeld(f, median.lower[0], median.upper[0], 0.0);
@@ -76,6 +81,40 @@ TEST(DataPartition, CutsAvoidDenseCellsWhenRanksHoldAHalo) {
                     cellsHeld(f, p.lower[1], p.upper[1], halo));
   };
   EXPECT_LE(largest(aware), largest(median));
+}
+
+// With seeds, a side's load is the larger of its shares of cells (halo included) and of seeds:
+// when every seed lies in one part of the cells-only cut, the cut moves so that this load is
+// smaller than the cells-only cut's; without seeds the partition is the cells-only one.
+TEST(DataPartition, SeedsWeighTheCutAsMuchAsCells) {
+  const bricks::AmrField f = smallCloud();
+  const double halo = 20.0;
+  const DataPartition cellsOnly = partitionCells(f, 2, halo);
+  const glm::dvec3 lower(cellsOnly.lower[0]), extent = glm::dvec3(cellsOnly.upper[0]) - lower;
+  std::vector<glm::dvec3> seeds;
+  for (int i = 0; i < 4000; ++i) {
+    const double t = (double(i) + 0.5) / 4000.0;
+    seeds.push_back(lower + extent * glm::dvec3(0.1 + 0.8 * t, 0.1 + 0.8 * (1.0 - t), 0.5));
+  }
+  const auto load = [&](const DataPartition& p) {
+    double most = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      std::size_t inside = 0;
+      for (const glm::dvec3& s : seeds)
+        inside += glm::all(glm::greaterThanEqual(s, glm::dvec3(p.lower[k]))) &&
+                  glm::all(glm::lessThan(s, glm::dvec3(p.upper[k])));
+      const double cells = double(cellsHeld(f, p.lower[k], p.upper[k], halo));
+      most = std::max({most, cells / (0.5 * double(f.cellCount())),
+                       double(inside) / (0.5 * double(seeds.size()))});
+    }
+    return most;
+  };
+  const DataPartition weighted = partitionCells(f, 2, halo, seeds);
+  EXPECT_DOUBLE_EQ(load(cellsOnly), 2.0);  // every seed on one side
+  EXPECT_LT(load(weighted), 1.9);
+  const DataPartition none = partitionCells(f, 2, halo, {});
+  EXPECT_EQ(none.lower, cellsOnly.lower);
+  EXPECT_EQ(none.upper, cellsOnly.upper);
 }
 
 // Over a million cells the planes' counts are taken in parallel pieces: the cut of two parts
