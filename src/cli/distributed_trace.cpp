@@ -22,8 +22,8 @@ flow::SeedList subset(const flow::SeedList& seeds, const std::vector<std::uint32
   flow::SeedList part;
   part.points.reserve(indices.size());
   for (const std::uint32_t i : indices) part.points.push_back(seeds.points[i]);
-  part.origin = [origin = seeds.origin, indices](std::size_t i) {
-    return origin ? origin(indices[i]) : fmt::format("seed #{}", indices[i]);
+  part.origin = [all = flow::SeedList{{}, seeds.origin}, indices](std::size_t i) {
+    return all.originOf(indices[i]);
   };
   return part;
 }

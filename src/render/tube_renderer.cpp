@@ -322,7 +322,11 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
 
 void TubeRenderer::consolidateTubes(bool inBackground) {
   if (kernel_.backend == gpu::Backend::Compute) {
-    if (forest_.chunks() <= 1 || consolidated_.valid()) return;
+    if (consolidated_.valid()) {  // one is being built already
+      if (!inBackground) adoptConsolidated(true);
+      return;
+    }
+    if (forest_.chunks() <= 1) return;
     if (inBackground) {
       // forest_ stays as it is until the result is adopted or dropped (both wait for the task).
       // Making and filling buffers is free-threaded; recording and submitting are left to

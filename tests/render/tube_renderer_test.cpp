@@ -344,10 +344,20 @@ TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
     r.finishConsolidation();
     EXPECT_EQ(r.tubeStructures(), 1u);
   });
+  // Asked for at once while one is being built, the consolidation waits for that one.
+  const Image thenAtOnce = render([&](TubeRenderer& r) {
+    r.setTubes(std::span(all).first(10), 0.6f);
+    for (std::size_t n = 10; n < all.size(); n += 10)
+      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    r.consolidateTubes(true);
+    r.consolidateTubes();
+    EXPECT_EQ(r.tubeStructures(), 1u);
+  });
   EXPECT_GT(describeContent(once).fractionNotBackground, 0.05);
   EXPECT_EQ(compareImages(appended, once, 0).maxAbsolute, 0);
   EXPECT_EQ(compareImages(consolidated, once, 0).maxAbsolute, 0);
   EXPECT_EQ(compareImages(inBackground, once, 0).maxAbsolute, 0);
+  EXPECT_EQ(compareImages(thenAtOnce, once, 0).maxAbsolute, 0);
 }
 
 // A frame submitted without waiting renders the tubes as they stood: an append made meanwhile
