@@ -45,6 +45,7 @@ nlohmann::json toJson(const BackendSetup& s) {
           {"structure_seconds", s.structureSeconds},
           {"pipeline_seconds", s.pipelineSeconds},
           {"region_hint", s.regionHint},
+          {"dual_values", s.dualValues},
           {"volume_bytes", s.volumeBytes},
           {"structure_bytes", s.structureBytes}};
 }
@@ -80,6 +81,7 @@ nlohmann::json toJson(const BenchConfig& c) {
           {"step_mode", stepMode},
           {"step_size", c.trace.stepSize},
           {"region_hint", c.regionHint ? nlohmann::json(*c.regionHint) : nlohmann::json("default")},
+          {"dual_values", c.dualValues ? nlohmann::json(*c.dualValues) : nlohmann::json("default")},
           {"seed_order", c.spatialSeedOrder ? "spatial" : "given"},
           {"validation", c.validation}};
 }
@@ -103,9 +105,10 @@ std::string tableRow(const BenchRow& r) {
 std::string setupLine(const BackendSetup& s) {
   return fmt::format(
       "{:<9} on {} ({}): context {:.2f} s, upload {:.2f} s ({:.1f} MiB), structure {:.2f} s "
-      "({:.1f} MiB), pipeline {:.2f} s; region hint {}\n",
+      "({:.1f} MiB), pipeline {:.2f} s; region hint {}, dual values {}\n",
       s.backend, s.device, s.driver, s.contextSeconds, s.uploadSeconds, mib(s.volumeBytes),
-      s.structureSeconds, mib(s.structureBytes), s.pipelineSeconds, s.regionHint ? "on" : "off");
+      s.structureSeconds, mib(s.structureBytes), s.pipelineSeconds, s.regionHint ? "on" : "off",
+      s.dualValues ? "on" : "off");
 }
 
 void writeJson(const std::filesystem::path& path, const BenchReport& report) {

@@ -165,10 +165,12 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
   setup.contextSeconds = clock.seconds();
   gpu::KernelSettings settings = gpu::defaultKernelSettings(backend);
   if (config.regionHint) settings.useRegionHint = *config.regionHint;
+  if (config.dualValues) settings.dualValues = *config.dualValues;
   gpu::GpuTracer tracer(*ctx, backend, volume, settings);
   tracer.orderSeedsSpatially(config.spatialSeedOrder);
   tracer.timeKernels(true);
   setup.regionHint = settings.useRegionHint;
+  setup.dualValues = tracer.settings().dualValues.value_or(false);
   setup.uploadSeconds = tracer.setup().uploadSeconds;
   setup.structureSeconds = tracer.setup().structureSeconds;
   setup.pipelineSeconds = tracer.setup().pipelineSeconds;

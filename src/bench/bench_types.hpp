@@ -21,6 +21,7 @@ struct BenchConfig {
   flow::TraceOptions trace;              // keepHistory is set per row
   std::optional<bool> regionHint;        // GPU kernels test the previous region first; none:
                                          // each backend's default (gpu::defaultKernelSettings)
+  std::optional<bool> dualValues;        // GPU kernels read dual cells; none: the default
   bool spatialSeedOrder = true;          // GPU threads take seeds in Morton order (GpuTracer)
   std::string deviceFilter;              // a substring of the Vulkan device's name
   unsigned deviceSlot = 0;               // which qualifying device (vk::ContextBuilder)
@@ -56,6 +57,7 @@ struct BackendSetup {
   double structureSeconds = 0.0;  // region tree upload, or acceleration structure build
   double pipelineSeconds = 0.0;
   bool regionHint = false;
+  bool dualValues = false;
   std::uint64_t volumeBytes = 0;
   std::uint64_t structureBytes = 0;
 };

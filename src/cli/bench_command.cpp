@@ -51,6 +51,7 @@ struct BenchCommandOptions {
   std::uint64_t seed = 1;
   std::string device;
   std::string regionHint = "default";
+  std::string dualValues = "default";
   std::string seedOrder = "spatial";
   std::string json = "bench.json";
   std::string commandLine;
@@ -117,6 +118,7 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.direction = flow::Direction::Forward;  // the paper's experiment
   config.deviceFilter = o.device;
   if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
+  if (o.dualValues != "default") config.dualValues = o.dualValues == "on";
   config.spatialSeedOrder = o.seedOrder == "spatial";
   config.validation = validationRequested();
   return config;
@@ -329,6 +331,13 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
       ->add_option("--region-hint", options->regionHint,
                    "GPU samples test the previous sample's region before locating: on, off "
                    "(every sample runs the point location) or each backend's default (on)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"default", "on", "off"}));
+  command
+      ->add_option("--dual-values", options->dualValues,
+                   "GPU kernels read the vector as dual cells, the 8 values of each 2x2x2 block "
+                   "of a brick together (8 times the values' memory; tent interpolant): on, off "
+                   "or the default")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "on", "off"}));
   command

@@ -32,6 +32,33 @@ std::vector<shared::LineState> threadOrder(std::span<const shared::LineState> li
   return ordered;
 }
 
+VkDeviceSize largestDeviceHeap(const vk::Context& ctx) {
+  VkDeviceSize bytes = 0;
+  const VkPhysicalDeviceMemoryProperties& memory = ctx.memoryProperties();
+  for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      bytes = std::max(bytes, memory.memoryHeaps[i].size);
+  return bytes;
+}
+
+// The largest device-local heap, or the memory ledger's limit where that is less.
+VkDeviceSize deviceLocalBytes(const vk::Context& ctx) {
+  const VkDeviceSize heap = largestDeviceHeap(ctx);
+  const std::optional<VkDeviceSize> limit = ctx.memoryLedger().limit();
+  return limit ? std::min(heap, *limit) : heap;
+}
+
+// Dual cells take 8 times the values' memory (10 times with their padding on the cloud); they
+// make samples faster where one line's latency or the ray tracing pipeline bounds the kernel
+// (docs/benchmarks.md).
+bool useDualValues(const vk::Context& ctx, const flow::VectorVolume& volume,
+                   std::optional<bool> asked) {
+  if (!asked.value_or(ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)) return false;
+  if (!VolumeBuffers::canHoldDualValues(volume)) return false;
+  const std::uint64_t bytes = VolumeBuffers::dualValueBytes(volume);
+  return bytes <= ctx.limits().maxStorageBufferRange && bytes <= deviceLocalBytes(ctx) / 8;
+}
+
 Backend gpuBackend(Backend backend) {
   if (backend == Backend::Cpu) throw std::invalid_argument("GpuTracer: cpu is not a GPU backend");
   return backend;
@@ -47,9 +74,11 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
     : ctx_(&ctx),
       volume_(&volume),
       staging_(std::make_unique<StagingRing>(ctx)),
-      device_(ctx, gpuBackend(backend), volume, setup_),
+      device_(ctx, gpuBackend(backend), volume, setup_,
+              useDualValues(ctx, volume, settings.dualValues)),
       settings_(settings) {
   settings_.deepPositions = volume.deepPositions();
+  settings_.dualValues = device_.dualValues.size() > 0;
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
   roundKernels_ = createRoundKernels(ctx);
@@ -75,11 +104,7 @@ flow::RoundCosts GpuTracer::roundCosts(const flow::TraceOptions& options) const 
   flow::RoundCosts costs = RoundBuffers::costs(volume_->channelCount(), options.vorticity);
   // Device memory is quick to make; the host's share is the staging ring's few pinned slots.
   // Longer rounds mean fewer runs of points per line for the host to keep track of.
-  VkDeviceSize deviceLocal = 0;
-  const VkPhysicalDeviceMemoryProperties& memory = ctx_->memoryProperties();
-  for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-      deviceLocal = std::max(deviceLocal, memory.memoryHeaps[i].size);
+  const VkDeviceSize deviceLocal = largestDeviceHeap(*ctx_);
   costs.mostBudget = std::min<std::uint64_t>(std::uint64_t(8) << 30, deviceLocal / 4);
   // A software device's memory is the host's, which the collected traces need.
   if (ctx_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
@@ -196,13 +221,7 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
 }
 
 bool GpuTracer::fitsOnDevice(const flow::TraceOptions& options, std::size_t lines) const {
-  VkDeviceSize heap = 0;
-  const VkPhysicalDeviceMemoryProperties& memory = ctx_->memoryProperties();
-  for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-      heap = std::max(heap, memory.memoryHeaps[i].size);
-  if (const std::optional<VkDeviceSize> limit = ctx_->memoryLedger().limit())
-    heap = std::min(heap, *limit);
+  const VkDeviceSize heap = deviceLocalBytes(*ctx_);
   const std::uint64_t rounds =
       options.memoryBudget > 0 ? options.memoryBudget : roundCosts(options).mostBudget;
   const std::uint64_t taken = ctx_->memoryLedger().used() + rounds;

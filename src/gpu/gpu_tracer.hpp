@@ -102,6 +102,9 @@ class GpuTracer {
 
   Backend backend() const { return kernel_.backend; }
   const TracerSetup& setup() const { return setup_; }
+  // The kernels' settings, as the volume allowed them (dual values only where it holds them).
+  const KernelSettings& settings() const { return settings_; }
+  const VolumeBuffers& volumeBuffers() const { return device_; }
   const TraceRunStats& lastRun() const { return lastRun_; }
   void resetRunStats() { lastRun_ = {}; }
   // Lines one batch of trace() holds for these options.

@@ -41,18 +41,21 @@ void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
 
 // The kernels' specialization constants: 0 the workgroup size (compute kernels), 1 whether
 // samples test the previous region first (include/sampler.glsl), 2 the integrator
-// (include/line_round.glsl), 3 deep positions (include/sampler.glsl).
+// (include/line_round.glsl), 3 deep positions (include/sampler.glsl), 4 dual values
+// (include/sampler.glsl).
 struct SpecializationValues {
   std::uint32_t workgroupSize;
   VkBool32 useRegionHint;
   std::int32_t integrator;
   VkBool32 deepPositions;
+  VkBool32 dualValues;
 };
-constexpr std::array<VkSpecializationMapEntry, 4> kSpecializationEntries{
+constexpr std::array<VkSpecializationMapEntry, 5> kSpecializationEntries{
     {{0, offsetof(SpecializationValues, workgroupSize), sizeof(std::uint32_t)},
      {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)},
      {2, offsetof(SpecializationValues, integrator), sizeof(std::int32_t)},
-     {3, offsetof(SpecializationValues, deepPositions), sizeof(VkBool32)}}};
+     {3, offsetof(SpecializationValues, deepPositions), sizeof(VkBool32)},
+     {4, offsetof(SpecializationValues, dualValues), sizeof(VkBool32)}}};
 
 void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
                            std::span<const std::uint32_t> code, const KernelSettings& settings) {
@@ -60,7 +63,7 @@ void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
       std::min(kPreferredWorkgroupSize, ctx.limits().maxComputeWorkGroupInvocations);
   const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint,
                                     static_cast<std::int32_t>(settings.integrator),
-                                    settings.deepPositions};
+                                    settings.deepPositions, settings.dualValues.value_or(false)};
   const VkSpecializationInfo specialization{kSpecializationEntries.size(),
                                             kSpecializationEntries.data(), sizeof(values), &values};
   kernel.pipeline = vk::createComputePipeline(
@@ -73,8 +76,9 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
                               const KernelSettings& settings) {
   const SpecializationValues values{0, settings.useRegionHint,
                                     static_cast<std::int32_t>(settings.integrator),
-                                    settings.deepPositions};
-  const VkSpecializationInfo specialization{3, &kSpecializationEntries[1], sizeof(values), &values};
+                                    settings.deepPositions, settings.dualValues.value_or(false)};
+  const VkSpecializationInfo specialization{kSpecializationEntries.size() - 1,
+                                            &kSpecializationEntries[1], sizeof(values), &values};
   vk::RayTracingPipeline created = vk::createProceduralRayTracingPipeline(
       ctx, kernel.pipelineLayout.get(),
       {raygen, spirv(amrstream_spirv_locate_rmiss), spirv(amrstream_spirv_locate_rint),

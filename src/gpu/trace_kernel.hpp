@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 
 #include "backend.hpp"
 #include "flow/integrator.hpp"
@@ -49,6 +50,11 @@ struct KernelSettings {
   // Anchors follow the lines (VectorVolume::deepPositions; include/line_round.glsl); off, the
   // anchor stays at zero and the kernel keeps float cell units, as the CPU then does.
   bool deepPositions = false;
+  // The tracing kernel reads the vector as dual cells, the 8 values of each 2x2x2 block of a
+  // brick together (VolumeBuffers::dualValues), where GpuTracer finds that they fit: the tent
+  // interpolant, one storage buffer binding, and an eighth of the device's memory. Unset: on
+  // GPUs only (on a CPU device such as lavapipe they are slower).
+  std::optional<bool> dualValues;
 };
 
 // The settings each backend runs with unless told otherwise: the region hint on everywhere.

@@ -1,15 +1,17 @@
 #include "volume_buffers.hpp"
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
-#include <fmt/format.h>
-
+#include "device_upload.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
-#include "device_upload.hpp"
 
 namespace amrstream::gpu {
 
@@ -57,10 +59,68 @@ void fillLinearCells(const flow::VectorVolume& volume, std::size_t first,
   });
 }
 
+constexpr std::uint32_t kCorners = 8;
+
+std::uint64_t dualCellsOf(const shared::Brick& brick) {
+  return std::uint64_t(brick.size.x + 1) * std::uint64_t(brick.size.y + 1) *
+         std::uint64_t(brick.size.z + 1);
+}
+
+// Each brick's first dual cell, and after the last brick the total.
+std::vector<std::uint64_t> dualOffsets(const flow::VectorVolume& volume) {
+  std::vector<std::uint64_t> offsets(volume.bricks.size() + 1, 0);
+  for (std::size_t b = 0; b < volume.bricks.size(); ++b)
+    offsets[b + 1] = offsets[b] + dualCellsOf(volume.bricks[b]);
+  return offsets;
+}
+
+// Elements [first, first + out.size()) of the dual values: element e is corner e % 8 of dual
+// cell e / 8.
+void fillDualValues(const flow::VectorVolume& volume, std::span<const std::uint64_t> offsets,
+                    std::size_t first, std::span<glm::vec4> out) {
+  if (first % kCorners != 0 || out.size() % kCorners != 0)
+    throw std::logic_error("fillDualValues: a range must hold whole dual cells");
+  const std::uint64_t firstCell = first / kCorners;
+  const std::uint64_t endCell = (first + out.size()) / kCorners;
+  tbb::parallel_for(firstCell, endCell, [&](std::uint64_t cell) {
+    const std::size_t b =
+        std::size_t(std::upper_bound(offsets.begin(), offsets.end(), cell) - offsets.begin()) - 1;
+    const shared::Brick& brick = volume.bricks[b];
+    const std::uint64_t d = cell - offsets[b];
+    const glm::ivec3 dims = brick.size + 1;
+    const glm::ivec3 base = glm::ivec3(int(d % dims.x), int(d / dims.x % dims.y),
+                                       int(d / (std::uint64_t(dims.x) * dims.y))) -
+                            1;
+    glm::vec4* corners = out.data() + (cell * kCorners - first);
+    for (std::uint32_t corner = 0; corner < kCorners; ++corner) {
+      const glm::ivec3 c = base + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      const bool inside = glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) &&
+                          glm::all(glm::lessThan(c, brick.size));
+      corners[corner] = inside
+                            ? glm::vec4(volume.values[brick.valueOffset + c.x +
+                                                      std::size_t(brick.size.x) *
+                                                          (c.y + std::size_t(brick.size.y) * c.z)],
+                                        0.0f)
+                            : glm::vec4(0.0f);
+    }
+  });
+}
+
 }  // namespace
 
+bool VolumeBuffers::canHoldDualValues(const flow::VectorVolume& volume) {
+  return volume.interpolant == flow::Interpolant::Tent &&
+         dualOffsets(volume).back() * kCorners <= std::numeric_limits<std::uint32_t>::max();
+}
+
+std::uint64_t VolumeBuffers::dualValueBytes(const flow::VectorVolume& volume) {
+  return dualOffsets(volume).back() * kCorners * sizeof(glm::vec4) +
+         volume.regions.regionBricks.size() * sizeof(shared::Brick);
+}
+
 VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
-                             const flow::VectorVolume& volume, TracerSetup& setup) {
+                             const flow::VectorVolume& volume, TracerSetup& setup,
+                             bool withDualValues) {
   // The pipeline's intersection shader sees only the ray's float origin (locate_pipeline.glsl).
   const glm::ivec3 extent = volume.period();
   if (backend == Backend::Pipeline && glm::any(glm::greaterThan(extent, glm::ivec3(1 << 22))))
@@ -99,10 +159,27 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
         tbb::parallel_for(std::size_t(0), out.size(),
                           [&](std::size_t i) { out[i] = volume.bricks[ids[first + i]]; });
       });
+  if (withDualValues) {
+    if (!canHoldDualValues(volume))
+      throw std::logic_error("VolumeBuffers: the volume's dual cells cannot be laid out");
+    const std::vector<std::uint64_t> offsets = dualOffsets(volume);
+    dualValues = uploader.upload<glm::vec4>(offsets.back() * kCorners, kStorage, "dual values",
+                                            [&](std::size_t first, std::span<glm::vec4> out) {
+                                              fillDualValues(volume, offsets, first, out);
+                                            });
+    dualRegionBricks = uploader.upload<shared::Brick>(
+        ids.size(), kStorage, "dual region bricks",
+        [&](std::size_t first, std::span<shared::Brick> out) {
+          tbb::parallel_for(std::size_t(0), out.size(), [&](std::size_t i) {
+            out[i] = volume.bricks[ids[first + i]];
+            out[i].valueOffset = static_cast<std::uint32_t>(offsets[ids[first + i]]);
+          });
+        });
+  }
   setup.uploadSeconds = clock.seconds();
   setup.volumeBytes = bricks.size() + values.size() + channelValues.size() +
                       vectorGradients.size() + channelGradients.size() + regions.size() +
-                      regionBricks.size();
+                      regionBricks.size() + dualValues.size() + dualRegionBricks.size();
 
   clock.restart();
   if (backend == Backend::Compute) {

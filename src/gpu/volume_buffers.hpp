@@ -24,8 +24,15 @@ struct TracerSetup {
 };
 
 struct VolumeBuffers {
+  // With `dualValues`, also the vector as dual cells (below); canHoldDualValues() must hold.
   VolumeBuffers(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
-                TracerSetup& setup);
+                TracerSetup& setup, bool dualValues = false);
+
+  // Whether the volume's dual cells can be laid out: the tent interpolant, and slots that fit
+  // the kernels' 32-bit indices.
+  static bool canHoldDualValues(const flow::VectorVolume& volume);
+  // The device bytes of the dual cells and their region brick records.
+  static std::uint64_t dualValueBytes(const flow::VectorVolume& volume);
 
   // The binding of the point-location structure.
   vk::DescriptorTarget locateTarget() const;
@@ -39,6 +46,12 @@ struct VolumeBuffers {
   // The regions' brick lists (RegionSet::regionBricks) with each brick's record in place of its
   // index, so that a sample reads a brick in one load instead of two dependent ones.
   vk::Buffer regionBricks;
+  // The vector as dual cells, for the tracing kernels (KernelSettings::dualValues): brick by
+  // brick, one cell per base cell b in [-1, size)^3 holding the 8 values of the cells b + {0,1}^3
+  // as vec4 (zero outside the brick), 128 bytes together; and the region brick records with each
+  // valueOffset counting those cells. Empty unless asked for.
+  vk::Buffer dualValues;
+  vk::Buffer dualRegionBricks;
   vk::Buffer tree;                     // compute backend
   std::optional<vk::AabbScene> scene;  // rayquery and pipeline backends
 };

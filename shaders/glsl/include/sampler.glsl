@@ -6,9 +6,14 @@
 
 const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
+// Specialization constant 4: the tracing kernels' values and region brick records are dual
+// cells (VolumeBuffers::dualValues); the tent interpolant only.
+layout(constant_id = 4) const bool kDualValues = false;
+
 #define TENT_TYPE vec3
 #define TENT_BRICK(i) regionBrickRecords[i]
 #define TENT_VALUE(slot) values[slot].xyz
+#define TENT_DUAL_VALUES kDualValues
 #define TENT_FUNCTION reconstructVector
 #include "tent_reconstruction.glsl"
 #undef TENT_FUNCTION
