@@ -112,9 +112,10 @@ class CpuRoundTracer final : public RoundTracer {
 }  // namespace
 
 std::unique_ptr<RoundTracer> cpuRoundTracer(const VectorVolume& volume,
-                                            std::vector<shared::LineState> lines,
+                                            std::span<const shared::LineState> lines,
                                             const TraceOptions& options) {
-  return std::make_unique<CpuRoundTracer>(volume, std::move(lines), options, [] {});
+  return std::make_unique<CpuRoundTracer>(
+      volume, std::vector<shared::LineState>(lines.begin(), lines.end()), options, [] {});
 }
 
 shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options) {

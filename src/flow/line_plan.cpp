@@ -1,5 +1,7 @@
 #include "line_plan.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "cell_point.hpp"
@@ -12,17 +14,22 @@ LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds
   if (direction != Direction::Backward) signs.push_back(1.0f);
   if (direction != Direction::Forward) signs.push_back(-1.0f);
   LinePlan plan;
-  for (const float sign : signs)
-    for (std::size_t seed = 0; seed < seeds.size(); ++seed) {
-      const auto line = static_cast<std::uint32_t>(plan.states.size());
-      // Without deep positions the anchor stays zero (line_tracer.cpp).
-      const glm::dvec3 cells = volume.transform.toCellUnits(seeds[seed]);
-      const CellPoint start =
-          volume.deepPositions() ? toCellPoint(cells) : CellPoint(glm::vec3(cells));
-      plan.states.push_back({start.offset, 0.0f, 0.0f, 0u, line, sign, 0.0f, start.anchor});
-      plan.layout.seedIds.push_back(static_cast<std::uint32_t>(seed));
-      plan.layout.directions.push_back(sign);
-    }
+  const std::size_t lines = signs.size() * seeds.size();
+  plan.states.resize(lines);
+  plan.layout.seedIds.resize(lines);
+  plan.layout.directions.resize(lines);
+  tbb::parallel_for(std::size_t(0), lines, [&](std::size_t line) {
+    const std::size_t seed = line % seeds.size();
+    const float sign = signs[line / seeds.size()];
+    // Without deep positions the anchor stays zero (line_tracer.cpp).
+    const glm::dvec3 cells = volume.transform.toCellUnits(seeds[seed]);
+    const CellPoint start =
+        volume.deepPositions() ? toCellPoint(cells) : CellPoint(glm::vec3(cells));
+    plan.states[line] = {start.offset, 0.0f, 0.0f,        0u, static_cast<std::uint32_t>(line),
+                         sign,         0.0f, start.anchor};
+    plan.layout.seedIds[line] = static_cast<std::uint32_t>(seed);
+    plan.layout.directions[line] = sign;
+  });
   return plan;
 }
 

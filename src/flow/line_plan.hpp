@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
+#include "column.hpp"
 #include "integrator.hpp"
 #include "trace_accumulator.hpp"
 #include "vector_volume.hpp"
@@ -16,7 +17,7 @@ namespace amrstream::flow {
 // One line per seed and direction, in vtkStreamTracer's order (all forward lines, then all
 // backward ones): their starting states (seed in cell units, nothing traced) and layout.
 struct LinePlan {
-  std::vector<shared::LineState> states;
+  Column<shared::LineState> states;  // filled in parallel, without a zero fill first
   LineLayout layout;
 };
 LinePlan planLines(const VectorVolume& volume, std::span<const glm::dvec3> seeds,

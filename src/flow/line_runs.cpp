@@ -1,25 +1,36 @@
 #include "line_runs.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <stdexcept>
 
 namespace amrstream::flow {
 
 LineRuns::LineRuns(std::size_t lineCount, std::vector<std::vector<LinePoints>>& runs) {
+  for (const std::vector<LinePoints>& round : runs)
+    for (const LinePoints& r : round)
+      if (r.line >= lineCount) throw std::invalid_argument("LineRuns: no such line");
+  // A round names each line once, so its entries are counted and placed by one task each.
   std::vector<std::uint64_t> counts(lineCount + 1, 0);
   for (const std::vector<LinePoints>& round : runs)
-    for (const LinePoints& r : round) {
-      if (r.line >= lineCount) throw std::invalid_argument("LineRuns: no such line");
-      ++counts[r.line + 1];
-    }
+    tbb::parallel_for(std::size_t(0), round.size(),
+                      [&](std::size_t i) { ++counts[round[i].line + 1]; });
   for (std::size_t i = 0; i < lineCount; ++i) counts[i + 1] += counts[i];
   offsets_ = counts;
   runs_.resize(counts.back());
+  std::vector<std::uint32_t> firsts;
   for (std::uint32_t round = 0; round < runs.size(); ++round) {
+    const std::vector<LinePoints>& placed = runs[round];
+    firsts.resize(placed.size());
     std::uint32_t first = 0;
-    for (const LinePoints& r : runs[round]) {
-      runs_[counts[r.line]++] = {round, r.points, first};
-      first += r.points;
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      firsts[i] = first;
+      first += placed[i].points;
     }
+    tbb::parallel_for(std::size_t(0), placed.size(), [&](std::size_t i) {
+      const LinePoints& r = placed[i];
+      runs_[counts[r.line]++] = {round, r.points, firsts[i]};
+    });
     std::vector<LinePoints>().swap(runs[round]);
   }
 }

@@ -28,7 +28,7 @@ class RoundTracer {
 
 // The CPU reference, on all cores. `volume` must outlive it.
 std::unique_ptr<RoundTracer> cpuRoundTracer(const VectorVolume& volume,
-                                            std::vector<shared::LineState> lines,
+                                            std::span<const shared::LineState> lines,
                                             const TraceOptions& options);
 
 }  // namespace amrstream::flow

@@ -1,8 +1,8 @@
 #include "trace_accumulator.hpp"
 
 #include <fmt/format.h>
-
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <cstring>
 #include <stdexcept>
@@ -58,21 +58,35 @@ void TraceAccumulator::add(RoundBlock&& round) {
 
 std::pair<std::vector<LinePoints>, std::uint64_t> TraceAccumulator::takeReports(
     std::span<const shared::LineRound> lines) {
-  std::vector<LinePoints> runs;
-  runs.reserve(lines.size());
-  std::uint64_t points = 0;
-  for (const shared::LineRound& r : lines) {
+  for (const shared::LineRound& r : lines)
     if (r.line >= lineCount()) throw std::invalid_argument("TraceAccumulator: no such line");
-    runs.push_back({r.line, r.points});
-    points += r.points;
-    pointsPerLine_[r.line] += r.points;
-    result_.steps[r.line] = r.steps;
-    if (r.reason != AMRSTREAM_REASON_RUNNING) {
-      result_.reasons[r.line] = r.reason;
-      ++finished_;
-    }
-  }
-  return {std::move(runs), points};
+  std::vector<LinePoints> runs(lines.size());
+  struct Counts {
+    std::uint64_t points = 0;
+    std::size_t finished = 0;
+  };
+  // Each line appears once in a round, so the lines' entries are written by one task each.
+  const Counts counts = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, lines.size(), std::size_t(1) << 14), Counts{},
+      [&](const tbb::blocked_range<std::size_t>& range, Counts c) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const shared::LineRound& r = lines[i];
+          runs[i] = {r.line, r.points};
+          c.points += r.points;
+          pointsPerLine_[r.line] += r.points;
+          result_.steps[r.line] = r.steps;
+          if (r.reason != AMRSTREAM_REASON_RUNNING) {
+            result_.reasons[r.line] = r.reason;
+            ++c.finished;
+          }
+        }
+        return c;
+      },
+      [](const Counts& a, const Counts& b) {
+        return Counts{a.points + b.points, a.finished + b.finished};
+      });
+  finished_ += counts.finished;
+  return {std::move(runs), counts.points};
 }
 
 void TraceAccumulator::addReports(std::span<const shared::LineRound> lines) {

@@ -27,7 +27,8 @@ class TraceAccumulator {
   // ignored.
   TraceAccumulator(LineLayout lines, const TraceSet& shape);
 
-  // Takes the round's points; lines whose reason is no longer RUNNING are finished. Rounds hold
+  // Takes the round's points; lines whose reason is no longer RUNNING are finished. A round
+  // reports each of its lines once (its reports are read on all cores). Rounds hold
   // positionsLow for every point, or for none: the shape's precisePositions requires them, else
   // the first round with points decides for all. Throws std::invalid_argument for a round whose
   // columns do not match its lines, InputError when the points collected pass `maxBytes` (see

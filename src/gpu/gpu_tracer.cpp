@@ -1,6 +1,7 @@
 #include "gpu_tracer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -21,14 +22,17 @@ namespace amrstream::gpu {
 namespace {
 
 // The lines in the order threads take them: Morton order of their positions, or as given.
-std::vector<shared::LineState> threadOrder(std::span<const shared::LineState> lines, bool spatial) {
-  std::vector<shared::LineState> ordered(lines.begin(), lines.end());
-  if (!spatial) return ordered;
-  std::vector<glm::vec3> positions(lines.size());
-  for (std::size_t i = 0; i < lines.size(); ++i)
+flow::Column<shared::LineState> threadOrder(std::span<const shared::LineState> lines,
+                                            bool spatial) {
+  if (!spatial) return {lines.begin(), lines.end()};
+  flow::Column<glm::vec3> positions(lines.size());
+  tbb::parallel_for(std::size_t(0), lines.size(), [&](std::size_t i) {
     positions[i] = glm::vec3(lines[i].anchor) + lines[i].offset;
+  });
   const std::vector<std::uint32_t> order = mortonOrder(positions);
-  for (std::size_t k = 0; k < order.size(); ++k) ordered[k] = lines[order[k]];
+  flow::Column<shared::LineState> ordered(lines.size());
+  tbb::parallel_for(std::size_t(0), order.size(),
+                    [&](std::size_t k) { ordered[k] = lines[order[k]]; });
   return ordered;
 }
 
@@ -167,7 +171,7 @@ void GpuTracer::traceBatches(std::span<const shared::LineState> states,
     }
     lastRun_.buffersSeconds += clock.seconds();
     clock.restart();
-    const std::vector<shared::LineState> ordered =
+    const flow::Column<shared::LineState> ordered =
         threadOrder(states.subspan(first, count), spatialOrder_);
     GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
                      *roundBuffers_, *staging_, timeKernels_);
@@ -265,7 +269,7 @@ std::unique_ptr<DeviceTraces> GpuTracer::traceOnDevice(std::span<const glm::dvec
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,
                                                           const flow::TraceOptions& options) {
-  const std::vector<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
+  const flow::Column<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
   auto buffers =
       std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
                                      volume_->channelCount(), options.vorticity,
@@ -293,7 +297,10 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
         channels, options.vorticity, regionIds);
   }
   Stopwatch clock;
-  if (order) lines = threadOrder(lines, spatialOrder_);
+  if (order) {
+    const flow::Column<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
+    lines.assign(ordered.begin(), ordered.end());
+  }
   GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, lines, options,
                    *roundBuffers_, *staging_, timeKernels_);
   lastRun_.linesSeconds += clock.seconds();
