@@ -1,7 +1,6 @@
 #include "device_upload.hpp"
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstring>
@@ -18,14 +17,6 @@ DeviceUploader::DeviceUploader(const vk::Context& ctx, VkDeviceSize chunkBytes)
 
 DeviceUploader::~DeviceUploader() {
   for (std::optional<vk::Submission>& copy : copies_) copy.reset();  // waits for pending copies
-}
-
-void DeviceUploader::copyParallel(std::span<const std::byte> from, std::span<std::byte> to) {
-  constexpr std::size_t kGrain = std::size_t(1) << 20;
-  tbb::parallel_for(std::size_t(0), (from.size() + kGrain - 1) / kGrain, [&](std::size_t part) {
-    const std::size_t first = part * kGrain, n = std::min(kGrain, from.size() - first);
-    std::memcpy(to.data() + first, from.data() + first, n);
-  });
 }
 
 vk::Buffer DeviceUploader::uploadBytes(VkDeviceSize bytes, VkDeviceSize elementBytes,

@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include "util/parallel_copy.hpp"
 #include "vk/buffer.hpp"
 #include "vk/submission.hpp"
 
@@ -57,7 +58,6 @@ class DeviceUploader {
   using ByteFill = std::function<void(VkDeviceSize offset, std::span<std::byte> out)>;
   vk::Buffer uploadBytes(VkDeviceSize bytes, VkDeviceSize elementBytes, VkBufferUsageFlags usage,
                          std::string_view name, const ByteFill& fill);
-  static void copyParallel(std::span<const std::byte> from, std::span<std::byte> to);
 
   const vk::Context* ctx_;
   VkDeviceSize chunkBytes_;

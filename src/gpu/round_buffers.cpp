@@ -1,13 +1,12 @@
 #include "round_buffers.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <cstring>
 #include <glm/glm.hpp>
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/round_params.h"
 #include "../../shaders/glsl/shared/trace_params.h"
+#include "util/parallel_copy.hpp"
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 
@@ -86,14 +85,7 @@ bool RoundBuffers::fits(std::size_t lines, std::uint64_t pointSlots, std::size_t
 void RoundBuffers::setStates(const vk::Context& ctx, std::span<const shared::LineState> lines) {
   if (lines.size() > lineCapacity) throw std::logic_error("RoundBuffers: too many lines");
   if (lines.empty()) return;
-  // In pieces on all cores: one core writes pinned memory at a few GB/s.
-  constexpr std::size_t kPiece = std::size_t(1) << 20;
-  const std::span<std::byte> to = statesUpload.mapped();
-  const std::span<const std::byte> from = std::as_bytes(lines);
-  tbb::parallel_for(std::size_t(0), (from.size() + kPiece - 1) / kPiece, [&](std::size_t piece) {
-    const std::size_t first = piece * kPiece, bytes = std::min(kPiece, from.size() - first);
-    std::memcpy(to.data() + first, from.data() + first, bytes);
-  });
+  copyParallel(std::as_bytes(lines), statesUpload.mapped());
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     // The previous batch's rounds are done (their submissions were waited for).
     const VkBufferCopy region{0, 0, lines.size_bytes()};

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string_view>
 
 #include "device_upload.hpp"
 #include "util/input_error.hpp"
@@ -106,6 +107,21 @@ void fillDualValues(const flow::VectorVolume& volume, std::span<const std::uint6
   });
 }
 
+// The regions' brick lists with each brick's record in place of its index (one load per brick
+// instead of two dependent ones), its valueOffset set to valueOffset(brick index).
+template <typename ValueOffset>
+vk::Buffer uploadRegionBricks(DeviceUploader& uploader, const flow::VectorVolume& volume,
+                              std::string_view name, const ValueOffset& valueOffset) {
+  const std::vector<std::uint32_t>& ids = volume.regions.regionBricks;
+  return uploader.upload<shared::Brick>(
+      ids.size(), kStorage, name, [&](std::size_t first, std::span<shared::Brick> out) {
+        tbb::parallel_for(std::size_t(0), out.size(), [&](std::size_t i) {
+          out[i] = volume.bricks[ids[first + i]];
+          out[i].valueOffset = valueOffset(ids[first + i]);
+        });
+      });
+}
+
 }  // namespace
 
 bool VolumeBuffers::canHoldDualValues(const flow::VectorVolume& volume) {
@@ -152,13 +168,8 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
   channelGradients =
       uploader.upload(std::span(volume.channelGradients), kStorage, "channel gradients");
   regions = uploader.upload(std::span(volume.regions.regions), kStorage, "regions");
-  // The regions' brick lists with the records in place of the indices.
-  const std::vector<std::uint32_t>& ids = volume.regions.regionBricks;
-  regionBricks = uploader.upload<shared::Brick>(
-      ids.size(), kStorage, "region bricks", [&](std::size_t first, std::span<shared::Brick> out) {
-        tbb::parallel_for(std::size_t(0), out.size(),
-                          [&](std::size_t i) { out[i] = volume.bricks[ids[first + i]]; });
-      });
+  regionBricks = uploadRegionBricks(uploader, volume, "region bricks",
+                                    [&](std::uint32_t b) { return volume.bricks[b].valueOffset; });
   if (withDualValues) {
     if (!canHoldDualValues(volume))
       throw std::logic_error("VolumeBuffers: the volume's dual cells cannot be laid out");
@@ -167,14 +178,9 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
                                             [&](std::size_t first, std::span<glm::vec4> out) {
                                               fillDualValues(volume, offsets, first, out);
                                             });
-    dualRegionBricks = uploader.upload<shared::Brick>(
-        ids.size(), kStorage, "dual region bricks",
-        [&](std::size_t first, std::span<shared::Brick> out) {
-          tbb::parallel_for(std::size_t(0), out.size(), [&](std::size_t i) {
-            out[i] = volume.bricks[ids[first + i]];
-            out[i].valueOffset = static_cast<std::uint32_t>(offsets[ids[first + i]]);
-          });
-        });
+    dualRegionBricks =
+        uploadRegionBricks(uploader, volume, "dual region bricks",
+                           [&](std::uint32_t b) { return static_cast<std::uint32_t>(offsets[b]); });
   }
   setup.uploadSeconds = clock.seconds();
   setup.volumeBytes = bricks.size() + values.size() + channelValues.size() +
