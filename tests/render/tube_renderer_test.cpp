@@ -317,24 +317,21 @@ TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
     EXPECT_EQ(renderer.segmentCount(), all.size());
     return renderer.readImage();
   };
+  const auto appendTenAtATime = [&](TubeRenderer& r) {
+    r.setTubes(std::span(all).first(10), 0.6f);
+    for (std::size_t n = 10; n < all.size(); n += 10)
+      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+  };
   const Image once = render([&](TubeRenderer& r) { r.setTubes(all, 0.6f); });
-  const Image appended = render([&](TubeRenderer& r) {
-    r.setTubes(std::span(all).first(10), 0.6f);
-    for (std::size_t n = 10; n < all.size(); n += 10)
-      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
-  });
+  const Image appended = render(appendTenAtATime);
   const Image consolidated = render([&](TubeRenderer& r) {
-    r.setTubes(std::span(all).first(10), 0.6f);
-    for (std::size_t n = 10; n < all.size(); n += 10)
-      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    appendTenAtATime(r);
     r.consolidateTubes();
     EXPECT_EQ(r.tubeStructures(), 1u);
   });
   // compute builds the one BVH on another thread, keeping its chunks until it is put in place.
   const Image inBackground = render([&](TubeRenderer& r) {
-    r.setTubes(std::span(all).first(10), 0.6f);
-    for (std::size_t n = 10; n < all.size(); n += 10)
-      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    appendTenAtATime(r);
     const std::size_t appendedStructures = r.tubeStructures();
     EXPECT_GT(appendedStructures, 1u);
     r.consolidateTubes(true);
@@ -346,9 +343,7 @@ TEST_P(TubeRendererTest, AppendedTubesRenderAsTheSameTubesSetAtOnce) {
   });
   // Asked for at once while one is being built, the consolidation waits for that one.
   const Image thenAtOnce = render([&](TubeRenderer& r) {
-    r.setTubes(std::span(all).first(10), 0.6f);
-    for (std::size_t n = 10; n < all.size(); n += 10)
-      r.appendTubes(std::span(all).subspan(n, 10), std::span(all).first(n + 10), 0.6f);
+    appendTenAtATime(r);
     r.consolidateTubes(true);
     r.consolidateTubes();
     EXPECT_EQ(r.tubeStructures(), 1u);
