@@ -189,29 +189,27 @@ TEST_P(GpuTracerTest, DualValuesTraceAsTheCompactLayout) {
   const flow::VectorVolume volume =
       flow::buildVectorVolume(testing::randomAmr(6, layout, flowAt), {{"vx", "vy", "vz"}, "v"},
                               testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
-  {
-    flow::TraceOptions options;
-    options.maxSteps = 200;
-    const flow::SeedList seeds = seedsIn(volume, 48);
-    std::array<flow::TraceSet, 2> traces;
-    for (const bool dual : {false, true}) {
-      KernelSettings settings = settings_;
-      settings.dualValues = dual;
-      GpuTracer tracer(ctx(), GetParam(), volume, settings);
-      ASSERT_EQ(tracer.settings().dualValues, dual);
-      ASSERT_EQ(tracer.volumeBuffers().dualValues.size() > 0, dual);
-      traces[dual] = tracer.trace(seeds.points, options);
-    }
-    EXPECT_EQ(traces[1].steps, traces[0].steps);
-    EXPECT_EQ(traces[1].reasons, traces[0].reasons);
-    EXPECT_EQ(traces[1].offsets, traces[0].offsets);
-    ASSERT_EQ(traces[1].pointCount(), traces[0].pointCount());
-    for (std::uint64_t i = 0; i < traces[0].pointCount(); ++i) {
-      ASSERT_EQ(traces[1].positions[i], traces[0].positions[i]) << "point " << i;
-      ASSERT_EQ(traces[1].vectors[i], traces[0].vectors[i]) << "point " << i;
-    }
-    expectGpuMatchesCpu(traces[1], flow::traceStreamlines(volume, seeds.points, options), volume);
+  flow::TraceOptions options;
+  options.maxSteps = 200;
+  const flow::SeedList seeds = seedsIn(volume, 48);
+  std::array<flow::TraceSet, 2> traces;
+  for (const bool dual : {false, true}) {
+    KernelSettings settings = settings_;
+    settings.dualValues = dual;
+    GpuTracer tracer(ctx(), GetParam(), volume, settings);
+    ASSERT_EQ(tracer.settings().dualValues, dual);
+    ASSERT_EQ(tracer.volumeBuffers().dualValues.size() > 0, dual);
+    traces[dual] = tracer.trace(seeds.points, options);
   }
+  EXPECT_EQ(traces[1].steps, traces[0].steps);
+  EXPECT_EQ(traces[1].reasons, traces[0].reasons);
+  EXPECT_EQ(traces[1].offsets, traces[0].offsets);
+  ASSERT_EQ(traces[1].pointCount(), traces[0].pointCount());
+  for (std::uint64_t i = 0; i < traces[0].pointCount(); ++i) {
+    ASSERT_EQ(traces[1].positions[i], traces[0].positions[i]) << "point " << i;
+    ASSERT_EQ(traces[1].vectors[i], traces[0].vectors[i]) << "point " << i;
+  }
+  expectGpuMatchesCpu(traces[1], flow::traceStreamlines(volume, seeds.points, options), volume);
 }
 
 TEST_P(GpuTracerTest, MatchesCpuOnEveryTerminationReason) {
