@@ -1,6 +1,7 @@
 #version 460
 // Streamline tracing with zero-length ray queries against the regions' AABBs.
 #extension GL_GOOGLE_include_directive : require
+#define AMRSTREAM_DUAL_ADDRESS  // acceleration structures need buffer device addresses anyway
 #include "include/amr_buffers.glsl"
 #include "include/locate_rayquery.glsl"
 #include "include/sampler.glsl"

@@ -92,14 +92,16 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
   buffers.setStates(ctx, lines);
   const RoundBuffers& b = buffers_;
-  // The kernel reads dual cells where the volume has them (GpuTracer sets both alike).
+  // The kernel reads dual cells through their address where the volume has them (GpuTracer
+  // sets both alike).
   const bool dual = device.dualValues.size() > 0;
+  params_.dualValuesAddress = device.dualValuesAddress();
   for (int parity = 0; parity < 2; ++parity) {
     traceSets_[parity] = pool_.allocate(trace.setLayout.get());
     const std::array<vk::DescriptorTarget, kTraceBindingCount> traceTargets{
         vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.handle()},
         storage(device.bricks),
-        storage(dual ? device.dualValues : device.values),
+        storage(device.values),
         storage(device.regions),
         storage(dual ? device.dualRegionBricks : device.regionBricks),
         storage(b.states),

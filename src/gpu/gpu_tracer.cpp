@@ -54,13 +54,14 @@ VkDeviceSize deviceLocalBytes(const vk::Context& ctx) {
 
 // Dual cells take 8 times the values' memory (10 times with their padding on the cloud); they
 // make samples faster where one line's latency or the ray tracing pipeline bounds the kernel
-// (docs/benchmarks.md).
+// (docs/benchmarks.md). The kernels read them through a buffer device address, and they take at
+// most a quarter of the device's memory.
 bool useDualValues(const vk::Context& ctx, const flow::VectorVolume& volume,
                    std::optional<bool> asked) {
   if (!asked.value_or(ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)) return false;
-  if (!VolumeBuffers::canHoldDualValues(volume)) return false;
-  const std::uint64_t bytes = VolumeBuffers::dualValueBytes(volume);
-  return bytes <= ctx.limits().maxStorageBufferRange && bytes <= deviceLocalBytes(ctx) / 8;
+  if (!VolumeBuffers::addressesDualValues(ctx) || !VolumeBuffers::canHoldDualValues(volume))
+    return false;
+  return VolumeBuffers::dualValueBytes(volume) <= deviceLocalBytes(ctx) / 4;
 }
 
 Backend gpuBackend(Backend backend) {

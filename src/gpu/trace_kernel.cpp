@@ -12,9 +12,11 @@
 #include "locate_rint.h"
 #include "locate_rmiss.h"
 #include "trace_compute_comp.h"
+#include "trace_compute_compact_comp.h"
 #include "trace_pipeline_rgen.h"
 #include "trace_rayquery_comp.h"
 #include "vk/context.hpp"
+#include "volume_buffers.hpp"
 
 namespace amrstream::gpu {
 
@@ -90,7 +92,7 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
 
 }  // namespace
 
-KernelSettings defaultKernelSettings(Backend) { return {.useRegionHint = true}; }
+KernelSettings defaultKernelSettings(Backend) { return KernelSettings{}; }
 
 TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program,
                               const KernelSettings& settings) {
@@ -106,7 +108,9 @@ TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelPro
       if (backend == Backend::Compute)
         createComputePipeline(ctx, kernel,
                               probe ? spirv(amrstream_spirv_locate_probe_compute_comp)
-                                    : spirv(amrstream_spirv_trace_compute_comp),
+                              : VolumeBuffers::addressesDualValues(ctx)
+                                  ? spirv(amrstream_spirv_trace_compute_comp)
+                                  : spirv(amrstream_spirv_trace_compute_compact_comp),
                               settings);
       else
         createComputePipeline(ctx, kernel,

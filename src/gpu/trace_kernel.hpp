@@ -52,8 +52,8 @@ struct KernelSettings {
   bool deepPositions = false;
   // The tracing kernel reads the vector as dual cells, the 8 values of each 2x2x2 block of a
   // brick together (VolumeBuffers::dualValues), where GpuTracer finds that they fit: the tent
-  // interpolant, one storage buffer binding, and an eighth of the device's memory. Unset: on
-  // GPUs only (on a CPU device such as lavapipe they are slower).
+  // interpolant, buffer device addresses, and a quarter of the device's memory. Unset: on GPUs
+  // only (on a CPU device such as lavapipe they take host memory, 8 times the values).
   std::optional<bool> dualValues;
 };
 

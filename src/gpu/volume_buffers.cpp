@@ -11,8 +11,11 @@
 #include <string_view>
 
 #include "device_upload.hpp"
+#include "dual_cells.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
+#include "vk/context.hpp"
+#include "vk/vk_error.hpp"
 
 namespace amrstream::gpu {
 
@@ -75,38 +78,6 @@ std::vector<std::uint64_t> dualOffsets(const flow::VectorVolume& volume) {
   return offsets;
 }
 
-// Elements [first, first + out.size()) of the dual values: element e is corner e % 8 of dual
-// cell e / 8.
-void fillDualValues(const flow::VectorVolume& volume, std::span<const std::uint64_t> offsets,
-                    std::size_t first, std::span<glm::vec4> out) {
-  if (first % kCorners != 0 || out.size() % kCorners != 0)
-    throw std::logic_error("fillDualValues: a range must hold whole dual cells");
-  const std::uint64_t firstCell = first / kCorners;
-  const std::uint64_t endCell = (first + out.size()) / kCorners;
-  tbb::parallel_for(firstCell, endCell, [&](std::uint64_t cell) {
-    const std::size_t b =
-        std::size_t(std::upper_bound(offsets.begin(), offsets.end(), cell) - offsets.begin()) - 1;
-    const shared::Brick& brick = volume.bricks[b];
-    const std::uint64_t d = cell - offsets[b];
-    const glm::ivec3 dims = brick.size + 1;
-    const glm::ivec3 base = glm::ivec3(int(d % dims.x), int(d / dims.x % dims.y),
-                                       int(d / (std::uint64_t(dims.x) * dims.y))) -
-                            1;
-    glm::vec4* corners = out.data() + (cell * kCorners - first);
-    for (std::uint32_t corner = 0; corner < kCorners; ++corner) {
-      const glm::ivec3 c = base + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-      const bool inside = glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) &&
-                          glm::all(glm::lessThan(c, brick.size));
-      corners[corner] = inside
-                            ? glm::vec4(volume.values[brick.valueOffset + c.x +
-                                                      std::size_t(brick.size.x) *
-                                                          (c.y + std::size_t(brick.size.y) * c.z)],
-                                        0.0f)
-                            : glm::vec4(0.0f);
-    }
-  });
-}
-
 // The regions' brick lists with each brick's record in place of its index (one load per brick
 // instead of two dependent ones), its valueOffset set to valueOffset(brick index).
 template <typename ValueOffset>
@@ -127,6 +98,16 @@ vk::Buffer uploadRegionBricks(DeviceUploader& uploader, const flow::VectorVolume
 bool VolumeBuffers::canHoldDualValues(const flow::VectorVolume& volume) {
   return volume.interpolant == flow::Interpolant::Tent &&
          dualOffsets(volume).back() * kCorners <= std::numeric_limits<std::uint32_t>::max();
+}
+
+bool VolumeBuffers::addressesDualValues(const vk::Context& ctx) {
+  return ctx.bufferDeviceAddressEnabled();
+}
+
+glm::uvec2 VolumeBuffers::dualValuesAddress() const {
+  if (dualValues.size() == 0) return glm::uvec2(0);
+  const VkDeviceAddress address = dualValues.deviceAddress();
+  return {static_cast<std::uint32_t>(address), static_cast<std::uint32_t>(address >> 32)};
 }
 
 std::uint64_t VolumeBuffers::dualValueBytes(const flow::VectorVolume& volume) {
@@ -174,13 +155,18 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
     if (!canHoldDualValues(volume))
       throw std::logic_error("VolumeBuffers: the volume's dual cells cannot be laid out");
     const std::vector<std::uint64_t> offsets = dualOffsets(volume);
-    dualValues = uploader.upload<glm::vec4>(offsets.back() * kCorners, kStorage, "dual values",
-                                            [&](std::size_t first, std::span<glm::vec4> out) {
-                                              fillDualValues(volume, offsets, first, out);
-                                            });
-    dualRegionBricks =
-        uploadRegionBricks(uploader, volume, "dual region bricks",
-                           [&](std::uint32_t b) { return static_cast<std::uint32_t>(offsets[b]); });
+    // Dual cells are a faster layout of what `values` holds: a device that cannot allocate them
+    // traces without them.
+    try {
+      dualValues = buildDualValues(ctx, uploader, bricks, values, offsets);
+      dualRegionBricks = uploadRegionBricks(
+          uploader, volume, "dual region bricks",
+          [&](std::uint32_t b) { return static_cast<std::uint32_t>(offsets[b]); });
+    } catch (const vk::VulkanError& e) {
+      if (e.result() != VK_ERROR_OUT_OF_DEVICE_MEMORY) throw;
+      dualValues = {};
+      dualRegionBricks = {};
+    }
   }
   setup.uploadSeconds = clock.seconds();
   setup.volumeBytes = bricks.size() + values.size() + channelValues.size() +

@@ -4,6 +4,7 @@
 // AABB acceleration structure of the region boxes for `rayquery` and `pipeline`).
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 
 #include "backend.hpp"
@@ -33,6 +34,11 @@ struct VolumeBuffers {
   static bool canHoldDualValues(const flow::VectorVolume& volume);
   // The device bytes of the dual cells and their region brick records.
   static std::uint64_t dualValueBytes(const flow::VectorVolume& volume);
+  // Whether the device can hold dual cells: the tracing kernels read them through their buffer
+  // device address (any size, where a binding would stop at maxStorageBufferRange).
+  static bool addressesDualValues(const vk::Context& ctx);
+  // TraceParams::dualValuesAddress: the dual cells' address, low word first; 0 without them.
+  glm::uvec2 dualValuesAddress() const;
 
   // The binding of the point-location structure.
   vk::DescriptorTarget locateTarget() const;
@@ -48,8 +54,8 @@ struct VolumeBuffers {
   vk::Buffer regionBricks;
   // The vector as dual cells, for the tracing kernels (KernelSettings::dualValues): brick by
   // brick, one cell per base cell b in [-1, size)^3 holding the 8 values of the cells b + {0,1}^3
-  // as vec4 (zero outside the brick), 128 bytes together; and the region brick records with each
-  // valueOffset counting those cells. Empty unless asked for.
+  // as vec4 ((value, 1) in the brick, -0.0 outside), 128 bytes together; and the region brick
+  // records with each valueOffset counting those cells. Empty unless asked for.
   vk::Buffer dualValues;
   vk::Buffer dualRegionBricks;
   vk::Buffer tree;                     // compute backend

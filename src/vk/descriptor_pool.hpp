@@ -36,6 +36,11 @@ struct DescriptorTarget {
   VkAccelerationStructureKHR structure = VK_NULL_HANDLE;
 };
 
+// A storage buffer binding's target.
+inline DescriptorTarget storageTarget(VkBuffer buffer) {
+  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer};
+}
+
 // Binding i of `set` := targets[i].
 void writeDescriptors(const Context& ctx, VkDescriptorSet set,
                       std::span<const DescriptorTarget> targets);

@@ -3,6 +3,10 @@
 // and writes its k-th emitted point to slot k * params.lineCount + t of the output arrays.
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_GOOGLE_include_directive : require
+#ifdef AMRSTREAM_DUAL_ADDRESS
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
+#endif
 
 #include "../shared/amr_types.h"
 #include "cell_point.glsl"
@@ -31,6 +35,13 @@ layout(scalar, set = 0, binding = 8) writeonly buffer PositionBuffer { vec3 outP
 layout(scalar, set = 0, binding = 9) writeonly buffer TimeBuffer { float outTimes[]; };
 layout(scalar, set = 0, binding = 10) writeonly buffer VectorBuffer { vec3 outVectors[]; };
 layout(scalar, set = 0, binding = 11) writeonly buffer RegionIdBuffer { int outRegions[]; };
+#ifdef AMRSTREAM_DUAL_ADDRESS
+// The dual cells (VolumeBuffers::dualValues) read through params.dualValuesAddress rather than a
+// binding, so that they may exceed maxStorageBufferRange: one 128-byte block per dual cell.
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DualCellBlock {
+  vec4 corners[8];
+};
+#endif
 // Binding 12 is the backend's point-location structure (region tree or acceleration structure).
 #define AMRSTREAM_LOCATE_BINDING 12
 // The linear interpolant's cells: per value slot 48 bytes, the value, then the gradients of its

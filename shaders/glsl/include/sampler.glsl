@@ -6,14 +6,25 @@
 
 const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
-// Specialization constant 4: the tracing kernels' values and region brick records are dual
-// cells (VolumeBuffers::dualValues); the tent interpolant only.
+// Specialization constant 4: the tracing kernels read the vector from dual cells
+// (VolumeBuffers::dualValues) through their address, with the dual region brick records at
+// binding 4; the tent interpolant only, in kernels built with AMRSTREAM_DUAL_ADDRESS.
 layout(constant_id = 4) const bool kDualValues = false;
+
+#ifdef AMRSTREAM_DUAL_ADDRESS
+// Corner c of dual cell d: a byte offset past 2^32 carries into the address's high word.
+vec4 dualCorner(uint d, int c) {
+  uint carry;
+  const uint low = uaddCarry(params.dualValuesAddress.x, d << 7, carry);
+  return DualCellBlock(uvec2(low, params.dualValuesAddress.y + (d >> 25) + carry)).corners[c];
+}
+#define TENT_DUAL_VALUES kDualValues
+#define TENT_DUAL_CORNER(d, c) dualCorner(d, c)
+#endif
 
 #define TENT_TYPE vec3
 #define TENT_BRICK(i) regionBrickRecords[i]
 #define TENT_VALUE(slot) values[slot].xyz
-#define TENT_DUAL_VALUES kDualValues
 #define TENT_FUNCTION reconstructVector
 #include "tent_reconstruction.glsl"
 #undef TENT_FUNCTION

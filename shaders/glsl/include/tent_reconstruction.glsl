@@ -6,10 +6,11 @@
 // anchor + p (cell_point.glsl) and sets `weighted` to the weighted sum of the values; the sample
 // is their quotient. With TENT_MODEL(slot, toP) defined
 // instead of TENT_VALUE, each value is the cell's linear model at p, toP = p - c_i (the linear
-// interpolant). With TENT_DUAL_VALUES defined to a true expression, TENT_VALUE reads dual cells:
-// a brick's valueOffset counts dual cells, each holding the values of the 2x2x2 cells from one
-// base cell, (size + 1)^3 of them from base -1 (VolumeBuffers::dualValues), so that a sample's
-// corners in one brick come from one 128-byte block.
+// interpolant). With TENT_DUAL_CORNER(d, c) defined (vector values only), and TENT_DUAL_VALUES
+// to a true expression, values come from dual cells instead: a brick's valueOffset counts dual
+// cells, each holding the values of the 2x2x2 cells from one base cell, (size + 1)^3 of them from
+// base -1 (VolumeBuffers::dualValues), so that a sample's corners in one brick come from one
+// 128-byte block; TENT_DUAL_CORNER(d, c) is corner c of dual cell d as a vec4.
 #ifndef TENT_DUAL_VALUES
 #define TENT_DUAL_VALUES false
 #endif
@@ -31,20 +32,33 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
     const vec3 base = floor(local);
     precise const vec3 frac = local - base;
     const ivec3 lo = ivec3(base);
-    // A base outside [-1, size) puts all 8 corners outside the brick: none is summed.
-    if (TENT_DUAL_VALUES && (any(lessThan(lo, ivec3(-1))) || any(greaterThanEqual(lo, brick.size))))
+#ifdef TENT_DUAL_CORNER
+    if (TENT_DUAL_VALUES) {
+      // A base outside [-1, size) puts all 8 corners outside the brick: none is summed.
+      if (any(lessThan(lo, ivec3(-1))) || any(greaterThanEqual(lo, brick.size))) continue;
+      const uint dual = brick.valueOffset + uint((lo.x + 1) + (brick.size.x + 1) *
+                                                              ((lo.y + 1) + (brick.size.y + 1) * (lo.z + 1)));
+      for (int corner = 0; corner < 8; ++corner) {
+        const vec3 offset = vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        precise const vec3 axisWeight = mix(1.0 - frac, frac, offset);
+        precise const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
+        // A corner in the brick holds (value, 1), one outside it -0.0 throughout: adding -0.0
+        // leaves any sum as it was, so without a test per corner the sums are bit for bit those
+        // of the compact layout below, which skips the corners outside.
+        const vec4 value = TENT_DUAL_CORNER(dual, corner);
+        weightSum += weight * value.w;
+        sum += weight * value.xyz;
+      }
       continue;
-    const uint dual = brick.valueOffset +
-                      uint((lo.x + 1) + (brick.size.x + 1) * ((lo.y + 1) + (brick.size.y + 1) * (lo.z + 1)));
+    }
+#endif
     for (int corner = 0; corner < 8; ++corner) {
       const ivec3 offset = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
       const ivec3 cell = lo + offset;
       if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, brick.size))) continue;
       precise const vec3 axisWeight = mix(1.0 - frac, frac, vec3(offset));
       precise const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
-      const uint slot = TENT_DUAL_VALUES
-                            ? 8u * dual + uint(corner)
-                            : brick.valueOffset + uint(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
+      const uint slot = brick.valueOffset + uint(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
       weightSum += weight;
 #ifdef TENT_MODEL
       precise const vec3 toP = width * (frac - vec3(offset));
@@ -58,3 +72,4 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
   return weightSum;
 }
 #undef TENT_DUAL_VALUES
+#undef TENT_DUAL_CORNER

@@ -37,10 +37,12 @@ struct TraceParams {
   vec3 pauseLower;          // with pauseOutside, a line pauses after a step that ends outside
   uint pauseOutside;        // [pauseLower, pauseUpper) (finest-cell units), to be handed to the
   vec3 pauseUpper;          // MPI rank that holds where it is (tracing over data)
+  uvec2 dualValuesAddress;  // the dual cells' device address, low word first, for kernels that
+                            // read them so (VolumeBuffers::dualValuesAddress); 0 otherwise
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 160 && offsetof(TraceParams, period) == 64 &&
+static_assert(sizeof(TraceParams) == 168 && offsetof(TraceParams, period) == 64 &&
               offsetof(TraceParams, maxTime) == 96 && offsetof(TraceParams, pauseOutside) == 144);
 }  // namespace amrstream::shared
 #endif
