@@ -1,7 +1,6 @@
 #include "data_distributed_trace.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 
 #include <algorithm>
 #include <optional>
@@ -11,12 +10,11 @@
 #include "dist/data_partition.hpp"
 #include "dist/data_rounds.hpp"
 #include "dist/rank_agreement.hpp"
-#include "dist/run_stitching.hpp"
-#include "dist/trace_exchange.hpp"
 #include "dist/value_windows.hpp"
 #include "flow/line_plan.hpp"
 #include "formats/load_input.hpp"
 #include "gpu/gpu_tracer.hpp"
+#include "rank_rounds.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -244,43 +242,19 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
 
   // The backend, its device and its tracer for this rank's part.
   job.backend.deviceSlot = unsigned(world.localRank());
-  std::optional<vk::Context> ctx;
-  std::optional<gpu::GpuTracer> gpuTracer;
-  dist::RoundAdvance advance = dist::agreed(world, [&] {
-    const BackendChoice choice = chooseBackend(job.backend, BackendUse::Trace, printLine);
-    input.report.backend = gpu::backendName(choice.backend);
-    if (choice.backend == gpu::Backend::Cpu) {
-      input.report.device = fmt::format("{} threads", tbb::info::default_concurrency());
-      return dist::cpuRoundAdvance(input.volume, input.options);
-    }
-    Stopwatch setup;
-    ctx.emplace(createContext(job.backend, choice));
-    gpuTracer.emplace(*ctx, choice.backend, input.volume);
-    gpuTracer->timeKernels(true);
-    input.report.device = ctx->deviceName();
-    input.report.setupSeconds = setup.seconds();
-    // The lines are put in Morton order once; later rounds keep their order, the lines handed
-    // on from other ranks coming after them. The rounds share output slots as one process's
-    // rounds do, with room for a quarter more lines handed on.
-    const std::uint64_t slots = gpuTracer->pointSlots(input.options, rank.plan.states.size());
-    auto round = [&, slots, first = true](std::vector<shared::LineState>& live) mutable {
-      const bool order = std::exchange(first, false);
-      const std::uint32_t steps =
-          flow::stepsPerRound(input.options, slots, live.size() + live.size() / 4);
-      return gpuTracer->advanceRound(live, input.options, steps, order);
-    };
-    return dist::RoundAdvance(round);
-  });
+  RankTracer tracer;
+  dist::agreed(world, [&] { startRankTracer(tracer, job, input, rank.plan.states.size()); });
 
   // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
   dist::DataRoundStats stats;
   Stopwatch clock;
   flow::TraceSet runs = dist::traceOverData(world, input.volume, rank.partition, std::move(owned),
-                                            input.options, advance, &stats);
+                                            input.options, tracer.advance, &stats);
   const double seconds = clock.seconds();
   dist::agreed(world, [&] {
-    if (ctx) checkValidation(*ctx);
+    if (tracer.ctx) checkValidation(*tracer.ctx);
   });
+  const std::optional<gpu::GpuTracer>& gpuTracer = tracer.gpu;
   const double deviceBytes =
       gpuTracer ? double(gpuTracer->setup().volumeBytes + gpuTracer->setup().structureBytes +
                          gpuTracer->lastRun().roundBytes)
@@ -323,55 +297,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
     }
   };
 
-  if (output.pieces) {
-    // Each rank joins and writes a contiguous range of lines, so that the pieces in rank order
-    // hold the lines in one process's order: the runs go to the rank whose piece holds them.
-    const std::size_t lineCount = rank.plan.states.size();
-    std::vector<flow::TraceSet> byPiece = dist::runsByPiece(runs, lineCount, world.size());
-    runs = {};
-    double bytes = 0.0;
-    for (int k = 0; k < world.size(); ++k)
-      if (k != world.rank()) bytes += double(dist::partBytes(byPiece[std::size_t(k)]));
-    bytes = world.sumOverRanks(bytes);
-    clock.restart();
-    std::vector<flow::TraceSet> mine = dist::agreed(world, [&] {
-      std::vector<flow::TraceSet> received;
-      for (int k = 0; k < world.size(); ++k) {
-        std::vector<flow::TraceSet> parts =
-            dist::gatherTraces(world, std::move(byPiece[std::size_t(k)]), k);
-        if (k == world.rank()) received = std::move(parts);
-      }
-      return received;
-    });
-    const double exchangeSeconds = world.maxOverRanks(clock.seconds());
-    flow::TraceSet lines = dist::agreed(world, [&] {
-      return dist::stitchRuns(std::move(mine), rank.plan.layout,
-                              dist::pieceLines(lineCount, world.rank(), world.size()));
-    });
-    writePieces(world, std::move(lines), input, output, [&] {
-      printRanks();
-      fmt::print("joined     {:.3g} GB of runs sent to the ranks writing their lines in {:.2f} s\n",
-                 bytes * 1e-9, exchangeSeconds);
-    });
-    return;
-  }
-
-  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
-  clock.restart();
-  std::vector<flow::TraceSet> parts =
-      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
-  const double gatherSeconds = clock.seconds();
-  dist::agreed(world, [&] {
-    if (!world.isRoot()) return;
-    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), rank.plan.layout);
-    printRanks();
-    fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
-    printTraceSummary(lines, input.report);
-    clock.restart();
-    const output::VtpCounts counts = output.write(output.path, flow::TraceSetView(lines), input);
-    fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", output.path.string(),
-               withCommas(counts.lines), withCommas(counts.points), clock.seconds());
-  });
+  writeRankRuns(world, std::move(runs), rank.plan.layout, input, output, printRanks);
 }
 
 }  // namespace amrstream::cli

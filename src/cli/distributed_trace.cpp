@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <utility>
 
+#include "amrstream/backend.hpp"
+#include "dist/even_lines.hpp"
 #include "dist/gathered_traces.hpp"
 #include "dist/rank_agreement.hpp"
 #include "dist/seed_shares.hpp"
 #include "dist/trace_exchange.hpp"
 #include "option_checks.hpp"
 #include "output/pvtp_writer.hpp"
+#include "rank_rounds.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -87,8 +90,53 @@ void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput
   }
 }
 
+namespace {
+
+// Over seeds in rounds of `steps` steps, the live lines evened out among the ranks between them
+// (dist/even_lines.hpp): the ranks' runs of each line are put together as over data.
+void traceInRebalancedRounds(const dist::MpiWorld& world, TraceJobOptions& job,
+                             PreparedInput& input,
+                             const std::vector<std::vector<std::uint32_t>>& shares,
+                             std::uint32_t steps, const DistributedOutput& output) {
+  input.options.roundSteps = steps;
+  const flow::LinePlan plan =
+      flow::planLines(input.volume, input.seeds.points, input.options.direction);
+  std::vector<std::uint8_t> mine(input.seeds.points.size(), 0);
+  for (const std::uint32_t seed : shares[std::size_t(world.rank())]) mine[seed] = 1;
+  std::vector<shared::LineState> owned;
+  for (const shared::LineState& s : plan.states)
+    if (mine[plan.layout.seedIds[s.line]] != 0) owned.push_back(s);
+
+  RankTracer tracer;
+  dist::agreed(world, [&] { startRankTracer(tracer, job, input, owned.size()); });
+  dist::DataRoundStats stats;
+  Stopwatch clock;
+  flow::TraceSet runs = dist::traceInRounds(world, input.volume, std::move(owned), input.options,
+                                            tracer.advance, dist::evenOutLines(world), &stats);
+  const double seconds = clock.seconds();
+  dist::agreed(world, [&] {
+    if (tracer.ctx) checkValidation(*tracer.ctx);
+  });
+  input.report.traceSeconds = world.maxOverRanks(seconds);
+  input.report.setupSeconds = world.maxOverRanks(input.report.setupSeconds);
+  const std::vector<double> rankSent = world.gatherToRoot(double(stats.linesSent));
+  const std::vector<double> rankTracing = world.gatherToRoot(stats.traceSeconds);
+  const std::vector<double> rankExchange = world.gatherToRoot(stats.exchangeSeconds);
+  const auto printRanks = [&] {
+    fmt::print(
+        "ranks      {} over seeds, the live lines evened out every {} steps: rounds {}, "
+        "lines handed on {}, tracing {} s, handing on {} s\n",
+        world.size(), steps, stats.rounds, perRank(rankSent, "{:.0f}"),
+        perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
+  };
+  writeRankRuns(world, std::move(runs), plan.layout, input, output, printRanks);
+}
+
+}  // namespace
+
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                      const std::function<void()>& checkFiles, const DistributedOutput& output) {
+                      std::uint32_t rebalanceSteps, const std::function<void()>& checkFiles,
+                      const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   job.backend.deviceSlot = unsigned(world.localRank());
   PreparedInput input = dist::agreed(world, [&] {
@@ -103,6 +151,8 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
     fmt::print("note       {}\n", warning);
   const std::vector<std::vector<std::uint32_t>> shares =
       dist::mortonShares(input.seeds.points, world.size());
+  if (rebalanceSteps > 0)
+    return traceInRebalancedRounds(world, job, input, shares, rebalanceSteps, output);
   const std::vector<std::uint32_t>& mine = shares[std::size_t(world.rank())];
   const std::size_t seedCount = input.seeds.points.size();
   flow::SeedList allSeeds = std::exchange(input.seeds, subset(input.seeds, mine));

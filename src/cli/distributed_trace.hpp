@@ -31,9 +31,12 @@ struct DistributedOutput {
 // The piece of `rank` beside the .pvtp: traces.pvtp -> traces_0.vtp, traces_1.vtp, ...
 std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 
-// `checkFiles` runs first on every rank (the run's inputs and outputs, RunFiles).
+// `checkFiles` runs first on every rank (the run's inputs and outputs, RunFiles). With
+// `rebalanceSteps` > 0, the ranks trace in rounds of that many steps and even out their live lines
+// between rounds, handing lines on; the output is the same.
 void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
-                      const std::function<void()>& checkFiles, const DistributedOutput& output);
+                      std::uint32_t rebalanceSteps, const std::function<void()>& checkFiles,
+                      const DistributedOutput& output);
 
 // Collective. Every rank writes `lines` as its piece, rank 0 the .pvtp listing the pieces and
 // (after `printSummary`) the summary of every rank's lines; a failure anywhere removes them all.

@@ -1,13 +1,18 @@
 // amrstream: streamlines through AMR vector fields.
 
+#include <tbb/global_control.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 
 #include "bench_command.hpp"
 #include "convert_command.hpp"
 #include "devices_command.hpp"
+#include "dist/mpi_world.hpp"
+#include "dist/rank_agreement.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
 #include "pathlines_command.hpp"
@@ -15,8 +20,6 @@
 #include "render_command.hpp"
 #include "resample_command.hpp"
 #include "trace_command.hpp"
-#include "dist/mpi_world.hpp"
-#include "dist/rank_agreement.hpp"
 #include "util/input_error.hpp"
 #ifdef AMRSTREAM_HAVE_VIEWER
 #include "view_command.hpp"
@@ -36,6 +39,9 @@ void quietUnlessRoot(const amrstream::dist::MpiWorld& world) {
 int main(int argc, char** argv) {
   const amrstream::dist::MpiWorld world;
   quietUnlessRoot(world);
+  std::optional<tbb::global_control> threads;
+  if (world.size() > 1)
+    threads.emplace(tbb::global_control::max_allowed_parallelism, world.threadsPerRank());
   // An error every rank meets alike (a bad option) is printed once, by rank 0; one that a rank
   // meets alone outside the points where ranks agree on failures ends them all.
   const auto fail = [&](const char* message, int code, bool sharedByAllRanks) {

@@ -31,6 +31,7 @@ struct TraceCommandOptions {
   std::string distribute = "seeds";
   bool pieces = false;
   std::uint32_t haloSteps = 4;
+  std::uint32_t rebalanceSteps = 0;
   std::string traceStore = "auto";
 };
 
@@ -81,6 +82,10 @@ void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
 }
 
 void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
+  if (o.rebalanceSteps > 0 && o.distribute == "data")
+    throw InputError("--rebalance-steps",
+                     "evens out lines among ranks that hold the whole volume: use it with "
+                     "--distribute seeds");
   const auto checkFiles = [&] {
     RunFiles files = jobFiles(o.job);
     addOutputs(files, o, world.size());
@@ -96,7 +101,7 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
       traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.haloSteps, checkFiles,
                                output);
     else
-      traceDistributed(world, o.job, !o.endpointsOnly, checkFiles, output);
+      traceDistributed(world, o.job, !o.endpointsOnly, o.rebalanceSteps, checkFiles, output);
     printMemory(stagePeak);
     return;
   }
@@ -153,6 +158,12 @@ void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
                    "it is more than one step less than that outside the part")
       ->capture_default_str()
       ->check(countIn(1, 1u << 20));
+  command
+      ->add_option("--rebalance-steps", options->rebalanceSteps,
+                   "with --distribute seeds: trace in rounds of this many steps and even out the "
+                   "ranks' live lines between rounds (0: the seeds are split once, at the start)")
+      ->capture_default_str()
+      ->check(countIn(0, 1u << 30));
   command->add_flag("--pieces", options->pieces,
                     "each rank writes its lines as a piece beside the .pvtp that --out names, "
                     "which lists them (ParaView opens it); without it rank 0 writes one .vtp");

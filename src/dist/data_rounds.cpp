@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "../../shaders/glsl/shared/dormand_prince.h"
 #include "flow/cpu_round.hpp"
@@ -127,11 +128,10 @@ RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume,
   };
 }
 
-flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
-                             const DataPartition& partition,
+flow::TraceSet traceInRounds(const MpiWorld& world, const flow::VectorVolume& volume,
                              std::vector<shared::LineState> owned,
                              const flow::TraceOptions& options, const RoundAdvance& advance,
-                             DataRoundStats* stats) {
+                             const LineRouting& route, DataRoundStats* stats) {
   DataRoundStats local;
   flow::TraceSet runs = flow::traceShape(volume, options);
   std::vector<shared::LineState>& live = owned;
@@ -144,6 +144,24 @@ flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& vo
 
     clock.restart();
     std::vector<std::vector<shared::LineState>> outgoing(std::size_t(world.size()));
+    route(live, outgoing);
+    for (const auto& batch : outgoing) local.linesSent += batch.size();
+    const std::vector<shared::LineState> arrived = exchangeLines(world, outgoing);
+    live.insert(live.end(), arrived.begin(), arrived.end());
+    const double running = world.sumOverRanks(double(live.size()));
+    local.exchangeSeconds += clock.seconds();
+    if (running == 0.0) break;
+  }
+  if (stats) *stats = local;
+  return runs;
+}
+
+flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
+                             const DataPartition& partition, std::vector<shared::LineState> owned,
+                             const flow::TraceOptions& options, const RoundAdvance& advance,
+                             DataRoundStats* stats) {
+  const LineRouting toOwners = [&](std::vector<shared::LineState>& live,
+                                   std::vector<std::vector<shared::LineState>>& outgoing) {
     std::size_t kept = 0;
     for (const shared::LineState& s : live) {
       const bool stays = options.pauseOutside && options.pauseOutside->contains(s.anchor, s.offset);
@@ -154,15 +172,8 @@ flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& vo
         outgoing[std::size_t(owner)].push_back(s);
     }
     live.resize(kept);
-    for (const auto& batch : outgoing) local.linesSent += batch.size();
-    const std::vector<shared::LineState> arrived = exchangeLines(world, outgoing);
-    live.insert(live.end(), arrived.begin(), arrived.end());
-    const double running = world.sumOverRanks(double(live.size()));
-    local.exchangeSeconds += clock.seconds();
-    if (running == 0.0) break;
-  }
-  if (stats) *stats = local;
-  return runs;
+  };
+  return traceInRounds(world, volume, std::move(owned), options, advance, toOwners, stats);
 }
 
 }  // namespace amrstream::dist

@@ -45,7 +45,7 @@ flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, doubl
 
 struct DataRoundStats {
   std::uint32_t rounds = 0;
-  std::uint64_t linesSent = 0;  // hand-offs from this rank
+  std::uint64_t linesSent = 0;  // lines this rank handed to others
   double traceSeconds = 0.0, exchangeSeconds = 0.0;
 };
 
@@ -56,11 +56,23 @@ using RoundAdvance = std::function<flow::RoundBlock(std::vector<shared::LineStat
 // A RoundAdvance on the CPU reference. `volume` must outlive it.
 RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options);
 
-// Collective. Advances `owned` (lines whose points lie in this rank's part) to their ends, round
-// after round; a line paused outside options.pauseOutside goes to the rank that owns its point.
-// Returns the runs this rank traced: a TraceSet (shaped by `volume` and `options`) whose entries
-// are runs (a line's points of one round on this rank), seedIds holding the line, steps the
-// line's steps at the run's end and reasons its reason then (running when it went on).
+// Collective (every rank calls it once a round). After a round, moves the lines of `live` that
+// go to other ranks into outgoing[rank]; the rest stay in `live`, in their order.
+using LineRouting = std::function<void(std::vector<shared::LineState>& live,
+                                       std::vector<std::vector<shared::LineState>>& outgoing)>;
+
+// Collective. Advances `owned` to their ends, round after round; after each round `route` sends
+// lines that still run to other ranks, which go on with them. Returns the runs this rank traced: a
+// TraceSet (shaped by `volume` and `options`) whose entries are runs (a line's points of one
+// round on this rank), seedIds holding the line, steps the line's steps at the run's end and
+// reasons its reason then (running when it went on).
+flow::TraceSet traceInRounds(const MpiWorld& world, const flow::VectorVolume& volume,
+                             std::vector<shared::LineState> owned,
+                             const flow::TraceOptions& options, const RoundAdvance& advance,
+                             const LineRouting& route, DataRoundStats* stats = nullptr);
+
+// traceInRounds over data: `owned` are the lines whose points lie in this rank's part, and a line
+// paused outside options.pauseOutside goes to the rank that owns its point.
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
                              const DataPartition& partition,
                              std::vector<shared::LineState> owned,

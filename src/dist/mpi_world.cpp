@@ -2,13 +2,13 @@
 
 #include <fmt/format.h>
 #include <mpi.h>
-
 #include <sched.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <limits>
-#include <thread>
 #include <stdexcept>
+#include <thread>
 
 namespace amrstream::dist {
 
@@ -46,6 +46,15 @@ std::string MpiWorld::bindingWarning() const {
   return fmt::format("each rank may use {} of this host's {} cores (mpirun binds ranks to cores): "
                      "its CPU threads are that few; mpirun --bind-to none lets them share all",
                      usable, host);
+}
+
+int MpiWorld::threadsPerRank() const {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  const int host = std::max(1, int(std::thread::hardware_concurrency()));
+  const int usable = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : host;
+  if (localSize_ <= 1 || usable < host) return usable;
+  return std::max(1, usable / localSize_);
 }
 
 std::string MpiWorld::rankName() const {

@@ -34,6 +34,10 @@ class MpiWorld {
   // one core by default when there are few ranks): its CPU tracer, lavapipe and host-side copies
   // then get one thread. Empty otherwise.
   std::string bindingWarning() const;
+  // The threads this rank's parallel loops should use: the cores it may run on, shared among
+  // the ranks of its host when they may all run on all of them (mpirun --bind-to none). Ranks
+  // that each used every core ran their host work up to twice as slowly (docs/distributed.md).
+  int threadsPerRank() const;
   // "rank 2 of 4" for messages; empty in a world of one.
   std::string rankName() const;
 

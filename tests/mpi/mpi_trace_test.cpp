@@ -122,6 +122,31 @@ TEST_F(MpiTraceTest, ForwardOnAPeriodicFieldFromASeedGrid) {
                    {2, 3});
 }
 
+// The lines handed on between ranks that a run printed ("lines handed on 3 / 0 / 5"), summed;
+// -1 when it printed none.
+long linesHandedOn(const std::string& output) {
+  const std::size_t at = output.find("lines handed on ");
+  return at == std::string::npos ? -1 : handOffs("hand-offs " + output.substr(at + 16));
+}
+
+// --rebalance-steps: rounds of 70 steps, the live lines evened out among the ranks between them,
+// against one process without rounds; lines do go from rank to rank.
+TEST_F(MpiTraceTest, RebalancedRoundsOnTheCpu) {
+  const std::string one = "trace builtin:cloud --backend cpu --count 150 --steps 600";
+  const std::string last = expectRanksAgree(one + " --rebalance-steps 70", {1, 2, 3}, one);
+  EXPECT_THAT(last, HasSubstr("evened out every 70 steps"));
+  EXPECT_GT(linesHandedOn(last), 0) << last;
+}
+
+TEST_F(MpiTraceTest, RebalanceStepsAreForSeeds) {
+  const testing::Outcome run = testing::runAmrstream(
+      "trace builtin:rotation --count 4 --distribute data --rebalance-steps 10 --out " +
+      path("x.vtp"));
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("--rebalance-steps"));
+  EXPECT_FALSE(std::filesystem::exists(path("x.vtp")));
+}
+
 // Enough seeds for several blocks of the Morton order on each rank.
 TEST_F(MpiTraceTest, ManyBlocksOfSeedsDealtRoundTheRanks) {
   expectRanksAgree("trace builtin:rotation --backend cpu --count 13000 --steps 40 "
@@ -239,6 +264,14 @@ class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterfac
 TEST_P(MpiGpuTraceTest, RanksEqualOneProcess) {
   expectValidatedRanksAgree(
       "trace builtin:cloud --backend " + GetParam() + " --count 96 --steps 500", "", 2);
+}
+
+// Rebalanced rounds on each GPU backend: lines handed between the ranks' GPUs between rounds.
+TEST_P(MpiGpuTraceTest, RebalancedRoundsEqualOneProcess) {
+  const std::string output = expectValidatedRanksAgree(
+      "trace builtin:cloud --backend " + GetParam() + " --count 96 --steps 500",
+      " --rebalance-steps 60", 3);
+  EXPECT_GT(linesHandedOn(output), 0) << output;
 }
 
 // Over data on each GPU backend (lavapipe, validation layers on every rank), against one process

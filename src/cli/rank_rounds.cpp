@@ -1,0 +1,96 @@
+#include "rank_rounds.hpp"
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+
+#include <utility>
+
+#include "amrstream/backend.hpp"
+#include "dist/rank_agreement.hpp"
+#include "dist/run_stitching.hpp"
+#include "dist/trace_exchange.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream::cli {
+
+void startRankTracer(RankTracer& tracer, TraceJobOptions& job, PreparedInput& input,
+                     std::size_t lineCount) {
+  const BackendChoice choice = chooseBackend(job.backend, BackendUse::Trace, printLine);
+  input.report.backend = gpu::backendName(choice.backend);
+  if (choice.backend == gpu::Backend::Cpu) {
+    input.report.device = fmt::format("{} threads", tbb::info::default_concurrency());
+    tracer.advance = dist::cpuRoundAdvance(input.volume, input.options);
+    return;
+  }
+  Stopwatch setup;
+  tracer.ctx.emplace(createContext(job.backend, choice));
+  tracer.gpu.emplace(*tracer.ctx, choice.backend, input.volume);
+  tracer.gpu->timeKernels(true);
+  input.report.device = tracer.ctx->deviceName();
+  input.report.setupSeconds = setup.seconds();
+  const std::uint64_t slots = tracer.gpu->pointSlots(input.options, lineCount);
+  tracer.advance = [&tracer, &input, slots,
+                    first = true](std::vector<shared::LineState>& live) mutable {
+    const bool order = std::exchange(first, false);
+    const std::uint32_t steps =
+        flow::stepsPerRound(input.options, slots, live.size() + live.size() / 4);
+    return tracer.gpu->advanceRound(live, input.options, steps, order);
+  };
+}
+
+void writeRankRuns(const dist::MpiWorld& world, flow::TraceSet runs, const flow::LineLayout& layout,
+                   PreparedInput& input, const DistributedOutput& output,
+                   const std::function<void()>& printRanks) {
+  Stopwatch clock;
+  if (output.pieces) {
+    // Each rank joins and writes a contiguous range of lines, so that the pieces in rank order
+    // hold the lines in one process's order: the runs go to the rank whose piece holds them.
+    const std::size_t lineCount = layout.seedIds.size();
+    std::vector<flow::TraceSet> byPiece = dist::runsByPiece(runs, lineCount, world.size());
+    runs = {};
+    double bytes = 0.0;
+    for (int k = 0; k < world.size(); ++k)
+      if (k != world.rank()) bytes += double(dist::partBytes(byPiece[std::size_t(k)]));
+    bytes = world.sumOverRanks(bytes);
+    clock.restart();
+    std::vector<flow::TraceSet> mine = dist::agreed(world, [&] {
+      std::vector<flow::TraceSet> received;
+      for (int k = 0; k < world.size(); ++k) {
+        std::vector<flow::TraceSet> parts =
+            dist::gatherTraces(world, std::move(byPiece[std::size_t(k)]), k);
+        if (k == world.rank()) received = std::move(parts);
+      }
+      return received;
+    });
+    const double exchangeSeconds = world.maxOverRanks(clock.seconds());
+    flow::TraceSet lines = dist::agreed(world, [&] {
+      return dist::stitchRuns(std::move(mine), layout,
+                              dist::pieceLines(lineCount, world.rank(), world.size()));
+    });
+    writePieces(world, std::move(lines), input, output, [&] {
+      printRanks();
+      fmt::print("joined     {:.3g} GB of runs sent to the ranks writing their lines in {:.2f} s\n",
+                 bytes * 1e-9, exchangeSeconds);
+    });
+    return;
+  }
+
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
+  clock.restart();
+  std::vector<flow::TraceSet> parts =
+      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
+  const double gatherSeconds = clock.seconds();
+  dist::agreed(world, [&] {
+    if (!world.isRoot()) return;
+    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), layout);
+    printRanks();
+    fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
+    printTraceSummary(lines, input.report);
+    clock.restart();
+    const output::VtpCounts counts = output.write(output.path, flow::TraceSetView(lines), input);
+    fmt::print("output     {} ({} polylines, {} points) [{:.2f} s]\n", output.path.string(),
+               withCommas(counts.lines), withCommas(counts.points), clock.seconds());
+  });
+}
+
+}  // namespace amrstream::cli
