@@ -25,7 +25,8 @@ struct TracerSetup {
 };
 
 struct VolumeBuffers {
-  // With `dualValues`, also the vector as dual cells (below); canHoldDualValues() must hold.
+  // With `dualValues`, also the vector as dual cells (below), unless the device cannot allocate
+  // them; canHoldDualValues() and addressesDualValues() must hold.
   VolumeBuffers(const vk::Context& ctx, Backend backend, const flow::VectorVolume& volume,
                 TracerSetup& setup, bool dualValues = false);
 
