@@ -7,13 +7,13 @@
 #include <future>
 #include <memory>
 #include <set>
-#include <tbb/info.h>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "amrstream/dataset.hpp"
 #include "formats/snapshot_time.hpp"
 #include "gpu/vector_probe.hpp"
 #include "util/host_memory.hpp"
+#include "util/host_threads.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -141,7 +141,7 @@ flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const 
   std::optional<GpuSampling> gpu;
   if (choice.backend == gpu::Backend::Cpu) {
     report.backend = "cpu";
-    report.device = fmt::format("{} threads", tbb::info::default_concurrency());
+    report.device = hostThreadsText();
   } else {
     Stopwatch setup;
     gpu.emplace(backendRequest, choice);

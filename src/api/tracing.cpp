@@ -1,12 +1,12 @@
 #include "amrstream/tracing.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "gpu/gpu_tracer.hpp"
-#include "vk/vk_error.hpp"
+#include "util/host_threads.hpp"
 #include "util/stopwatch.hpp"
+#include "vk/vk_error.hpp"
 
 namespace amrstream {
 
@@ -85,10 +85,9 @@ flow::StoredTraces traceOnTheCpu(flow::VectorVolume& volume, std::span<const glm
                                  const flow::TraceOptions& options,
                                  const flow::TraceProgress& progress, TraceReport& t,
                                  const Log& log) {
-  say(log, fmt::format("tracing    on the CPU reference ({} threads)",
-                       tbb::info::default_concurrency()));
+  say(log, "tracing    on the CPU reference (" + hostThreadsText() + ")");
   t.backend = "cpu";
-  t.device = fmt::format("{} threads", tbb::info::default_concurrency());
+  t.device = hostThreadsText();
   Stopwatch clock;
   flow::StoredTraces traces = flow::traceToRounds(volume, seeds, options, progress);
   t.traceSeconds = clock.seconds();

@@ -1,7 +1,6 @@
 #include "bench_runner.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 
 #include "gpu/backend.hpp"
 #include "gpu/gpu_tracer.hpp"
+#include "util/host_threads.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 #include "vk/context_error.hpp"
@@ -267,7 +267,7 @@ std::string hostDescription() {
       break;
     }
   }
-  return fmt::format("{}, {} threads", model, tbb::info::default_concurrency());
+  return fmt::format("{}, {}", model, hostThreadsText());
 }
 
 }  // namespace amrstream::bench

@@ -1,7 +1,6 @@
 #include "rank_rounds.hpp"
 
 #include <fmt/format.h>
-#include <tbb/info.h>
 
 #include <utility>
 
@@ -9,6 +8,7 @@
 #include "dist/rank_agreement.hpp"
 #include "dist/run_stitching.hpp"
 #include "dist/trace_exchange.hpp"
+#include "util/host_threads.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
@@ -18,7 +18,7 @@ void startRankTracer(RankTracer& tracer, TraceJobOptions& job, PreparedInput& in
   const BackendChoice choice = chooseBackend(job.backend, BackendUse::Trace, printLine);
   input.report.backend = gpu::backendName(choice.backend);
   if (choice.backend == gpu::Backend::Cpu) {
-    input.report.device = fmt::format("{} threads", tbb::info::default_concurrency());
+    input.report.device = hostThreadsText();
     tracer.advance = dist::cpuRoundAdvance(input.volume, input.options);
     return;
   }
