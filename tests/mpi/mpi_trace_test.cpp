@@ -5,8 +5,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
+#include <sched.h>
 
 #include <algorithm>
 #include <cctype>
@@ -16,8 +15,10 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "dist/gathered_traces.hpp"
 #include "output/vtp_reader.hpp"
@@ -240,6 +241,25 @@ TEST_F(MpiPiecesTest, OverDataWithLinesCrossingParts) {
 // More ranks than seeds: some ranks trace nothing.
 TEST_F(MpiTraceTest, RanksWithoutSeeds) {
   expectRanksAgree("trace builtin:cloud --backend cpu --count 2 --steps 300", {3});
+}
+
+// Two ranks on this host, free to run on every core (--bind-to none), take half of its cores
+// each for their parallel loops (one each on two cores), and the report says so.
+TEST_F(MpiTraceTest, RanksShareTheHostsCores) {
+  const testing::Outcome run =
+      mpirun(2, "trace builtin:rotation --backend cpu --count 8 --steps 20 --out " + path("t.vtp"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string marker = "on the CPU reference (";
+  const std::size_t at = run.output.find(marker);
+  ASSERT_NE(at, std::string::npos) << run.output;
+  const unsigned threads = unsigned(std::stoul(run.output.substr(at + marker.size())));
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  ASSERT_EQ(sched_getaffinity(0, sizeof(set), &set), 0);
+  const unsigned usable = unsigned(CPU_COUNT(&set));
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  // Ranks already bound to fewer cores than the host has keep those.
+  EXPECT_EQ(threads, usable < cores ? usable : std::max(1u, usable / 2)) << run.output;
 }
 
 class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterface<std::string> {
