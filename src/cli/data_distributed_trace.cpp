@@ -246,7 +246,7 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   dist::agreed(world, [&] { startRankTracer(tracer, job, input, rank.plan.states.size()); });
 
   // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
-  dist::DataRoundStats stats;
+  dist::RoundStats stats;
   Stopwatch clock;
   flow::TraceSet runs = dist::traceOverData(world, input.volume, rank.partition, std::move(owned),
                                             input.options, tracer.advance, &stats);

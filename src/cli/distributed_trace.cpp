@@ -109,7 +109,7 @@ void traceInRebalancedRounds(const dist::MpiWorld& world, TraceJobOptions& job,
 
   RankTracer tracer;
   dist::agreed(world, [&] { startRankTracer(tracer, job, input, owned.size()); });
-  dist::DataRoundStats stats;
+  dist::RoundStats stats;
   Stopwatch clock;
   flow::TraceSet runs = dist::traceInRounds(world, input.volume, std::move(owned), input.options,
                                             tracer.advance, dist::evenOutLines(world), &stats);

@@ -131,8 +131,8 @@ RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume,
 flow::TraceSet traceInRounds(const MpiWorld& world, const flow::VectorVolume& volume,
                              std::vector<shared::LineState> owned,
                              const flow::TraceOptions& options, const RoundAdvance& advance,
-                             const LineRouting& route, DataRoundStats* stats) {
-  DataRoundStats local;
+                             const LineRouting& route, RoundStats* stats) {
+  RoundStats local;
   flow::TraceSet runs = flow::traceShape(volume, options);
   std::vector<shared::LineState>& live = owned;
   Stopwatch clock;
@@ -159,7 +159,7 @@ flow::TraceSet traceInRounds(const MpiWorld& world, const flow::VectorVolume& vo
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
                              const DataPartition& partition, std::vector<shared::LineState> owned,
                              const flow::TraceOptions& options, const RoundAdvance& advance,
-                             DataRoundStats* stats) {
+                             RoundStats* stats) {
   const LineRouting toOwners = [&](std::vector<shared::LineState>& live,
                                    std::vector<std::vector<shared::LineState>>& outgoing) {
     std::size_t kept = 0;

@@ -43,7 +43,7 @@ StepReach stepReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
 flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, double margin,
                                  const flow::PeriodicAxes& periodic);
 
-struct DataRoundStats {
+struct RoundStats {
   std::uint32_t rounds = 0;
   std::uint64_t linesSent = 0;  // lines this rank handed to others
   double traceSeconds = 0.0, exchangeSeconds = 0.0;
@@ -69,15 +69,14 @@ using LineRouting = std::function<void(std::vector<shared::LineState>& live,
 flow::TraceSet traceInRounds(const MpiWorld& world, const flow::VectorVolume& volume,
                              std::vector<shared::LineState> owned,
                              const flow::TraceOptions& options, const RoundAdvance& advance,
-                             const LineRouting& route, DataRoundStats* stats = nullptr);
+                             const LineRouting& route, RoundStats* stats = nullptr);
 
 // traceInRounds over data: `owned` are the lines whose points lie in this rank's part, and a line
 // paused outside options.pauseOutside goes to the rank that owns its point.
 flow::TraceSet traceOverData(const MpiWorld& world, const flow::VectorVolume& volume,
-                             const DataPartition& partition,
-                             std::vector<shared::LineState> owned,
+                             const DataPartition& partition, std::vector<shared::LineState> owned,
                              const flow::TraceOptions& options, const RoundAdvance& advance,
-                             DataRoundStats* stats = nullptr);
+                             RoundStats* stats = nullptr);
 
 // The position of a line in finest-cell units.
 inline glm::dvec3 cellPointOf(const shared::LineState& s) {

@@ -37,24 +37,38 @@ MpiWorld::~MpiWorld() {
   if (active_) MPI_Finalize();
 }
 
-std::string MpiWorld::bindingWarning() const {
+namespace {
+
+// The cores of this host and those this process may run on (all of them when the affinity
+// cannot be read).
+struct Cores {
+  int host = 1, usable = 1;
+};
+
+Cores cores() {
+  Cores c;
+  c.host = std::max(1, int(std::thread::hardware_concurrency()));
   cpu_set_t set;
   CPU_ZERO(&set);
-  if (size_ == 1 || sched_getaffinity(0, sizeof(set), &set) != 0) return {};
-  const int usable = CPU_COUNT(&set), host = int(std::thread::hardware_concurrency());
-  if (usable * localSize_ >= host || usable > 1) return {};
-  return fmt::format("each rank may use {} of this host's {} cores (mpirun binds ranks to cores): "
-                     "its CPU threads are that few; mpirun --bind-to none lets them share all",
-                     usable, host);
+  c.usable = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : c.host;
+  return c;
+}
+
+}  // namespace
+
+std::string MpiWorld::bindingWarning() const {
+  const Cores c = cores();
+  if (size_ == 1 || c.usable * localSize_ >= c.host || c.usable > 1) return {};
+  return fmt::format(
+      "each rank may use {} of this host's {} cores (mpirun binds ranks to cores): "
+      "its CPU threads are that few; mpirun --bind-to none lets them share all",
+      c.usable, c.host);
 }
 
 int MpiWorld::threadsPerRank() const {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  const int host = std::max(1, int(std::thread::hardware_concurrency()));
-  const int usable = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : host;
-  if (localSize_ <= 1 || usable < host) return usable;
-  return std::max(1, usable / localSize_);
+  const Cores c = cores();
+  if (localSize_ <= 1 || c.usable < c.host) return c.usable;
+  return std::max(1, c.usable / localSize_);
 }
 
 std::string MpiWorld::rankName() const {

@@ -147,10 +147,8 @@ void DeviceTraces::gather(Fetcher& fetcher, const WindowPlan& plan) const {
     for (const WindowPlan::Group& group : plan.groups) {
       sets.push_back(fetcher.pool->allocate(gather_->setLayout.get()));
       const std::array<vk::DescriptorTarget, kGatherBindingCount> targets{
-          vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                               rounds_[group.round].arrays[group.array].handle()},
-          vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fetcher.staging.handle()},
-          vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fetcher.regions.handle()}};
+          vk::storageTarget(rounds_[group.round].arrays[group.array]),
+          vk::storageTarget(fetcher.staging), vk::storageTarget(fetcher.regions)};
       vk::writeDescriptors(*ctx_, sets.back(), targets);
     }
     if (!fetcher.copy) fetcher.copy.emplace(*ctx_);

@@ -50,8 +50,7 @@ vk::Buffer buildDualValues(const vk::Context& ctx, DeviceUploader& uploader,
   vk::DescriptorPool pool(ctx, 1, sizes);
   const VkDescriptorSet set = pool.allocate(setLayout.get());
   const std::array<vk::DescriptorTarget, kBindingCount> targets{
-      vk::storageTarget(bricks.handle()), vk::storageTarget(values.handle()),
-      vk::storageTarget(firstCells.handle())};
+      vk::storageTarget(bricks), vk::storageTarget(values), vk::storageTarget(firstCells)};
   vk::writeDescriptors(ctx, set, targets);
 
   const VkDeviceAddress address = dual.deviceAddress();

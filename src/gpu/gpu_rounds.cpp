@@ -21,10 +21,6 @@ constexpr std::array<VkDescriptorPoolSize, 3> kPerSet{
      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompactionBindingCount},
      {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
 
-vk::DescriptorTarget storage(const vk::Buffer& buffer) {
-  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer.handle()};
-}
-
 std::uint32_t groups(std::size_t threads, std::uint32_t groupSize) {
   return static_cast<std::uint32_t>((threads + groupSize - 1) / groupSize);
 }
@@ -100,35 +96,53 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
     traceSets_[parity] = pool_.allocate(trace.setLayout.get());
     const std::array<vk::DescriptorTarget, kTraceBindingCount> traceTargets{
         vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.handle()},
-        storage(device.bricks),
-        storage(device.values),
-        storage(device.regions),
-        storage(dual ? device.dualRegionBricks : device.regionBricks),
-        storage(b.states),
-        storage(b.roundStates),
-        storage(b.lineRounds[parity]),
-        storage(b.positions),
-        storage(b.times),
-        storage(b.vectors),
-        storage(b.regionIds),
+        vk::storageTarget(device.bricks),
+        vk::storageTarget(device.values),
+        vk::storageTarget(device.regions),
+        vk::storageTarget(dual ? device.dualRegionBricks : device.regionBricks),
+        vk::storageTarget(b.states),
+        vk::storageTarget(b.roundStates),
+        vk::storageTarget(b.lineRounds[parity]),
+        vk::storageTarget(b.positions),
+        vk::storageTarget(b.times),
+        vk::storageTarget(b.vectors),
+        vk::storageTarget(b.regionIds),
         device.locateTarget(),
-        storage(device.vectorGradients)};
+        vk::storageTarget(device.vectorGradients)};
     vk::writeDescriptors(ctx, traceSets_[parity], traceTargets);
 
     compactionSets_[parity] = pool_.allocate(kernels.compactionSetLayout.get());
     const std::array<vk::DescriptorTarget, kCompactionBindingCount> compactionTargets{
-        storage(b.lineRounds[parity]), storage(b.prefix), storage(b.blockSums),
-        storage(b.summary), storage(b.roundStates), storage(b.states), storage(b.positions),
-        storage(b.times), storage(b.vectors), storage(b.regionIds), storage(b.densePositions),
-        storage(b.denseTimes), storage(b.denseVectors), storage(b.denseRegionIds)};
+        vk::storageTarget(b.lineRounds[parity]),
+        vk::storageTarget(b.prefix),
+        vk::storageTarget(b.blockSums),
+        vk::storageTarget(b.summary),
+        vk::storageTarget(b.roundStates),
+        vk::storageTarget(b.states),
+        vk::storageTarget(b.positions),
+        vk::storageTarget(b.times),
+        vk::storageTarget(b.vectors),
+        vk::storageTarget(b.regionIds),
+        vk::storageTarget(b.densePositions),
+        vk::storageTarget(b.denseTimes),
+        vk::storageTarget(b.denseVectors),
+        vk::storageTarget(b.denseRegionIds)};
     vk::writeDescriptors(ctx, compactionSets_[parity], compactionTargets);
   }
   pointDataSet_ = pool_.allocate(kernels.pointDataSetLayout.get());
   const std::array<vk::DescriptorTarget, kPointDataBindingCount> pointDataTargets{
-      storage(device.bricks), storage(device.values), storage(device.regions),
-      storage(device.regionBricks), storage(device.channelValues), storage(b.summary),
-      storage(b.densePositions), storage(b.denseRegionIds), storage(b.channels),
-      storage(b.vorticity), storage(device.vectorGradients), storage(device.channelGradients)};
+      vk::storageTarget(device.bricks),
+      vk::storageTarget(device.values),
+      vk::storageTarget(device.regions),
+      vk::storageTarget(device.regionBricks),
+      vk::storageTarget(device.channelValues),
+      vk::storageTarget(b.summary),
+      vk::storageTarget(b.densePositions),
+      vk::storageTarget(b.denseRegionIds),
+      vk::storageTarget(b.channels),
+      vk::storageTarget(b.vorticity),
+      vk::storageTarget(device.vectorGradients),
+      vk::storageTarget(device.channelGradients)};
   vk::writeDescriptors(ctx, pointDataSet_, pointDataTargets);
   if (timeKernels) {
     traceTimer_.emplace(ctx);

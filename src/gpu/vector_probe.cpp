@@ -20,10 +20,6 @@ namespace {
 // Points per dispatch: within every backend's dispatch limits, and buffers of a few tens of MB.
 constexpr std::size_t kPointsPerDispatch = std::size_t(1) << 20;
 
-vk::DescriptorTarget storage(const vk::Buffer& buffer) {
-  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer.handle()};
-}
-
 }  // namespace
 
 VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
@@ -61,19 +57,19 @@ void VectorProbe::reserve(std::size_t points) {
   set_ = pool_->allocate(kernel_->setLayout.get());
   const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
       vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle()},
-      storage(device_->bricks),
-      storage(device_->values),
-      storage(device_->regions),
-      storage(device_->regionBricks),
-      storage(points_),   // probePoints
-      storage(unused_),   // statesOut
-      storage(unused_),   // lineRounds
-      storage(unused_),   // outPositions
-      storage(unused_),   // outTimes
-      storage(vectors_),  // outVectors
-      storage(regions_),  // outRegions
+      vk::storageTarget(device_->bricks),
+      vk::storageTarget(device_->values),
+      vk::storageTarget(device_->regions),
+      vk::storageTarget(device_->regionBricks),
+      vk::storageTarget(points_),   // probePoints
+      vk::storageTarget(unused_),   // statesOut
+      vk::storageTarget(unused_),   // lineRounds
+      vk::storageTarget(unused_),   // outPositions
+      vk::storageTarget(unused_),   // outTimes
+      vk::storageTarget(vectors_),  // outVectors
+      vk::storageTarget(regions_),  // outRegions
       device_->locateTarget(),
-      storage(device_->vectorGradients)};
+      vk::storageTarget(device_->vectorGradients)};
   vk::writeDescriptors(*ctx_, set_, targets);
   capacity_ = points;
 }

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -188,7 +187,7 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
 vk::DescriptorTarget VolumeBuffers::locateTarget() const {
   if (scene)
     return {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_NULL_HANDLE, scene->tlas.handle()};
-  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tree.handle()};
+  return vk::storageTarget(tree);
 }
 
 }  // namespace amrstream::gpu

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 
+#include "vk/buffer.hpp"
 #include "vk/unique_handle.hpp"
 
 namespace amrstream::vk {
@@ -36,9 +37,9 @@ struct DescriptorTarget {
   VkAccelerationStructureKHR structure = VK_NULL_HANDLE;
 };
 
-// A storage buffer binding's target.
-inline DescriptorTarget storageTarget(VkBuffer buffer) {
-  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer};
+// A storage buffer binding's target: the whole of `buffer`.
+inline DescriptorTarget storageTarget(const Buffer& buffer) {
+  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer.handle()};
 }
 
 // Binding i of `set` := targets[i].
