@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "bricks/descent_tree.hpp"
 #include "device_upload.hpp"
 #include "dual_cells.hpp"
 #include "util/input_error.hpp"
@@ -174,7 +175,8 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
 
   clock.restart();
   if (backend == Backend::Compute) {
-    tree = uploader.upload(std::span(volume.regions.tree), kStorage, "region tree");
+    const std::vector<std::byte> treeBytes = bricks::buildDescentTree(volume.regions).bytes();
+    tree = uploader.upload(std::span<const std::byte>(treeBytes), kStorage, "region tree");
     setup.structureBytes = tree.size();
   } else {
     scene = vk::buildAabbScene(ctx, regionBoxes(volume.regions), "regions");

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "bricks/descent_tree.hpp"
 #include "flow/cell_gradients.hpp"
 #include "tube_forest.hpp"
 #include "util/stopwatch.hpp"
@@ -135,7 +136,8 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
   regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks_ =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
-  tree_ = vk::uploadToDeviceLocal(ctx, volume.regions.tree, kStorage, "region tree");
+  tree_ = vk::uploadToDeviceLocal(ctx, bricks::buildDescentTree(volume.regions).bytes(), kStorage,
+                                  "region tree");
   params_ = vk::Buffer::upload(ctx, sizeof(shared::RenderParams),
                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "render params");
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bricks/descent_tree.hpp"
 #include "flow/integrator.hpp"
 #include "flow/line_plan.hpp"
 #include "flow/progressive_traces.hpp"
@@ -556,7 +557,7 @@ TEST_P(GpuTracerTest, ReportsKernelTimeBatchesRoundsAndDeviceBytes) {
                                    volume.regions.regions.size() * sizeof(shared::Region) +
                                    volume.regions.regionBricks.size() * sizeof(shared::Brick));
   if (GetParam() == Backend::Compute)
-    EXPECT_EQ(setup.structureBytes, volume.regions.tree.size() * sizeof(shared::RegionTreeNode));
+    EXPECT_EQ(setup.structureBytes, bricks::buildDescentTree(volume.regions).bytes().size());
   else
     EXPECT_GT(setup.structureBytes, volume.regions.regions.size() * sizeof(VkAabbPositionsKHR) / 2);
 

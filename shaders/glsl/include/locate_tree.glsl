@@ -1,18 +1,21 @@
 // Point location for the `compute` backend: descent of the regions' kd-tree, built on the host
-// (src/bricks/region_builder.hpp). Stackless: every point takes exactly one path.
+// (src/bricks/region_builder.hpp), from the start node of the point's cell in the grid at the
+// buffer's head (src/bricks/descent_tree.hpp). Stackless: every point takes exactly one path.
 
 // The tracer binds the tree at AMRSTREAM_LOCATE_BINDING; other kernels may define
 // AMRSTREAM_TREE_BINDING first.
 #ifndef AMRSTREAM_TREE_BINDING
 #define AMRSTREAM_TREE_BINDING AMRSTREAM_LOCATE_BINDING
 #endif
-layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer { RegionTreeNode tree[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer {
+  RegionTreeGrid treeGrid;
+  RegionTreeNode tree[];
+};
 
+// Twin of DescentTree::locate().
 int locateInRegions(ivec3 k) {
-  uint node = 0;
-  while (tree[node].axis != AMRSTREAM_TREE_LEAF) {
-    const RegionTreeNode n = tree[node];
-    node = k[n.axis] < n.split ? n.child : n.child + 1;
-  }
-  return tree[node].child == AMRSTREAM_NO_REGION ? -1 : int(tree[node].child);
+  const uvec3 cell = uvec3(clamp(k, treeGrid.lower, treeGrid.last) - treeGrid.lower) >> treeGrid.shift;
+  RegionTreeNode node = tree[cell.x + treeGrid.cells.x * (cell.y + treeGrid.cells.y * cell.z)];
+  while (node.axis != AMRSTREAM_TREE_LEAF) node = tree[k[node.axis] < node.split ? node.child : node.child + 1u];
+  return node.child == AMRSTREAM_NO_REGION ? -1 : int(node.child);
 }

@@ -42,11 +42,26 @@ struct RegionTreeNode {
 // A sample whose tent weights sum to no more than this is invalid (no brick covers it).
 #define AMRSTREAM_MIN_WEIGHT_SUM 1e-20f
 
+// The head of the region tree as the GPU kernels read it (src/bricks/descent_tree.hpp): a grid
+// of cells 2^shift lattice units wide from lower, each holding a copy of the deepest tree node
+// that every point of the cell reaches, so that point location starts its descent there rather
+// than at the root. The buffer holds this head, then the grid's entryCount start nodes (x
+// fastest), then the tree, its child indices moved past the start nodes.
+struct RegionTreeGrid {
+  ivec3 lower;      // the root box's lower corner
+  uint shift;       // cells are 2^shift lattice units wide
+  ivec3 last;       // points are clamped to [lower, last] to pick their cell
+  uint entryCount;  // cells.x * cells.y * cells.z
+  uvec3 cells;
+  uint unused;
+};
+
 #define AMRSTREAM_TREE_LEAF 3u
 #define AMRSTREAM_NO_REGION 0xffffffffu
 
 #ifdef __cplusplus
 static_assert(sizeof(Brick) == 32 && offsetof(Brick, size) == 16 && offsetof(Brick, valueOffset) == 28);
+static_assert(sizeof(RegionTreeGrid) == 48 && offsetof(RegionTreeGrid, cells) == 32);
 static_assert(sizeof(Region) == 36 && offsetof(Region, upper) == 16 && offsetof(Region, finestCellWidth) == 32);
 static_assert(sizeof(RegionTreeNode) == 12);
 }  // namespace amrstream::shared
