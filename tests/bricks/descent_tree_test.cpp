@@ -32,19 +32,34 @@ std::int32_t descendFromRoot(const RegionSet& regions, glm::ivec3 k) {
   return leaf == AMRSTREAM_NO_REGION ? -1 : std::int32_t(leaf);
 }
 
-// Lattice points: the probe points, the lattice points around every region corner, points far
-// outside the root box on any axis, and the ends of the 32-bit range.
+// Lattice points: the probe points (where the oracle's doubled coordinates fit 32 bits), the
+// lattice points around every region corner, random points in and around the root box, points
+// far outside it on any axis, and the ends of the 32-bit range.
 std::vector<glm::ivec3> latticeProbes(const std::vector<shared::Brick>& bricks,
                                       const RegionSet& regions, std::uint64_t seed) {
   std::vector<glm::ivec3> out;
-  for (const glm::vec3 p : probePoints(bricks, regions, seed, 400)) {
-    const flow::CellPoint point(p);
-    if (flow::isNear(point)) out.push_back(flow::latticeOf(point));
-  }
+  const auto fits = [](glm::ivec3 k) {
+    return glm::all(glm::lessThan(glm::abs(k), glm::ivec3(1 << 29)));
+  };
+  if (fits(regions.lower) && fits(regions.upper))
+    for (const glm::vec3 p : probePoints(bricks, regions, seed, 400)) {
+      const flow::CellPoint point(p);
+      if (flow::isNear(point)) out.push_back(flow::latticeOf(point));
+    }
+  const auto clamped = [](glm::i64vec3 k) {
+    return glm::ivec3(glm::clamp(k, glm::i64vec3(INT_MIN), glm::i64vec3(INT_MAX)));
+  };
   for (const shared::Region& r : regions.regions)
     for (const glm::ivec3 corner : {r.lower, r.upper})
-      for (int d = -1; d <= 0; ++d) out.push_back(corner + glm::ivec3(d));
+      for (int d = -1; d <= 0; ++d) out.push_back(clamped(glm::i64vec3(corner) + std::int64_t(d)));
   std::mt19937_64 random(seed);
+  for (int i = 0; i < 400; ++i) {
+    glm::i64vec3 k;
+    for (int a = 0; a < 3; ++a)
+      k[a] = std::uniform_int_distribution<std::int64_t>(
+          std::int64_t(regions.lower[a]) - 4, std::int64_t(regions.upper[a]) + 4)(random);
+    out.push_back(clamped(k));
+  }
   std::uniform_int_distribution<int> anywhere(INT_MIN, INT_MAX);
   std::uniform_int_distribution<int> axis(0, 2);
   for (int i = 0; i < 200; ++i) {
