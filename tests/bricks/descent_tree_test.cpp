@@ -165,6 +165,11 @@ TEST(DescentTree, NoBricksIsEmptySpace) {
   EXPECT_EQ(tree.locate(glm::ivec3(INT_MIN)), -1);
   EXPECT_EQ(tree.bytes().size(),
             sizeof(shared::RegionTreeGrid) + tree.nodes.size() * sizeof(shared::RegionTreeNode));
+  // A region set never built (VectorVolume's default) has no tree at all: still one empty cell.
+  const DescentTree none = buildDescentTree(RegionSet{});
+  EXPECT_EQ(none.grid.entryCount, 1u);
+  EXPECT_EQ(none.nodes.size(), 1u);
+  EXPECT_EQ(none.locate(glm::ivec3(5)), -1);
 }
 
 }  // namespace
