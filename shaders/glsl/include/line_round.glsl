@@ -2,6 +2,7 @@
 // mode's direction scaling, VTK termination codes, periodic wrapping and the --max-time
 // shortening of the last step; twin of src/flow/line_tracer.cpp (advanceLine). Needs
 // sampler.glsl.
+#extension GL_EXT_control_flow_attributes : require
 
 // `precise` throughout, as in sampler.glsl: no FMA contraction, like the CPU reference.
 // parameterStep() is the advance of |IntegrationTime| for step h, direction() the stage vector
@@ -56,19 +57,26 @@ bool outsidePauseBox(vec3 x) {
   return any(lessThan(p, params.pauseLower)) || any(greaterThanEqual(p, params.pauseUpper));
 }
 
-VectorSample sampleStage(vec3 unwrapped) {
-  if (!kDeepPositions) return sampleVector(ivec3(0), wrapCellUnits(unwrapped));
-  return sampleVector(wrapPeriodic(lineAnchor, unwrapped), unwrapped);
+// A stage's sample at x + k (`end` false), or a step's end point (`end` true), sampled where the
+// next step starts from it: with the offset's whole cells moved into the anchor (twin of
+// normalized()). One call of sampleVector either way.
+VectorSample samplePoint(vec3 unwrapped, bool end) {
+  ivec3 anchor = ivec3(0);
+  precise vec3 offset = unwrapped;
+  if (!kDeepPositions) {
+    offset = wrapCellUnits(unwrapped);
+  } else if (end && isNear(unwrapped)) {
+    const vec3 whole = floor(unwrapped);
+    offset = unwrapped - whole;
+    anchor = wrapPeriodic(lineAnchor + ivec3(whole), offset);
+  } else {
+    anchor = wrapPeriodic(lineAnchor, unwrapped);
+  }
+  return sampleVector(anchor, offset);
 }
 
-// A step's end point, sampled where the next step starts from it: with the offset's whole cells
-// moved into the anchor (twin of normalized()).
-VectorSample sampleEnd(vec3 unwrapped) {
-  if (!kDeepPositions || !isNear(unwrapped)) return sampleStage(unwrapped);
-  const vec3 whole = floor(unwrapped);
-  precise const vec3 offset = unwrapped - whole;
-  return sampleVector(wrapPeriodic(lineAnchor + ivec3(whole), offset), offset);
-}
+VectorSample sampleStage(vec3 unwrapped) { return samplePoint(unwrapped, false); }
+VectorSample sampleEnd(vec3 unwrapped) { return samplePoint(unwrapped, true); }
 
 // What one step did; twin of flow::StepOutcome (src/flow/line_steps.hpp).
 struct StepOutcome {
@@ -151,6 +159,30 @@ void advanceLine(uint thread) {
     VectorSample sNext;
     precise float stepTaken = h;
     if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) {
+#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
+      // Classic fourth-order Runge-Kutta as one loop over its samples, so that the sampling code
+      // (and its traceRayEXT) appears once; the same sums as the written-out form, in its order.
+      precise const vec3 k1 = scale * direction(s, h);
+      precise vec3 sum = k1;
+      precise vec3 k = k1;
+      [[dont_unroll]] for (int stage = 0; stage < 4; ++stage) {
+        precise vec3 point;
+        if (stage < 3)
+          point = x + (stage == 2 ? 1.0 : 0.5) * k;
+        else
+          point = x + sum / 6.0;
+        const VectorSample sampled = samplePoint(point, stage == 3);
+        if ((reason = sampleFailure(sampled)) != AMRSTREAM_REASON_RUNNING) break;
+        if (stage < 3) {
+          k = scale * direction(sampled, h);
+          sum = sum + (stage == 2 ? 1.0 : 2.0) * k;
+        } else {
+          unwrapped = point;
+          sNext = sampled;
+        }
+      }
+      if (reason != AMRSTREAM_REASON_RUNNING) break;
+#else
       // Classic fourth-order Runge-Kutta, the paper's: written out here, as the hot path.
       precise const vec3 k1 = scale * direction(s, h);
       precise const vec3 p2 = x + 0.5 * k1;
@@ -168,6 +200,7 @@ void advanceLine(uint thread) {
       unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
       sNext = sampleEnd(unwrapped);
       if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
+#endif
     } else {
       const StepOutcome step = kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, h, scale)
                                : kIntegrator == AMRSTREAM_INTEGRATOR_RK2 ? rk2Step(x, s, h, scale)
