@@ -16,6 +16,10 @@ layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer Region
 int locateInRegions(ivec3 k) {
   const uvec3 cell = uvec3(clamp(k, treeGrid.lower, treeGrid.last) - treeGrid.lower) >> treeGrid.shift;
   RegionTreeNode node = tree[cell.x + treeGrid.cells.x * (cell.y + treeGrid.cells.y * cell.z)];
-  while (node.axis != AMRSTREAM_TREE_LEAF) node = tree[k[node.axis] < node.split ? node.child : node.child + 1u];
+  while (node.axis != AMRSTREAM_TREE_LEAF) {
+    // Selected, not indexed: a vector indexed by a run-time value goes to local memory.
+    const int coordinate = node.axis == 0u ? k.x : (node.axis == 1u ? k.y : k.z);
+    node = tree[coordinate < node.split ? node.child : node.child + 1u];
+  }
   return node.child == AMRSTREAM_NO_REGION ? -1 : int(node.child);
 }
