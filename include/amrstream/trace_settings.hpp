@@ -26,6 +26,7 @@ struct TraceSettings {
   bool vorticity = false;
   bool keepHistory = true;         // false: only each line's last point
   std::uint64_t memoryBudget = 0;  // 0: automatic
+  std::uint32_t cpuTail = 0;       // TraceOptions::cpuTailLines: GPU lines the CPU finishes
 };
 
 // The settings checked (InputError naming the setting) against the volume. The collected traces

@@ -29,9 +29,10 @@ enum class HostValues { Keep, Release };
 // Traces `seeds` (physical coordinates, inside the domain) with the requested backend, saying on
 // `log` what was chosen, the device setup and where a GPU trace's host time went. With
 // HostValues::Release and a GPU backend, the volume's values, channel values, gradients and cell
-// map are freed once on the device (the CPU path keeps them). Throws vk::ContextError naming the missing
-// extension when a named backend is not available. The points stay in the rounds that made them
-// (StoredTraces::assemble() gives a TraceSet).
+// map are freed once on the device (the CPU path keeps them, and so does a GPU trace with
+// options.cpuTailLines, whose last lines the CPU finishes). Throws vk::ContextError naming the
+// missing extension when a named backend is not available. The points stay in the rounds that made
+// them (StoredTraces::assemble() gives a TraceSet).
 flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volume,
                          std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                          const flow::TraceProgress& progress = {}, TraceReport* report = nullptr,

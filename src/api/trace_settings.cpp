@@ -141,6 +141,7 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.vorticity = s.vorticity;
   if (s.vorticity) checkVorticityRange(volume);
   options.memoryBudget = s.memoryBudget;
+  options.cpuTailLines = s.cpuTail;
   options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
   return options;
 }

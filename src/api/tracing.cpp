@@ -43,6 +43,11 @@ struct GpuSession {
   gpu::GpuTracer tracer;
 };
 
+// The CPU finishes the last lines of a trace with options.cpuTailLines from the host's values.
+HostValues hostValuesFor(const flow::TraceOptions& options, HostValues asked) {
+  return options.cpuTailLines > 0 ? HostValues::Keep : asked;
+}
+
 // Opens the device for a GPU backend and uploads the volume, saying so on `log`.
 std::unique_ptr<GpuSession> openDevice(const BackendRequest& request,
                                        const BackendChoice& choice, flow::VectorVolume& volume,
@@ -79,6 +84,10 @@ void sayRounds(const gpu::TraceRunStats& run, const Log& log) {
                   run.rounds, run.batches, run.batches == 1 ? "" : "es", run.planSeconds,
                   run.buffersSeconds, run.linesSeconds, run.submitSeconds, run.roundWaitSeconds,
                   run.copyWaitSeconds, run.unpackSeconds, run.collectSeconds, run.storeSeconds));
+  if (run.tailLines > 0)
+    say(log,
+        fmt::format("cpu tail   {} line{} finished on the CPU: {} steps in {:.3f} s", run.tailLines,
+                    run.tailLines == 1 ? "" : "s", run.tailSteps, run.tailSeconds));
 }
 
 flow::StoredTraces traceOnTheCpu(flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
@@ -139,7 +148,7 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
   if (choice.backend == gpu::Backend::Cpu)
     return traceOnTheCpu(volume, seeds, options, progress, t, log);
   const std::unique_ptr<GpuSession> session =
-      openDevice(request, choice, volume, t, hostValues, log);
+      openDevice(request, choice, volume, t, hostValuesFor(options, hostValues), log);
   return traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log);
 }
 
@@ -156,10 +165,14 @@ std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
   if (choice.backend == gpu::Backend::Cpu)
     return std::make_unique<HostTraces>(
         traceOnTheCpu(volume, seeds, options, progress, t, log));
-  std::unique_ptr<GpuSession> session = openDevice(request, choice, volume, t, hostValues, log);
+  std::unique_ptr<GpuSession> session =
+      openDevice(request, choice, volume, t, hostValuesFor(options, hostValues), log);
   const bool software =
       session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  if (store == TraceStore::Device || (store == TraceStore::Auto && !software)) {
+  const bool deviceStore = store == TraceStore::Device || (store == TraceStore::Auto && !software);
+  if (deviceStore && options.cpuTailLines > 0)
+    say(log, "points     to host memory: the CPU finishes the last lines (--cpu-tail)");
+  else if (deviceStore) {
     Stopwatch clock;
     std::unique_ptr<gpu::DeviceTraces> kept;
     try {

@@ -33,7 +33,10 @@ nlohmann::json toJson(const BenchRow& r) {
           {"wall_steps_per_second", r.wallStepsPerSecond()},
           {"device_bytes", r.deviceBytes},
           {"chunks", r.chunks},
-          {"rounds", r.rounds}};
+          {"rounds", r.rounds},
+          {"cpu_tail_lines", r.tailLines},
+          {"cpu_tail_steps", r.tailSteps},
+          {"cpu_tail_seconds", r.tailSeconds}};
 }
 
 nlohmann::json toJson(const BackendSetup& s) {
@@ -46,6 +49,7 @@ nlohmann::json toJson(const BackendSetup& s) {
           {"pipeline_seconds", s.pipelineSeconds},
           {"region_hint", s.regionHint},
           {"dual_values", s.dualValues},
+          {"spread_threads", s.spreadThreads},
           {"volume_bytes", s.volumeBytes},
           {"structure_bytes", s.structureBytes}};
 }
@@ -78,10 +82,13 @@ nlohmann::json toJson(const BenchConfig& c) {
           {"repeats", c.repeats},
           {"steps", c.trace.maxSteps},
           {"round_steps", c.trace.roundSteps},
+          {"cpu_tail_lines", c.trace.cpuTailLines},
           {"step_mode", stepMode},
           {"step_size", c.trace.stepSize},
           {"region_hint", c.regionHint ? nlohmann::json(*c.regionHint) : nlohmann::json("default")},
           {"dual_values", c.dualValues ? nlohmann::json(*c.dualValues) : nlohmann::json("default")},
+          {"spread_threads",
+           c.spreadThreads ? nlohmann::json(*c.spreadThreads) : nlohmann::json("default")},
           {"seed_order", c.spatialSeedOrder ? "spatial" : "given"},
           {"validation", c.validation}};
 }
@@ -97,18 +104,24 @@ std::string tableHeader() {
 std::string tableRow(const BenchRow& r) {
   const std::string kernel = r.kernelSeconds ? fmt::format("{:.4f}", *r.kernelSeconds) : "-";
   const std::string memory = r.deviceBytes ? fmt::format("{:.1f}", mib(r.deviceBytes)) : "-";
-  return fmt::format("{:<9} {:<9} {:>9} {:>13} {:>10} {:>10.4f} {:>12.3e} {:>12.3e} {:>10}\n",
-                     r.backend, modeName(r.history), r.particles, r.steps, kernel, r.wallSeconds,
-                     r.stepsPerSecond(), r.wallStepsPerSecond(), memory);
+  std::string row =
+      fmt::format("{:<9} {:<9} {:>9} {:>13} {:>10} {:>10.4f} {:>12.3e} {:>12.3e} {:>10}\n",
+                  r.backend, modeName(r.history), r.particles, r.steps, kernel, r.wallSeconds,
+                  r.stepsPerSecond(), r.wallStepsPerSecond(), memory);
+  if (r.tailLines > 0)
+    row += fmt::format("  the CPU finished {} line{}: {} steps in {:.4f} s (steps/s by wall)\n",
+                       r.tailLines, r.tailLines == 1 ? "" : "s", r.tailSteps, r.tailSeconds);
+  return row;
 }
 
 std::string setupLine(const BackendSetup& s) {
   return fmt::format(
       "{:<9} on {} ({}): context {:.2f} s, upload {:.2f} s ({:.1f} MiB), structure {:.2f} s "
-      "({:.1f} MiB), pipeline {:.2f} s; region hint {}, dual values {}\n",
+      "({:.1f} MiB), pipeline {:.2f} s; region hint {}, dual values {}, spread below {} "
+      "threads\n",
       s.backend, s.device, s.driver, s.contextSeconds, s.uploadSeconds, mib(s.volumeBytes),
       s.structureSeconds, mib(s.structureBytes), s.pipelineSeconds, s.regionHint ? "on" : "off",
-      s.dualValues ? "on" : "off");
+      s.dualValues ? "on" : "off", s.spreadThreads);
 }
 
 void writeJson(const std::filesystem::path& path, const BenchReport& report) {

@@ -22,6 +22,7 @@ struct BenchConfig {
   std::optional<bool> regionHint;        // GPU kernels test the previous region first; none:
                                          // each backend's default (gpu::defaultKernelSettings)
   std::optional<bool> dualValues;        // GPU kernels read dual cells; none: the default
+  std::optional<std::uint32_t> spreadThreads;  // gpu::KernelSettings::spreadThreads; none: default
   bool spatialSeedOrder = true;          // GPU threads take seeds in Morton order (GpuTracer)
   std::string deviceFilter;              // a substring of the Vulkan device's name
   unsigned deviceSlot = 0;               // which qualifying device (vk::ContextBuilder)
@@ -41,8 +42,13 @@ struct BenchRow {
   std::uint64_t deviceBytes = 0;         // GPU: volume + structure + the largest batch's buffers
   std::size_t chunks = 0;                // GPU: batches of lines
   std::size_t rounds = 0;                // GPU: rounds of steps, over all batches
+  // GPU with trace.cpuTailLines: the lines the CPU reference finished, its steps for them, and
+  // its wall time (part of wallSeconds).
+  std::size_t tailLines = 0;
+  std::uint64_t tailSteps = 0;
+  double tailSeconds = 0.0;
 
-  // Kernel time where there is one, else wall time.
+  // Kernel time where there is one and the GPU took every step, else wall time.
   double stepsPerSecond() const;
   double wallStepsPerSecond() const;
 };
@@ -58,6 +64,7 @@ struct BackendSetup {
   double pipelineSeconds = 0.0;
   bool regionHint = false;
   bool dualValues = false;
+  std::uint32_t spreadThreads = 0;
   std::uint64_t volumeBytes = 0;
   std::uint64_t structureBytes = 0;
 };

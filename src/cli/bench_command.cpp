@@ -42,6 +42,7 @@ struct BenchCommandOptions {
   std::uint32_t repeats = 1;
   std::uint32_t steps = 1000;
   std::uint32_t roundSteps = 0;
+  std::uint32_t cpuTailLines = 0;
   std::optional<float> stepSize;
   std::string stepMode = "cell";
   std::string interpolant = "tent";
@@ -52,6 +53,7 @@ struct BenchCommandOptions {
   std::string device;
   std::string regionHint = "default";
   std::string dualValues = "default";
+  std::int64_t spreadThreads = -1;
   std::string seedOrder = "spatial";
   std::string json = "bench.json";
   std::string commandLine;
@@ -115,10 +117,12 @@ bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVo
   config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
   config.trace.maxSteps = o.steps;
   config.trace.roundSteps = o.roundSteps;
+  config.trace.cpuTailLines = o.cpuTailLines;
   config.trace.direction = flow::Direction::Forward;  // the paper's experiment
   config.deviceFilter = o.device;
   if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
   if (o.dualValues != "default") config.dualValues = o.dualValues == "on";
+  if (o.spreadThreads >= 0) config.spreadThreads = static_cast<std::uint32_t>(o.spreadThreads);
   config.spatialSeedOrder = o.seedOrder == "spatial";
   config.validation = validationRequested();
   return config;
@@ -297,6 +301,13 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
       ->capture_default_str()
       ->check(countIn(0, kMaxSteps));
   command
+      ->add_option("--cpu-tail", options->cpuTailLines,
+                   "GPU rows: once a round leaves this many running lines or fewer, the CPU "
+                   "finishes them on all cores (0: never; without history the GPU then runs "
+                   "rounds of an eighth of the steps, at least 1000)")
+      ->capture_default_str()
+      ->check(countIn(0, kMaxLineCount));
+  command
       ->add_option("--step-size", options->stepSize,
                    "h: in cell widths (cell, arc) or physical time (time) [default 0.25]")
       ->check(positiveFloat());
@@ -340,6 +351,14 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
                    "or the default")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "on", "off"}));
+  command
+      ->add_option("--spread-threads", options->spreadThreads,
+                   "GPU rounds of fewer lines than this give each line up to 32 invocations, "
+                   "the first tracing it, at most this many in all (0: one invocation a line; "
+                   "-1: the default, 131072 for compute and rayquery on GPUs, 65536 for pipeline, "
+                   "0 on CPU devices)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::int64_t(-1), std::int64_t(kMaxLineCount)));
   command
       ->add_option("--seed-order", options->seedOrder,
                    "spatial: GPU threads take seeds in Morton order of their positions; given: "

@@ -11,6 +11,9 @@ namespace amrstream::cli {
 // point whatever the count.
 inline constexpr std::uint64_t kMaxSteps = 1'000'000'000;
 
+// Counts of lines and of GPU invocations (--cpu-tail, --spread-threads): 32 bits.
+inline constexpr std::uint64_t kMaxLineCount = 2'147'483'647;
+
 // Builtin datasets: cells are numbered in 32 bits.
 inline constexpr std::uint64_t kMaxTargetCells = 2'147'483'647;
 

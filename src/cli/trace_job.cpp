@@ -362,6 +362,14 @@ void addTraceJobOptions(CLI::App& app, TraceJobOptions& job, std::size_t default
       ->check(countIn(0, hostMemoryBytes()))
       ->capture_default_str();
   command
+      ->add_option("--cpu-tail", options->trace.cpuTail,
+                   "on a GPU: once a round leaves this many running lines or fewer, the CPU "
+                   "finishes them on all cores (a lone line's step is faster there); 0: never. "
+                   "Without history the GPU then runs rounds of an eighth of --steps, at least "
+                   "1000; the points wait in host memory")
+      ->capture_default_str()
+      ->check(countIn(0, kMaxLineCount));
+  command
       ->add_option("--backend", options->backend.backend,
                    "auto (rayquery, else pipeline, else compute, else cpu), rayquery, "
                    "pipeline, compute or cpu")

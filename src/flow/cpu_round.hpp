@@ -3,6 +3,7 @@
 // themselves (the round tracer of integrator.hpp, MPI ranks that hand lines to each other).
 
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
@@ -19,5 +20,12 @@ namespace amrstream::flow {
 RoundBlock traceCpuRound(const VectorVolume& volume, const shared::TraceParams& params,
                          const TraceOptions& options, std::vector<shared::LineState>& live,
                          const std::function<void()>& lineEnded = [] {});
+
+// Traces `lines` (states of earlier rounds, any tracer's) to their end on all cores, in batches
+// and rounds within options' memory budget, handing each round's block to `consume`.
+void traceCpuToEnd(
+    const VectorVolume& volume, std::span<const shared::LineState> lines,
+    const TraceOptions& options, const std::function<void(RoundBlock&&)>& consume,
+    const std::function<void()>& lineEnded = [] {});
 
 }  // namespace amrstream::flow

@@ -118,6 +118,20 @@ std::unique_ptr<RoundTracer> cpuRoundTracer(const VectorVolume& volume,
       volume, std::vector<shared::LineState>(lines.begin(), lines.end()), options, [] {});
 }
 
+void traceCpuToEnd(const VectorVolume& volume, std::span<const shared::LineState> lines,
+                   const TraceOptions& options, const std::function<void(RoundBlock&&)>& consume,
+                   const std::function<void()>& lineEnded) {
+  const std::size_t batch = linesPerBatch(options, kCpuCosts, lines.size());
+  for (std::size_t first = 0; first < lines.size(); first += batch) {
+    const std::size_t count = std::min(batch, lines.size() - first);
+    const std::span<const shared::LineState> mine = lines.subspan(first, count);
+    CpuRoundTracer rounds(volume, {mine.begin(), mine.end()}, options, lineEnded);
+    const std::uint64_t slots = pointSlots(options, kCpuCosts, count);
+    while (rounds.liveLines() > 0)
+      consume(rounds.advance(stepsPerRound(options, slots, rounds.liveLines())));
+  }
+}
+
 shared::TraceParams makeTraceParams(const VectorVolume& volume, const TraceOptions& options) {
   const glm::dvec3 spacing = volume.transform.spacing;
   shared::TraceParams params{};
@@ -164,20 +178,13 @@ StoredTraces traceToRounds(const VectorVolume& volume, std::span<const glm::dvec
   const std::size_t lines = plan.states.size();
   TraceAccumulator accumulator(std::move(plan.layout), traceShape(volume, options));
   accumulator.setMemoryLimit(options.maxResultBytes);
-  const std::size_t batch = linesPerBatch(options, kCpuCosts, lines);
   std::atomic<std::size_t> ended{0};
-  const auto lineEnded = [&] {
-    const std::size_t done = ++ended;
-    if (progress) progress(done, lines);
-  };
-  for (std::size_t first = 0; first < lines; first += batch) {
-    const std::size_t last = std::min(lines, first + batch);
-    CpuRoundTracer rounds(volume, {plan.states.begin() + first, plan.states.begin() + last},
-                          options, lineEnded);
-    const std::uint64_t slots = pointSlots(options, kCpuCosts, last - first);
-    while (rounds.liveLines() > 0)
-      accumulator.add(rounds.advance(stepsPerRound(options, slots, rounds.liveLines())));
-  }
+  traceCpuToEnd(
+      volume, plan.states, options, [&](RoundBlock&& block) { accumulator.add(std::move(block)); },
+      [&] {
+        const std::size_t done = ++ended;
+        if (progress) progress(done, lines);
+      });
   return accumulator.store();
 }
 

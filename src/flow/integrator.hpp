@@ -55,6 +55,11 @@ struct TraceOptions {
   // for rounds of 64 steps within 256 MiB .. 2 GiB (line_plan.hpp).
   std::uint64_t memoryBudget = 0;
   std::uint32_t roundSteps = 0;  // steps per round; 0: as many as the budget allows
+  // GPU traces: once a round leaves this many live lines or fewer, the CPU reference finishes
+  // them on all cores, where a lone line's step is faster than on a GPU (0: never; never either
+  // when the volume's host values were released). Without history and roundSteps, the GPU then
+  // runs rounds of an eighth of maxSteps, at least 1000, so that the lines' ends are seen.
+  std::uint32_t cpuTailLines = 0;
   // Lines pause, as at a round's end, after a step that ends outside this box (finest-cell
   // units, [lower, upper)): MPI ranks tracing over data then hand them on.
   struct Box {

@@ -16,6 +16,8 @@ namespace amrstream::gpu {
 
 namespace {
 
+constexpr std::uint32_t kMostLaneShift = 5;  // a line alone in a subgroup of 32
+
 constexpr std::array<VkDescriptorPoolSize, 3> kPerSet{
     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompactionBindingCount},
@@ -164,6 +166,12 @@ std::uint64_t GpuRounds::deviceBytes() const {
 void GpuRounds::submitRound(std::uint32_t steps) {
   const std::size_t lines = live_;
   params_.lineCount = static_cast<std::uint32_t>(lines);
+  params_.laneShift = 0;
+  while (params_.laneShift < kMostLaneShift &&
+         (std::uint64_t(lines) << (params_.laneShift + 1)) <= spreadThreads_)
+    ++params_.laneShift;
+  const std::size_t invocations = lines << params_.laneShift;
+  times_.mostLanesPerLine = std::max(times_.mostLanesPerLine, 1u << params_.laneShift);
   params_.roundSteps = std::max(steps, 1u);
   params_.pointsPerLine = flow::pointsPerLine(options_, params_.roundSteps);
   if (std::uint64_t(lines) * params_.pointsPerLine > buffers_.pointCapacity)
@@ -195,9 +203,9 @@ void GpuRounds::submitRound(std::uint32_t steps) {
     if (pipeline) {
       const ShaderBindingTable& sbt = trace_->bindingTable;
       ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
-                                          params_.lineCount, 1, 1);
+                                          static_cast<std::uint32_t>(invocations), 1, 1);
     } else {
-      vkCmdDispatch(cmd, groups(lines, trace_->workgroupSize), 1, 1);
+      vkCmdDispatch(cmd, groups(invocations, trace_->workgroupSize), 1, 1);
     }
     if (traceTimer_) traceTimer_->stop(cmd);
 
@@ -385,7 +393,8 @@ void GpuRounds::keepRound(const shared::RoundSummary& summary, std::size_t lines
 void GpuRounds::runRounds(
     const std::function<std::uint32_t(std::size_t live)>& stepsFor,
     const std::function<void()>& whileTracing,
-    const std::function<void(const shared::RoundSummary&, const std::function<void()>&)>& take) {
+    const std::function<void(const shared::RoundSummary&, const std::function<void()>&)>& take,
+    std::size_t stopAt) {
   if (live_ == 0) return;
   Stopwatch clock;
   submitRound(stepsFor(live_));
@@ -395,21 +404,24 @@ void GpuRounds::runRounds(
     const shared::RoundSummary summary = finishRound();
     live_ = summary.liveLines;
     take(summary, [&] {
-      if (live_ > 0) submitRound(stepsFor(live_));
+      if (live_ > stopAt) submitRound(stepsFor(live_));
     });
-    if (live_ == 0) break;
+    if (live_ <= stopAt) break;
   }
 }
 
 void GpuRounds::runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
-                         const std::function<void(flow::RoundBlock&&)>& consume) {
-  runRounds(stepsFor, {}, [&](const shared::RoundSummary& summary,
-                              const std::function<void()>& submitNext) {
-    flow::RoundBlock block = readRound(summary, roundLines_, submitNext);
-    Stopwatch clock;
-    consume(std::move(block));
-    times_.consumeSeconds += clock.seconds();
-  });
+                         const std::function<void(flow::RoundBlock&&)>& consume,
+                         std::size_t stopAt) {
+  runRounds(
+      stepsFor, {},
+      [&](const shared::RoundSummary& summary, const std::function<void()>& submitNext) {
+        flow::RoundBlock block = readRound(summary, roundLines_, submitNext);
+        Stopwatch clock;
+        consume(std::move(block));
+        times_.consumeSeconds += clock.seconds();
+      },
+      stopAt);
 }
 
 // Each round's buffers are made while the device traces it.

@@ -38,6 +38,7 @@ struct RoundTimes {
   std::optional<double> traceSeconds;       // the tracing kernel
   std::optional<double> compactionSeconds;  // compaction and point data
   std::size_t rounds = 0;
+  std::uint32_t mostLanesPerLine = 0;  // the widest spread of a round (spreadLines)
   // Host wall time: recording and submitting rounds and copies, waiting for rounds, waiting for
   // their copies, unpacking the copies, and the consumer's share.
   double submitSeconds = 0.0, roundWaitSeconds = 0.0, copyWaitSeconds = 0.0, unpackSeconds = 0.0,
@@ -67,16 +68,22 @@ class GpuRounds final : public flow::RoundTracer {
   // Read back from the device (the compaction left them first in `states`).
   std::vector<shared::LineState> liveStates() const override;
 
-  // Runs rounds until every line has ended, handing each round's block to `consume` (on this
+  // Runs rounds until every line has ended, or until a round leaves `stopAt` live lines or
+  // fewer (their states: liveStates()), handing each round's block to `consume` (on this
   // thread) while the next round runs on the device. `stepsFor(live)` gives each round's steps.
   void runToEnd(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
-                const std::function<void(flow::RoundBlock&&)>& consume);
+                const std::function<void(flow::RoundBlock&&)>& consume, std::size_t stopAt = 0);
 
   // The same, leaving each round's points on the device: `keep` gets the round's reports and its
   // points, copied out of the buffers the next round reuses.
   void runToEndOnDevice(
       const std::function<std::uint32_t(std::size_t live)>& stepsFor,
       const std::function<void(std::vector<shared::LineRound>&&, KeptRound&&)>& keep);
+
+  // Rounds of fewer lines than `threads` give each line 2, 4, .. up to 32 invocations, at most
+  // `threads` in all, the first of them tracing it (include/line_round.glsl): a subgroup's loads
+  // wait for all of its lanes, and lines alone in theirs take their steps sooner. 0: off.
+  void spreadLines(std::uint32_t threads) { spreadThreads_ = threads; }
 
   const RoundTimes& times() const { return times_; }
   std::uint64_t deviceBytes() const;
@@ -89,14 +96,16 @@ class GpuRounds final : public flow::RoundTracer {
   flow::RoundBlock readRound(const shared::RoundSummary& summary, std::size_t lines,
                              const std::function<void()>& afterLastCopy);
 
-  // Runs rounds to the end. `whileTracing` runs on the host after each round is submitted;
+  // Runs rounds to the end, or until a round leaves `stopAt` live lines or fewer. `whileTracing`
+  // runs on the host after each round is submitted;
   // `take` reads the round just finished and calls its second argument once it no longer needs
   // the round's buffers before the next round overwrites them (after the copies out of them are
   // submitted), which submits the next round.
-  void runRounds(const std::function<std::uint32_t(std::size_t live)>& stepsFor,
-                 const std::function<void()>& whileTracing,
-                 const std::function<void(const shared::RoundSummary&,
-                                          const std::function<void()>&)>& take);
+  void runRounds(
+      const std::function<std::uint32_t(std::size_t live)>& stepsFor,
+      const std::function<void()>& whileTracing,
+      const std::function<void(const shared::RoundSummary&, const std::function<void()>&)>& take,
+      std::size_t stopAt = 0);
   // Device buffers for the points of the round submitted last, as many as it may emit but at
   // most `pointsLeft`.
   KeptRound roomForRound(std::uint64_t pointsLeft) const;
@@ -121,6 +130,7 @@ class GpuRounds final : public flow::RoundTracer {
   std::optional<vk::GpuTimer> traceTimer_, compactionTimer_;
   std::size_t live_;
   std::size_t roundLines_ = 0;  // lines of the round submitted last
+  std::uint32_t spreadThreads_ = 0;
   int parity_ = 0;              // which line-round buffer the next round writes
   RoundTimes times_;
   std::optional<vk::Submission> keepCopy_;

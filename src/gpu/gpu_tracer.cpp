@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "flow/cpu_round.hpp"
 #include "gpu_rounds.hpp"
 #include "morton_order.hpp"
 #include "util/stopwatch.hpp"
@@ -20,6 +21,15 @@
 namespace amrstream::gpu {
 
 namespace {
+
+// flow::stepsPerRound, but without history and a set round length, rounds of an eighth of the
+// steps (at least 1000) when lines may be handed to the CPU, so that their ends are seen.
+std::uint32_t gpuRoundSteps(const flow::TraceOptions& options, std::uint64_t slots,
+                            std::size_t live) {
+  if (options.cpuTailLines > 0 && !options.keepHistory && options.roundSteps == 0)
+    return std::min(options.maxSteps, std::max(options.maxSteps / 8, 1000u));
+  return flow::stepsPerRound(options, slots, live);
+}
 
 // The lines in the order threads take them: Morton order of their positions, or as given.
 flow::Column<shared::LineState> threadOrder(std::span<const shared::LineState> lines,
@@ -84,6 +94,8 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
       settings_(settings) {
   settings_.deepPositions = volume.deepPositions();
   settings_.dualValues = device_.dualValues.size() > 0;
+  settings_.spreadThreads = settings.spreadThreads.value_or(
+      ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : residentThreads(backend));
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
   roundKernels_ = createRoundKernels(ctx);
@@ -176,8 +188,9 @@ void GpuTracer::traceBatches(std::span<const shared::LineState> states,
         threadOrder(states.subspan(first, count), spatialOrder_);
     GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, ordered, options,
                      *roundBuffers_, *staging_, timeKernels_);
+    rounds.spreadLines(*settings_.spreadThreads);
     lastRun_.linesSeconds += clock.seconds();
-    run(rounds, [&](std::size_t live) { return flow::stepsPerRound(options, slots, live); });
+    run(rounds, [&](std::size_t live) { return gpuRoundSteps(options, slots, live); });
     const RoundTimes& t = rounds.times();
     const auto add = [](std::optional<double>& total, const std::optional<double>& part,
                         bool firstBatch) {
@@ -188,6 +201,7 @@ void GpuTracer::traceBatches(std::span<const shared::LineState> states,
     add(lastRun_.compactionSeconds, t.compactionSeconds, first == 0);
     ++lastRun_.batches;
     lastRun_.rounds += t.rounds;
+    lastRun_.mostLanesPerLine = std::max(lastRun_.mostLanesPerLine, t.mostLanesPerLine);
     lastRun_.roundBytes = std::max(lastRun_.roundBytes, rounds.deviceBytes());
     lastRun_.submitSeconds += t.submitSeconds;
     lastRun_.roundWaitSeconds += t.roundWaitSeconds;
@@ -213,16 +227,41 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
   const std::size_t lines = plan.states.size();
   flow::TraceAccumulator accumulator(std::move(plan.layout), flow::traceShape(*volume_, options));
   accumulator.setMemoryLimit(options.maxResultBytes);
+  const auto consume = [&](flow::RoundBlock&& block) {
+    accumulator.add(std::move(block));
+    if (progress) progress(accumulator.finishedLines(), lines);
+  };
+  std::vector<shared::LineState> tail;
   traceBatches(plan.states, options, [&](GpuRounds& rounds, const StepsFor& stepsFor) {
-    rounds.runToEnd(stepsFor, [&](flow::RoundBlock&& block) {
-      accumulator.add(std::move(block));
-      if (progress) progress(accumulator.finishedLines(), lines);
-    });
+    rounds.runToEnd(stepsFor, consume, volume_->values.empty() ? 0 : options.cpuTailLines);
+    if (rounds.liveLines() == 0) return;
+    Stopwatch clock;
+    const std::vector<shared::LineState> states = rounds.liveStates();
+    tail.insert(tail.end(), states.begin(), states.end());
+    lastRun_.tailSeconds += clock.seconds();
   });
+  if (!tail.empty()) finishOnCpu(tail, options, consume);
   Stopwatch storeClock;
   flow::StoredTraces stored = accumulator.store();
   lastRun_.storeSeconds = storeClock.seconds();
   return stored;
+}
+
+void GpuTracer::finishOnCpu(std::span<const shared::LineState> lines,
+                            const flow::TraceOptions& options,
+                            const std::function<void(flow::RoundBlock&&)>& consume) {
+  Stopwatch clock;
+  std::uint64_t stepsBefore = 0;
+  for (const shared::LineState& line : lines) stepsBefore += line.steps;
+  std::uint64_t stepsAfter = 0;
+  flow::traceCpuToEnd(*volume_, lines, options, [&](flow::RoundBlock&& block) {
+    for (const shared::LineRound& line : block.lines)
+      if (line.reason != AMRSTREAM_REASON_RUNNING) stepsAfter += line.steps;
+    consume(std::move(block));
+  });
+  lastRun_.tailLines += lines.size();
+  lastRun_.tailSteps += stepsAfter - stepsBefore;
+  lastRun_.tailSeconds += clock.seconds();
 }
 
 bool GpuTracer::fitsOnDevice(const flow::TraceOptions& options, std::size_t lines) const {
@@ -275,9 +314,11 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
       std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
                                      volume_->channelCount(), options.vorticity,
                                      volume_->deepPositions());
-  return std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
-                                     ordered, options, std::move(buffers), *staging_,
-                                     timeKernels_);
+  auto rounds =
+      std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
+                                  ordered, options, std::move(buffers), *staging_, timeKernels_);
+  rounds->spreadLines(*settings_.spreadThreads);
+  return rounds;
 }
 
 flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
@@ -304,8 +345,10 @@ flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
   }
   GpuRounds rounds(*ctx_, kernelFor(options), roundKernels_, device_, *volume_, lines, options,
                    *roundBuffers_, *staging_, timeKernels_);
+  rounds.spreadLines(*settings_.spreadThreads);
   lastRun_.linesSeconds += clock.seconds();
   flow::RoundBlock block = rounds.advance(steps);
+  lastRun_.mostLanesPerLine = std::max(lastRun_.mostLanesPerLine, rounds.times().mostLanesPerLine);
   clock.restart();
   lines = rounds.liveStates();
   lastRun_.statesSeconds += clock.seconds();

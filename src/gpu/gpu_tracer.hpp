@@ -42,6 +42,7 @@ struct TraceRunStats {
   std::optional<double> compactionSeconds;  // compaction and point data (with timing)
   std::size_t batches = 0;
   std::size_t rounds = 0;
+  std::uint32_t mostLanesPerLine = 0;  // invocations a line in the widest-spread round
   std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
   // Host wall time of trace()'s parts: planning the lines, making the batches' buffers, ordering
   // and uploading their lines, submitting rounds and copies, waiting for the rounds and for their
@@ -52,6 +53,11 @@ struct TraceRunStats {
          storeSeconds = 0.0, assembleSeconds = 0.0;
   // advanceRound(): reading the live lines' states back, summed over calls.
   double statesSeconds = 0.0;
+  // Lines the CPU reference finished (options.cpuTailLines), the steps it took for them, and
+  // its wall time (from reading their states back).
+  std::size_t tailLines = 0;
+  std::uint64_t tailSteps = 0;
+  double tailSeconds = 0.0;
 };
 
 class GpuTracer {
@@ -132,6 +138,10 @@ class GpuTracer {
   // Traces `states` batch by batch; `run` runs a batch's rounds to the end with the steps per
   // round it is given.
   using StepsFor = std::function<std::uint32_t(std::size_t live)>;
+  // Finishes `lines` (live states of GPU rounds) with the CPU reference, handing its rounds to
+  // `consume`.
+  void finishOnCpu(std::span<const shared::LineState> lines, const flow::TraceOptions& options,
+                   const std::function<void(flow::RoundBlock&&)>& consume);
   void traceBatches(std::span<const shared::LineState> states, const flow::TraceOptions& options,
                     const std::function<void(GpuRounds&, const StepsFor&)>& run);
   // The kernel taking the options' integrator's steps.

@@ -94,6 +94,10 @@ void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
 
 KernelSettings defaultKernelSettings(Backend) { return KernelSettings{}; }
 
+std::uint32_t residentThreads(Backend backend) {
+  return backend == Backend::Pipeline ? 1u << 16 : 1u << 17;
+}
+
 TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program,
                               const KernelSettings& settings) {
   const bool probe = program == KernelProgram::LocateProbe;

@@ -55,7 +55,17 @@ struct KernelSettings {
   // interpolant, buffer device addresses, and a quarter of the device's memory. Unset: on GPUs
   // only (on a CPU device such as lavapipe they take host memory, 8 times the values).
   std::optional<bool> dualValues;
+  // Rounds of few lines spread them over the subgroups (GpuRounds::spreadLines): at most this
+  // many invocations in all. Unset: residentThreads(backend) on GPUs, 0 (one invocation a line)
+  // on a CPU device, whose lanes a spread leaves idle.
+  std::optional<std::uint32_t> spreadThreads;
 };
+
+// About the threads of a backend's tracing kernel that a large GPU keeps resident, as measured on
+// an H200 (docs/benchmarks.md): 2^17 for the compute kernels (132 multiprocessors of 32
+// subgroups: their 64 registers a thread allow no more), 2^16 for the ray tracing pipeline.
+// Spread past them, lines of equal length run in two waves.
+std::uint32_t residentThreads(Backend backend);
 
 // The settings each backend runs with unless told otherwise: the region hint on everywhere.
 KernelSettings defaultKernelSettings(Backend backend);

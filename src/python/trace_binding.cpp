@@ -383,8 +383,8 @@ void bindTracing(py::module_& m) {
          std::string stepMode, std::string integrator, float tolerance,
          std::optional<float> minStep, std::optional<float> maxStep, std::string direction,
          bool vorticity, float maxLength, float maxTime, float terminalSpeed,
-         std::uint64_t memoryBudget, std::string backend, std::string device, bool validation,
-         py::object progress, bool verbose) {
+         std::uint64_t memoryBudget, std::uint32_t cpuTail, std::string backend, std::string device,
+         bool validation, py::object progress, bool verbose) {
         TraceSettings settings;
         settings.steps = steps;
         settings.stepSize = stepSize;
@@ -399,6 +399,7 @@ void bindTracing(py::module_& m) {
         settings.maxTime = maxTime;
         settings.terminalSpeed = terminalSpeed;
         settings.memoryBudget = memoryBudget;
+        settings.cpuTail = cpuTail;
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
         return runTrace(target, seeds, vector, pointData, periodic, interpolant, settings, request,
@@ -408,12 +409,12 @@ void bindTracing(py::module_& m) {
       py::arg("point_data") = py::none(), py::arg("periodic") = py::none(),
       py::arg("interpolant") = py::none(), py::arg("steps") = 1000,
       py::arg("step_size") = py::none(), py::arg("step_mode") = "arc",
-      py::arg("integrator") = "rk4", py::arg("tolerance") = 1e-4f,
-      py::arg("min_step") = py::none(), py::arg("max_step") = py::none(),
-      py::arg("direction") = "both", py::arg("vorticity") = false, py::arg("max_length") = 0.0f,
-      py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f, py::arg("memory_budget") = 0,
-      py::arg("backend") = "auto", py::arg("device") = "", py::arg("validation") = false,
-      py::arg("progress") = py::none(), py::arg("verbose") = false,
+      py::arg("integrator") = "rk4", py::arg("tolerance") = 1e-4f, py::arg("min_step") = py::none(),
+      py::arg("max_step") = py::none(), py::arg("direction") = "both", py::arg("vorticity") = false,
+      py::arg("max_length") = 0.0f, py::arg("max_time") = 0.0f, py::arg("terminal_speed") = 1e-12f,
+      py::arg("memory_budget") = 0, py::arg("cpu_tail") = 0, py::arg("backend") = "auto",
+      py::arg("device") = "", py::arg("validation") = false, py::arg("progress") = py::none(),
+      py::arg("verbose") = false,
       "Traces streamlines from seeds ((N, 3) points) through a Dataset (vector, point_data "
       "and periodic as for prepare()) or a prepared Field, as `amrstream trace` does.");
   m.def(

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "bricks/descent_tree.hpp"
@@ -114,6 +115,18 @@ flow::VectorVolume volumeOf(const bricks::AmrField& field, flow::VolumeOptions o
   return flow::buildVectorVolume(field, flow::chooseVectorChannels(field, ""), options);
 }
 
+// A random four-level layout of a rotation about the axis x = y = 16, moving along it at
+// `axial` + `growth` (z - 16).
+bricks::AmrField rotationAboutZ(double axial, double growth) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 4;
+  const glm::dvec3 centre(16.0, 16.0, 16.0);
+  return testing::randomAmr(5, layout, [=](glm::dvec3 p) {
+    const glm::dvec3 r = p - centre;
+    return glm::vec3(-0.05 * r.y, 0.05 * r.x, axial + growth * r.z);
+  });
+}
+
 TEST_P(GpuTracerTest, MatchesCpuOnRotationInBothDirections) {
   const bricks::AmrField field = synth::generate("rotation", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = volumeOf(field);
@@ -157,14 +170,7 @@ TEST_P(GpuTracerTest, MatchesCpuOnRandomMultiLevelLayouts) {
 
 // The region hint, on and off (each backend's default is one of them): the same traces.
 TEST_P(GpuTracerTest, WithAndWithoutTheRegionHintMatchesCpu) {
-  testing::RandomAmrOptions layout;
-  layout.levels = 4;
-  const glm::dvec3 centre(16.0, 16.0, 16.0);
-  const bricks::AmrField field = testing::randomAmr(5, layout, [&](glm::dvec3 p) {
-    const glm::dvec3 r = p - centre;
-    return glm::vec3(-0.05 * r.y, 0.05 * r.x, 0.02);
-  });
-  const flow::VectorVolume volume = volumeOf(field);
+  const flow::VectorVolume volume = volumeOf(rotationAboutZ(0.02, 0.0));
   flow::TraceOptions options;
   options.maxSteps = 200;
   for (const bool hint : {false, true}) {
@@ -543,6 +549,86 @@ TEST_P(GpuTracerTest, BatchesRespectTheStorageBufferRange) {
   const std::size_t batch = tracer.linesPerBatch(options, std::size_t(1) << 34);
   EXPECT_GT(batch, 0u);
   EXPECT_LE(batch * 2 * sizeof(glm::vec3), ctx().limits().maxStorageBufferRange);
+}
+
+// Rounds of few lines give each line up to 32 invocations (KernelSettings::spreadThreads), only
+// the first tracing it: the traces are those of one invocation a line bit for bit, with history
+// and endpoints only, in rounds (the spread widening as lines end).
+TEST_P(GpuTracerTest, SpreadLinesTraceAsOneInvocationEach) {
+  const flow::VectorVolume volume = volumeOf(rotationAboutZ(0.04, 0.0));
+  const flow::SeedList seeds = seedsIn(volume, 48);  // 96 lines
+  for (const bool history : {true, false}) {
+    SCOPED_TRACE(history ? "history" : "endpoints");
+    flow::TraceOptions options;
+    options.maxSteps = 400;
+    options.keepHistory = history;
+    options.roundSteps = 60;
+    std::map<std::uint32_t, flow::TraceSet> traces;
+    for (const std::uint32_t threads : {0u, 256u, 4096u}) {
+      KernelSettings settings = settings_;
+      settings.spreadThreads = threads;
+      GpuTracer tracer(ctx(), GetParam(), volume, settings);
+      traces[threads] = tracer.trace(seeds.points, options);
+      EXPECT_GT(tracer.lastRun().rounds, 3u);
+      // 256: 2 a line in the first round of 96 lines, more as lines end.
+      const std::uint32_t lanes = tracer.lastRun().mostLanesPerLine;
+      EXPECT_EQ(lanes == 1, threads == 0) << lanes;
+      EXPECT_EQ(lanes == 32, threads == 4096) << lanes;
+    }
+    for (const std::uint32_t threads : {256u, 4096u}) {
+      const flow::TraceSet& spread = traces[threads];
+      const flow::TraceSet& one = traces[0];
+      EXPECT_EQ(spread.steps, one.steps) << threads;
+      EXPECT_EQ(spread.reasons, one.reasons) << threads;
+      EXPECT_EQ(spread.offsets, one.offsets) << threads;
+      EXPECT_EQ(spread.positions, one.positions) << threads;
+      EXPECT_EQ(spread.times, one.times) << threads;
+      EXPECT_EQ(spread.vectors, one.vectors) << threads;
+    }
+    if (history)
+      expectGpuMatchesCpu(traces[4096], flow::traceStreamlines(volume, seeds.points, options),
+                          volume);
+  }
+}
+
+// TraceOptions::cpuTailLines: once a round leaves that many lines or fewer, the CPU reference
+// finishes them from the GPU's states; the traces are the CPU's within the GPU's tolerance,
+// with history (rounds of the memory budget) and endpoints only (rounds of an eighth of the
+// steps, at least 1000).
+TEST_P(GpuTracerTest, LinesFinishedOnTheCpuMatchCpu) {
+  // Lines leave through the top and bottom at varied steps.
+  const flow::VectorVolume volume = volumeOf(rotationAboutZ(0.0, 0.001));
+  const flow::SeedList seeds = seedsIn(volume, 40);
+  for (const bool history : {true, false}) {
+    SCOPED_TRACE(history ? "history" : "endpoints");
+    flow::TraceOptions options;
+    options.stepMode = flow::StepMode::Arc;
+    options.stepSize = 0.5f;
+    options.maxSteps = 2400;
+    options.keepHistory = history;
+    options.memoryBudget = history ? 1 << 20 : 0;
+    options.cpuTailLines = 12;
+    GpuTracer tracer(ctx(), GetParam(), volume, settings_);
+    const flow::TraceSet gpu = tracer.trace(seeds.points, options);
+    const TraceRunStats& run = tracer.lastRun();
+    EXPECT_GT(run.tailLines, 0u);
+    EXPECT_LE(run.tailLines, 12u);
+    EXPECT_GT(run.tailSteps, 0u);
+    if (!history) {
+      EXPECT_EQ(run.rounds, 1u);  // rounds of 1000 steps: the tail after the first
+    }
+    const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
+    if (history) {
+      expectGpuMatchesCpu(gpu, cpu, volume);
+      continue;
+    }
+    ASSERT_EQ(gpu.steps, cpu.steps);
+    ASSERT_EQ(gpu.reasons, cpu.reasons);
+    for (std::size_t line = 0; line < cpu.lineCount(); ++line)
+      EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
+                positionTolerance(cpu.steps[line]) * volume.transform.spacing.x)
+          << "line " << line;
+  }
 }
 
 // The run statistics the benchmark reports: kernel time from timestamps (positive and within

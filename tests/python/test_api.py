@@ -883,3 +883,22 @@ def test_cpu_trace_releases_the_gil(abc):
     inside = np.array([s for s in stamps if start + margin < s < end - margin])
     assert len(inside) > 100, f"{len(inside)} stamps during a {end - start:.2f} s trace"
     assert inside.max() - inside.min() > 0.5 * (end - start - 2 * margin)
+
+
+@pytest.mark.parametrize("backend", GPU_BACKENDS)
+def test_cpu_tail_finishes_the_lines_as_the_cpu_traces_them(backend, capfd):
+    """cpu_tail: once a GPU round leaves that many lines or fewer, the CPU finishes them."""
+    require_backend(backend)
+    ds = amrstream.load("builtin:rotation", **SMALL)
+    seeds = [[0.5 + r, 0.5, 0.5] for r in (0.1, 0.2, 0.3)]
+    # A small budget: rounds of a few hundred steps, the 6 lines handed over after the first.
+    common = dict(steps=3000, step_mode="cell", memory_budget=1 << 20)
+    cpu = amrstream.trace(ds, seeds, backend="cpu", **common)
+    capfd.readouterr()
+    t = amrstream.trace(ds, seeds, backend=backend, cpu_tail=8, verbose=True, **common)
+    assert "cpu tail   6 lines finished on the CPU" in capfd.readouterr().out
+    assert np.array_equal(t.steps, cpu.steps) and np.array_equal(t.reasons, cpu.reasons)
+    assert np.array_equal(t.offsets, cpu.offsets)
+    # The GPU's tolerance (1e-5 finest cells and 2e-6 a step) at 3000 steps, in physical units.
+    finest = 1.0 / 64
+    assert np.abs(t.points - cpu.points).max() <= (1e-5 + 2e-6 * 3000) * finest

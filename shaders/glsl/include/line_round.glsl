@@ -239,3 +239,11 @@ void advanceLine(uint thread) {
   statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign, nextStep, lineAnchor);
   lineRounds[thread] = LineRound(state.line, emitted, steps, reason);
 }
+
+// 2^params.laneShift invocations a line, the first of them tracing it: rounds of few lines
+// spread them over the subgroups, so that a line's loads wait for no other line's.
+void advanceLineOfInvocation(uint invocation) {
+  const uint line = invocation >> params.laneShift;
+  const uint others = invocation & ((1u << params.laneShift) - 1u);
+  if (others == 0u && line < params.lineCount) advanceLine(line);
+}

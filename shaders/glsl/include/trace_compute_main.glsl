@@ -10,6 +10,5 @@
 layout(local_size_x_id = 0) in;  // workgroup size: specialization constant 0
 
 void main() {
-  const uint thread = gl_GlobalInvocationID.x;
-  if (thread < params.lineCount) advanceLine(thread);
+  advanceLineOfInvocation(gl_GlobalInvocationID.x);
 }

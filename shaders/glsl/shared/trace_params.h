@@ -39,10 +39,11 @@ struct TraceParams {
   vec3 pauseUpper;          // MPI rank that holds where it is (tracing over data)
   uvec2 dualValuesAddress;  // the dual cells' device address, low word first, for kernels that
                             // read them so (VolumeBuffers::dualValuesAddress); 0 otherwise
+  uint laneShift;           // 2^laneShift invocations a line, the first of them tracing it
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(TraceParams) == 168 && offsetof(TraceParams, period) == 64 &&
+static_assert(sizeof(TraceParams) == 172 && offsetof(TraceParams, period) == 64 &&
               offsetof(TraceParams, maxTime) == 96 && offsetof(TraceParams, pauseOutside) == 144);
 }  // namespace amrstream::shared
 #endif
