@@ -82,6 +82,10 @@ void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
 }
 
 void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
+  if (o.job.trace.cpuTail > 0 && (o.distribute == "data" || o.rebalanceSteps > 0))
+    throw InputError("--cpu-tail",
+                     "finishes the last lines of one process's trace: not with --distribute "
+                     "data or --rebalance-steps, which hand lines between ranks");
   if (o.rebalanceSteps > 0 && o.distribute == "data")
     throw InputError("--rebalance-steps",
                      "evens out lines among ranks that hold the whole volume: use it with "

@@ -160,6 +160,8 @@ void addViewCommand(CLI::App& app) {
                     "no window: render --frames frames offscreen as the traces grow and print "
                     "their times");
   command->callback([options] {
+    if (options->job.trace.cpuTail > 0)
+      throw InputError("--cpu-tail", "the viewer advances every line on the GPU, a round a frame");
     options->job.backend.validation = validationRequested();
     if (options->benchmark)
       runViewBenchmark(*options);

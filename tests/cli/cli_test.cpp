@@ -134,6 +134,15 @@ TEST_F(Cli, BadOptionsFail) {
   r = run("gen rotation --levels 12 --out " + path("x"));
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("levels"));
+  // The CPU finishes one process's last lines: not where ranks hand lines on, nor in the viewer.
+  r = run("trace builtin:rotation" + kSmall + " --cpu-tail 8 --distribute data --out " +
+          path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--cpu-tail: finishes the last lines of one process's trace"));
+  r = run("view builtin:rotation" + kSmall + " --cpu-tail 8 --benchmark --frames 1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("--cpu-tail: the viewer advances every line on the GPU"));
+  EXPECT_FALSE(std::filesystem::exists(path("t.vtp")));
 }
 
 // An output is written beside its target and renamed over it: a FIFO (or a device such as
