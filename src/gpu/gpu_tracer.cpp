@@ -98,6 +98,8 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
       ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : residentThreads(backend));
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
+  settings_.spreadThreads = static_cast<std::uint32_t>(
+      std::min<std::uint64_t>(*settings_.spreadThreads, mostInvocations()));
   roundKernels_ = createRoundKernels(ctx);
   gatherKernel_ = createGatherKernel(ctx);
   setup_.pipelineSeconds = clock.seconds();
@@ -130,6 +132,11 @@ flow::RoundCosts GpuTracer::roundCosts(const flow::TraceOptions& options) const 
   return costs;
 }
 
+std::uint64_t GpuTracer::mostInvocations() const {
+  return std::uint64_t(ctx_->limits().maxComputeWorkGroupCount[0]) *
+         std::min<std::uint32_t>(kernel_.workgroupSize, 1u << 30);
+}
+
 std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const {
   const flow::RoundCosts costs = roundCosts(options);
   const VkPhysicalDeviceLimits& limits = ctx_->limits();
@@ -138,10 +145,8 @@ std::size_t GpuTracer::linesPerBatch(const flow::TraceOptions& options, std::siz
   const std::uint64_t widest =
       std::max<std::uint64_t>(sizeof(glm::vec3), volume_->channelCount() * sizeof(float));
   const std::uint64_t byRange = limits.maxStorageBufferRange / (widest * slotsPerLine);
-  const std::uint64_t byDispatch = std::uint64_t(limits.maxComputeWorkGroupCount[0]) *
-                                   std::min<std::uint32_t>(kernel_.workgroupSize, 1u << 30);
   std::size_t batch = flow::linesPerBatch(options, costs, lines);
-  batch = std::min<std::uint64_t>({batch, byRange, byDispatch});
+  batch = std::min<std::uint64_t>({batch, byRange, mostInvocations()});
   if (batchLimit_ > 0) batch = std::min(batch, batchLimit_);
   return std::max<std::size_t>(1, batch);
 }

@@ -144,6 +144,8 @@ class GpuTracer {
                    const std::function<void(flow::RoundBlock&&)>& consume);
   void traceBatches(std::span<const shared::LineState> states, const flow::TraceOptions& options,
                     const std::function<void(GpuRounds&, const StepsFor&)>& run);
+  // Invocations one dispatch of the tracing kernel may have (lines per batch, and spreads).
+  std::uint64_t mostInvocations() const;
   // The kernel taking the options' integrator's steps.
   const TraceKernel& kernelFor(const flow::TraceOptions& options);
 

@@ -575,6 +575,11 @@ TEST_P(GpuTracerTest, SpreadLinesTraceAsOneInvocationEach) {
       EXPECT_EQ(lanes == 1, threads == 0) << lanes;
       EXPECT_EQ(lanes == 32, threads == 4096) << lanes;
     }
+    KernelSettings most = settings_;
+    most.spreadThreads = 0x7fffffffu;  // bounded by the device's dispatch size
+    const GpuTracer bounded(ctx(), GetParam(), volume, most);
+    EXPECT_LE(std::uint64_t(*bounded.settings().spreadThreads),
+              std::uint64_t(ctx().limits().maxComputeWorkGroupCount[0]) * 64u);
     for (const std::uint32_t threads : {256u, 4096u}) {
       const flow::TraceSet& spread = traces[threads];
       const flow::TraceSet& one = traces[0];
