@@ -50,7 +50,7 @@ void runPathlines(const PathlinesOptions& o) {
     Progress progress("intervals", series.size() - 1);
     return tracePathlines(
         series, o.field, o.seeds, settings, o.backend, report,
-        [&](std::size_t done, std::size_t) { progress.update(done); }, printLine);
+        [&](std::size_t done, std::size_t) { progress.update(done); }, printLineAfter(progress));
   }();
   const flow::PathlineOptions& options = report.options;
   fmt::print("stepping   dt = {:g} from t = {:g} to {:g}{}, {} snapshots used, interpolant {}\n",

@@ -18,8 +18,15 @@ void Progress::silenceAll() { silenced = true; }
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), terminal_(isatty(STDERR_FILENO)) {}
 
-Progress::~Progress() {
-  if (printed_ && terminal_) std::fprintf(stderr, "\r%*s\r", int(label_.size()) + 40, "");
+Progress::~Progress() { clear(); }
+
+void Progress::clear() {
+  std::lock_guard lock(mutex_);
+  if (printed_ && terminal_) {
+    std::fprintf(stderr, "\r%*s\r", int(label_.size()) + 40, "");
+    std::fflush(stderr);
+  }
+  printed_ = false;
 }
 
 void Progress::update(std::size_t done) {

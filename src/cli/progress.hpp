@@ -18,6 +18,8 @@ class Progress {
   Progress(std::string label, std::size_t total);
   ~Progress();
   void update(std::size_t done);
+  // Takes a progress line off the terminal, so that other output starts on a line of its own.
+  void clear();
 
  private:
   std::string label_;

@@ -32,6 +32,13 @@ std::uint64_t hostMemoryBytes() {
 
 void printLine(const std::string& line) { fmt::print("{}\n", line); }
 
+Log printLineAfter(Progress& progress) {
+  return [&progress](const std::string& line) {
+    progress.clear();
+    printLine(line);
+  };
+}
+
 std::string reasonHistogram(std::span<const std::int32_t> reasons) {
   std::map<int, std::size_t> counts;
   for (const std::int32_t reason : reasons) ++counts[reason];
@@ -166,7 +173,7 @@ flow::StoredTraces traceSeeds(const TraceJobOptions& o, PreparedInput& input,
       [&](std::size_t done, std::size_t lines) {
         progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
       },
-      &input.report, hostValues, printLine);
+      &input.report, hostValues, printLineAfter(progress));
 }
 
 void printTraceSummary(const flow::TraceSet& traces, const TraceReport& report) {
@@ -199,7 +206,7 @@ std::unique_ptr<HeldTraces> runTracesForWriting(const TraceJobOptions& o, Prepar
       [&](std::size_t done, std::size_t lines) {
         progress.update(done * seeds.points.size() / std::max<std::size_t>(1, lines));
       },
-      &input.report, hostValues, printLine);
+      &input.report, hostValues, printLineAfter(progress));
   printTraceSummary(held->view().lines(), input.report);
   return held;
 }

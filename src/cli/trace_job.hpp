@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/field.hpp"
+#include "amrstream/seeding.hpp"
+#include "amrstream/trace_settings.hpp"
+#include "amrstream/tracing.hpp"
 #include "bricks/amr_field.hpp"
 #include "dataset_options.hpp"
 #include "flow/integrator.hpp"
@@ -19,10 +23,7 @@
 #include "flow/vector_volume.hpp"
 #include "formats/value_window.hpp"
 #include "output_paths.hpp"
-#include "amrstream/field.hpp"
-#include "amrstream/seeding.hpp"
-#include "amrstream/trace_settings.hpp"
-#include "amrstream/tracing.hpp"
+#include "progress.hpp"
 
 namespace amrstream::cli {
 
@@ -118,6 +119,8 @@ std::unique_ptr<HeldTraces> runTracesForWriting(const TraceJobOptions& o, Prepar
 
 // Prints a line of the library's log on stdout.
 void printLine(const std::string& line);
+// The same, taking `progress`'s line off the terminal first.
+Log printLineAfter(Progress& progress);
 
 // "out of domain (1): 12, max steps (5): 244": how many lines ended for each reason.
 std::string reasonHistogram(std::span<const std::int32_t> reasons);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 
@@ -245,7 +246,13 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
     tail.insert(tail.end(), states.begin(), states.end());
     lastRun_.tailSeconds += clock.seconds();
   });
-  if (!tail.empty()) finishOnCpu(tail, options, consume);
+  if (!tail.empty()) {
+    std::atomic<std::size_t> finished{accumulator.finishedLines()};
+    finishOnCpu(tail, options, consume, [&] {
+      const std::size_t done = ++finished;
+      if (progress) progress(done, lines);
+    });
+  }
   Stopwatch storeClock;
   flow::StoredTraces stored = accumulator.store();
   lastRun_.storeSeconds = storeClock.seconds();
@@ -254,16 +261,20 @@ flow::StoredTraces GpuTracer::traceToRounds(std::span<const glm::dvec3> seeds,
 
 void GpuTracer::finishOnCpu(std::span<const shared::LineState> lines,
                             const flow::TraceOptions& options,
-                            const std::function<void(flow::RoundBlock&&)>& consume) {
+                            const std::function<void(flow::RoundBlock&&)>& consume,
+                            const std::function<void()>& lineEnded) {
   Stopwatch clock;
   std::uint64_t stepsBefore = 0;
   for (const shared::LineState& line : lines) stepsBefore += line.steps;
   std::uint64_t stepsAfter = 0;
-  flow::traceCpuToEnd(*volume_, lines, options, [&](flow::RoundBlock&& block) {
-    for (const shared::LineRound& line : block.lines)
-      if (line.reason != AMRSTREAM_REASON_RUNNING) stepsAfter += line.steps;
-    consume(std::move(block));
-  });
+  flow::traceCpuToEnd(
+      *volume_, lines, options,
+      [&](flow::RoundBlock&& block) {
+        for (const shared::LineRound& line : block.lines)
+          if (line.reason != AMRSTREAM_REASON_RUNNING) stepsAfter += line.steps;
+        consume(std::move(block));
+      },
+      lineEnded);
   lastRun_.tailLines += lines.size();
   lastRun_.tailSteps += stepsAfter - stepsBefore;
   lastRun_.tailSeconds += clock.seconds();

@@ -139,9 +139,10 @@ class GpuTracer {
   // round it is given.
   using StepsFor = std::function<std::uint32_t(std::size_t live)>;
   // Finishes `lines` (live states of GPU rounds) with the CPU reference, handing its rounds to
-  // `consume`.
+  // `consume`; `lineEnded` is called from the worker threads as lines end.
   void finishOnCpu(std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-                   const std::function<void(flow::RoundBlock&&)>& consume);
+                   const std::function<void(flow::RoundBlock&&)>& consume,
+                   const std::function<void()>& lineEnded);
   void traceBatches(std::span<const shared::LineState> states, const flow::TraceOptions& options,
                     const std::function<void(GpuRounds&, const StepsFor&)>& run);
   // Invocations one dispatch of the tracing kernel may have (lines per batch, and spreads).
