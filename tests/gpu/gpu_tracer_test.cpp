@@ -89,6 +89,30 @@ void expectGpuMatchesCpu(const flow::TraceSet& gpu, const flow::TraceSet& cpu,
   EXPECT_GT(cpu.pointCount(), 2 * cpu.lineCount()) << "the traces should take steps";
 }
 
+// Endpoints only: one point a line, the CPU's steps and reasons exactly, each line's last point
+// within the tolerance for its steps.
+void expectEndpointsMatchCpu(const flow::TraceSet& gpu, const flow::TraceSet& cpu,
+                             const flow::VectorVolume& volume) {
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line) ASSERT_EQ(gpu.pointCount(line), 1u);
+  ASSERT_EQ(gpu.steps, cpu.steps);
+  ASSERT_EQ(gpu.reasons, cpu.reasons);
+  const double finestCell = volume.transform.spacing.x;
+  for (std::size_t line = 0; line < cpu.lineCount(); ++line)
+    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
+              positionTolerance(cpu.steps[line]) * finestCell)
+        << "line " << line;
+}
+
+// Two GPU traces that must be the same bit for bit.
+void expectSameTraces(const flow::TraceSet& a, const flow::TraceSet& b) {
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.reasons, b.reasons);
+  EXPECT_EQ(a.offsets, b.offsets);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.times, b.times);
+  EXPECT_EQ(a.vectors, b.vectors);
+}
+
 class GpuTracerTest : public testing::GpuTest, public ::testing::WithParamInterface<Backend> {
  protected:
   vk::CapabilitySet required() const override { return requiredCapabilities(GetParam()); }
@@ -208,14 +232,7 @@ TEST_P(GpuTracerTest, DualValuesTraceAsTheCompactLayout) {
     ASSERT_EQ(tracer.volumeBuffers().dualValues.size() > 0, dual);
     traces[dual] = tracer.trace(seeds.points, options);
   }
-  EXPECT_EQ(traces[1].steps, traces[0].steps);
-  EXPECT_EQ(traces[1].reasons, traces[0].reasons);
-  EXPECT_EQ(traces[1].offsets, traces[0].offsets);
-  ASSERT_EQ(traces[1].pointCount(), traces[0].pointCount());
-  for (std::uint64_t i = 0; i < traces[0].pointCount(); ++i) {
-    ASSERT_EQ(traces[1].positions[i], traces[0].positions[i]) << "point " << i;
-    ASSERT_EQ(traces[1].vectors[i], traces[0].vectors[i]) << "point " << i;
-  }
+  expectSameTraces(traces[1], traces[0]);
   expectGpuMatchesCpu(traces[1], flow::traceStreamlines(volume, seeds.points, options), volume);
 }
 
@@ -257,15 +274,7 @@ TEST_P(GpuTracerTest, EndpointsOnlyMatchesCpu) {
   const flow::SeedList seeds = seedsIn(volume, 64);
   const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
-  const flow::TraceSet gpu = tracer.trace(seeds.points, options);
-  for (std::size_t line = 0; line < cpu.lineCount(); ++line) ASSERT_EQ(gpu.pointCount(line), 1u);
-  ASSERT_EQ(gpu.steps, cpu.steps);
-  ASSERT_EQ(gpu.reasons, cpu.reasons);
-  const double finestCell = volume.transform.spacing.x;
-  for (std::size_t line = 0; line < cpu.lineCount(); ++line)
-    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
-              positionTolerance(cpu.steps[line]) * finestCell)
-        << "line " << line;
+  expectEndpointsMatchCpu(tracer.trace(seeds.points, options), cpu, volume);
 }
 
 // A random four-level layout with a smooth vector and `extra` scalar channels s0, s1, ...,
@@ -385,21 +394,13 @@ TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
   options.memoryBudget = 1 << 20;
   const flow::TraceSet gpu = tracer.trace(seeds, options);
   EXPECT_GT(tracer.lastRun().rounds, 10u);
-  EXPECT_EQ(gpu.offsets, once.offsets);
-  EXPECT_EQ(gpu.positions, once.positions);
-  EXPECT_EQ(gpu.times, once.times);
-  EXPECT_EQ(gpu.vectors, once.vectors);
+  expectSameTraces(gpu, once);
   expectGpuMatchesCpu(gpu, cpu, volume);
 
   // Through a staging ring of three slots of 4000 bytes (125 points, the last piece of a round
   // partly filled), every round comes back in many pieces, three in flight.
   tracer.setStaging(3, 4000);
-  const flow::TraceSet pieces = tracer.trace(seeds, options);
-  EXPECT_EQ(pieces.offsets, once.offsets);
-  EXPECT_EQ(pieces.positions, once.positions);
-  EXPECT_EQ(pieces.times, once.times);
-  EXPECT_EQ(pieces.vectors, once.vectors);
-  EXPECT_EQ(pieces.reasons, once.reasons);
+  expectSameTraces(tracer.trace(seeds, options), once);
 }
 
 // Every integrator (rk4 is the rest of this suite), in every step mode and both directions, with
@@ -451,13 +452,8 @@ TEST_P(GpuTracerTest, EveryIntegratorMatchesCpu) {
   const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
   const flow::TraceSet gpu = tracer.trace(seeds.points, options);
-  ASSERT_EQ(gpu.steps, cpu.steps);
-  ASSERT_EQ(gpu.reasons, cpu.reasons);
-  ASSERT_EQ(gpu.times, cpu.times);
-  for (std::size_t line = 0; line < cpu.lineCount(); ++line)
-    EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
-              positionTolerance(cpu.steps[line]) * volume.transform.spacing.x)
-        << "line " << line;
+  expectEndpointsMatchCpu(gpu, cpu, volume);
+  EXPECT_EQ(gpu.times, cpu.times);
 }
 
 // rk45 carries its next step from round to round: many short rounds equal one long one.
@@ -524,12 +520,7 @@ TEST_P(GpuTracerTest, SpatialSeedOrderGivesTheSameTraces) {
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
   const flow::TraceSet spatial = tracer.trace(seeds.points, options);
   tracer.orderSeedsSpatially(false);
-  const flow::TraceSet given = tracer.trace(seeds.points, options);
-  EXPECT_EQ(spatial.offsets, given.offsets);
-  EXPECT_EQ(spatial.reasons, given.reasons);
-  EXPECT_EQ(spatial.positions, given.positions);
-  EXPECT_EQ(spatial.times, given.times);
-  EXPECT_EQ(spatial.vectors, given.vectors);
+  expectSameTraces(spatial, tracer.trace(seeds.points, options));
 }
 
 TEST_P(GpuTracerTest, BatchesOfLinesGiveTheSameTraces) {
@@ -557,6 +548,11 @@ TEST_P(GpuTracerTest, BatchesRespectTheStorageBufferRange) {
 TEST_P(GpuTracerTest, SpreadLinesTraceAsOneInvocationEach) {
   const flow::VectorVolume volume = volumeOf(rotationAboutZ(0.04, 0.0));
   const flow::SeedList seeds = seedsIn(volume, 48);  // 96 lines
+  KernelSettings most = settings_;
+  most.spreadThreads = 0x7fffffffu;  // bounded by the device's dispatch size
+  const GpuTracer bounded(ctx(), GetParam(), volume, most);
+  EXPECT_LE(std::uint64_t(*bounded.settings().spreadThreads),
+            std::uint64_t(ctx().limits().maxComputeWorkGroupCount[0]) * 64u);
   for (const bool history : {true, false}) {
     SCOPED_TRACE(history ? "history" : "endpoints");
     flow::TraceOptions options;
@@ -575,20 +571,9 @@ TEST_P(GpuTracerTest, SpreadLinesTraceAsOneInvocationEach) {
       EXPECT_EQ(lanes == 1, threads == 0) << lanes;
       EXPECT_EQ(lanes == 32, threads == 4096) << lanes;
     }
-    KernelSettings most = settings_;
-    most.spreadThreads = 0x7fffffffu;  // bounded by the device's dispatch size
-    const GpuTracer bounded(ctx(), GetParam(), volume, most);
-    EXPECT_LE(std::uint64_t(*bounded.settings().spreadThreads),
-              std::uint64_t(ctx().limits().maxComputeWorkGroupCount[0]) * 64u);
     for (const std::uint32_t threads : {256u, 4096u}) {
-      const flow::TraceSet& spread = traces[threads];
-      const flow::TraceSet& one = traces[0];
-      EXPECT_EQ(spread.steps, one.steps) << threads;
-      EXPECT_EQ(spread.reasons, one.reasons) << threads;
-      EXPECT_EQ(spread.offsets, one.offsets) << threads;
-      EXPECT_EQ(spread.positions, one.positions) << threads;
-      EXPECT_EQ(spread.times, one.times) << threads;
-      EXPECT_EQ(spread.vectors, one.vectors) << threads;
+      SCOPED_TRACE(threads);
+      expectSameTraces(traces[threads], traces[0]);
     }
     if (history)
       expectGpuMatchesCpu(traces[4096], flow::traceStreamlines(volume, seeds.points, options),
@@ -623,16 +608,10 @@ TEST_P(GpuTracerTest, LinesFinishedOnTheCpuMatchCpu) {
       EXPECT_EQ(run.rounds, 1u);  // rounds of 1000 steps: the tail after the first
     }
     const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
-    if (history) {
+    if (history)
       expectGpuMatchesCpu(gpu, cpu, volume);
-      continue;
-    }
-    ASSERT_EQ(gpu.steps, cpu.steps);
-    ASSERT_EQ(gpu.reasons, cpu.reasons);
-    for (std::size_t line = 0; line < cpu.lineCount(); ++line)
-      EXPECT_LE(glm::length(glm::dvec3(gpu.positions[line]) - glm::dvec3(cpu.positions[line])),
-                positionTolerance(cpu.steps[line]) * volume.transform.spacing.x)
-          << "line " << line;
+    else
+      expectEndpointsMatchCpu(gpu, cpu, volume);
   }
 }
 
