@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <span>
+#include <string>
 #include <vector>
 
+#include "output/atomic_file.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -16,6 +19,27 @@ double percentile(std::vector<double> values, double fraction) {
   std::sort(values.begin(), values.end());
   const auto at = static_cast<std::size_t>(fraction * double(values.size() - 1) + 0.5);
   return values[std::min(at, values.size() - 1)];
+}
+
+// One row a frame, in milliseconds: whether the traces grew before it and whether every tube was
+// made again, then ViewFrameTimes' parts.
+void writeFrameTimes(const std::string& path, const std::vector<ViewFrameTimes>& frames,
+                     const std::vector<double>& totals, std::size_t growing) {
+  std::string text =
+      "frame,growing,rebuilt,total_ms,tracing_ms,tubes_ms,segments_ms,structures_ms,upload_ms,"
+      "device_ms,rendering_ms,render_submit_ms,render_device_ms\n";
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const ViewFrameTimes& t = frames[f];
+    text += fmt::format(
+        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}\n", f + 1,
+        f < growing ? 1 : 0, t.rebuilt ? 1 : 0, 1e3 * totals[f], 1e3 * t.traceSeconds,
+        1e3 * t.tubesSeconds, 1e3 * t.segmentsSeconds, 1e3 * t.append.structures,
+        1e3 * t.append.upload, 1e3 * t.append.device, 1e3 * t.renderSeconds,
+        1e3 * t.renderSubmitSeconds, 1e3 * t.renderDeviceSeconds);
+  }
+  output::AtomicFile file(path);
+  file.write(std::as_bytes(std::span(text.data(), text.size())));
+  file.commit();
 }
 
 double mean(const std::vector<double>& values) {
@@ -33,7 +57,8 @@ void runViewBenchmark(const ViewOptions& o) {
   if (o.job.backend.backend == "cpu")
     throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
                                   "pipeline or compute");
-  jobFiles(o.job);
+  RunFiles files = jobFiles(o.job);
+  if (!o.frameTimes.empty()) files.addOutput("--frame-times", o.frameTimes);
   PreparedInput input = prepareInput(o.job);
   const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, printLine);
   if (choice.backend == gpu::Backend::Cpu)
@@ -46,7 +71,7 @@ void runViewBenchmark(const ViewOptions& o) {
 
   std::vector<double> frames, growing, trace, tubes, render, renderSubmit, renderDevice, segments,
       upload, structures, instances, device;
-  std::vector<ViewFrameTimes> growingTimes;
+  std::vector<ViewFrameTimes> growingTimes, allTimes;
   std::size_t steps = 0;
   for (std::uint32_t f = 0; f < o.frames; ++f) {
     const bool grew = !session.traces().finished();
@@ -54,6 +79,7 @@ void runViewBenchmark(const ViewOptions& o) {
     steps += session.step(o.look.width, o.look.height);
     frames.push_back(clock.seconds());
     const ViewFrameTimes& t = session.lastFrameTimes();
+    allTimes.push_back(t);
     if (grew) {
       growingTimes.push_back(t);
       growing.push_back(frames.back());
@@ -111,6 +137,10 @@ void runViewBenchmark(const ViewOptions& o) {
              ms(mean(device)));
   fmt::print("traces     {} particle-steps, {} tube segments at the end\n", steps,
              session.scene().segments.size());
+  if (!o.frameTimes.empty()) {
+    writeFrameTimes(o.frameTimes, allTimes, frames, growing.size());
+    fmt::print("frames     every frame's times in {}\n", o.frameTimes);
+  }
   checkValidation(ctx);
 }
 

@@ -159,9 +159,13 @@ void addViewCommand(CLI::App& app) {
   command->add_flag("--benchmark", options->benchmark,
                     "no window: render --frames frames offscreen as the traces grow and print "
                     "their times");
+  command->add_option("--frame-times", options->frameTimes,
+                      "with --benchmark: write every frame's times (ms) to this CSV file");
   command->callback([options] {
     if (options->job.trace.cpuTail > 0)
       throw InputError("--cpu-tail", "the viewer advances every line on the GPU, a round a frame");
+    if (!options->frameTimes.empty() && !options->benchmark)
+      throw InputError("--frame-times", "needs --benchmark (the window's frames are not timed)");
     options->job.backend.validation = validationRequested();
     if (options->benchmark)
       runViewBenchmark(*options);

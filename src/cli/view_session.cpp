@@ -57,6 +57,7 @@ bool ViewSession::growTubes() {
     renderer_->waitForFrame();
     times_.renderSeconds += clock.seconds();
     rebuildTubes();
+    times_.rebuilt = true;
     return renderMeanwhile;
   }
   renderer_->appendTubes(*added, scene_.segments, scene_.settings.tubeRadius);

@@ -22,6 +22,7 @@ struct ViewOptions {
   std::uint32_t frames = 0;  // stop after this many frames (0: until the window closes)
   float orbitPerFrame = 0.0f;  // degrees of azimuth per frame, for scripted runs
   std::string screenshot;      // with --frames: save the last frame here
+  std::string frameTimes;      // with --benchmark: every frame's times to this CSV file
 };
 
 // Where one frame's time went (ViewSession::step), wall clock on the host.
@@ -34,6 +35,7 @@ struct ViewFrameTimes {
                                    // traces grow, beside building the tubes' BVH on the host)
   double renderSubmitSeconds = 0;  // of which recording and submitting it, when not waited for
   double renderDeviceSeconds = 0;  // the frame's own time on the device (timestamps)
+  bool rebuilt = false;            // every tube was made again (a symmetric-log scale widened)
 };
 
 class ViewSession {

@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "render/image/image_compare.hpp"
 #include "render/image/png_io.hpp"
@@ -139,15 +143,38 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
 // `view --benchmark` needs no window: it renders the frames offscreen and prints their times, one
 // line per stage; it refuses a run without frames and a screenshot it could not take.
 TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {
+  const std::filesystem::path csv = outputPath("frames.csv");
   auto run = testing::runAmrstream(
       "view builtin:cloud --benchmark --count 16 --steps 40 --steps-per-frame 10 --frames 6 "
-      "--width 64 --height 48",
+      "--width 64 --height 48 --frame-times " +
+          csv.string(),
       "AMRSTREAM_VALIDATION=1");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("frames     6 in "), std::string::npos) << run.output;
   // 40 steps at 10 a frame: the traces grow for 4 frames.
   EXPECT_NE(run.output.find("growing    4 frames while traces ran"), std::string::npos)
       << run.output;
+  // The CSV: a header, then one row a frame, the first four growing, each frame's total at least
+  // its tracing and its rendering.
+  std::ifstream in(csv);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(line.rfind("frame,growing,rebuilt,total_ms,tracing_ms,", 0), 0u) << line;
+  std::vector<std::string> rows;
+  while (std::getline(in, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 6u);
+  for (std::size_t f = 0; f < rows.size(); ++f) {
+    std::vector<double> cells;
+    std::stringstream row(rows[f]);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::stod(cell));
+    ASSERT_EQ(cells.size(), 13u) << rows[f];
+    EXPECT_EQ(cells[0], double(f + 1));
+    EXPECT_EQ(cells[1], f < 4 ? 1.0 : 0.0) << rows[f];
+    EXPECT_GE(cells[3] + 1e-3, cells[4] + cells[10]) << rows[f];
+  }
+  run = testing::runAmrstream("view builtin:cloud --frame-times " + csv.string());
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--frame-times: needs --benchmark"), std::string::npos) << run.output;
   run = testing::runAmrstream("view builtin:cloud --benchmark --count 4");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("--frames: --benchmark needs a number of frames"), std::string::npos)
