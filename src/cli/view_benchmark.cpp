@@ -26,16 +26,17 @@ double percentile(std::vector<double> values, double fraction) {
 void writeFrameTimes(const std::string& path, const std::vector<ViewFrameTimes>& frames,
                      const std::vector<double>& totals, std::size_t growing) {
   std::string text =
-      "frame,growing,rebuilt,total_ms,tracing_ms,tubes_ms,segments_ms,structures_ms,upload_ms,"
+      "frame,growing,rebuilt,segments,total_ms,tracing_ms,tubes_ms,segments_ms,structures_ms,"
+      "upload_ms,"
       "device_ms,rendering_ms,render_submit_ms,render_device_ms\n";
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const ViewFrameTimes& t = frames[f];
     text += fmt::format(
-        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}\n", f + 1,
-        f < growing ? 1 : 0, t.rebuilt ? 1 : 0, 1e3 * totals[f], 1e3 * t.traceSeconds,
-        1e3 * t.tubesSeconds, 1e3 * t.segmentsSeconds, 1e3 * t.append.structures,
-        1e3 * t.append.upload, 1e3 * t.append.device, 1e3 * t.renderSeconds,
-        1e3 * t.renderSubmitSeconds, 1e3 * t.renderDeviceSeconds);
+        "{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}\n",
+        f + 1, f < growing ? 1 : 0, t.rebuilt ? 1 : 0, t.segments, 1e3 * totals[f],
+        1e3 * t.traceSeconds, 1e3 * t.tubesSeconds, 1e3 * t.segmentsSeconds,
+        1e3 * t.append.structures, 1e3 * t.append.upload, 1e3 * t.append.device,
+        1e3 * t.renderSeconds, 1e3 * t.renderSubmitSeconds, 1e3 * t.renderDeviceSeconds);
   }
   output::AtomicFile file(path);
   file.write(std::as_bytes(std::span(text.data(), text.size())));

@@ -121,6 +121,7 @@ std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
     times_.renderSeconds = clock.seconds();
   }
   times_.renderDeviceSeconds = renderer_->lastFrameSeconds().value_or(0.0);
+  times_.segments = renderer_->segmentCount();
   return taken;
 }
 

@@ -36,6 +36,7 @@ struct ViewFrameTimes {
   double renderSubmitSeconds = 0;  // of which recording and submitting it, when not waited for
   double renderDeviceSeconds = 0;  // the frame's own time on the device (timestamps)
   bool rebuilt = false;            // every tube was made again (a symmetric-log scale widened)
+  std::size_t segments = 0;        // tube segments after the frame
 };
 
 class ViewSession {

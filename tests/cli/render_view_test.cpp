@@ -154,12 +154,12 @@ TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {
   // 40 steps at 10 a frame: the traces grow for 4 frames.
   EXPECT_NE(run.output.find("growing    4 frames while traces ran"), std::string::npos)
       << run.output;
-  // The CSV: a header, then one row a frame, the first four growing, each frame's total at least
-  // its tracing and its rendering.
+  // The CSV: a header, then one row a frame, the first four growing, each with tubes and its total
+  // at least its tracing and its rendering.
   std::ifstream in(csv);
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
-  EXPECT_EQ(line.rfind("frame,growing,rebuilt,total_ms,tracing_ms,", 0), 0u) << line;
+  EXPECT_EQ(line.rfind("frame,growing,rebuilt,segments,total_ms,tracing_ms,", 0), 0u) << line;
   std::vector<std::string> rows;
   while (std::getline(in, line)) rows.push_back(line);
   ASSERT_EQ(rows.size(), 6u);
@@ -167,10 +167,11 @@ TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {
     std::vector<double> cells;
     std::stringstream row(rows[f]);
     for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::stod(cell));
-    ASSERT_EQ(cells.size(), 13u) << rows[f];
+    ASSERT_EQ(cells.size(), 14u) << rows[f];
     EXPECT_EQ(cells[0], double(f + 1));
     EXPECT_EQ(cells[1], f < 4 ? 1.0 : 0.0) << rows[f];
-    EXPECT_GE(cells[3] + 1e-3, cells[4] + cells[10]) << rows[f];
+    EXPECT_GT(cells[3], 0.0) << rows[f];  // tube segments
+    EXPECT_GE(cells[4] + 1e-3, cells[5] + cells[11]) << rows[f];
   }
   run = testing::runAmrstream("view builtin:cloud --frame-times " + csv.string());
   EXPECT_EQ(run.status, 2) << run.output;
