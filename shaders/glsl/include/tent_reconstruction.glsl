@@ -11,6 +11,7 @@
 // cells, each holding the values of the 2x2x2 cells from one base cell, (size + 1)^3 of them from
 // base -1 (VolumeBuffers::dualValues), so that a sample's corners in one brick come from one
 // 128-byte block; TENT_DUAL_CORNER(d, c) is corner c of dual cell d as a vec4.
+#extension GL_EXT_control_flow_attributes : require
 #ifndef TENT_DUAL_VALUES
 #define TENT_DUAL_VALUES false
 #endif
@@ -27,8 +28,11 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
   for (uint k = 0; k < region.brickCount; ++k) {
     const Brick brick = TENT_BRICK(region.brickOffset + k);
     const float width = float(1 << brick.level);
+    // 2^-level, exactly: the product rounds as the CPU's quotient by the width does, and costs less.
+    const float inverseWidth = uintBitsToFloat(uint(127 - brick.level) << 23);
     precise const vec3 local =
-        (kDeepPositions ? vec3(anchor - brick.lower) + p : p - vec3(brick.lower)) / width - 0.5;
+        (kDeepPositions ? vec3(anchor - brick.lower) + p : p - vec3(brick.lower)) * inverseWidth -
+        0.5;
     const vec3 base = floor(local);
     precise const vec3 frac = local - base;
     const ivec3 lo = ivec3(base);
@@ -38,7 +42,9 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
       if (any(lessThan(lo, ivec3(-1))) || any(greaterThanEqual(lo, brick.size))) continue;
       const uint dual = brick.valueOffset + uint((lo.x + 1) + (brick.size.x + 1) *
                                                               ((lo.y + 1) + (brick.size.y + 1) * (lo.z + 1)));
-      for (int corner = 0; corner < 8; ++corner) {
+      // Unrolled, the corners' weights and loads need not wait for each other (NVIDIA's compiler
+      // kept the loop otherwise); the sums keep their order.
+      [[unroll]] for (int corner = 0; corner < 8; ++corner) {
         const vec3 offset = vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
         precise const vec3 axisWeight = mix(1.0 - frac, frac, offset);
         precise const float weight = axisWeight.x * axisWeight.y * axisWeight.z;
@@ -52,7 +58,7 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
       continue;
     }
 #endif
-    for (int corner = 0; corner < 8; ++corner) {
+    [[unroll]] for (int corner = 0; corner < 8; ++corner) {
       const ivec3 offset = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
       const ivec3 cell = lo + offset;
       if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, brick.size))) continue;
