@@ -27,8 +27,7 @@ void writeFrameTimes(const std::string& path, const std::vector<ViewFrameTimes>&
                      const std::vector<double>& totals, std::size_t growing) {
   std::string text =
       "frame,growing,rebuilt,segments,total_ms,tracing_ms,tubes_ms,segments_ms,structures_ms,"
-      "upload_ms,"
-      "device_ms,rendering_ms,render_submit_ms,render_device_ms\n";
+      "upload_ms,device_ms,rendering_ms,render_submit_ms,render_device_ms\n";
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const ViewFrameTimes& t = frames[f];
     text += fmt::format(

@@ -95,12 +95,12 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
       settings_(settings) {
   settings_.deepPositions = volume.deepPositions();
   settings_.dualValues = device_.dualValues.size() > 0;
-  settings_.spreadThreads = settings.spreadThreads.value_or(
-      ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : residentThreads(backend));
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
-  settings_.spreadThreads = static_cast<std::uint32_t>(
-      std::min<std::uint64_t>(*settings_.spreadThreads, mostInvocations()));
+  const std::uint32_t spread = settings.spreadThreads.value_or(
+      ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : residentThreads(backend));
+  settings_.spreadThreads =
+      static_cast<std::uint32_t>(std::min<std::uint64_t>(spread, mostInvocations()));
   roundKernels_ = createRoundKernels(ctx);
   gatherKernel_ = createGatherKernel(ctx);
   setup_.pipelineSeconds = clock.seconds();
