@@ -11,9 +11,9 @@
 namespace amrstream {
 
 struct FieldOptions {
-  std::string vector;             // "a,b,c"; empty: the velocity, else the magnetic field
-  std::string pointData = "all";  // all (every channel but the vector's), none, or NAME,NAME,...
-  std::string periodic = "auto";  // auto (as the file says), none, or axes such as "x,y,z"
+  std::string vector;                // "a,b,c"; empty: the velocity, else the magnetic field
+  std::string pointData = "all";     // all (every channel but the vector's), none, or NAME,NAME,...
+  std::string periodic = "auto";     // auto (as the file says), none, or axes such as "x,y,z"
   std::string interpolant = "tent";  // tent (the paper's) or linear (exact for linear fields)
 };
 

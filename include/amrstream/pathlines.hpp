@@ -31,18 +31,18 @@ struct SnapshotFile {
 std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns);
 
 struct PathlineSettings {
-  std::optional<double> startTime;  // default: the first snapshot's time
-  std::optional<double> endTime;    // default: the last snapshot's time
-  std::optional<double> stepSize;   // physical time; default: the shortest interval used / 10
-  double releaseEvery = 0.0;        // > 0: streaklines, new particles at this interval
+  std::optional<double> startTime;   // default: the first snapshot's time
+  std::optional<double> endTime;     // default: the last snapshot's time
+  std::optional<double> stepSize;    // physical time; default: the shortest interval used / 10
+  double releaseEvery = 0.0;         // > 0: streaklines, new particles at this interval
   std::uint64_t maxResultBytes = 0;  // 0: a share of the machine's memory (kTraceMemoryShare)
 };
 
 // Where the time went: reading and building every snapshot (on the loading thread, except the
 // first), tracing, and waiting for a snapshot that was not ready when tracing needed it.
 struct PathlineReport {
-  std::string backend;  // "cpu", "compute", ...
-  std::string device;   // the Vulkan device's name, or the CPU's thread count
+  std::string backend;         // "cpu", "compute", ...
+  std::string device;          // the Vulkan device's name, or the CPU's thread count
   double deviceSeconds = 0.0;  // GPU backends: the context, kernels, uploads and structures
   // GPU backends, within traceSeconds: the samples' batches, writing their points, waiting for
   // the device and reading the samples.

@@ -34,16 +34,16 @@ inline constexpr std::uint32_t kMaxAoSamples = 256;
 
 struct RenderOptions {
   std::uint32_t width = 1024, height = 768;
-  std::vector<float> camera;    // azimuth, elevation (degrees)[, zoom]
-  std::string view;             // a named view (render::namedView); empty: --camera's or 35, 25
-  float zoom = 1.0f;            // > 1 closer; --camera's third number multiplies it
-  std::string up = "+z";        // the axis up on screen
-  float fovDegrees = 35.0f;     // vertical field of view (and an orthographic view's height)
+  std::vector<float> camera;  // azimuth, elevation (degrees)[, zoom]
+  std::string view;           // a named view (render::namedView); empty: --camera's or 35, 25
+  float zoom = 1.0f;          // > 1 closer; --camera's third number multiplies it
+  std::string up = "+z";      // the axis up on screen
+  float fovDegrees = 35.0f;   // vertical field of view (and an orthographic view's height)
   std::string projection = "perspective";  // or "orthographic"
   std::string frame = "traces";            // what the camera frames: "traces" or "domain"
-  std::vector<double> lookAt;              // x,y,z the camera looks at; empty: the framed box's centre
-  std::vector<double> viewBox;  // x0,y0,z0,x1,y1,z1 the camera frames; empty: see `frame`
-  std::optional<float> tubeRadius;           // finest cells
+  std::vector<double> lookAt;       // x,y,z the camera looks at; empty: the framed box's centre
+  std::vector<double> viewBox;      // x0,y0,z0,x1,y1,z1 the camera frames; empty: see `frame`
+  std::optional<float> tubeRadius;  // finest cells
   std::optional<double> tubeRadiusPhysical;  // the input's length units
   float tubeRadiusOfView = 0.003f;           // without either: a fraction of the view's height
   // Below 1: tubes as thick as the colour field is high, from this fraction of the radius at the
@@ -54,12 +54,12 @@ struct RenderOptions {
   std::string colourMap = "viridis";
   std::string colourScale = "linear";  // "log" or "symlog"
   std::optional<double> symlogWidth;   // symlog's linear half-width; default 1e-3 of the range
-  std::vector<float> range;  // min, max of the colour field
-  std::string outline = "domain";    // thin grey tubes along "domain", "bricks" or "none"
+  std::vector<float> range;            // min, max of the colour field
+  std::string outline = "domain";      // thin grey tubes along "domain", "bricks" or "none"
   bool axes = false;       // the domain's axes with ticks in physical units (zooms out a little)
   bool triad = true;       // the orientation triad, bottom left
   bool scaleBar = false;   // a bar of a round physical length above the triad
-  std::string background;            // "white", "black", "#rrggbb" or "R,G,B" (0..1): flat
+  std::string background;  // "white", "black", "#rrggbb" or "R,G,B" (0..1): flat
   std::uint32_t aoSamples = 4;
   std::string volume;  // context scalar channel; empty: none
   std::vector<float> volumeRange;
@@ -79,7 +79,7 @@ struct RenderScene {
   render::ColourScale colourScale;
   render::ValueRange colourSeen;  // the finite values the tubes carry (positive ones for log)
   std::string colourLabel;
-  std::string colourUnit;  // empty where the data give none
+  std::string colourUnit;               // empty where the data give none
   std::vector<float> contextScalars;    // brick-ordered; empty without --volume
   render::ChannelValues colourChannel;  // the --colour-by channel, when it is one
   render::OrbitCamera camera;

@@ -18,8 +18,8 @@ namespace amrstream {
 struct SeedRequest {
   std::vector<glm::dvec3> points;  // given points (physical coordinates), e.g. from Python
   std::string file;                // one "x y z" per line
-  std::vector<double> line;  // x0,y0,z0,x1,y1,z1: `count` seeds from one end to the other
-  std::string density;       // a scalar: random points in cells at or above its percentile
+  std::vector<double> line;        // x0,y0,z0,x1,y1,z1: `count` seeds from one end to the other
+  std::string density;             // a scalar: random points in cells at or above its percentile
   double percentile = 90.0;
   bool weighted = false;    // density: cells picked with probability proportional to it
   std::vector<int> grid;    // NX,NY,NZ: a regular grid in the box
@@ -56,8 +56,7 @@ void checkSeedRequest(const SeedRequest& request);
 // seed is made. `shared`: the cells' values are shared out among processes (MPI ranks over
 // data), which choose density seeds together.
 flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
-                           std::string& description,
-                           const flow::SharedCells* shared = nullptr);
+                           std::string& description, const flow::SharedCells* shared = nullptr);
 
 // Moves seeds on the domain's upper faces just inside (the domain is half-open) and throws
 // InputError when a seed lies outside.

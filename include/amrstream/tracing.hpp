@@ -54,14 +54,10 @@ class HeldTraces {
 // TraceStore::Device is asked (or Auto, on a GPU) and every line's maxSteps + 1 points fit (see
 // gpu::GpuTracer::traceOnDevice), else in host memory as trace() keeps them. `volume` must
 // outlive the result.
-std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
-                                            flow::VectorVolume& volume,
-                                            std::span<const glm::dvec3> seeds,
-                                            const flow::TraceOptions& options, TraceStore store,
-                                            const flow::TraceProgress& progress = {},
-                                            TraceReport* report = nullptr,
-                                            HostValues hostValues = HostValues::Keep,
-                                            const Log& log = {});
+std::unique_ptr<HeldTraces> traceForWriting(
+    const BackendRequest& request, flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
+    const flow::TraceOptions& options, TraceStore store, const flow::TraceProgress& progress = {},
+    TraceReport* report = nullptr, HostValues hostValues = HostValues::Keep, const Log& log = {});
 
 // The ReasonForTermination's name, e.g. "out of domain".
 const char* reasonName(int reason);

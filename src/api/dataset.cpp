@@ -23,9 +23,8 @@ DeferredDataset loadDeferred(const std::string& input, const synth::GeneratorOpt
       deferred.catalog.names.push_back(file.name);
     deferred.channels = [files = std::move(exa.channels)](const std::string& name,
                                                           const flow::ChannelUse& use) {
-      const auto file = std::find_if(files.begin(), files.end(), [&](const auto& f) {
-        return f.name == name;
-      });
+      const auto file =
+          std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.name == name; });
       if (file == files.end())
         throw std::logic_error("loadDeferred: no channel '" + name + "' was listed");
       use(formats::readExaChannel(*file));

@@ -123,11 +123,11 @@ std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
                    [](const SnapshotFile& a, const SnapshotFile& b) { return a.time < b.time; });
   for (std::size_t i = 1; i < series.size(); ++i)
     if (series[i].time == series[i - 1].time)
-      throw InputError(series[i].path, fmt::format("it is at time {:g}, as {} is",
-                                                   series[i].time, series[i - 1].path));
+      throw InputError(series[i].path, fmt::format("it is at time {:g}, as {} is", series[i].time,
+                                                   series[i - 1].path));
   if (series.size() < 2)
-    throw InputError("pathlines", fmt::format("a series needs two snapshots or more; {} given",
-                                              series.size()));
+    throw InputError("pathlines",
+                     fmt::format("a series needs two snapshots or more; {} given", series.size()));
   return series;
 }
 
@@ -192,8 +192,7 @@ flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const 
   report.interpolant = interpolantName(firstVolume.interpolant);
   report.firstInfo = a->field.info;
   const auto loadAhead = [&](std::size_t i) {
-    return std::async(std::launch::async,
-                      [&, i] { return loadSnapshot(series[i], field, false); });
+    return std::async(std::launch::async, [&, i] { return loadSnapshot(series[i], field, false); });
   };
   std::future<std::unique_ptr<LoadedSnapshot>> next = loadAhead(first + 1);
 

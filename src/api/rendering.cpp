@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "render/image/font.hpp"
-#include "scene_overlays.hpp"
 #include "render/volume_range.hpp"
+#include "scene_overlays.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -193,8 +193,8 @@ std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
   toCoordinates(scale, colour.values);
   std::vector<shared::TubeSegment> added =
       render::buildTubeSegments(recent, colour, volume.transform);
-  scene.segments.insert(scene.segments.end() - std::ptrdiff_t(scene.outline.size()),
-                        added.begin(), added.end());
+  scene.segments.insert(scene.segments.end() - std::ptrdiff_t(scene.outline.size()), added.begin(),
+                        added.end());
   setColourRange(scene);
   return added;
 }
@@ -225,8 +225,7 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   if (!(o.radiusByColour > 0.0f && o.radiusByColour <= 1.0f))
-    throw InputError("--radius-by-colour",
-                     fmt::format("{} is outside (0, 1]", o.radiusByColour));
+    throw InputError("--radius-by-colour", fmt::format("{} is outside (0, 1]", o.radiusByColour));
   s.leastRadiusFraction = o.radiusByColour;
   updateTubes(scene, o, cells, volume, traces);
 
@@ -270,8 +269,8 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
                           const FrameProgress& progress, const Log& log) {
   requireRenderBackend(request);
   if (frames == 0 || frames > kMaxRenderFrames)
-    throw InputError("--frames", fmt::format("{} is outside the range 1 to {}", frames,
-                                             kMaxRenderFrames));
+    throw InputError("--frames",
+                     fmt::format("{} is outside the range 1 to {}", frames, kMaxRenderFrames));
   const RenderScene scene = prepareScene(options, cells, volume, traces);
   if (colourBar || options.axes || options.triad || options.scaleBar)
     render::defaultFont();  // a missing font is told before the work, not after

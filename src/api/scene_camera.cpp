@@ -125,8 +125,8 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
   std::optional<glm::vec3> target;
   if (!o.lookAt.empty()) {
     if (o.lookAt.size() != 3) throw InputError("--look-at", "expected 3 numbers x,y,z");
-    target = glm::vec3(
-        volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
+    target =
+        glm::vec3(volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
   }
   scene.camera = render::framePoints(cameraOf(o), framed.points, framed.radius,
                                      float(o.width) / float(o.height), zoom, target);

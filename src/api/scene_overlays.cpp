@@ -48,16 +48,15 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
   if (o.axes) {
     const auto [lower, upper] = axesBounds(o, volume);
-    render::drawAxes(image,
-                     render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size),
-                     ink);
+    render::drawAxes(
+        image, render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size), ink);
   }
   if (o.triad) render::drawTriad(image, render::layoutTriad(scene.camera, w, h, size));
   if (o.scaleBar)
-    render::drawScaleBar(image,
-                         render::layoutScaleBar(scene.camera, w, h, volume.transform,
-                                                shortLengthUnit(info), size),
-                         ink);
+    render::drawScaleBar(
+        image,
+        render::layoutScaleBar(scene.camera, w, h, volume.transform, shortLengthUnit(info), size),
+        ink);
 }
 
 // The context volume's colour bar, above the tubes': its transfer function's colours over its
@@ -68,8 +67,12 @@ render::ColourBar volumeBar(const RenderOptions& o, const RenderScene& scene) {
   if (s.logVolume)
     scale = {render::ScaleKind::Log, std::pow(10.0, double(s.volumeRange.min)),
              std::pow(10.0, double(s.volumeRange.max))};
-  return {render::ColourMap::Viridis, scale, o.volume + " (volume)", "",
-          {shared::kVolumeLowColour, shared::kVolumeHighColour}, 1};
+  return {render::ColourMap::Viridis,
+          scale,
+          o.volume + " (volume)",
+          "",
+          {shared::kVolumeLowColour, shared::kVolumeHighColour},
+          1};
 }
 
 }  // namespace
@@ -85,8 +88,8 @@ void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScen
   if (!colourBars) return;
   const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
   render::drawColourBar(
-      image, {scene.colourMap, scene.colourScale, scene.colourLabel, scene.colourUnit, {}, 0,
-              light});
+      image,
+      {scene.colourMap, scene.colourScale, scene.colourLabel, scene.colourUnit, {}, 0, light});
   if (scene.settings.volume) {
     render::ColourBar bar = volumeBar(o, scene);
     bar.light = light;

@@ -82,7 +82,8 @@ float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
   // A quarter of the finest cell crossed at the maximum speed (in double: |v|² of a float
   // component near 1e18 overflows float).
   double maxSpeed = 0.0;
-  for (const glm::vec3& v : volume.values) maxSpeed = std::max(maxSpeed, glm::length(glm::dvec3(v)));
+  for (const glm::vec3& v : volume.values)
+    maxSpeed = std::max(maxSpeed, glm::length(glm::dvec3(v)));
   const glm::dvec3 s = volume.transform.spacing;
   const double finest = std::min(s.x, std::min(s.y, s.z));
   const double step = maxSpeed > 0.0 ? 0.25 * finest / maxSpeed : 1.0;
@@ -119,8 +120,9 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.integrator = parseIntegrator(s.integrator);
   // rk45's tolerance squared must stay a normal float (the controller reads its exponent).
   if (!(s.tolerance >= 1e-8f && s.tolerance <= 1.0f))
-    throw InputError("--tolerance",
-                     fmt::format("{} is not in [1e-8, 1] (finest cell widths per step)", s.tolerance));
+    throw InputError(
+        "--tolerance",
+        fmt::format("{} is not in [1e-8, 1] (finest cell widths per step)", s.tolerance));
   options.tolerance = s.tolerance;
   options.minStep = s.minStep.value_or(options.stepSize / 100.0f);
   options.maxStep = s.maxStep.value_or(options.stepSize * 4.0f);

@@ -49,9 +49,9 @@ HostValues hostValuesFor(const flow::TraceOptions& options, HostValues asked) {
 }
 
 // Opens the device for a GPU backend and uploads the volume, saying so on `log`.
-std::unique_ptr<GpuSession> openDevice(const BackendRequest& request,
-                                       const BackendChoice& choice, flow::VectorVolume& volume,
-                                       TraceReport& t, HostValues hostValues, const Log& log) {
+std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const BackendChoice& choice,
+                                       flow::VectorVolume& volume, TraceReport& t,
+                                       HostValues hostValues, const Log& log) {
   Stopwatch clock;
   auto session =
       std::make_unique<GpuSession>(createContext(request, choice), choice.backend, volume);
@@ -69,8 +69,8 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request,
   say(log,
       fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
                   "{:.2f} s, kernels {:.2f} s]",
-                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds,
-                  setup.structureSeconds, setup.pipelineSeconds));
+                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds, setup.structureSeconds,
+                  setup.pipelineSeconds));
   return session;
 }
 
@@ -104,8 +104,7 @@ flow::StoredTraces traceOnTheCpu(flow::VectorVolume& volume, std::span<const glm
 }
 
 flow::StoredTraces traceOnHost(gpu::GpuTracer& tracer, const vk::Context& ctx,
-                               std::span<const glm::dvec3> seeds,
-                               const flow::TraceOptions& options,
+                               std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
                                const flow::TraceProgress& progress, TraceReport& t,
                                const Log& log) {
   Stopwatch clock;
@@ -152,23 +151,18 @@ flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volu
   return traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log);
 }
 
-std::unique_ptr<HeldTraces> traceForWriting(const BackendRequest& request,
-                                            flow::VectorVolume& volume,
-                                            std::span<const glm::dvec3> seeds,
-                                            const flow::TraceOptions& options, TraceStore store,
-                                            const flow::TraceProgress& progress,
-                                            TraceReport* report, HostValues hostValues,
-                                            const Log& log) {
+std::unique_ptr<HeldTraces> traceForWriting(
+    const BackendRequest& request, flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
+    const flow::TraceOptions& options, TraceStore store, const flow::TraceProgress& progress,
+    TraceReport* report, HostValues hostValues, const Log& log) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
   if (choice.backend == gpu::Backend::Cpu)
-    return std::make_unique<HostTraces>(
-        traceOnTheCpu(volume, seeds, options, progress, t, log));
+    return std::make_unique<HostTraces>(traceOnTheCpu(volume, seeds, options, progress, t, log));
   std::unique_ptr<GpuSession> session =
       openDevice(request, choice, volume, t, hostValuesFor(options, hostValues), log);
-  const bool software =
-      session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool software = session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool deviceStore = store == TraceStore::Device || (store == TraceStore::Auto && !software);
   if (deviceStore && options.cpuTailLines > 0)
     say(log, "points     to host memory: the CPU finishes the last lines (--cpu-tail)");

@@ -25,8 +25,8 @@ std::uint64_t totalSteps(const flow::TraceSet& traces) {
 }
 
 BenchRow measuredRow(const std::string& backend, const std::string& device, bool history,
-                     std::size_t particles, const flow::TraceSet& traces,
-                     const BenchConfig& config, double wallSeconds) {
+                     std::size_t particles, const flow::TraceSet& traces, const BenchConfig& config,
+                     double wallSeconds) {
   BenchRow row;
   row.backend = backend;
   row.device = device;
@@ -132,9 +132,9 @@ void runCpu(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
         const flow::StoredTraces stored =
             flow::traceToRounds(volume, mine, optionsFor(config, history));
         const flow::TraceSet& traces = stored.lines();
-        keepFaster(best, combined(measuredRow("cpu", device, history, n, traces, config,
-                                              clock.seconds()),
-                                  callbacks));
+        keepFaster(best,
+                   combined(measuredRow("cpu", device, history, n, traces, config, clock.seconds()),
+                            callbacks));
       }
       report.rows.push_back(*best);
       if (callbacks.rowDone) callbacks.rowDone(*best);
@@ -195,8 +195,7 @@ void runGpu(gpu::Backend backend, const flow::VectorVolume& volume,
         clock.restart();
         const flow::StoredTraces stored = tracer.traceToRounds(mine, optionsFor(config, history));
         const flow::TraceSet& traces = stored.lines();
-        BenchRow row =
-            measuredRow(name, setup.device, history, n, traces, config, clock.seconds());
+        BenchRow row = measuredRow(name, setup.device, history, n, traces, config, clock.seconds());
         row.kernelSeconds = tracer.lastRun().kernelSeconds;
         row.compactionSeconds = tracer.lastRun().compactionSeconds;
         row.chunks = tracer.lastRun().batches;
@@ -226,9 +225,9 @@ void compareWithCpu(BenchReport& report, const BenchCallbacks& callbacks) {
         continue;
       const double difference = std::abs(double(row.steps) - double(cpu.steps));
       if (difference <= std::max(2.0, 1e-5 * double(cpu.steps))) continue;
-      const std::string why = fmt::format(
-          "{} with {} particles took {} steps, the cpu {}: the results differ", row.backend,
-          row.particles, row.steps, cpu.steps);
+      const std::string why =
+          fmt::format("{} with {} particles took {} steps, the cpu {}: the results differ",
+                      row.backend, row.particles, row.steps, cpu.steps);
       report.notes.push_back(why);
       if (callbacks.note) callbacks.note(why);
     }
@@ -242,13 +241,10 @@ double BenchRow::stepsPerSecond() const {
   return double(steps) / std::max(seconds, 1e-12);
 }
 
-double BenchRow::wallStepsPerSecond() const {
-  return double(steps) / std::max(wallSeconds, 1e-12);
-}
+double BenchRow::wallStepsPerSecond() const { return double(steps) / std::max(wallSeconds, 1e-12); }
 
 void runBenchmark(const flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
-                  const BenchConfig& config, BenchReport& report,
-                  const BenchCallbacks& callbacks) {
+                  const BenchConfig& config, BenchReport& report, const BenchCallbacks& callbacks) {
   if (config.particles.empty()) throw std::invalid_argument("bench: no particle counts");
   if (seeds.size() < *std::max_element(config.particles.begin(), config.particles.end()))
     throw std::invalid_argument("bench: fewer seeds than the largest particle count");

@@ -27,7 +27,7 @@ struct BenchCallbacks {
   std::function<void(const BackendSetup&)> setupDone;
   std::function<void(const BenchRow&)> rowDone;  // called after the row is in the report
   std::function<void(const std::string&)> note;  // a skipped row or an unavailable backend
-  std::optional<RankShare> share;                 // none: this process alone
+  std::optional<RankShare> share;                // none: this process alone
 };
 
 // `seeds` holds at least the largest particle count; row n traces its first n seeds. Results are

@@ -12,20 +12,20 @@
 namespace amrstream::bench {
 
 struct BenchConfig {
-  std::vector<std::string> backends;     // cpu, rayquery, pipeline, compute, in run order
-  std::vector<std::size_t> particles;    // counts, ascending; rows use a prefix of the seeds
-  std::size_t cpuMaxParticles = 65536;   // the CPU path skips larger counts
+  std::vector<std::string> backends;            // cpu, rayquery, pipeline, compute, in run order
+  std::vector<std::size_t> particles;           // counts, ascending; rows use a prefix of the seeds
+  std::size_t cpuMaxParticles = 65536;          // the CPU path skips larger counts
   std::vector<bool> historyModes{false, true};  // false: endpoints only; true: every step
   std::uint64_t historyPointBudget = std::uint64_t(1) << 28;  // larger history rows are skipped
-  std::uint32_t repeats = 1;             // each row keeps its fastest repeat
-  flow::TraceOptions trace;              // keepHistory is set per row
-  std::optional<bool> regionHint;        // GPU kernels test the previous region first; none:
-                                         // each backend's default (gpu::defaultKernelSettings)
-  std::optional<bool> dualValues;        // GPU kernels read dual cells; none: the default
+  std::uint32_t repeats = 1;                                  // each row keeps its fastest repeat
+  flow::TraceOptions trace;                                   // keepHistory is set per row
+  std::optional<bool> regionHint;  // GPU kernels test the previous region first; none:
+                                   // each backend's default (gpu::defaultKernelSettings)
+  std::optional<bool> dualValues;  // GPU kernels read dual cells; none: the default
   std::optional<std::uint32_t> spreadThreads;  // gpu::KernelSettings::spreadThreads; none: default
-  bool spatialSeedOrder = true;          // GPU threads take seeds in Morton order (GpuTracer)
-  std::string deviceFilter;              // a substring of the Vulkan device's name
-  unsigned deviceSlot = 0;               // which qualifying device (vk::ContextBuilder)
+  bool spatialSeedOrder = true;                // GPU threads take seeds in Morton order (GpuTracer)
+  std::string deviceFilter;                    // a substring of the Vulkan device's name
+  unsigned deviceSlot = 0;                     // which qualifying device (vk::ContextBuilder)
   bool validation = false;
 };
 
@@ -35,13 +35,13 @@ struct BenchRow {
   bool history = false;
   std::size_t particles = 0;
   std::uint32_t maxSteps = 0;
-  std::uint64_t steps = 0;               // particle-steps taken, summed over the traces
-  std::optional<double> kernelSeconds;   // GPU: timestamp queries around the tracing kernel
+  std::uint64_t steps = 0;                  // particle-steps taken, summed over the traces
+  std::optional<double> kernelSeconds;      // GPU: timestamp queries around the tracing kernel
   std::optional<double> compactionSeconds;  // GPU: the same around compaction and point data
-  double wallSeconds = 0.0;              // the whole trace call: uploads, rounds, read-back
-  std::uint64_t deviceBytes = 0;         // GPU: volume + structure + the largest batch's buffers
-  std::size_t chunks = 0;                // GPU: batches of lines
-  std::size_t rounds = 0;                // GPU: rounds of steps, over all batches
+  double wallSeconds = 0.0;                 // the whole trace call: uploads, rounds, read-back
+  std::uint64_t deviceBytes = 0;            // GPU: volume + structure + the largest batch's buffers
+  std::size_t chunks = 0;                   // GPU: batches of lines
+  std::size_t rounds = 0;                   // GPU: rounds of steps, over all batches
   // GPU with trace.cpuTailLines: the lines the CPU reference finished, its steps for them, and
   // its wall time (part of wallSeconds).
   std::size_t tailLines = 0;

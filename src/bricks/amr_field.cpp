@@ -109,8 +109,8 @@ class LevelCornerSet {
  public:
   LevelCornerSet(std::size_t expected, int level, glm::ivec3 lower, glm::ivec3 upper)
       : level_(level), lower_(lower) {
-    const glm::i64vec3 counts = ((glm::i64vec3(upper) - glm::i64vec3(lower)) >> std::int64_t(level)) +
-                                std::int64_t(1);
+    const glm::i64vec3 counts =
+        ((glm::i64vec3(upper) - glm::i64vec3(lower)) >> std::int64_t(level)) + std::int64_t(1);
     counts_ = counts;
     const double cells = double(counts.x) * double(counts.y) * double(counts.z);
     if (cells < 0x1p62)
@@ -130,7 +130,8 @@ class LevelCornerSet {
   // Whether a corner aligned to the level's grid is present.
   bool contains(glm::ivec3 corner) const {
     if (glm::any(glm::lessThan(corner, lower_))) return false;
-    const glm::i64vec3 index = (glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_);
+    const glm::i64vec3 index =
+        (glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_);
     if (glm::any(glm::greaterThanEqual(index, counts_))) return false;
     if (keys_) return keys_->contains(key(corner));
     Shard& shard = shards_[shardOf(corner)];
@@ -239,8 +240,8 @@ void AmrField::validateTransform() const {
   const double smallest = std::numeric_limits<float>::min(), largest = 1e37;
   for (int a = 0; a < 3; ++a) {
     if (!std::isfinite(t.origin[a]))
-      throw InputError(source_, fmt::format("the origin's {} coordinate is {}", "xyz"[a],
-                                            t.origin[a]));
+      throw InputError(source_,
+                       fmt::format("the origin's {} coordinate is {}", "xyz"[a], t.origin[a]));
     if (!(t.spacing[a] >= smallest && t.spacing[a] <= largest))
       throw InputError(source_,
                        fmt::format("the finest cell width along {} is {:g}; it must lie in "
@@ -274,9 +275,9 @@ void AmrField::checkChannelShape(const Channel& c) const {
 void AmrField::checkChannelValues(const Channel& c) const {
   const auto notFinite = [&](std::size_t i) { return !std::isfinite(c.values[i]); };
   if (std::size_t i = firstFailing(c.values.size(), notFinite); i < c.values.size())
-    throw InputError(source_,
-                     fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name,
-                                 c.values[i], describeCell(i, lowers_[i], levels_[i], info_)));
+    throw InputError(
+        source_, fmt::format("channel '{}' has a non-finite value ({}) at {}", c.name, c.values[i],
+                             describeCell(i, lowers_[i], levels_[i], info_)));
 }
 
 void AmrField::validate(const CheckedCells* checked) {
@@ -348,10 +349,10 @@ void AmrField::validate(const CheckedCells* checked) {
                                           "axis are supported",
                                           extent.x, extent.y, extent.z, maxExtent));
   if (glm::any(glm::greaterThan(upper, glm::i64vec3(std::numeric_limits<int>::max()))))
-    throw InputError(source_, fmt::format("the cells reach {},{},{}, beyond the largest "
-                                          "supported corner coordinate {}",
-                                          upper.x, upper.y, upper.z,
-                                          std::numeric_limits<int>::max()));
+    throw InputError(source_,
+                     fmt::format("the cells reach {},{},{}, beyond the largest "
+                                 "supported corner coordinate {}",
+                                 upper.x, upper.y, upper.z, std::numeric_limits<int>::max()));
   const CellBox box{glm::ivec3(lower), glm::ivec3(upper)};
   bounds_ = box;
   validateTransform();

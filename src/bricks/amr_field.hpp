@@ -28,8 +28,9 @@ namespace amrstream::bricks {
 
 // Cells' coordinates are 32-bit; bricks and regions are centred on the domain and regions use
 // doubled coordinates (docs/architecture.md, "Positions"), hence these limits.
-inline constexpr int kMaxLevel = 29;       // coarsest supported level (cell width 2^29)
-inline constexpr int kMaxExtentBits = 30;  // the cells' bounding box spans at most 2^30 finest cells
+inline constexpr int kMaxLevel = 29;  // coarsest supported level (cell width 2^29)
+inline constexpr int kMaxExtentBits =
+    30;  // the cells' bounding box spans at most 2^30 finest cells
 
 // Maps cell units (finest-cell units) to the input's physical coordinates.
 struct WorldTransform {

@@ -12,17 +12,19 @@ namespace amrstream::bricks {
 
 // What an input file says about itself beyond its cells; every member may be unknown.
 struct DatasetInfo {
-  std::string format;               // "FLASH", "Enzo", "AMReX", "Gerris", "ExaBricks", "builtin"
-  std::optional<double> time;       // simulation time of the snapshot, in timeUnit
-  std::string timeUnit;             // e.g. "s", or "code units (1 = 2.5e15 s)"; empty: unknown
-  std::string lengthUnit;           // unit of the physical coordinates, e.g. "cm", "m", "code units (1 = 3.1e24 cm)"; empty: unknown
-  std::array<bool, 3> periodic{};   // axes the file declares periodic
-  bool periodicKnown = false;       // whether the file says anything about periodicity
+  std::string format;          // "FLASH", "Enzo", "AMReX", "Gerris", "ExaBricks", "builtin"
+  std::optional<double> time;  // simulation time of the snapshot, in timeUnit
+  std::string timeUnit;        // e.g. "s", or "code units (1 = 2.5e15 s)"; empty: unknown
+  std::string lengthUnit;      // unit of the physical coordinates, e.g. "cm", "m", "code units (1
+                               // = 3.1e24 cm)"; empty: unknown
+  std::array<bool, 3> periodic{};  // axes the file declares periodic
+  bool periodicKnown = false;      // whether the file says anything about periodicity
   // The file's own level numbers: internal level L (0 = finest, see amr_field.hpp) is the file's
   // level finestFileLevel - L when levelsCountDown, else finestFileLevel + L (ExaBricks: 0 + L).
   int finestFileLevel = 0;
   bool levelsCountDown = true;
-  std::string levelName;            // how the file names levels, e.g. "FLASH refine level (1 = root)", "Enzo level (0 = root grid)"
+  std::string levelName;  // how the file names levels, e.g. "FLASH refine level (1 = root)", "Enzo
+                          // level (0 = root grid)"
   int fileLevel(int internalLevel) const;
 
   // Where the file states them: the time unit in seconds and the length unit in centimetres.

@@ -128,9 +128,8 @@ class ChunkBuilder {
       for (auto it = first; it != ids_.end(); ++it)
         width = std::min(width, inputs_.cellWidths[*it]);
       node.child = std::uint32_t(chunk_.regions.size());
-      chunk_.regions.push_back(
-          {item.box.lower, std::uint32_t(chunk_.regionBricks.size()), item.box.upper,
-           std::uint32_t(ids_.end() - first), width});
+      chunk_.regions.push_back({item.box.lower, std::uint32_t(chunk_.regionBricks.size()),
+                                item.box.upper, std::uint32_t(ids_.end() - first), width});
       chunk_.regionBricks.insert(chunk_.regionBricks.end(), first, ids_.end());
     }
     ids_.resize(item.begin);

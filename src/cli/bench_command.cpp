@@ -7,23 +7,23 @@
 #include <memory>
 #include <optional>
 
-#include "bench/bench_report.hpp"
-#include "bench/bench_runner.hpp"
-#include "dataset_files.hpp"
-#include "dist/mpi_world.hpp"
-#include "dist/rank_agreement.hpp"
-#include "dist/seed_shares.hpp"
-#include "dataset_options.hpp"
-#include "option_checks.hpp"
-#include "option_limits.hpp"
-#include "output_paths.hpp"
-#include "flow/seed_strategies.hpp"
-#include "flow/seeds.hpp"
-#include "formats/load_input.hpp"
 #include "amrstream/backend.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
 #include "amrstream/trace_settings.hpp"
+#include "bench/bench_report.hpp"
+#include "bench/bench_runner.hpp"
+#include "dataset_files.hpp"
+#include "dataset_options.hpp"
+#include "dist/mpi_world.hpp"
+#include "dist/rank_agreement.hpp"
+#include "dist/seed_shares.hpp"
+#include "flow/seed_strategies.hpp"
+#include "flow/seeds.hpp"
+#include "formats/load_input.hpp"
+#include "option_checks.hpp"
+#include "option_limits.hpp"
+#include "output_paths.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -203,13 +203,13 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
   fmt::print("input      {}: {} cells, levels {}..{}, vector {} [{:.2f} s]\n", data.source,
              withCommas(data.cells), data.finestLevel, data.coarsestLevel, data.vector,
              data.loadSeconds);
-  fmt::print("structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]{}\n",
-             withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions),
-             data.regionsSeconds, data.gatherSeconds,
-             volume.interpolant == flow::Interpolant::Linear
-                 ? fmt::format(", linear interpolant's gradients [{:.2f} s]",
-                               prepared.times.gradients)
-                 : std::string());
+  fmt::print(
+      "structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]{}\n",
+      withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions), data.regionsSeconds,
+      data.gatherSeconds,
+      volume.interpolant == flow::Interpolant::Linear
+          ? fmt::format(", linear interpolant's gradients [{:.2f} s]", prepared.times.gradients)
+          : std::string());
   fmt::print("seeds      {} from {}; GPU threads take them in {} order\n",
              withCommas(seeds.points.size()), data.seeding,
              report.config.spatialSeedOrder ? "Morton (spatial)" : "the given");
@@ -218,10 +218,11 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
              report.config.repeats);
   fmt::print("host       {}\n", report.host);
   if (world.size() > 1)
-    fmt::print("ranks      {}: each row's particles in blocks of the Morton order dealt round the "
-               "ranks; steps "
-               "summed, times the slowest rank's, device memory the largest rank's\n",
-               world.size());
+    fmt::print(
+        "ranks      {}: each row's particles in blocks of the Morton order dealt round the "
+        "ranks; steps "
+        "summed, times the slowest rank's, device memory the largest rank's\n",
+        world.size());
   if (const std::string warning = world.bindingWarning(); !warning.empty())
     fmt::print("note       {}\n", warning);
   fmt::print("\n");
@@ -254,8 +255,7 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, const std::string& commandLine,
-                     const dist::MpiWorld& world) {
+void addBenchCommand(CLI::App& app, const std::string& commandLine, const dist::MpiWorld& world) {
   auto options = std::make_shared<BenchCommandOptions>();
   options->commandLine = commandLine;
   CLI::App* command = app.add_subcommand(
@@ -273,8 +273,9 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
                    "particle counts, comma-separated [default: 1024,2048,...,1048576]")
       ->delimiter(',')
       ->check(countIn(1, kMaxSeedCount));
-  command->add_option("--cpu-max-particles", options->cpuMaxParticles,
-                      "the CPU path runs counts up to this")
+  command
+      ->add_option("--cpu-max-particles", options->cpuMaxParticles,
+                   "the CPU path runs counts up to this")
       ->capture_default_str()
       ->check(countIn(0, kMaxSeedCount));
   command
@@ -327,8 +328,9 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
                    "the scalar whose densest cells get the seeds [default: dens, else the first "
                    "scalar outside the vector]")
       ->excludes(seedsFile);
-  command->add_option("--seed-percentile", options->seedPercentile,
-                      "candidate cells are at or above this percentile of the scalar")
+  command
+      ->add_option("--seed-percentile", options->seedPercentile,
+                   "candidate cells are at or above this percentile of the scalar")
       ->capture_default_str()
       ->check(numberIn(0.0, 100.0))
       ->excludes(seedsFile);
@@ -365,8 +367,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine,
                    "in the order drawn")
       ->capture_default_str()
       ->check(CLI::IsMember({"spatial", "given"}));
-  command->add_option("--json", options->json, "where to write the results")
-      ->capture_default_str();
+  command->add_option("--json", options->json, "where to write the results")->capture_default_str();
   command->callback([options, &world] { runBench(*options, world); });
 }
 

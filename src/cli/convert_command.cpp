@@ -7,9 +7,9 @@
 
 #include "dataset_files.hpp"
 #include "dataset_options.hpp"
-#include "output_paths.hpp"
 #include "formats/exa_format.hpp"
 #include "formats/load_input.hpp"
+#include "output_paths.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::cli {

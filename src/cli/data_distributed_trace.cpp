@@ -271,13 +271,14 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
   const std::vector<double> rankRead = world.gatherToRoot(double(rank.read.piecesRead));
   const double handOffs = world.sumOverRanks(double(stats.linesSent));
   const auto printRanks = [&] {
-    fmt::print("ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
-               "{:.0f} finest cells), cells {}, lines starting {}, rounds {}, "
-               "hand-offs {} ({:.3g} MB), tracing {} s, handing on {} s\n",
-               world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
-               perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), stats.rounds,
-               perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
-               perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
+    fmt::print(
+        "ranks      {} over data: bricks held {} of {} (cropped to the part and a halo of "
+        "{:.0f} finest cells), cells {}, lines starting {}, rounds {}, "
+        "hand-offs {} ({:.3g} MB), tracing {} s, handing on {} s\n",
+        world.size(), perRank(rankBricks, "{:.0f}"), rank.allBricks, rank.halo,
+        perRank(rankCells, "{:.3g}"), perRank(rankLines, "{:.0f}"), stats.rounds,
+        perRank(rankSent, "{:.0f}"), handOffs * sizeof(shared::LineState) * 1e-6,
+        perRank(rankTracing, "{:.3f}"), perRank(rankExchange, "{:.3f}"));
     if (rank.read.pieces > 0)
       fmt::print("read       each rank its part's values: {} of {} {}; reading and building {} s\n",
                  perRank(rankRead, "{:.0f}"), rank.read.pieces, pieceNoun(job.dataset.input),
@@ -289,11 +290,12 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
       fmt::print("device     MiB per rank (volume, structure, rounds): {}\n",
                  perRank(rankDevice, "{:.1f}"));
       const gpu::TraceRunStats& r = gpuTracer->lastRun();
-      fmt::print("rounds     rank 0, {} rounds: kernel {:.3f} s, ordering and uploading lines "
-                 "{:.3f} s, submitting {:.3f} s, waiting for rounds {:.3f} s and copies {:.3f} s, "
-                 "unpacking {:.3f} s, reading states back {:.3f} s\n",
-                 r.rounds, r.kernelSeconds.value_or(0.0), r.linesSeconds, r.submitSeconds,
-                 r.roundWaitSeconds, r.copyWaitSeconds, r.unpackSeconds, r.statesSeconds);
+      fmt::print(
+          "rounds     rank 0, {} rounds: kernel {:.3f} s, ordering and uploading lines "
+          "{:.3f} s, submitting {:.3f} s, waiting for rounds {:.3f} s and copies {:.3f} s, "
+          "unpacking {:.3f} s, reading states back {:.3f} s\n",
+          r.rounds, r.kernelSeconds.value_or(0.0), r.linesSeconds, r.submitSeconds,
+          r.roundWaitSeconds, r.copyWaitSeconds, r.unpackSeconds, r.statesSeconds);
     }
   };
 

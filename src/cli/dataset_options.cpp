@@ -38,7 +38,8 @@ void addGeneratorOptions(CLI::App& command, synth::GeneratorOptions& options,
   command.add_option(seedFlag, options.seed, "random seed of a generated dataset")
       ->capture_default_str()
       ->check(countIn(0, std::numeric_limits<std::uint64_t>::max()));
-  command.add_option("--time", options.time, "snapshot time of a generated unsteady dataset (swirl)")
+  command
+      .add_option("--time", options.time, "snapshot time of a generated unsteady dataset (swirl)")
       ->capture_default_str()
       ->check(finiteDouble());
 }

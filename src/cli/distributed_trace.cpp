@@ -62,9 +62,8 @@ void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput
     Stopwatch clock;
     std::vector<flow::TraceSet> own;
     own.push_back(std::move(part));
-    const output::VtpCounts counts = dist::agreed(world, [&] {
-      return output.write(piece, dist::GatheredTraces(std::move(own)), input);
-    });
+    const output::VtpCounts counts = dist::agreed(
+        world, [&] { return output.write(piece, dist::GatheredTraces(std::move(own)), input); });
     const double seconds = world.maxOverRanks(clock.seconds());
     const double written = world.sumOverRanks(double(counts.lines));
     const double points = world.sumOverRanks(double(counts.points));
@@ -172,10 +171,11 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   const auto printRanks = [&] {
     const auto [fewest, most] = std::ranges::minmax(
         shares, {}, [](const std::vector<std::uint32_t>& r) { return r.size(); });
-    fmt::print("ranks      {} ({} seeds, {}..{} a rank in blocks of the Morton order): steps {}, "
-               "tracing {} s\n",
-               world.size(), seedCount, fewest.size(), most.size(), perRank(rankSteps, "{:.3g}"),
-               perRank(rankSeconds, "{:.3f}"));
+    fmt::print(
+        "ranks      {} ({} seeds, {}..{} a rank in blocks of the Morton order): steps {}, "
+        "tracing {} s\n",
+        world.size(), seedCount, fewest.size(), most.size(), perRank(rankSteps, "{:.3g}"),
+        perRank(rankSeconds, "{:.3f}"));
   };
   if (output.pieces) return writePieces(world, std::move(part), input, output, printRanks);
 

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "dataset_options.hpp"
+#include "formats/exa_format.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
 #include "output_paths.hpp"
-#include "formats/exa_format.hpp"
 #include "synth/block_refiner.hpp"
 #include "synth/generators.hpp"
 #include "synth/nest_generator.hpp"
@@ -25,10 +25,10 @@ struct GenOptions {
   std::string kind;
   std::string out;
   synth::GeneratorOptions generator;
-  synth::NestOptions nest;  // kind nest: its levels and time are the generator's
+  synth::NestOptions nest;     // kind nest: its levels and time are the generator's
   std::vector<double> centre;  // kind nest: x,y,z; empty: NestOptions' default
-  int series = 0;           // snapshots; 0: one dataset named by --out alone
-  double interval = 0.1;    // time between snapshots
+  int series = 0;              // snapshots; 0: one dataset named by --out alone
+  double interval = 0.1;       // time between snapshots
 };
 
 bool isNest(const GenOptions& o) { return o.kind == "nest"; }

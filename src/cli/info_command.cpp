@@ -6,8 +6,8 @@
 #include <memory>
 #include <span>
 
-#include "flow/vector_volume.hpp"
 #include "dataset_options.hpp"
+#include "flow/vector_volume.hpp"
 #include "formats/load_input.hpp"
 #include "util/stopwatch.hpp"
 
@@ -69,8 +69,8 @@ void runInfo(const DatasetOptions& options) {
   for (const shared::Brick& b : bricks)
     maxCells = std::max<std::size_t>(maxCells, std::size_t(b.size.x) * b.size.y * b.size.z);
   fmt::print("bricks     {} (avg {:.1f} cells, max {}) built in {:.3f} s\n",
-             withCommas(bricks.size()), double(field.cellCount()) / double(bricks.size()),
-             maxCells, times.bricks);
+             withCommas(bricks.size()), double(field.cellCount()) / double(bricks.size()), maxCells,
+             times.bricks);
 
   const bricks::RegionSet& regions = layout.regions;
   const double regionSeconds = times.regions;

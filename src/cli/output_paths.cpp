@@ -48,7 +48,7 @@ void RunFiles::checkOutput(const std::string& option, const fs::path& path) cons
   if (output.directory) throw InputError(option, fmt::format("'{}' is a directory", shown));
   // Outputs are renamed over their target (AtomicFile): that would replace a device such as
   // /dev/null, or a FIFO, by a regular file.
-  if (struct stat status {}; ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
+  if (struct stat status{}; ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
     throw InputError(option, fmt::format("'{}' exists and is not a regular file (a device, a FIFO "
                                          "or a socket); outputs replace their file whole",
                                          shown));

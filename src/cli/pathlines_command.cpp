@@ -61,28 +61,31 @@ void runPathlines(const PathlinesOptions& o) {
 
   const bool streaks = options.releaseEvery > 0.0;
   const flow::TraceSet lines = streaks ? tracer.streaklines() : tracer.pathlines();
-  fmt::print("particles  {} ({} seeds), {} steps; reasons {}\n",
-             withCommas(tracer.particleCount()), withCommas(report.seedCount),
-             withCommas(report.steps), reasonHistogram(tracer.reasons()));
+  fmt::print("particles  {} ({} seeds), {} steps; reasons {}\n", withCommas(tracer.particleCount()),
+             withCommas(report.seedCount), withCommas(report.steps),
+             reasonHistogram(tracer.reasons()));
   const double readBuild = report.readSeconds + report.buildSeconds;
-  fmt::print("time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} cells), "
-             "device setup {:.2f} s, tracing {:.2f} s ({:.3g} particle-steps/s), waiting for "
-             "snapshots {:.2f} s; {:.2f}x the reading and building\n",
-             report.wallSeconds, report.readSeconds, report.buildSeconds,
-             withCommas(report.cellsRead), report.deviceSeconds, report.traceSeconds,
-             double(report.steps) / std::max(report.traceSeconds, 1e-9), report.waitSeconds,
-             report.wallSeconds / std::max(readBuild, 1e-9));
+  fmt::print(
+      "time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} cells), "
+      "device setup {:.2f} s, tracing {:.2f} s ({:.3g} particle-steps/s), waiting for "
+      "snapshots {:.2f} s; {:.2f}x the reading and building\n",
+      report.wallSeconds, report.readSeconds, report.buildSeconds, withCommas(report.cellsRead),
+      report.deviceSeconds, report.traceSeconds,
+      double(report.steps) / std::max(report.traceSeconds, 1e-9), report.waitSeconds,
+      report.wallSeconds / std::max(readBuild, 1e-9));
 
   if (report.probeCalls > 0)
-    fmt::print("samples    {} batches on the device: writing the points {:.2f} s, the device "
-               "{:.2f} s, reading the samples {:.2f} s\n",
-               withCommas(report.probeCalls), report.probeWriteSeconds, report.probeDeviceSeconds,
-               report.probeReadSeconds);
+    fmt::print(
+        "samples    {} batches on the device: writing the points {:.2f} s, the device "
+        "{:.2f} s, reading the samples {:.2f} s\n",
+        withCommas(report.probeCalls), report.probeWriteSeconds, report.probeDeviceSeconds,
+        report.probeReadSeconds);
 
   Stopwatch clock;
   output::VtpWriteOptions writeOptions;
   writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
-  writeOptions.fieldData = pathlineProvenance(series, report, streaks ? "streaklines" : "pathlines");
+  writeOptions.fieldData =
+      pathlineProvenance(series, report, streaks ? "streaklines" : "pathlines");
   const output::VtpCounts written = output::writeVtp(o.out, lines, writeOptions);
   fmt::print("output     {} ({} {}, {} points) [{:.2f} s]\n", o.out, withCommas(written.lines),
              streaks ? "streaklines" : "pathlines", withCommas(written.points), clock.seconds());

@@ -4,15 +4,15 @@
 
 #include <memory>
 
+#include "amrstream/trace_settings.hpp"
 #include "flow/seeds.hpp"
-#include "output/vtp_reader.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
+#include "output/vtp_reader.hpp"
 #include "progress.hpp"
 #include "render/image/png_io.hpp"
 #include "render_options.hpp"
 #include "trace_job.hpp"
-#include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -85,13 +85,15 @@ void addRenderCommand(CLI::App& app) {
       app.add_subcommand("render", "trace streamlines and render them as tubes to a PNG image");
   addTraceJobOptions(*command, options->job);
   addRenderOptions(*command, options->look);
-  command->add_option("--traces", options->traces,
-                      "render the traces of this .vtp (e.g. from `amrstream trace`) instead of "
-                      "tracing; INPUT gives the domain, the volume and the colour channels")
+  command
+      ->add_option("--traces", options->traces,
+                   "render the traces of this .vtp (e.g. from `amrstream trace`) instead of "
+                   "tracing; INPUT gives the domain, the volume and the colour channels")
       ->check(regularFile());
-  command->add_option("--frames", options->frames,
-                      "frames accumulated: jittered samples per pixel, each with --ao-samples "
-                      "occlusion rays")
+  command
+      ->add_option("--frames", options->frames,
+                   "frames accumulated: jittered samples per pixel, each with --ao-samples "
+                   "occlusion rays")
       ->capture_default_str()
       ->check(countIn(1, kMaxRenderFrames));
   command->add_flag("!--no-colour-bar", options->colourBar, "leave the colour bar out");

@@ -45,14 +45,16 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
                   "what the camera frames: traces (their tubes' bounding box) or domain")
       ->capture_default_str()
       ->check(CLI::IsMember({"traces", "domain"}));
-  command.add_option("--look-at", o.lookAt,
-                     "x,y,z the camera looks at (it stays far enough to see the framed box) "
-                     "[default: the framed box's centre]")
+  command
+      .add_option("--look-at", o.lookAt,
+                  "x,y,z the camera looks at (it stays far enough to see the framed box) "
+                  "[default: the framed box's centre]")
       ->delimiter(',')
       ->expected(3)
       ->check(finiteFloat());
-  command.add_option("--view-box", o.viewBox,
-                     "x0,y0,z0,x1,y1,z1: the box the camera frames [default: see --frame]")
+  command
+      .add_option("--view-box", o.viewBox,
+                  "x0,y0,z0,x1,y1,z1: the box the camera frames [default: see --frame]")
       ->delimiter(',')
       ->expected(6)
       ->check(finiteFloat());
@@ -78,8 +80,9 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
                   "one radius)")
       ->capture_default_str()
       ->check(CLI::Range(1e-6f, 1.0f));
-  command.add_option("--colour-by", o.colourBy,
-                     "speed, time (IntegrationTime) or a scalar channel sampled along the tubes")
+  command
+      .add_option("--colour-by", o.colourBy,
+                  "speed, time (IntegrationTime) or a scalar channel sampled along the tubes")
       ->capture_default_str();
   command.add_option("--colour-map", o.colourMap, render::colourMapNames())->capture_default_str();
   command
@@ -92,9 +95,10 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
       .add_option("--symlog-width", o.symlogWidth,
                   "symlog's linear part: -W..W [default: 1/1000 of the largest magnitude]")
       ->check(positiveFloat());
-  command.add_option("--range", o.range,
-                     "MIN,MAX of the colour field [default: its range; the positive values' "
-                     "with --colour-scale log]")
+  command
+      .add_option("--range", o.range,
+                  "MIN,MAX of the colour field [default: its range; the positive values' "
+                  "with --colour-scale log]")
       ->delimiter(',')
       ->expected(2)
       ->check(finiteFloat());
@@ -114,20 +118,23 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
                      "a flat background: white, black, #rrggbb or R,G,B from 0 to 1, or "
                      "transparent (a PNG whose alpha is the coverage) [default: a dark grey "
                      "gradient]");
-  command.add_option("--ao-samples", o.aoSamples,
-                     "ambient-occlusion rays per pixel and frame (0: off)")
+  command
+      .add_option("--ao-samples", o.aoSamples,
+                  "ambient-occlusion rays per pixel and frame (0: off)")
       ->capture_default_str()
       ->check(countIn(0, kMaxAoSamples));
   command.add_option("--volume", o.volume,
                      "a scalar channel to show as a volume behind the tubes, e.g. dens");
-  command.add_option("--volume-range", o.volumeRange,
-                     "MIN,MAX of the transfer function, in log10 unless --linear-volume "
-                     "[default: the median to the 99.9th percentile]")
+  command
+      .add_option("--volume-range", o.volumeRange,
+                  "MIN,MAX of the transfer function, in log10 unless --linear-volume "
+                  "[default: the median to the 99.9th percentile]")
       ->delimiter(',')
       ->expected(2)
       ->check(finiteFloat());
-  command.add_option("--volume-opacity", o.volumeOpacity,
-                     "extinction per finest cell at the top of the transfer function")
+  command
+      .add_option("--volume-opacity", o.volumeOpacity,
+                  "extinction per finest cell at the top of the transfer function")
       ->capture_default_str()
       ->check(nonNegativeFloat());
   command.add_flag("--linear-volume", o.linearVolume,

@@ -55,11 +55,11 @@ void runResample(const ResampleOptions& o) {
     return buildField(cells, o.field);
   }();  // the cells go here: the volume holds what sampling reads
   const flow::VectorVolume& volume = field.volume;
-  fmt::print("structure  {} bricks, {} regions, vector {}, point data {}, interpolant {} "
-             "[{:.2f} s]\n",
-             withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
-             volume.vectorName, channelList(volume), interpolantName(volume.interpolant),
-             clock.seconds());
+  fmt::print(
+      "structure  {} bricks, {} regions, vector {}, point data {}, interpolant {} "
+      "[{:.2f} s]\n",
+      withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
+      volume.vectorName, channelList(volume), interpolantName(volume.interpolant), clock.seconds());
 
   const flow::UniformGridSpec spec = flow::uniformGridSpec(volume, o.dims, o.box);
   clock.restart();
@@ -70,12 +70,12 @@ void runResample(const ResampleOptions& o) {
   }
   const double seconds = clock.seconds();
   const glm::dvec3 spacing = spec.spacing();
-  fmt::print("grid       {} x {} x {} points, spacing {:g} x {:g} x {:g}, {} valid ({:.1f} %) "
-             "[{:.2f} s, {:.3g} samples/s]\n",
-             spec.dims[0], spec.dims[1], spec.dims[2], spacing.x, spacing.y, spacing.z,
-             withCommas(grid.validCount),
-             100.0 * double(grid.validCount) / double(spec.pointCount()), seconds,
-             double(spec.pointCount()) / std::max(seconds, 1e-9));
+  fmt::print(
+      "grid       {} x {} x {} points, spacing {:g} x {:g} x {:g}, {} valid ({:.1f} %) "
+      "[{:.2f} s, {:.3g} samples/s]\n",
+      spec.dims[0], spec.dims[1], spec.dims[2], spacing.x, spacing.y, spacing.z,
+      withCommas(grid.validCount), 100.0 * double(grid.validCount) / double(spec.pointCount()),
+      seconds, double(spec.pointCount()) / std::max(seconds, 1e-9));
 
   clock.restart();
   output::VtiWriteOptions writeOptions;
@@ -108,8 +108,7 @@ void addResampleCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(6)
       ->check(finiteFloat());
-  command
-      ->add_option("--compression", options->compression, "compression of the .vti's arrays")
+  command->add_option("--compression", options->compression, "compression of the .vti's arrays")
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "zlib", "lz4"}));
   command->add_option("--out", options->out, "output .vti file")->capture_default_str();

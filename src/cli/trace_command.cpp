@@ -6,15 +6,15 @@
 #include <memory>
 #include <optional>
 
-#include "output/vtp_writer.hpp"
 #include "amrstream/provenance.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "data_distributed_trace.hpp"
 #include "distributed_trace.hpp"
 #include "option_checks.hpp"
+#include "output/vtp_writer.hpp"
 #include "output_paths.hpp"
-#include "util/input_error.hpp"
 #include "trace_job.hpp"
-#include "amrstream/trace_settings.hpp"
+#include "util/input_error.hpp"
 #include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
@@ -47,11 +47,11 @@ output::VtpCounts writeTraceFile(const TraceCommandOptions& o, const std::filesy
   writeOptions.periodicLines = o.periodicLines == "unwrapped" ? output::PeriodicLines::Unwrapped
                                                               : output::PeriodicLines::Split;
   writeOptions.compression = *output::compressionNamed(o.compression);  // checked by CLI11
-  writeOptions.fieldData = provenanceFields(
-      {input.source, input.info,
-       fmt::format("{} from {}", input.seeds.points.size(), input.seedDescription), input.options,
-       input.report},
-      input.volume);
+  writeOptions.fieldData =
+      provenanceFields({input.source, input.info,
+                        fmt::format("{} from {}", input.seeds.points.size(), input.seedDescription),
+                        input.options, input.report},
+                       input.volume);
   return output::writeVtp(path, traces, writeOptions);
 }
 
@@ -96,14 +96,12 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
   };
   if (world.size() > 1 || o.pieces || o.distribute == "data") {
     const bool stagePeak = resetStagePeak();
-    DistributedOutput output{o.out, o.pieces,
-                             [&](const std::filesystem::path& path, const flow::TraceView& traces,
-                                 const PreparedInput& input) {
-                               return writeTraceFile(o, path, traces, input);
-                             }};
+    DistributedOutput output{
+        o.out, o.pieces,
+        [&](const std::filesystem::path& path, const flow::TraceView& traces,
+            const PreparedInput& input) { return writeTraceFile(o, path, traces, input); }};
     if (o.distribute == "data")
-      traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.haloSteps, checkFiles,
-                               output);
+      traceOverDataDistributed(world, o.job, !o.endpointsOnly, o.haloSteps, checkFiles, output);
     else
       traceDistributed(world, o.job, !o.endpointsOnly, o.rebalanceSteps, checkFiles, output);
     printMemory(stagePeak);

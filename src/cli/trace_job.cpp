@@ -100,8 +100,7 @@ PreparedInput prepareInput(const TraceJobOptions& o, bool withSeeds, CellsAfter 
     }
     input.seeds = chooseSeeds(o.seeds, domainOf(input.volume), &cells, input.seedDescription);
     data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
-    flow::fillVolumeValues(input.volume, vector, plan.volume, input.source, data.channels,
-                           &times);
+    flow::fillVolumeValues(input.volume, vector, plan.volume, input.source, data.channels, &times);
   } else if (share && share->layout) {
     // The cells' layout, built from the same cells before their values were read.
     input.volume = std::move(*share->layout);
@@ -214,8 +213,7 @@ std::unique_ptr<HeldTraces> runTracesForWriting(const TraceJobOptions& o, Prepar
 void addSeedOptions(CLI::App& app, SeedRequest& seeds, std::string* seedsOut) {
   CLI::App* command = &app;
   auto* seedsFile =
-      command
-          ->add_option("--seeds", seeds.file, "file of seed points, one 'x y z' per line")
+      command->add_option("--seeds", seeds.file, "file of seed points, one 'x y z' per line")
           ->check(regularFile());
   command
       ->add_option("--seed-box", seeds.box,

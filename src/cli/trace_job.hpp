@@ -43,7 +43,8 @@ void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string* seedsOut
 void addFieldOptions(CLI::App& command, FieldOptions& field);
 
 // Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
-void addTraceJobOptions(CLI::App& command, TraceJobOptions& options, std::size_t defaultCount = 256);
+void addTraceJobOptions(CLI::App& command, TraceJobOptions& options,
+                        std::size_t defaultCount = 256);
 
 // What the job reads (the dataset's files, the seeds file) and its --seeds-out, checked
 // (RunFiles): the caller adds its own inputs and outputs before any work. Also checks the size of

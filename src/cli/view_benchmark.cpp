@@ -55,8 +55,9 @@ void runViewBenchmark(const ViewOptions& o) {
   if (!o.screenshot.empty())
     throw InputError("--screenshot", "--benchmark has no window to take a screenshot of");
   if (o.job.backend.backend == "cpu")
-    throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
-                                  "pipeline or compute");
+    throw InputError("--backend",
+                     "the viewer needs a Vulkan device: choose auto, rayquery, "
+                     "pipeline or compute");
   RunFiles files = jobFiles(o.job);
   if (!o.frameTimes.empty()) files.addOutput("--frame-times", o.frameTimes);
   PreparedInput input = prepareInput(o.job);
@@ -96,10 +97,11 @@ void runViewBenchmark(const ViewOptions& o) {
     renderSubmit.push_back(t.renderSubmitSeconds);
   }
   const auto ms = [](double seconds) { return 1e3 * seconds; };
-  fmt::print("frames     {} in {:.2f} s: median {:.2f} ms, 95th percentile {:.2f} ms, slowest "
-             "{:.2f} ms\n",
-             frames.size(), mean(frames) * double(frames.size()), ms(percentile(frames, 0.5)),
-             ms(percentile(frames, 0.95)), ms(percentile(frames, 1.0)));
+  fmt::print(
+      "frames     {} in {:.2f} s: median {:.2f} ms, 95th percentile {:.2f} ms, slowest "
+      "{:.2f} ms\n",
+      frames.size(), mean(frames) * double(frames.size()), ms(percentile(frames, 0.5)),
+      ms(percentile(frames, 0.95)), ms(percentile(frames, 1.0)));
   const auto whileGrowing = [&](const std::vector<double>& v) {
     return std::vector<double>(v.begin(), v.begin() + std::ptrdiff_t(growing.size()));
   };
@@ -131,10 +133,11 @@ void runViewBenchmark(const ViewOptions& o) {
              still.empty()
                  ? 0
                  : 1 + std::distance(still.begin(), std::max_element(still.begin(), still.end())));
-  fmt::print("tubes      while growing, mean: segments {:.2f} ms, upload {:.2f} ms, structures "
-             "{:.2f} ms, instance list {:.2f} ms, device {:.2f} ms\n",
-             ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)),
-             ms(mean(device)));
+  fmt::print(
+      "tubes      while growing, mean: segments {:.2f} ms, upload {:.2f} ms, structures "
+      "{:.2f} ms, instance list {:.2f} ms, device {:.2f} ms\n",
+      ms(mean(segments)), ms(mean(upload)), ms(mean(structures)), ms(mean(instances)),
+      ms(mean(device)));
   fmt::print("traces     {} particle-steps, {} tube segments at the end\n", steps,
              session.scene().segments.size());
   if (!o.frameTimes.empty()) {

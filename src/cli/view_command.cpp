@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "amrstream/trace_settings.hpp"
 #include "app/frame_presenter.hpp"
 #include "app/imgui_layer.hpp"
 #include "app/window.hpp"
@@ -12,7 +13,6 @@
 #include "option_limits.hpp"
 #include "output/vtp_writer.hpp"
 #include "render/image/png_io.hpp"
-#include "amrstream/trace_settings.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "view_benchmark.hpp"
@@ -34,8 +34,9 @@ void saveScreenshot(const std::string& path, const app::Screenshot& shot) {
 
 void runView(const ViewOptions& o) {
   if (o.job.backend.backend == "cpu")
-    throw InputError("--backend", "the viewer needs a Vulkan device: choose auto, rayquery, "
-                                  "pipeline or compute");
+    throw InputError("--backend",
+                     "the viewer needs a Vulkan device: choose auto, rayquery, "
+                     "pipeline or compute");
   RunFiles files = jobFiles(o.job);
   if (!o.screenshot.empty()) files.addOutput("--screenshot", o.screenshot);
   // The window first: without a display, say so before loading anything.
@@ -143,16 +144,19 @@ void addViewCommand(CLI::App& app) {
   addTraceJobOptions(*command, options->job);
   options->look.frame = "domain";  // the traces grow out of any box around the seeds; F frames them
   addRenderOptions(*command, options->look);
-  command->add_option("--steps-per-frame", options->stepsPerFrame,
-                      "integration steps every particle takes before each frame")
+  command
+      ->add_option("--steps-per-frame", options->stepsPerFrame,
+                   "integration steps every particle takes before each frame")
       ->capture_default_str()
       ->check(countIn(1, kMaxStepsPerFrame));
-  command->add_option("--frames", options->frames,
-                      "close after this many frames (0: when the window is closed)")
+  command
+      ->add_option("--frames", options->frames,
+                   "close after this many frames (0: when the window is closed)")
       ->capture_default_str()
       ->check(countIn(0, kMaxViewFrames));
-  command->add_option("--orbit-per-frame", options->orbitPerFrame,
-                      "turn the camera by this many degrees each frame (scripted runs)")
+  command
+      ->add_option("--orbit-per-frame", options->orbitPerFrame,
+                   "turn the camera by this many degrees each frame (scripted runs)")
       ->check(numberIn(-360.0, 360.0));
   command->add_option("--screenshot", options->screenshot,
                       "with --frames: save the last frame (with the controls) to this PNG");

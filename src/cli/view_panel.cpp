@@ -7,8 +7,8 @@
 #include <array>
 #include <cmath>
 
-#include "render/image/colour_map.hpp"
 #include "amrstream/trace_settings.hpp"
+#include "render/image/colour_map.hpp"
 
 namespace amrstream::cli {
 
@@ -51,8 +51,8 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
   text(fmt::format("frame {:.1f} ms, {:.3g} particle-steps/s", 1e3 * stats.frameSeconds,
                    stats.stepsPerSecond));
   const flow::ProgressiveTraces& traces = session.traces();
-  text(fmt::format("traces {} running of {}, {} steps", traces.runningCount(),
-                   traces.lineCount(), traces.stepsTaken()));
+  text(fmt::format("traces {} running of {}, {} steps", traces.runningCount(), traces.lineCount(),
+                   traces.stepsTaken()));
   text(fmt::format("{} tube segments, {} frames accumulated", scene.segments.size(),
                    session.renderer().framesAccumulated()));
 
@@ -78,7 +78,8 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     const std::array<const char*, 3> modes{"cell", "time", "arc"};
     const std::array<flow::StepMode, 3> modeValues{flow::StepMode::Cell, flow::StepMode::Time,
                                                    flow::StepMode::Arc};
-    int mode = int(std::find(modeValues.begin(), modeValues.end(), trace.stepMode) - modeValues.begin());
+    int mode =
+        int(std::find(modeValues.begin(), modeValues.end(), trace.stepMode) - modeValues.begin());
     if (ImGui::Combo("step mode", &mode, modes.data(), int(modes.size()))) {
       trace.stepMode = modeValues[std::size_t(mode)];
       trace.stepSize = chooseStepSize(trace.stepMode, std::nullopt, session.input().volume);
@@ -110,9 +111,11 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
         render::ColourMap::Viridis, render::ColourMap::Magma,   render::ColourMap::Inferno,
         render::ColourMap::Plasma,  render::ColourMap::Cividis, render::ColourMap::CoolWarm,
         render::ColourMap::RdBu,    render::ColourMap::Twilight};
-    if (ImGui::BeginCombo("colour map", std::string(render::colourMapName(scene.colourMap)).c_str())) {
+    if (ImGui::BeginCombo("colour map",
+                          std::string(render::colourMapName(scene.colourMap)).c_str())) {
       for (const render::ColourMap m : maps)
-        if (ImGui::Selectable(std::string(render::colourMapName(m)).c_str(), m == scene.colourMap)) {
+        if (ImGui::Selectable(std::string(render::colourMapName(m)).c_str(),
+                              m == scene.colourMap)) {
           session.setColourMap(m);
         }
       ImGui::EndCombo();
@@ -132,7 +135,8 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
       ImGui::Checkbox(fmt::format("volume ({})", o.look.volume).c_str(), &scene.settings.volume);
       ImGui::SliderFloat("opacity", &scene.settings.volumeOpacity, 0.0f, 1.0f, "%.3f",
                          ImGuiSliderFlags_Logarithmic);
-    } else if (session.input().field().findChannel("dens") && ImGui::Button("show dens as a volume")) {
+    } else if (session.input().field().findChannel("dens") &&
+               ImGui::Button("show dens as a volume")) {
       o.look.volume = "dens";
       session.reloadVolume();
     }

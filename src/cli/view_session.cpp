@@ -11,12 +11,16 @@ namespace amrstream::cli {
 
 ViewSession::ViewSession(const ViewOptions& options, const vk::Context& ctx, gpu::Backend backend,
                          PreparedInput input)
-    : options_(options), ctx_(&ctx), backend_(backend), input_(std::move(input)),
+    : options_(options),
+      ctx_(&ctx),
+      backend_(backend),
+      input_(std::move(input)),
       tracer_(ctx, backend, input_.volume) {
   startTraces();
   options_.look.timeUnit = integrationTimeUnit(input_.options.stepMode, input_.info);
   scene_ = prepareScene(options_.look, input_.field(), input_.volume, traces_->traces());
-  renderer_ = std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
+  renderer_ =
+      std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume, scene_.contextScalars);
   setColourMap(scene_.colourMap);
   rebuildTubes();
 }
@@ -73,7 +77,8 @@ void ViewSession::setColourMap(render::ColourMap map) {
 
 void ViewSession::restartTraces() {
   std::string description;
-  input_.seeds = chooseSeeds(options_.job.seeds, domainOf(input_.volume), &input_.field(), description);
+  input_.seeds =
+      chooseSeeds(options_.job.seeds, domainOf(input_.volume), &input_.field(), description);
   flow::closeUpperFaces(input_.volume, input_.seeds);
   flow::checkSeedsInDomain(input_.volume, input_.seeds);
   startTraces();
@@ -85,7 +90,8 @@ void ViewSession::reloadVolume() {
   scene_ = prepareScene(options_.look, input_.field(), input_.volume, traces_->traces());
   scene_.camera = camera;
   vkQueueWaitIdle(ctx_->queue());
-  renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume, scene_.contextScalars);
+  renderer_ =
+      std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume, scene_.contextScalars);
   setColourMap(scene_.colourMap);
   rebuildTubes();
 }

@@ -19,7 +19,7 @@ struct ViewOptions {
   bool benchmark = false;  // no window: run --frames frames offscreen and print their times
   RenderOptions look;
   std::uint32_t stepsPerFrame = 10;
-  std::uint32_t frames = 0;  // stop after this many frames (0: until the window closes)
+  std::uint32_t frames = 0;    // stop after this many frames (0: until the window closes)
   float orbitPerFrame = 0.0f;  // degrees of azimuth per frame, for scripted runs
   std::string screenshot;      // with --frames: save the last frame here
   std::string frameTimes;      // with --benchmark: every frame's times to this CSV file
@@ -27,8 +27,8 @@ struct ViewOptions {
 
 // Where one frame's time went (ViewSession::step), wall clock on the host.
 struct ViewFrameTimes {
-  double traceSeconds = 0;   // advancing the traces on the GPU and collecting their new points
-  double tubesSeconds = 0;   // tube segments, their upload and the tubes' structure
+  double traceSeconds = 0;     // advancing the traces on the GPU and collecting their new points
+  double tubesSeconds = 0;     // tube segments, their upload and the tubes' structure
   double segmentsSeconds = 0;  // of which making and colouring the new segments on the host
   render::TubeRenderer::AppendTimes append;  // and the renderer's parts
   double renderSeconds = 0;        // rendering the frame, to its completion (with compute while the

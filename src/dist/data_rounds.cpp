@@ -46,10 +46,9 @@ constexpr double mag(float w) { return w < 0.0f ? -double(w) : double(w); }
 constexpr double kDpStageWeights = std::max(
     {mag(AMRSTREAM_DP_A21), mag(AMRSTREAM_DP_A31) + mag(AMRSTREAM_DP_A32),
      mag(AMRSTREAM_DP_A41) + mag(AMRSTREAM_DP_A42) + mag(AMRSTREAM_DP_A43),
-     mag(AMRSTREAM_DP_A51) + mag(AMRSTREAM_DP_A52) + mag(AMRSTREAM_DP_A53) +
-         mag(AMRSTREAM_DP_A54),
-     mag(AMRSTREAM_DP_A61) + mag(AMRSTREAM_DP_A62) + mag(AMRSTREAM_DP_A63) +
-         mag(AMRSTREAM_DP_A64) + mag(AMRSTREAM_DP_A65)});
+     mag(AMRSTREAM_DP_A51) + mag(AMRSTREAM_DP_A52) + mag(AMRSTREAM_DP_A53) + mag(AMRSTREAM_DP_A54),
+     mag(AMRSTREAM_DP_A61) + mag(AMRSTREAM_DP_A62) + mag(AMRSTREAM_DP_A63) + mag(AMRSTREAM_DP_A64) +
+         mag(AMRSTREAM_DP_A65)});
 constexpr double kDpStepWeights = mag(AMRSTREAM_DP_B1) + mag(AMRSTREAM_DP_B3) +
                                   mag(AMRSTREAM_DP_B4) + mag(AMRSTREAM_DP_B5) +
                                   mag(AMRSTREAM_DP_B6);
@@ -116,8 +115,7 @@ flow::TraceOptions::Box pauseBox(const DataPartition& partition, int rank, doubl
   return box;
 }
 
-RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume,
-                             const flow::TraceOptions& options) {
+RoundAdvance cpuRoundAdvance(const flow::VectorVolume& volume, const flow::TraceOptions& options) {
   shared::TraceParams params = flow::makeTraceParams(volume, options);
   return [&volume, options, params](std::vector<shared::LineState>& live) mutable {
     params.lineCount = std::uint32_t(live.size());

@@ -30,7 +30,7 @@ class GatheredTraces final : public flow::TraceView {
 
   std::vector<flow::TraceSet> parts_;
   std::vector<flow::TraceSetView> views_;
-  flow::TraceSet lines_;          // per-line data and offsets over all parts; no point columns
+  flow::TraceSet lines_;         // per-line data and offsets over all parts; no point columns
   std::vector<Source> sources_;  // per line of lines_
 };
 

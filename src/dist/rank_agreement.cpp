@@ -48,10 +48,9 @@ void agreeOnFailure(const MpiWorld& world, std::exception_ptr failure) {
   told.message.resize(std::size_t(header[0]));
   MPI_Bcast(told.message.data(), header[0], MPI_CHAR, first, MPI_COMM_WORLD);
   // An error of every rank (a bad option, a file all read) is rank 0's, said once.
-  const std::string who = failures == world.size()
-                              ? std::string()
-                              : "rank " + std::to_string(first) + " of " +
-                                    std::to_string(world.size()) + ": ";
+  const std::string who = failures == world.size() ? std::string()
+                                                   : "rank " + std::to_string(first) + " of " +
+                                                         std::to_string(world.size()) + ": ";
   throw RankFailure(who + told.message, header[1]);
 }
 

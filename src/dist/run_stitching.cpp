@@ -44,8 +44,7 @@ LineRange pieceLines(std::size_t lines, int rank, int ranks) {
   return {edge(rank), edge(rank + 1)};
 }
 
-std::vector<flow::TraceSet> runsByPiece(const flow::TraceSet& runs, std::size_t lines,
-                                        int ranks) {
+std::vector<flow::TraceSet> runsByPiece(const flow::TraceSet& runs, std::size_t lines, int ranks) {
   std::vector<flow::TraceSet> pieces(std::size_t(ranks), flow::shapeOf(runs));
   std::vector<std::uint32_t> lasts;  // of each rank's lines
   for (int k = 0; k < ranks; ++k) lasts.push_back(pieceLines(lines, k, ranks).last);

@@ -6,8 +6,7 @@
 
 namespace amrstream::dist {
 
-std::vector<std::vector<std::uint32_t>> mortonShares(std::span<const glm::dvec3> seeds,
-                                                     int parts) {
+std::vector<std::vector<std::uint32_t>> mortonShares(std::span<const glm::dvec3> seeds, int parts) {
   std::vector<glm::vec3> points(seeds.size());
   std::ranges::transform(seeds, points.begin(), [](glm::dvec3 p) { return glm::vec3(p); });
   const std::vector<std::uint32_t> order = gpu::mortonOrder(points);

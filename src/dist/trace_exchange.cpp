@@ -95,8 +95,8 @@ std::uint64_t partBytes(const flow::TraceSet& t) {
   return sizeof(Header) +
          t.lineCount() * (sizeof(std::uint32_t) * 2 + sizeof(float) + sizeof(std::int32_t)) +
          (t.lineCount() + 1) * sizeof(std::uint64_t) +
-         t.pointCount() * flow::TraceSet::bytesPerPoint(t.channelCount(), t.withVorticity,
-                                                        t.precisePositions);
+         t.pointCount() *
+             flow::TraceSet::bytesPerPoint(t.channelCount(), t.withVorticity, t.precisePositions);
 }
 
 flow::TraceSet withoutPoints(const flow::TraceSet& t) {

@@ -13,8 +13,7 @@ namespace amrstream::dist {
 // order; the others return an empty vector. A part's point columns go as they are held: a part
 // without points (withoutPoints) sends its lines alone. Names (vector, channels) and the
 // periodic box are not sent: the parts take the root's, which all ranks share.
-std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine,
-                                         int root = 0);
+std::vector<flow::TraceSet> gatherTraces(const MpiWorld& world, flow::TraceSet mine, int root = 0);
 
 // The lines of `t` (seed ids, directions, steps, reasons, offsets, names) without its points:
 // what rank 0 needs of pieces that every rank writes itself.

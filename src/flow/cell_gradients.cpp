@@ -1,13 +1,13 @@
 #include "cell_gradients.hpp"
 
-#include "sampler.hpp"
-
 #include <tbb/parallel_for.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
+
+#include "sampler.hpp"
 
 namespace amrstream::flow {
 

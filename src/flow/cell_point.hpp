@@ -15,7 +15,8 @@ struct CellPoint {
   glm::vec3 offset{0.0f};
 
   CellPoint() = default;
-  CellPoint(glm::ivec3 anchorCell, glm::vec3 offsetFromIt) : anchor(anchorCell), offset(offsetFromIt) {}
+  CellPoint(glm::ivec3 anchorCell, glm::vec3 offsetFromIt)
+      : anchor(anchorCell), offset(offsetFromIt) {}
   // A point given as float cell units, exactly: anchored at the origin.
   CellPoint(glm::vec3 cellUnits) : offset(cellUnits) {}  // NOLINT(google-explicit-constructor)
 };

@@ -17,9 +17,9 @@ namespace amrstream::flow {
 // Advances every line of `live` by at most params.roundSteps steps, on all cores: each line's
 // points, then the block in line order with its point data. `live` keeps the lines that go on,
 // their states moved on. `lineEnded` is called from the worker threads as lines end.
-RoundBlock traceCpuRound(const VectorVolume& volume, const shared::TraceParams& params,
-                         const TraceOptions& options, std::vector<shared::LineState>& live,
-                         const std::function<void()>& lineEnded = [] {});
+RoundBlock traceCpuRound(
+    const VectorVolume& volume, const shared::TraceParams& params, const TraceOptions& options,
+    std::vector<shared::LineState>& live, const std::function<void()>& lineEnded = [] {});
 
 // Traces `lines` (states of earlier rounds, any tracer's) to their end on all cores, in batches
 // and rounds within options' memory budget, handing each round's block to `consume`.

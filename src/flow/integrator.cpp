@@ -23,9 +23,9 @@ struct EmittedPoint {
   std::int32_t region;
 };
 
-constexpr RoundCosts kCpuCosts{sizeof(shared::LineState) + sizeof(shared::LineRound) +
-                                   sizeof(std::vector<EmittedPoint>),
-                               sizeof(EmittedPoint)};
+constexpr RoundCosts kCpuCosts{
+    sizeof(shared::LineState) + sizeof(shared::LineRound) + sizeof(std::vector<EmittedPoint>),
+    sizeof(EmittedPoint)};
 
 }  // namespace
 
@@ -88,8 +88,11 @@ class CpuRoundTracer final : public RoundTracer {
  public:
   CpuRoundTracer(const VectorVolume& volume, std::vector<shared::LineState> lines,
                  const TraceOptions& options, std::function<void()> lineEnded)
-      : volume_(&volume), options_(options), params_(makeTraceParams(volume, options)),
-        live_(std::move(lines)), lineEnded_(std::move(lineEnded)) {}
+      : volume_(&volume),
+        options_(options),
+        params_(makeTraceParams(volume, options)),
+        live_(std::move(lines)),
+        lineEnded_(std::move(lineEnded)) {}
 
   std::size_t liveLines() const override { return live_.size(); }
   std::vector<shared::LineState> liveStates() const override { return live_; }

@@ -33,10 +33,9 @@ enum class Integrator : int {
 // vtkStreamTracer's IntegrationDirection: Both traces each seed forward and backward, two lines.
 enum class Direction { Forward, Backward, Both };
 
-
 struct TraceOptions {
   StepMode stepMode = StepMode::Cell;
-  float stepSize = 0.25f;         // h: cell widths (cell, arc) or physical time (time)
+  float stepSize = 0.25f;  // h: cell widths (cell, arc) or physical time (time)
   Integrator integrator = Integrator::Rk4;
   // rk45 only: the error allowed per step, in finest cell widths of the step's region, and the
   // bounds of the adaptive step (in stepSize's units; stepSize is the first step tried).

@@ -48,7 +48,8 @@ std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
                            std::size_t lines) {
   if (options.memoryBudget > 0) return options.memoryBudget;
   const std::uint64_t slotsPerLine = options.keepHistory ? costs.stepsPerLine + 1 : 1;
-  const std::uint64_t wanted = lines * (costs.bytesPerLine + slotsPerLine * costs.bytesPerPointSlot);
+  const std::uint64_t wanted =
+      lines * (costs.bytesPerLine + slotsPerLine * costs.bytesPerPointSlot);
   return std::clamp(wanted, costs.leastBudget, std::max(costs.leastBudget, costs.mostBudget));
 }
 

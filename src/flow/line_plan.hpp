@@ -39,8 +39,7 @@ struct RoundCosts {
 
 // The working memory of rounds: options.memoryBudget, or when it is 0 room for every line to take
 // costs.stepsPerLine steps per round, within costs.leastBudget and costs.mostBudget.
-std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs,
-                           std::size_t lines);
+std::uint64_t memoryBudget(const TraceOptions& options, const RoundCosts& costs, std::size_t lines);
 
 // Lines traced together: as many as fit the budget with the smallest round (2 output slots per
 // line with history, 1 without), at least 1.

@@ -97,12 +97,12 @@ StepOutcome dormandPrinceStep(const shared::TraceParams& params, const CellPoint
     if ((out.reason = sampleFailure(s4))) return out;
     const glm::vec3 k4 = stage(s4, h);
     const VectorSample s5 = sample(moved(x, (AMRSTREAM_DP_A51 * k1 + AMRSTREAM_DP_A52 * k2 +
-                                        AMRSTREAM_DP_A53 * k3 + AMRSTREAM_DP_A54 * k4)));
+                                             AMRSTREAM_DP_A53 * k3 + AMRSTREAM_DP_A54 * k4)));
     if ((out.reason = sampleFailure(s5))) return out;
     const glm::vec3 k5 = stage(s5, h);
     const VectorSample s6 =
         sample(moved(x, (AMRSTREAM_DP_A61 * k1 + AMRSTREAM_DP_A62 * k2 + AMRSTREAM_DP_A63 * k3 +
-                    AMRSTREAM_DP_A64 * k4 + AMRSTREAM_DP_A65 * k5)));
+                         AMRSTREAM_DP_A64 * k4 + AMRSTREAM_DP_A65 * k5)));
     if ((out.reason = sampleFailure(s6))) return out;
     const glm::vec3 k6 = stage(s6, h);
     const glm::vec3 displacement = AMRSTREAM_DP_B1 * k1 + AMRSTREAM_DP_B3 * k3 +

@@ -20,11 +20,11 @@ using StageSampler = std::function<VectorSample(const CellPoint& unwrapped)>;
 using StageVector = std::function<glm::vec3(const VectorSample& s, float h)>;
 
 struct StepOutcome {
-  int reason = 0;          // AMRSTREAM_REASON_RUNNING when the step was taken
-  CellPoint unwrapped;     // x plus the step's displacement
-  VectorSample next;       // the sample at the wrapped end point
-  float step = 0.0f;       // the step taken (rk45: the accepted one)
-  float nextStep = 0.0f;   // rk45: the step to try next
+  int reason = 0;         // AMRSTREAM_REASON_RUNNING when the step was taken
+  CellPoint unwrapped;    // x plus the step's displacement
+  VectorSample next;      // the sample at the wrapped end point
+  float step = 0.0f;      // the step taken (rk45: the accepted one)
+  float nextStep = 0.0f;  // rk45: the step to try next
 };
 
 // Euler, RK2 (midpoint) and RK4 with the fixed step h.

@@ -120,9 +120,9 @@ shared::LineRound advanceLine(const VectorVolume& volume, const shared::TracePar
     const auto stage = [&](const VectorSample& at, float step) {
       return scale * direction(params, at, step);
     };
-    const StepOutcome step =
-        adaptive ? dormandPrinceStep(params, x, s, h, sample, sampleEnd, stage)
-                 : fixedStep(params.integrator, x, s, h, sample, sampleEnd, stage);
+    const StepOutcome step = adaptive
+                                 ? dormandPrinceStep(params, x, s, h, sample, sampleEnd, stage)
+                                 : fixedStep(params.integrator, x, s, h, sample, sampleEnd, stage);
     if ((reason = step.reason)) break;
     endsOnMaxTime = endsOnMaxTime && step.step == h;
     const CellPoint unwrapped = step.unwrapped;  // the same anchor as x

@@ -13,8 +13,9 @@
 
 namespace amrstream::flow {
 
-// Receives each point the line emits: its position, IntegrationTime and the sample there. With history: the seed (in the line's first round) and the end of every step; without:
-// the last point, once the line ends.
+// Receives each point the line emits: its position, IntegrationTime and the sample there. With
+// history: the seed (in the line's first round) and the end of every step; without: the last point,
+// once the line ends.
 using PointEmitter =
     std::function<void(const CellPoint& position, float time, const VectorSample& sample)>;
 

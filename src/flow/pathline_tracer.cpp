@@ -20,8 +20,8 @@ namespace {
 constexpr double kSliverFraction = 1e-4;
 
 glm::vec3 cellOf(const VectorVolume& volume, glm::vec3 x) {
-  return glm::vec3(toCellUnits(
-      wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(glm::dvec3(x))))));
+  return glm::vec3(
+      toCellUnits(wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(glm::dvec3(x))))));
 }
 
 // x moved by whole periods into the volume's domain along its periodic axes.
@@ -203,12 +203,13 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   newBlock(due.size());
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
     storePoint(due[i], std::uint32_t(i), a, b, samples[i]);
-    if (samples[i].reason != AMRSTREAM_REASON_RUNNING) particles_[due[i]].reason = samples[i].reason;
+    if (samples[i].reason != AMRSTREAM_REASON_RUNNING)
+      particles_[due[i]].reason = samples[i].reason;
   });
 }
 
-void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a,
-                          const Snapshot& b, double until) {
+void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
+                          double until) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
   StageScratch& w = *stages_;
@@ -305,9 +306,10 @@ void PathlineTracer::advance(Snapshot a, Snapshot b) {
     if (s->volume->channelNames != channelNames_)
       throw std::invalid_argument("pathlines: every snapshot needs the same point-data channels");
     if (s->volume->deepPositions())
-      throw InputError("pathlines", "a snapshot spans more than 2^21 finest cells on an axis; "
-                                    "pathlines keep float positions, which cannot resolve its "
-                                    "finest cells (streamlines with `trace` can)");
+      throw InputError("pathlines",
+                       "a snapshot spans more than 2^21 finest cells on an axis; "
+                       "pathlines keep float positions, which cannot resolve its "
+                       "finest cells (streamlines with `trace` can)");
   }
   const double until = std::min(b.time, options_.endTime);
   const bool aWasB = a.volume == lastB_;  // the caches hold regions of the volumes they name
@@ -329,8 +331,7 @@ void PathlineTracer::advance(Snapshot a, Snapshot b) {
   move(moving, a, b, until);
   time_ = until;
   if (options_.maxResultBytes > 0) {
-    const std::uint64_t bytes =
-        pointCount() * TraceSet::bytesPerPoint(channelNames_.size(), false);
+    const std::uint64_t bytes = pointCount() * TraceSet::bytesPerPoint(channelNames_.size(), false);
     if (bytes > options_.maxResultBytes)
       throw InputError("pathlines",
                        fmt::format("the paths take {:.2f} GB by time {}, more than the limit of "

@@ -25,10 +25,10 @@
 namespace amrstream::flow {
 
 struct PathlineOptions {
-  double startTime = 0.0;  // the seeds' (first) release
+  double startTime = 0.0;                                    // the seeds' (first) release
   double endTime = std::numeric_limits<double>::infinity();  // particles stop here, with:
   int endReason = AMRSTREAM_REASON_MAX_TIME;  // or SERIES_END where the series ends there
-  double stepSize = 0.0;      // dt, physical time, > 0
+  double stepSize = 0.0;                      // dt, physical time, > 0
   double releaseEvery = 0.0;  // > 0: new particles from every seed at this interval (streaklines)
   // The collected points may take at most this many bytes (0: no limit): advance() throws an
   // InputError once they grow past it.
@@ -123,7 +123,7 @@ class PathlineTracer {
   std::size_t seedCount_ = 0;
   std::vector<Particle> particles_;
   std::vector<PointBlock> blocks_;
-  double time_;  // where the last interval ended
+  double time_;                          // where the last interval ended
   const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;

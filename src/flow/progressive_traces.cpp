@@ -9,8 +9,7 @@ namespace {
 // Copies point `from` of `source` (a TraceSet or a RoundBlock of `channels` values per point) to
 // the end of `target`'s columns.
 template <typename Points>
-void appendPoint(TraceSet& target, const Points& source, std::size_t channels,
-                 std::uint64_t from) {
+void appendPoint(TraceSet& target, const Points& source, std::size_t channels, std::uint64_t from) {
   target.positions.push_back(source.positions[from]);
   if (!source.positionsLow.empty()) target.positionsLow.push_back(source.positionsLow[from]);
   target.times.push_back(source.times[from]);

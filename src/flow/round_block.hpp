@@ -6,9 +6,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "column.hpp"
-
 #include "../../shaders/glsl/shared/line_state.h"
+#include "column.hpp"
 
 namespace amrstream::flow {
 

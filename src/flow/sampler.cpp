@@ -15,7 +15,8 @@ bool insideDomain(const VectorVolume& volume, glm::ivec3 k) {
 }
 
 bool insideBox(const shared::Region& region, glm::ivec3 k) {
-  return glm::all(glm::greaterThanEqual(k, region.lower)) && glm::all(glm::lessThan(k, region.upper));
+  return glm::all(glm::greaterThanEqual(k, region.lower)) &&
+         glm::all(glm::lessThan(k, region.upper));
 }
 
 // The 2x2x2 cells of one brick around p with a non-zero tent weight
@@ -68,8 +69,8 @@ float reconstruct(const VectorVolume& volume, const shared::Region& region, cons
 }
 
 // The linear interpolant: the same weights over each cell's linear model v_i + G_i (p - c_i).
-float reconstructLinear(const VectorVolume& volume, const shared::Region& region, const CellPoint& p,
-                        glm::vec3& weighted) {
+float reconstructLinear(const VectorVolume& volume, const shared::Region& region,
+                        const CellPoint& p, glm::vec3& weighted) {
   float weightSum = 0.0f;
   weighted = glm::vec3(0.0f);
   forEachRegionTentCell(

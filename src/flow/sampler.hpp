@@ -20,7 +20,7 @@ struct VectorSample {
   bool located = false;  // p is inside the domain and in a region
   bool valid = false;    // located and the weights sum above kMinWeightSum
   glm::vec3 value{0.0f};
-  float cellWidth = 0.0f;   // finest cell width of p's region, in finest-cell units
+  float cellWidth = 0.0f;    // finest cell width of p's region, in finest-cell units
   std::int32_t region = -1;  // p's region when located
 };
 

@@ -60,12 +60,11 @@ float valueAtRank(std::span<const float> values, std::size_t rank, const SharedC
   std::size_t within = rank;
   const std::uint32_t high = locate(
       histogram([](std::uint32_t key) { return std::optional<std::uint32_t>(key >> 16); }), within);
-  const std::uint32_t low = locate(histogram([high](std::uint32_t key) {
-                                     return key >> 16 == high
-                                                ? std::optional<std::uint32_t>(key & 0xffffu)
-                                                : std::nullopt;
-                                   }),
-                                   within);
+  const std::uint32_t low = locate(
+      histogram([high](std::uint32_t key) {
+        return key >> 16 == high ? std::optional<std::uint32_t>(key & 0xffffu) : std::nullopt;
+      }),
+      within);
   const std::uint32_t key = high << 16 | low;
   const std::uint32_t bits = key & 0x80000000u ? key & 0x7fffffffu : ~key;
   return std::bit_cast<float>(bits);
@@ -153,7 +152,8 @@ bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits) {
   for (std::uint32_t i = 0; i < r.brickCount; ++i) {
     const shared::Brick& b = volume.bricks[volume.regions.regionBricks[r.brickOffset + i]];
     const glm::dvec3 lower(b.lower), upper = lower + glm::dvec3(b.size) * double(1 << b.level);
-    if (glm::all(glm::greaterThanEqual(cellUnits, lower)) && glm::all(glm::lessThan(cellUnits, upper)))
+    if (glm::all(glm::greaterThanEqual(cellUnits, lower)) &&
+        glm::all(glm::lessThan(cellUnits, upper)))
       return true;
   }
   return false;
@@ -190,9 +190,9 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
                      fmt::format("{} is not a percentile in [0, 100]", options.percentile));
 
   // The value at the percentile (nearest rank), then every cell at or above it.
-  const std::size_t rank = std::min(
-      channel.values.size() - 1,
-      std::size_t(std::floor(options.percentile / 100.0 * double(channel.values.size()))));
+  const std::size_t rank =
+      std::min(channel.values.size() - 1,
+               std::size_t(std::floor(options.percentile / 100.0 * double(channel.values.size()))));
   const float threshold = valueAtRank(channel.values, rank, options.shared);
   const auto [candidates, candidateValues] =
       candidateCells(channel.values, threshold, options.shared);

@@ -5,11 +5,11 @@
 
 #include <cstdint>
 #include <functional>
-#include <utility>
-#include <vector>
 #include <glm/glm.hpp>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bricks/amr_field.hpp"
 #include "seeds.hpp"

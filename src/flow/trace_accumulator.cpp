@@ -14,7 +14,6 @@
 
 namespace amrstream::flow {
 
-
 TraceAccumulator::TraceAccumulator(LineLayout lines, const TraceSet& shape)
     : layout_(std::move(lines)), pointsPerLine_(layout_.seedIds.size(), 0) {
   if (layout_.directions.size() != layout_.seedIds.size())

@@ -71,7 +71,7 @@ class TraceAccumulator {
   LineLayout layout_;
   TraceSet result_;  // names, periodic box, steps and reasons so far
   std::vector<std::uint64_t> pointsPerLine_;
-  std::vector<RoundBlock> rounds_;  // their LineRounds dropped once read
+  std::vector<RoundBlock> rounds_;             // their LineRounds dropped once read
   std::vector<std::vector<LinePoints>> runs_;  // per round, the lines its points belong to
   std::size_t finished_ = 0;
   std::uint64_t points_ = 0;

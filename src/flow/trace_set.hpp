@@ -41,9 +41,9 @@ struct TraceSet {
 
   // Per line.
   std::vector<std::uint32_t> seedIds;
-  std::vector<float> directions;       // +1 forward, -1 backward
-  std::vector<std::uint32_t> steps;    // integration steps the line took
-  std::vector<std::int32_t> reasons;   // ReasonForTermination (trace_codes.h)
+  std::vector<float> directions;          // +1 forward, -1 backward
+  std::vector<std::uint32_t> steps;       // integration steps the line took
+  std::vector<std::int32_t> reasons;      // ReasonForTermination (trace_codes.h)
   std::vector<std::uint64_t> offsets{0};  // lineCount() + 1 entries, offsets[0] == 0
 
   // Per point.

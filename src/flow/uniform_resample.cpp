@@ -1,15 +1,13 @@
 #include "uniform_resample.hpp"
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <mutex>
 #include <span>
-
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <cmath>
 
 #include "sampler.hpp"
 #include "util/host_memory.hpp"
@@ -21,8 +19,7 @@ void checkGridCounts(std::span<const std::uint64_t> dims) {
   if (dims.size() != 1 && dims.size() != 3)
     throw InputError("--dims", "give one count (the longest axis) or three (NX,NY,NZ)");
   for (const std::uint64_t n : dims)
-    if (n < 1 || n > 65535)
-      throw InputError("--dims", fmt::format("{} is outside 1..65535", n));
+    if (n < 1 || n > 65535) throw InputError("--dims", fmt::format("{} is outside 1..65535", n));
 }
 
 UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std::uint64_t> dims,
@@ -53,8 +50,8 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
   if (limit > 0.0 && bytes > limit)
     throw InputError("--dims", fmt::format("{} x {} x {} points need {:.1f} GiB, more than the "
                                            "{:.1f} GiB (3/4 of the memory) this machine allows",
-                                           spec.dims[0], spec.dims[1], spec.dims[2],
-                                           bytes / 0x1p30, limit / 0x1p30));
+                                           spec.dims[0], spec.dims[1], spec.dims[2], bytes / 0x1p30,
+                                           limit / 0x1p30));
   return spec;
 }
 
@@ -78,8 +75,7 @@ UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& s
     std::uint64_t rowValid = 0;
     for (std::size_t i = 0; i < nx; ++i) {
       const glm::dvec3 physical = origin + spacing * glm::dvec3(double(i), double(j), double(k));
-      const CellPoint p =
-          wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(physical)));
+      const CellPoint p = wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(physical)));
       const VectorSample sample = sampleVector(volume, p, &cache);
       if (!sample.valid) continue;
       const std::size_t n = i + nx * row;

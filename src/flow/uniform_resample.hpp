@@ -8,8 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <span>
 #include <glm/glm.hpp>
+#include <span>
 #include <vector>
 
 #include "vector_volume.hpp"
@@ -20,9 +20,7 @@ struct UniformGridSpec {
   glm::dvec3 lower{0.0}, upper{1.0};  // physical box
   std::array<std::uint32_t, 3> dims{1, 1, 1};
 
-  glm::dvec3 spacing() const {
-    return (upper - lower) / glm::dvec3(dims[0], dims[1], dims[2]);
-  }
+  glm::dvec3 spacing() const { return (upper - lower) / glm::dvec3(dims[0], dims[1], dims[2]); }
   glm::dvec3 origin() const { return lower + 0.5 * spacing(); }  // the first point
   std::uint64_t pointCount() const { return std::uint64_t(dims[0]) * dims[1] * dims[2]; }
 };

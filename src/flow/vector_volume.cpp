@@ -91,8 +91,8 @@ namespace {
 // |p - lower| <= p), and then cropping, which moves lower, changes nothing. Where lower < 0, on a
 // brick or on its image a period below, p - lower rounds, and differently for another lower:
 // such bricks keep their lower corner along that axis.
-void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box,
-                const bricks::CellBox& domain, const PeriodicAxes& periodic) {
+void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box, const bricks::CellBox& domain,
+                const PeriodicAxes& periodic) {
   std::vector<VolumeOptions::Box> boxes;
   const glm::dvec3 period(domain.upper - domain.lower);
   for (const glm::ivec3& s : periodicShifts(periodic))
@@ -104,10 +104,10 @@ void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box,
     const glm::dvec3 lower(brick.lower);
     glm::ivec3 lo = brick.size, hi(0);
     for (const VolumeOptions::Box& b : boxes) {
-      const glm::ivec3 l = glm::max(glm::ivec3(glm::floor((b.lower - lower) / width - 1.5)),
-                                    glm::ivec3(0));
-      const glm::ivec3 h = glm::min(glm::ivec3(glm::ceil((b.upper - lower) / width + 0.5)) + 1,
-                                    brick.size);
+      const glm::ivec3 l =
+          glm::max(glm::ivec3(glm::floor((b.lower - lower) / width - 1.5)), glm::ivec3(0));
+      const glm::ivec3 h =
+          glm::min(glm::ivec3(glm::ceil((b.upper - lower) / width + 0.5)) + 1, brick.size);
       if (glm::any(glm::greaterThanEqual(l, h))) continue;
       lo = glm::min(lo, l);
       hi = glm::max(hi, h);
@@ -225,9 +225,10 @@ void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
           : std::size_t(*std::max_element(volume.cellIds.begin(), volume.cellIds.end())) + 1;
   const auto checkCount = [&](const std::string& name, std::span<const float> values) {
     if (values.size() < cellsNeeded)
-      throw std::logic_error(fmt::format("fillVolumeValues: channel '{}' has {} values, fewer "
-                                         "than the layout's {} cells",
-                                         name, values.size(), cellsNeeded));
+      throw std::logic_error(
+          fmt::format("fillVolumeValues: channel '{}' has {} values, fewer "
+                      "than the layout's {} cells",
+                      name, values.size(), cellsNeeded));
   };
   for (int c = 0; c < 3; ++c) {
     const std::string& name = vector.channels[c];
@@ -285,8 +286,7 @@ std::vector<std::string> choosePointData(const ChannelCatalog& channels,
   if (request.empty() || request == "none") return names;
   if (request == "all") {
     for (const std::string& name : channels.names)
-      if (std::find(vector.channels.begin(), vector.channels.end(), name) ==
-          vector.channels.end())
+      if (std::find(vector.channels.begin(), vector.channels.end(), name) == vector.channels.end())
         names.push_back(name);
     return names;
   }

@@ -11,17 +11,17 @@
 
 #include <array>
 #include <functional>
-#include <span>
 #include <glm/glm.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
-#include "column.hpp"
 #include "bricks/brick_builder.hpp"
 #include "bricks/region_builder.hpp"
+#include "column.hpp"
 #include "vector_selection.hpp"
 
 namespace amrstream::flow {

@@ -40,8 +40,8 @@ CellsBox cellsBox(std::span<const glm::ivec3> lowers, std::span<const std::uint8
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           const glm::dvec3 corner(lowers[i]);
           const glm::dvec3 end = corner + widths[levels[i]];
-          if (i < box.firstOutside &&
-              (levels[i] > bricks::kMaxLevel || glm::any(glm::greaterThan(end, glm::dvec3(kIntMax)))))
+          if (i < box.firstOutside && (levels[i] > bricks::kMaxLevel ||
+                                       glm::any(glm::greaterThan(end, glm::dvec3(kIntMax)))))
             box.firstOutside = i;
           box.lower = glm::min(box.lower, corner);
           box.upper = glm::max(box.upper, end);

@@ -37,15 +37,17 @@ void readUnits(const EnzoParameters& p, bricks::DatasetInfo& info) {
       throw InputError(p.file().string(),
                        "the cosmology parameters (Hubble constant, Omega matter, box size, "
                        "redshifts) are out of range");
-    const double seconds = 1.0 / (*h * kHubble100PerSecond *
-                                  std::sqrt(1.5 * *omegaMatter * std::pow(1 + *initialRedshift, 3)));
+    const double seconds =
+        1.0 / (*h * kHubble100PerSecond *
+               std::sqrt(1.5 * *omegaMatter * std::pow(1 + *initialRedshift, 3)));
     const double centimetres = *boxSize / *h * kMegaparsecCm / (1 + *redshift);
     info.timeUnitSeconds = seconds;
     info.lengthUnitCentimetres = centimetres;
     info.timeUnit = fmt::format("code units (1 = {:.4g} s)", seconds);
-    info.lengthUnit = fmt::format("code units (1 = {:.4g} cm proper at z = {:.4g}; {:g} Mpc/h "
-                                  "comoving)",
-                                  centimetres, *redshift, *boxSize);
+    info.lengthUnit = fmt::format(
+        "code units (1 = {:.4g} cm proper at z = {:.4g}; {:g} Mpc/h "
+        "comoving)",
+        centimetres, *redshift, *boxSize);
     return;
   }
   if (const auto cm = p.number("LengthUnits"); cm && *cm > 0) {

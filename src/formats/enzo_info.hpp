@@ -4,10 +4,11 @@
 //   periodicity  LeftFaceBoundaryCondition / RightFaceBoundaryCondition, one value per axis: an
 //                axis is periodic when both faces are 3 (Enzo's `periodic` boundary type)
 //   units        code units. With ComovingCoordinates = 1 their size follows from the cosmology
-//                parameters, as Enzo defines them: length = the comoving box (CosmologyComovingBoxSize
-//                Mpc/h) in proper cm at CosmologyCurrentRedshift; time = 1 / sqrt(4 pi G rho_m0
-//                (1 + z_initial)^3) = 1 / (H0 sqrt(3/2 Omega_m (1 + z_initial)^3)). Otherwise from
-//                LengthUnits / TimeUnits (cm, s) when the file has them.
+//                parameters, as Enzo defines them: length = the comoving box
+//                (CosmologyComovingBoxSize Mpc/h) in proper cm at CosmologyCurrentRedshift; time =
+//                1 / sqrt(4 pi G rho_m0 (1 + z_initial)^3) = 1 / (H0 sqrt(3/2 Omega_m (1 +
+//                z_initial)^3)). Otherwise from LengthUnits / TimeUnits (cm, s) when the file has
+//                them.
 //   levels       Enzo levels, 0 = root grid: internal level L is Enzo level finest - L
 // Without a parameter file only the level numbering is known.
 

@@ -185,16 +185,16 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
         },
         [](std::size_t a, std::size_t b) { return std::min(a, b); });
     if (bad < count)
-      throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
-                                                  first + bad, records[4 * bad + 3],
-                                                  bricks::kMaxLevel));
+      throw InputError(path.string(),
+                       fmt::format("cell {} has level {}; levels must be in 0..{}", first + bad,
+                                   records[4 * bad + 3], bricks::kMaxLevel));
   }
   requireCellsWithinExtent(lowers, levels, path.string());
 }
 
 // Opens a scalars file and checks that it holds one float32 for each of `cells` cells.
-std::uint64_t openScalars(std::ifstream& in, const std::filesystem::path& path,
-                          std::size_t cells, const std::filesystem::path& cellsPath) {
+std::uint64_t openScalars(std::ifstream& in, const std::filesystem::path& path, std::size_t cells,
+                          const std::filesystem::path& cellsPath) {
   const std::uint64_t size = openRegularFile(in, path, "the scalars file");
   if (size != cells * sizeof(float))
     throw InputError(path.string(),
@@ -212,8 +212,8 @@ std::vector<float> readScalars(const std::string& name, const std::filesystem::p
   const std::uint64_t size = openScalars(in, path, cells, cellsPath);
   std::vector<float> values(cells);
   readExactly(in, path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
-  const std::size_t i = firstFailing(
-      cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
+  const std::size_t i =
+      firstFailing(cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
   if (i < cells) {
     const std::string problem = *unusableFieldValue(values[i]);
     throw InputError(path.string(),
@@ -252,8 +252,7 @@ ExaCells readExaCells(const std::filesystem::path& config) {
     std::ifstream in;
     openScalars(in, path, lowers.size(), exa.cells);  // a missing or short file fails first
   }
-  bricks::AmrField field(std::move(lowers), std::move(levels), {}, exa.transform,
-                         config.string());
+  bricks::AmrField field(std::move(lowers), std::move(levels), {}, exa.transform, config.string());
   bricks::DatasetInfo info = exa.info;
   info.format = "ExaBricks";
   info.finestFileLevel = 0;

@@ -6,7 +6,8 @@
 //   periodicity  `string runtime parameters` {x,y,z}{l,r}_boundary_type: an axis is periodic when
 //                both of its faces are "periodic"; only the file's own axes count (in a 2D file
 //                z is never periodic: FLASH ignores the z boundary there)
-//   levels       refine levels, 1 = root: internal level L is refine level rmax - L, rmax the finest
+//   levels       refine levels, 1 = root: internal level L is refine level rmax - L, rmax the
+//   finest
 //                leaf refine level
 
 #include <optional>

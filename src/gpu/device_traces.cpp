@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "point_positions.hpp"
-#include "vk/context.hpp"
 #include "vk/commands.hpp"
+#include "vk/context.hpp"
 
 namespace amrstream::gpu {
 
@@ -21,14 +21,17 @@ std::size_t columnIndex(flow::PointColumn column) { return static_cast<std::size
 }  // namespace
 
 DeviceTraces::DeviceTraces(const vk::Context& ctx, const GatherKernel& gather,
-                           const flow::VectorVolume& volume,
-                           const StagedLayout& layout, flow::TraceSet lines,
-                           std::vector<KeptRound> rounds,
+                           const flow::VectorVolume& volume, const StagedLayout& layout,
+                           flow::TraceSet lines, std::vector<KeptRound> rounds,
                            std::vector<std::vector<flow::LinePoints>> runs,
                            std::uint64_t windowBytes)
-    : ctx_(&ctx), gather_(&gather), volume_(&volume), lines_(std::move(lines)),
+    : ctx_(&ctx),
+      gather_(&gather),
+      volume_(&volume),
+      lines_(std::move(lines)),
       rounds_(std::move(rounds)),
-      vorticityArray_(layout.vorticity()), regionIdArray_(layout.regionIds()),
+      vorticityArray_(layout.vorticity()),
+      regionIdArray_(layout.regionIds()),
       windowBytes_(std::max<std::uint64_t>(windowBytes, 1)) {
   if (runs.size() != rounds_.size())
     throw std::invalid_argument("DeviceTraces: one list of runs per round");
@@ -91,8 +94,7 @@ DeviceTraces::WindowPlan DeviceTraces::planWindow(const std::vector<std::size_t>
   const std::uint64_t most = std::max<std::uint64_t>(1, windowBytes_ / bytesPerPoint);
   WindowPlan plan;
   plan.firstLine = line;
-  plan.endLine = std::upper_bound(offsets.begin() + line + 1, offsets.end(),
-                                  offsets[line] + most) -
+  plan.endLine = std::upper_bound(offsets.begin() + line + 1, offsets.end(), offsets[line] + most) -
                  offsets.begin() - 1;
   plan.endLine = std::clamp(plan.endLine, line + 1, lines_.lineCount());
   plan.points = offsets[plan.endLine] - offsets[line];

@@ -9,22 +9,22 @@
 // through a few pinned buffers instead of holding them all in host memory. Thread-safe: each
 // thread has its own buffers and windows; submissions are serialised.
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <array>
 #include <cstdint>
 #include <mutex>
 #include <optional>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
-
+#include "../../shaders/glsl/shared/gather_params.h"
 #include "flow/line_runs.hpp"
 #include "flow/trace_view.hpp"
 #include "flow/vector_volume.hpp"
-#include "../../shaders/glsl/shared/gather_params.h"
 #include "gather_kernel.hpp"
 #include "staged_layout.hpp"
-#include "vk/descriptor_pool.hpp"
 #include "vk/buffer.hpp"
+#include "vk/descriptor_pool.hpp"
 #include "vk/submission.hpp"
 
 namespace amrstream::gpu {
@@ -35,8 +35,7 @@ class DeviceTraces final : public flow::TraceView {
 
   // `lines` and `runs` as TraceAccumulator::takeLines gives them, `rounds` in the same order,
   // laid out as `layout` says. The context, the kernel and the volume must outlive the traces.
-  DeviceTraces(const vk::Context& ctx, const GatherKernel& gather,
-               const flow::VectorVolume& volume,
+  DeviceTraces(const vk::Context& ctx, const GatherKernel& gather, const flow::VectorVolume& volume,
                const StagedLayout& layout, flow::TraceSet lines, std::vector<KeptRound> rounds,
                std::vector<std::vector<flow::LinePoints>> runs,
                std::uint64_t windowBytes = kWindowBytes);
@@ -91,7 +90,7 @@ class DeviceTraces final : public flow::TraceView {
   flow::TraceSet lines_;
   std::vector<KeptRound> rounds_;
   flow::LineRuns runs_;
-  std::vector<std::uint64_t> arrayBytes_;  // per array of the layout, bytes per point
+  std::vector<std::uint64_t> arrayBytes_;       // per array of the layout, bytes per point
   std::size_t vorticityArray_, regionIdArray_;  // arrayBytes_.size() when absent
   std::uint64_t windowBytes_;
   mutable std::mutex submitting_;  // the context's command pool and queue

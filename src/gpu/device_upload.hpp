@@ -40,11 +40,11 @@ class DeviceUploader {
   template <typename T>
   vk::Buffer upload(std::size_t count, VkBufferUsageFlags usage, std::string_view name,
                     const Fill<T>& fill) {
-    return uploadBytes(count * sizeof(T), sizeof(T), usage, name,
-                       [&](VkDeviceSize offset, std::span<std::byte> out) {
-                         fill(offset / sizeof(T),
-                              {reinterpret_cast<T*>(out.data()), out.size() / sizeof(T)});
-                       });
+    return uploadBytes(
+        count * sizeof(T), sizeof(T), usage, name,
+        [&](VkDeviceSize offset, std::span<std::byte> out) {
+          fill(offset / sizeof(T), {reinterpret_cast<T*>(out.data()), out.size() / sizeof(T)});
+        });
   }
   // The same for an array already on the host.
   template <typename T>

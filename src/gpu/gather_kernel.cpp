@@ -16,9 +16,8 @@ GatherKernel createGatherKernel(const vk::Context& ctx) {
   k.setLayout = vk::createDescriptorSetLayout(ctx, bindings);
   k.layout = vk::createPipelineLayout(ctx, k.setLayout.get(), sizeof(shared::GatherParams),
                                       VK_SHADER_STAGE_COMPUTE_BIT);
-  k.pipeline = vk::createComputePipeline(ctx, k.layout.get(),
-                                         vk::spirv(amrstream_spirv_gather_runs_comp), nullptr,
-                                         "gather runs");
+  k.pipeline = vk::createComputePipeline(
+      ctx, k.layout.get(), vk::spirv(amrstream_spirv_gather_runs_comp), nullptr, "gather runs");
   return k;
 }
 

@@ -71,8 +71,7 @@ void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
                      const VolumeBuffers& device, const flow::VectorVolume& volume,
                      std::span<const shared::LineState> lines, const flow::TraceOptions& options,
-                     std::unique_ptr<RoundBuffers> buffers, StagingRing& staging,
-                     bool timeKernels)
+                     std::unique_ptr<RoundBuffers> buffers, StagingRing& staging, bool timeKernels)
     : GpuRounds(ctx, trace, kernels, device, volume, lines, options, *buffers, staging,
                 timeKernels) {
   ownBuffers_ = std::move(buffers);
@@ -82,11 +81,20 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
                      const VolumeBuffers& device, const flow::VectorVolume& volume,
                      std::span<const shared::LineState> lines, const flow::TraceOptions& options,
                      RoundBuffers& buffers, StagingRing& staging, bool timeKernels)
-    : ctx_(&ctx), trace_(&trace), kernels_(&kernels), device_(&device), volume_(&volume),
-      options_(options), params_(flow::makeTraceParams(volume, options)), buffers_(buffers),
-      staging_(staging), pool_(ctx, 5, kPerSet), live_(lines.size()), round_(ctx) {
+    : ctx_(&ctx),
+      trace_(&trace),
+      kernels_(&kernels),
+      device_(&device),
+      volume_(&volume),
+      options_(options),
+      params_(flow::makeTraceParams(volume, options)),
+      buffers_(buffers),
+      staging_(staging),
+      pool_(ctx, 5, kPerSet),
+      live_(lines.size()),
+      round_(ctx) {
   if (!buffers.fits(lines.size(), 2, volume.channelCount(), options.vorticity,
-                   volume.deepPositions()))
+                    volume.deepPositions()))
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
   buffers.setStates(ctx, lines);
   const RoundBuffers& b = buffers_;
@@ -182,16 +190,16 @@ void GpuRounds::submitRound(std::uint32_t steps) {
   parity_ ^= 1;
 
   const bool pipeline = trace_->backend == Backend::Pipeline;
-  const vk::Access traceAccess{pipeline ? VkPipelineStageFlags(VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR)
-                                        : VkPipelineStageFlags(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT),
-                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  const vk::Access traceAccess{
+      pipeline ? VkPipelineStageFlags(VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR)
+               : VkPipelineStageFlags(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT),
+      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
   const vk::Access compute{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
   const shared::CompactionParams compaction{params_.lineCount, params_.pointsPerLine};
-  const shared::PointDataParams pointData{params_.cellsPerPhysical,
-                                          static_cast<std::uint32_t>(volume_->channelCount()),
-                                          options_.vorticity ? 1u : 0u,
-                                          params_.linearInterpolant, params_.deepPositions};
+  const shared::PointDataParams pointData{
+      params_.cellsPerPhysical, static_cast<std::uint32_t>(volume_->channelCount()),
+      options_.vorticity ? 1u : 0u, params_.linearInterpolant, params_.deepPositions};
   round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.
@@ -210,9 +218,9 @@ void GpuRounds::submitRound(std::uint32_t steps) {
     if (traceTimer_) traceTimer_->stop(cmd);
 
     // The compaction overwrites the dense arrays the previous round's copy reads.
-    vk::memoryBarrier(cmd, {traceAccess.stages | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                            VK_ACCESS_SHADER_WRITE_BIT},
-                      compute);
+    vk::memoryBarrier(
+        cmd, {traceAccess.stages | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+        compute);
     if (compactionTimer_) compactionTimer_->start(cmd);
     const VkPipelineLayout layout = kernels_->compactionLayout.get();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1,

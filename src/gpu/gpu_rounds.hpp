@@ -131,7 +131,7 @@ class GpuRounds final : public flow::RoundTracer {
   std::size_t live_;
   std::size_t roundLines_ = 0;  // lines of the round submitted last
   std::uint32_t spreadThreads_ = 0;
-  int parity_ = 0;              // which line-round buffer the next round writes
+  int parity_ = 0;  // which line-round buffer the next round writes
   RoundTimes times_;
   std::optional<vk::Submission> keepCopy_;
   // Declared last, so that destruction waits for the device before the buffers go.

@@ -315,10 +315,9 @@ std::unique_ptr<DeviceTraces> GpuTracer::traceOnDevice(std::span<const glm::dvec
   });
   Stopwatch storeClock;
   flow::TraceAccumulator::Lines traced = accumulator.takeLines();
-  auto result =
-      std::make_unique<DeviceTraces>(*ctx_, gatherKernel_, *volume_, *layout,
-                                     std::move(traced.lines), std::move(kept),
-                                     std::move(traced.runs), traceWindow_);
+  auto result = std::make_unique<DeviceTraces>(*ctx_, gatherKernel_, *volume_, *layout,
+                                               std::move(traced.lines), std::move(kept),
+                                               std::move(traced.runs), traceWindow_);
   lastRun_.storeSeconds = storeClock.seconds();
   return result;
 }
@@ -326,10 +325,9 @@ std::unique_ptr<DeviceTraces> GpuTracer::traceOnDevice(std::span<const glm::dvec
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,
                                                           const flow::TraceOptions& options) {
   const flow::Column<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
-  auto buffers =
-      std::make_unique<RoundBuffers>(*ctx_, lines.size(), pointSlots(options, lines.size()),
-                                     volume_->channelCount(), options.vorticity,
-                                     volume_->deepPositions());
+  auto buffers = std::make_unique<RoundBuffers>(
+      *ctx_, lines.size(), pointSlots(options, lines.size()), volume_->channelCount(),
+      options.vorticity, volume_->deepPositions());
   auto rounds =
       std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
                                   ordered, options, std::move(buffers), *staging_, timeKernels_);

@@ -6,9 +6,9 @@
 // A trace runs its lines in batches that fit the options' memory budget (and the device's buffer
 // range and dispatch limits), each batch in rounds of steps (gpu_rounds.hpp) whose real points
 // alone come back to the host (or stay on the device: traceOnDevice), so host and device memory
-// stay within the budget whatever the number of steps; the result is that of one run. Within a batch, threads take the lines in
-// Morton order of their seeds, so that a subgroup traces neighbouring seeds through the same
-// bricks; results are returned in line order either way.
+// stay within the budget whatever the number of steps; the result is that of one run. Within a
+// batch, threads take the lines in Morton order of their seeds, so that a subgroup traces
+// neighbouring seeds through the same bricks; results are returned in line order either way.
 
 #include <cstddef>
 #include <functional>
@@ -43,7 +43,7 @@ struct TraceRunStats {
   std::size_t batches = 0;
   std::size_t rounds = 0;
   std::uint32_t mostLanesPerLine = 0;  // invocations a line in the widest-spread round
-  std::uint64_t roundBytes = 0;  // device bytes of the largest batch's round buffers
+  std::uint64_t roundBytes = 0;        // device bytes of the largest batch's round buffers
   // Host wall time of trace()'s parts: planning the lines, making the batches' buffers, ordering
   // and uploading their lines, submitting rounds and copies, waiting for the rounds and for their
   // copies, unpacking the copies, collecting them, storing the result and assembling the lines
@@ -99,8 +99,7 @@ class GpuTracer {
   // With `order`, the lines are first put in the tracer's thread order (Morton, when spatial);
   // the lines coming back keep the order they went in (less those that ended).
   flow::RoundBlock advanceRound(std::vector<shared::LineState>& lines,
-                                const flow::TraceOptions& options, std::uint32_t steps,
-                                bool order);
+                                const flow::TraceOptions& options, std::uint32_t steps, bool order);
 
   // The backend's locateRegion() for points in finest-cell units: the region id, or -1 outside
   // the domain and in empty space. Used by tests to compare point location with brute force.
@@ -159,7 +158,7 @@ class GpuTracer {
   KernelSettings settings_;
   std::map<flow::Integrator, TraceKernel> otherKernels_;  // created by the first trace needing one
   RoundKernels roundKernels_;
-  GatherKernel gatherKernel_;  // for traceOnDevice()'s traces
+  GatherKernel gatherKernel_;                   // for traceOnDevice()'s traces
   std::optional<TraceKernel> probe_;            // created by the first locate()
   std::unique_ptr<RoundBuffers> roundBuffers_;  // kept for the next batch or trace that fits
   std::size_t batchLimit_ = 0;

@@ -33,7 +33,8 @@ std::uint64_t blocksOf(std::size_t lines) {
 }  // namespace
 
 flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
-  const std::uint64_t pointData = channelCount * sizeof(float) + (vorticity ? sizeof(glm::vec3) : 0);
+  const std::uint64_t pointData =
+      channelCount * sizeof(float) + (vorticity ? sizeof(glm::vec3) : 0);
   const std::uint64_t emitted = 2 * sizeof(glm::vec3) + sizeof(float) + sizeof(std::int32_t);
   // The emitted arrays, their dense copies and the point data; the host receives the dense
   // arrays through a staging ring of its own size.
@@ -43,8 +44,11 @@ flow::RoundCosts RoundBuffers::costs(std::size_t channelCount, bool vorticity) {
 
 RoundBuffers::RoundBuffers(const vk::Context& ctx, std::size_t lines, std::uint64_t pointSlots,
                            std::size_t channelsPerPoint, bool vorticityToo, bool regionIdsToo)
-    : lineCapacity(lines), pointCapacity(pointSlots), channelCount(channelsPerPoint),
-      withVorticity(vorticityToo), withRegionIds(regionIdsToo) {
+    : lineCapacity(lines),
+      pointCapacity(pointSlots),
+      channelCount(channelsPerPoint),
+      withVorticity(vorticityToo),
+      withRegionIds(regionIdsToo) {
   const std::uint64_t n = lineCapacity, p = pointCapacity;
   params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                               "round params");

@@ -28,25 +28,23 @@ RoundKernels createRoundKernels(const vk::Context& ctx) {
   using vk::spirv;
   RoundKernels k;
   k.compactionSetLayout = storageBufferLayout(ctx, kCompactionBindingCount);
-  k.compactionLayout = vk::createPipelineLayout(ctx, k.compactionSetLayout.get(),
-                                                sizeof(shared::CompactionParams),
-                                                VK_SHADER_STAGE_COMPUTE_BIT);
-  k.scanLines = vk::createComputePipeline(ctx, k.compactionLayout.get(),
-                                          spirv(amrstream_spirv_scan_lines_comp), nullptr,
-                                          "scan lines");
-  k.scanBlocks = vk::createComputePipeline(ctx, k.compactionLayout.get(),
-                                           spirv(amrstream_spirv_scan_blocks_comp), nullptr,
-                                           "scan blocks");
+  k.compactionLayout =
+      vk::createPipelineLayout(ctx, k.compactionSetLayout.get(), sizeof(shared::CompactionParams),
+                               VK_SHADER_STAGE_COMPUTE_BIT);
+  k.scanLines = vk::createComputePipeline(
+      ctx, k.compactionLayout.get(), spirv(amrstream_spirv_scan_lines_comp), nullptr, "scan lines");
+  k.scanBlocks =
+      vk::createComputePipeline(ctx, k.compactionLayout.get(),
+                                spirv(amrstream_spirv_scan_blocks_comp), nullptr, "scan blocks");
   k.compact = vk::createComputePipeline(ctx, k.compactionLayout.get(),
                                         spirv(amrstream_spirv_compact_round_comp), nullptr,
                                         "compact round");
   k.pointDataSetLayout = storageBufferLayout(ctx, kPointDataBindingCount);
-  k.pointDataLayout = vk::createPipelineLayout(ctx, k.pointDataSetLayout.get(),
-                                               sizeof(shared::PointDataParams),
-                                               VK_SHADER_STAGE_COMPUTE_BIT);
-  k.pointData = vk::createComputePipeline(ctx, k.pointDataLayout.get(),
-                                          spirv(amrstream_spirv_point_data_comp), nullptr,
-                                          "point data");
+  k.pointDataLayout =
+      vk::createPipelineLayout(ctx, k.pointDataSetLayout.get(), sizeof(shared::PointDataParams),
+                               VK_SHADER_STAGE_COMPUTE_BIT);
+  k.pointData = vk::createComputePipeline(
+      ctx, k.pointDataLayout.get(), spirv(amrstream_spirv_point_data_comp), nullptr, "point data");
   return k;
 }
 

@@ -1,11 +1,12 @@
 #include "vector_probe.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "../../shaders/glsl/shared/line_state.h"
 #include "flow/integrator.hpp"
@@ -38,8 +39,8 @@ VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
 
 void VectorProbe::makeFixedBuffers() {
   const vk::Context& ctx = *ctx_;
-  params_ = vk::Buffer::upload(ctx, sizeof(shared::TraceParams),
-                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "probe params");
+  params_ = vk::Buffer::upload(ctx, sizeof(shared::TraceParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                               "probe params");
   unused_ = vk::Buffer::deviceLocal(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe unused");
 }
 
@@ -74,8 +75,7 @@ void VectorProbe::reserve(std::size_t points) {
   capacity_ = points;
 }
 
-void VectorProbe::sample(std::span<const glm::vec3> cellPoints,
-                         std::span<flow::VectorSample> out) {
+void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out) {
   reserve(std::min(kPointsPerDispatch, cellPoints.size()));
   flow::TraceOptions options;
   options.keepHistory = false;

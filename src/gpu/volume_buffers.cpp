@@ -131,13 +131,13 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
   bricks = uploader.upload(std::span(volume.bricks), kStorage, "bricks");
   // The values padded to 16 bytes, which the kernels read in one aligned load (1.32x the compute
   // backend's particle-steps/s on an H200).
-  values = uploader.upload<glm::vec4>(
-      volume.values.size(), kStorage, "vector values",
-      [&](std::size_t first, std::span<glm::vec4> out) {
-        tbb::parallel_for(std::size_t(0), out.size(), [&](std::size_t i) {
-          out[i] = glm::vec4(volume.values[first + i], 0.0f);
-        });
-      });
+  values = uploader.upload<glm::vec4>(volume.values.size(), kStorage, "vector values",
+                                      [&](std::size_t first, std::span<glm::vec4> out) {
+                                        tbb::parallel_for(
+                                            std::size_t(0), out.size(), [&](std::size_t i) {
+                                              out[i] = glm::vec4(volume.values[first + i], 0.0f);
+                                            });
+                                      });
   channelValues = uploader.upload(std::span(volume.channelValues), kStorage, "channel values");
   // A slot of the linear cells is 4 vec3s; chunks hold whole elements, so upload slots.
   using LinearSlot = std::array<glm::vec3, 4>;

@@ -20,7 +20,8 @@ struct TracerSetup {
   double uploadSeconds = 0.0;     // the volume's buffers to the device
   double structureSeconds = 0.0;  // the region tree's upload, or the acceleration structure build
   double pipelineSeconds = 0.0;   // shader modules and pipelines (and binding table)
-  std::uint64_t volumeBytes = 0;     // device bytes of bricks, values, channels, regions and region bricks
+  std::uint64_t volumeBytes =
+      0;  // device bytes of bricks, values, channels, regions and region bricks
   std::uint64_t structureBytes = 0;  // device bytes of the region tree or of the BLASes and TLAS
 };
 

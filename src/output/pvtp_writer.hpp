@@ -10,7 +10,6 @@ namespace amrstream::output {
 
 // Written to a temporary and renamed. The pieces must exist, hold the same arrays and lie in the
 // .pvtp's directory. Throws InputError naming the file that cannot be read or written.
-void writePvtp(const std::filesystem::path& path,
-               const std::vector<std::filesystem::path>& pieces);
+void writePvtp(const std::filesystem::path& path, const std::vector<std::filesystem::path>& pieces);
 
 }  // namespace amrstream::output

@@ -19,7 +19,11 @@ static_assert(std::endian::native == std::endian::little,
 AppendedArray contiguousArray(std::string name, std::string_view type, int components,
                               const void* values, std::uint64_t bytes) {
   const auto* source = static_cast<const std::byte*>(values);
-  return {std::move(name), type, components, bytes, {},
+  return {std::move(name),
+          type,
+          components,
+          bytes,
+          {},
           [source](std::uint64_t first, std::span<std::byte> out) {
             std::memcpy(out.data(), source + first, out.size());
           }};
@@ -28,7 +32,11 @@ AppendedArray contiguousArray(std::string name, std::string_view type, int compo
 // Channel `c` of `count` interleaved channels, as Float32.
 AppendedArray channelArray(std::string name, const std::vector<float>& channels, std::size_t c,
                            std::size_t count, std::uint64_t points) {
-  return {std::move(name), "Float32", 1, points * sizeof(float), {},
+  return {std::move(name),
+          "Float32",
+          1,
+          points * sizeof(float),
+          {},
           [&channels, c, count](std::uint64_t first, std::span<std::byte> out) {
             // Blocks cut anywhere, so go byte by byte through whole floats and their parts.
             for (std::uint64_t b = first; b < first + out.size();) {
@@ -67,20 +75,20 @@ void writeVti(const std::filesystem::path& path, const flow::UniformGrid& grid,
                                    points * sizeof(glm::vec3)));
   for (std::size_t c = 0; c < channels; ++c)
     arrays.push_back(channelArray(options.channelNames[c], grid.channels, c, channels, points));
-  arrays.push_back(
-      contiguousArray("vtkValidPointMask", "UInt8", 1, grid.valid.data(), points));
+  arrays.push_back(contiguousArray("vtkValidPointMask", "UInt8", 1, grid.valid.data(), points));
 
-  const std::string extent = fmt::format("0 {} 0 {} 0 {}", spec.dims[0] - 1, spec.dims[1] - 1,
-                                         spec.dims[2] - 1);
+  const std::string extent =
+      fmt::format("0 {} 0 {} 0 {}", spec.dims[0] - 1, spec.dims[1] - 1, spec.dims[2] - 1);
   AppendedFileWriter file("ImageData", options.compression);
-  file.markup(fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{}\" Spacing=\"{}\">\n",
-                          extent, triple(spec.origin()), triple(spec.spacing())));
+  file.markup(fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{}\" Spacing=\"{}\">\n", extent,
+                          triple(spec.origin()), triple(spec.spacing())));
   file.fieldData(options.fieldData, 4);
   file.markup(fmt::format("    <Piece Extent=\"{}\">\n", extent));
   file.markup(fmt::format("      <PointData Vectors=\"{}\">\n", xmlAttribute(options.vectorName)));
   for (const AppendedArray& array : arrays) file.dataArray(array, 8);
-  file.markup("      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n"
-              "  </ImageData>\n");
+  file.markup(
+      "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n"
+      "  </ImageData>\n");
   file.write(path);
 }
 

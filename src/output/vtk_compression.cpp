@@ -7,10 +7,10 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <memory>
 #include <climits>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <utility>
 
 namespace amrstream::output {

@@ -1,7 +1,6 @@
 #include "output/vtk_xml_appended.hpp"
 
 #include <fmt/format.h>
-
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 

@@ -262,9 +262,10 @@ void VtkXmlFile::checkFitsInMemory(std::uint64_t values, std::size_t bytesEach,
   const double bytes = double(values) * double(bytesEach);
   const double limit = kTraceMemoryShare * physicalMemoryBytes();
   if (limit > 0.0 && bytes > limit)
-    fail(fmt::format("array {} holds {} values, {:.1f} GiB once read, more than the {:.1f} GiB "
-                     "(3/4 of the memory) traces may take on this machine",
-                     what, values, bytes / 0x1p30, limit / 0x1p30));
+    fail(
+        fmt::format("array {} holds {} values, {:.1f} GiB once read, more than the {:.1f} GiB "
+                    "(3/4 of the memory) traces may take on this machine",
+                    what, values, bytes / 0x1p30, limit / 0x1p30));
 }
 
 void VtkXmlFile::checkCount(std::uint64_t values, std::optional<std::uint64_t> tuples,

@@ -18,9 +18,9 @@
 // path must name a regular file (a FIFO or a device is refused before it is opened) that fits in
 // 3/4 of the memory and keeps its size while it is read. Nothing is read past the file's end, no
 // allocation is sized by an attribute before the data to fill it has been found, and no array's
-// converted values may exceed 3/4 of the memory. For compressed arrays: the block count and the compressed
-// sizes must fit in the bytes left in the file, a block may not claim more bytes than its
-// compressor can inflate its compressed bytes to, the total must equal NumberOfTuples x
+// converted values may exceed 3/4 of the memory. For compressed arrays: the block count and the
+// compressed sizes must fit in the bytes left in the file, a block may not claim more bytes than
+// its compressor can inflate its compressed bytes to, the total must equal NumberOfTuples x
 // components (where the caller knows it) before anything is decompressed, and every block must
 // inflate to exactly the size its header declares. Blocks are decompressed a batch at a time
 // (vtk_compression.hpp) straight into the converted values.

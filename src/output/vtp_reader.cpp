@@ -221,9 +221,10 @@ void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t points, bool precis
       double(points) * double(flow::TraceSet::bytesPerPoint(0, false, precisePositions));
   const double memory = physicalMemoryBytes();
   if (memory > 0 && bytes > kTraceMemoryShare * memory)
-    file.fail(fmt::format("its {} points need {:.1f} GiB, more than 3/4 of this machine's {:.1f} "
-                          "GiB; split the file",
-                          points, bytes / 0x1p30, memory / 0x1p30));
+    file.fail(
+        fmt::format("its {} points need {:.1f} GiB, more than 3/4 of this machine's {:.1f} "
+                    "GiB; split the file",
+                    points, bytes / 0x1p30, memory / 0x1p30));
 }
 
 }  // namespace
@@ -282,9 +283,8 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
     }
     traces.seedIds.push_back(static_cast<std::uint32_t>(std::max(seedIds[line], 0)));
     traces.directions.push_back(backward ? -1.0f : 1.0f);
-    traces.steps.push_back(traces.pointCount(line) == 0
-                               ? 0
-                               : static_cast<std::uint32_t>(traces.pointCount(line) - 1));
+    traces.steps.push_back(
+        traces.pointCount(line) == 0 ? 0 : static_cast<std::uint32_t>(traces.pointCount(line) - 1));
     traces.reasons.push_back(reasons[line]);
   }
   return traces;

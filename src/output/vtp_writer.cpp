@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numeric>
-#include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -50,8 +50,7 @@ void checkLines(const std::filesystem::path& path, const flow::TraceSet& traces)
 void checkPoints(const std::filesystem::path& path, const flow::TraceSet& traces) {
   const std::uint64_t points = traces.pointCount();
   if (traces.positions.size() != points || traces.times.size() != points ||
-      traces.vectors.size() != points ||
-      traces.channels.size() != points * traces.channelCount() ||
+      traces.vectors.size() != points || traces.channels.size() != points * traces.channelCount() ||
       traces.vorticity.size() != (traces.withVorticity ? points : 0) ||
       traces.positionsLow.size() != (traces.precisePositions ? points : 0))
     inconsistent(path, fmt::format("{} points but {} positions, {} times, {} vectors, {} channel "
@@ -131,16 +130,19 @@ void fillPoints(const PieceTable& table, std::size_t width, const LineValues& li
     const std::span<const T> line = lineValues(piece.line, scratch);
     const std::uint64_t stop = std::min(end, table.firstWritten[k + 1]);
     for (; w < stop; ++w) {
-      const std::uint64_t point = piece.first + std::min(w - table.firstWritten[k], piece.count - 1);
+      const std::uint64_t point =
+          piece.first + std::min(w - table.firstWritten[k], piece.count - 1);
       to = std::copy_n(line.data() + point * width, width, to);
     }
   }
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
-      throw std::runtime_error(fmt::format("the point array '{}' has a non-finite value ({}) at "
-                                           "written point {}: nothing was written",
-                                           name, values[i], begin + i / width));
-  std::memcpy(out.data(), reinterpret_cast<const std::byte*>(values.data()) + (first - begin * pointBytes),
+      throw std::runtime_error(
+          fmt::format("the point array '{}' has a non-finite value ({}) at "
+                      "written point {}: nothing was written",
+                      name, values[i], begin + i / width));
+  std::memcpy(out.data(),
+              reinterpret_cast<const std::byte*>(values.data()) + (first - begin * pointBytes),
               out.size());
 }
 
@@ -152,7 +154,11 @@ AppendedArray pointArray(std::string name, int components, const PieceTable& tab
   static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
   const std::string_view type = std::is_same_v<T, float> ? "Float32" : "Float64";
   const std::size_t width = static_cast<std::size_t>(components);
-  return {name, type, components, table.points() * width * sizeof(T), {},
+  return {name,
+          type,
+          components,
+          table.points() * width * sizeof(T),
+          {},
           [&table, width, lineValues, name](std::uint64_t first, std::span<std::byte> out) {
             fillPoints<T>(table, width, lineValues, name, first, out);
           }};
@@ -193,8 +199,7 @@ auto speedColumn(const flow::TraceView& traces) {
 }
 
 // vtkStreamTracer's AngularVelocity: the vorticity's component along the unit tangent.
-void angularVelocities(const flow::TraceView& traces, std::uint32_t line,
-                       std::vector<float>& out) {
+void angularVelocities(const flow::TraceView& traces, std::uint32_t line, std::vector<float>& out) {
   std::vector<float> vectorScratch, vorticityScratch;
   const std::span<const float> v = traces.column(PointColumn::Vectors, line, vectorScratch);
   const std::span<const float> w = traces.column(PointColumn::Vorticity, line, vorticityScratch);
@@ -297,8 +302,7 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   const std::vector<Piece>& pieces = table.pieces;
   const std::uint64_t pointCount = table.points();
   const std::uint64_t lineCount = pieces.size();
-  const bool unwrap =
-      options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
+  const bool unwrap = options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
 
   using Out = BufferedWriter&;
   std::vector<std::string> ours{"IntegrationTime", "Speed", "Vorticity", "Rotation",
@@ -324,12 +328,12 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   }
   pointArrays.push_back(pointArray("Speed", 1, table, speedColumn(traces)));
 
-  const AppendedArray reasons{"ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t),
-                              [&](Out out) {
-                                for (const Piece& piece : pieces)
-                                  out.put(piece.last ? lines.reasons[piece.line]
-                                                     : std::int32_t(AMRSTREAM_REASON_PERIODIC_WRAP));
-                              }};
+  const AppendedArray reasons{
+      "ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t), [&](Out out) {
+        for (const Piece& piece : pieces)
+          out.put(piece.last ? lines.reasons[piece.line]
+                             : std::int32_t(AMRSTREAM_REASON_PERIODIC_WRAP));
+      }};
   const AppendedArray seedIds{"SeedIds", "Int32", 1, lineCount * sizeof(std::int32_t),
                               [&](Out out) {
                                 for (const Piece& piece : pieces)
@@ -339,7 +343,11 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
   const AppendedArray connectivity{
-      "connectivity", "Int64", 1, pointCount * sizeof(std::int64_t), {},
+      "connectivity",
+      "Int64",
+      1,
+      pointCount * sizeof(std::int64_t),
+      {},
       [](std::uint64_t first, std::span<std::byte> out) {
         // Point ids 0, 1, 2, ...: the ids whose bytes the range covers, then the range.
         const std::uint64_t begin = first / sizeof(std::int64_t);

@@ -62,15 +62,14 @@ py::dict resampled(const PreparedField& p, py::object dims,
   out["dims"] = py::make_tuple(nx, ny, nz);
   std::vector<py::ssize_t> vectorStrides = strides(sizeof(glm::vec3));
   vectorStrides.push_back(sizeof(float));
-  out[py::str(volume.vectorName)] = readOnly(py::array_t<float>(
-      {nx, ny, nz, py::ssize_t(3)}, vectorStrides, &grid->vectors[0].x, owner));
+  out[py::str(volume.vectorName)] = readOnly(
+      py::array_t<float>({nx, ny, nz, py::ssize_t(3)}, vectorStrides, &grid->vectors[0].x, owner));
   for (std::size_t c = 0; c < channels; ++c)
-    out[py::str(volume.channelNames[c])] = readOnly(py::array_t<float>(
-        {nx, ny, nz}, strides(py::ssize_t(channels * sizeof(float))), grid->channels.data() + c,
-        owner));
-  out["valid"] = readOnly(py::array_t<bool>({nx, ny, nz}, strides(1),
-                                            reinterpret_cast<const bool*>(grid->valid.data()),
-                                            owner));
+    out[py::str(volume.channelNames[c])] =
+        readOnly(py::array_t<float>({nx, ny, nz}, strides(py::ssize_t(channels * sizeof(float))),
+                                    grid->channels.data() + c, owner));
+  out["valid"] = readOnly(py::array_t<bool>(
+      {nx, ny, nz}, strides(1), reinterpret_cast<const bool*>(grid->valid.data()), owner));
   return out;
 }
 

@@ -21,7 +21,8 @@ RenderKernel createRenderKernel(const vk::Context& ctx, gpu::Backend backend) {
   RenderKernel kernel;
   kernel.backend = backend;
   const bool pipeline = backend == gpu::Backend::Pipeline;
-  kernel.bindPoint = pipeline ? VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR : VK_PIPELINE_BIND_POINT_COMPUTE;
+  kernel.bindPoint =
+      pipeline ? VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR : VK_PIPELINE_BIND_POINT_COMPUTE;
   const VkShaderStageFlags stages =
       pipeline ? VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
                      VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR

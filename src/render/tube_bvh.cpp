@@ -116,7 +116,8 @@ class Builder {
       return;
     }
     const glm::vec3 extent = centres.upper - centres.lower;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const std::uint32_t middle = first + (last - first) / 2;
     parallelNthElement(std::span(items_).subspan(first, last - first), middle - first,
                        AlongAxis{axis}, std::span(scratch_.get() + first, last - first));

@@ -14,7 +14,7 @@ namespace amrstream::render {
 inline constexpr unsigned kLeafSize = 4;
 
 struct TubeBvh {
-  std::vector<shared::TubeBvhNode> nodes;       // node 0 is the root
+  std::vector<shared::TubeBvhNode> nodes;     // node 0 is the root
   std::vector<shared::TubeSegment> segments;  // reordered so that leaves own contiguous ranges
 };
 

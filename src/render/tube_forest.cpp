@@ -66,8 +66,7 @@ void TubeForest::buildTop() {
 
 // The node over chunks [firstChunk, lastChunk): a chunk's root itself, or a top node whose two
 // children are laid out side by side from `next` on. Returns its index.
-std::size_t TubeForest::topNode(std::size_t firstChunk, std::size_t lastChunk,
-                                std::size_t& next) {
+std::size_t TubeForest::topNode(std::size_t firstChunk, std::size_t lastChunk, std::size_t& next) {
   if (lastChunk - firstChunk == 1) return chunks_[firstChunk].firstNode;
   const std::size_t children = next;
   next += 2;

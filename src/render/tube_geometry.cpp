@@ -76,8 +76,8 @@ std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
   };
   for (std::size_t line = 0; line < traces.lineCount(); ++line) {
     const std::uint64_t first = traces.offsets[line], end = traces.offsets[line + 1];
-    if (end - first == 1) segments.push_back({cell(first), colour.values[first], cell(first),
-                                              colour.values[first]});
+    if (end - first == 1)
+      segments.push_back({cell(first), colour.values[first], cell(first), colour.values[first]});
     for (std::uint64_t i = first; i + 1 < end; ++i) {
       // A line that crosses a periodic face goes on from the other side: no tube across the box.
       if (traces.periodic.wraps(traces.positions[i], traces.positions[i + 1])) continue;

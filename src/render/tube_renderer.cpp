@@ -66,9 +66,8 @@ float orthographicStart(const OrbitCamera& camera, const CameraFrame& view,
 
 shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings& settings,
                                 const flow::VectorVolume& volume, std::uint32_t width,
-                                std::uint32_t height, std::uint32_t frame,
-                                std::size_t segmentCount, bool linearVolume,
-                                glm::vec3 tubesLower, glm::vec3 tubesUpper) {
+                                std::uint32_t height, std::uint32_t frame, std::size_t segmentCount,
+                                bool linearVolume, glm::vec3 tubesLower, glm::vec3 tubesUpper) {
   const CameraFrame view = cameraFrame(camera);
   const bool orthographic = camera.projection == Projection::Orthographic;
   shared::RenderParams p{};
@@ -78,8 +77,9 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.up = view.up;
   p.halfHeight = halfHeightAtUnitDistance(camera);
   if (orthographic) {
-    p.eye = camera.target - orthographicStart(camera, view, settings, volume, tubesLower,
-                                              tubesUpper) * view.forward;
+    p.eye =
+        camera.target -
+        orthographicStart(camera, view, settings, volume, tubesLower, tubesUpper) * view.forward;
     p.halfHeight *= camera.distance;
   }
   p.aspect = float(width) / float(height);
@@ -128,11 +128,9 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
   bricks_ = vk::uploadToDeviceLocal(ctx, volume.bricks, kStorage, "bricks");
   scalars_ = vk::uploadToDeviceLocal(ctx, contextScalars, kStorage, "context scalars");
   linearVolume_ = hasScalars_ && volume.interpolant == flow::Interpolant::Linear;
-  const std::vector<glm::vec3> gradients = linearVolume_
-                                               ? flow::cellGradients(volume, contextScalars, 1)
-                                               : std::vector<glm::vec3>(1);
-  scalarGradients_ =
-      vk::uploadToDeviceLocal(ctx, gradients, kStorage, "context scalar gradients");
+  const std::vector<glm::vec3> gradients =
+      linearVolume_ ? flow::cellGradients(volume, contextScalars, 1) : std::vector<glm::vec3>(1);
+  scalarGradients_ = vk::uploadToDeviceLocal(ctx, gradients, kStorage, "context scalar gradients");
   regions_ = vk::uploadToDeviceLocal(ctx, volume.regions.regions, kStorage, "regions");
   regionBricks_ =
       vk::uploadToDeviceLocal(ctx, volume.regions.regionBricks, kStorage, "region bricks");
@@ -209,8 +207,8 @@ void TubeRenderer::writeRanges(vk::Buffer& buffer, std::string_view name,
   for (const auto& [first, end] : ranges) bytes += end - first;
   vk::Buffer& staging = appendStaging_[stagingUsed_++];
   if (staging.size() < bytes)  // kept: making pinned memory is slow
-    staging = vk::Buffer::upload(*ctx_, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                 "tubes (staging)");
+    staging =
+        vk::Buffer::upload(*ctx_, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "tubes (staging)");
   std::vector<VkBufferCopy> regions;
   std::size_t at = 0;
   for (const auto& [first, end] : ranges) {
@@ -266,8 +264,8 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
   if (compute) {  // the forest rebuilt its last chunk on the host
     appendTimes_.structures = clock.seconds();
     waitForTheFrame();
-    const std::pair<std::size_t, std::size_t> segmentRange{
-        forest_.firstChangedSegment() * kSegment, count * kSegment};
+    const std::pair<std::size_t, std::size_t> segmentRange{forest_.firstChangedSegment() * kSegment,
+                                                           count * kSegment};
     writeRanges(segments_, "tube segments", std::as_bytes(std::span(forest_.segments())),
                 std::span(&segmentRange, 1), commands.handle());
     const std::array<std::pair<std::size_t, std::size_t>, 2> nodeRanges{
@@ -298,9 +296,8 @@ void TubeRenderer::appendTubes(std::span<const shared::TubeSegment> added,
     blases.pop_back();
   }
   const std::span<const shared::TubeSegment> rebuilt = std::span(deviceOrder_).subspan(from);
-  for (vk::AabbBlas& blas : vk::recordAabbBlas(*ctx_, commands.handle(),
-                                               segmentBoxes(rebuilt, radius), "tubes",
-                                               appendBuild_)) {
+  for (vk::AabbBlas& blas : vk::recordAabbBlas(
+           *ctx_, commands.handle(), segmentBoxes(rebuilt, radius), "tubes", appendBuild_)) {
     blas.firstBox += static_cast<std::uint32_t>(from);
     blases.push_back(std::move(blas));
   }
@@ -415,8 +412,8 @@ void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
   if (width == width_ && height == height_) return;
   waitForFrame();
   const VkDeviceSize pixelCount = VkDeviceSize(width) * height;
-  accumulation_ = vk::Buffer::deviceLocal(*ctx_, pixelCount * sizeof(glm::vec4), kStorage,
-                                          "accumulation");
+  accumulation_ =
+      vk::Buffer::deviceLocal(*ctx_, pixelCount * sizeof(glm::vec4), kStorage, "accumulation");
   pixels_ = vk::Buffer::deviceLocal(*ctx_, pixelCount * 4,
                                     kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "pixels");
   width_ = width;
@@ -428,9 +425,9 @@ void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
 void TubeRenderer::writeDescriptors() {
   const vk::Buffer& structure = bvhNodes_.handle() != VK_NULL_HANDLE ? bvhNodes_ : tree_;
   const std::array<VkDescriptorBufferInfo, kRenderBindingCount> buffers{
-      whole(params_),       whole(bricks_),    whole(scalars_),      whole(regions_),
-      whole(regionBricks_), whole(tree_),      whole(segments_),     whole(colourMap_),
-      whole(accumulation_), whole(pixels_),    whole(structure),     whole(scalarGradients_)};
+      whole(params_),       whole(bricks_), whole(scalars_),  whole(regions_),
+      whole(regionBricks_), whole(tree_),   whole(segments_), whole(colourMap_),
+      whole(accumulation_), whole(pixels_), whole(structure), whole(scalarGradients_)};
   std::array<VkWriteDescriptorSet, kRenderBindingCount> writes{};
   for (std::uint32_t i = 0; i < kRenderBindingCount; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -48,8 +48,8 @@ struct RenderSettings {
   float volumeOpacity = 0.05f;  // extinction per finest cell at the top of the transfer function
   float volumeStepScale = 1.0f;
   glm::vec3 background{0.12f, 0.13f, 0.16f};
-  bool flatBackground = false;  // else a gentle vertical gradient of `background`
-  bool transparent = false;     // no background: the image's alpha is the coverage
+  bool flatBackground = false;     // else a gentle vertical gradient of `background`
+  bool transparent = false;        // no background: the image's alpha is the coverage
   glm::vec3 outlineColour{0.75f};  // of segments with AMRSTREAM_OUTLINE_VALUE values
   // Below 1: tube radii follow the colour field, from this fraction of tubeRadius at the low end
   // of colourRange to tubeRadius at the high end (segmentRadius).

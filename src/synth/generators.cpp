@@ -64,7 +64,8 @@ bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options
   if (kind == "swirl") {
     const double t = options.time;
     return build(
-        options, source, [t](const BlockBox& box) { return SwirlField::refinementPriority(box, t); },
+        options, source,
+        [t](const BlockBox& box) { return SwirlField::refinementPriority(box, t); },
         {"velx", "vely", "velz", "temp"},
         [t](const BlockBox&, std::span<const glm::dvec3> centres, std::span<float* const> values) {
           for (std::size_t i = 0; i < centres.size(); ++i) {

@@ -29,13 +29,13 @@ void validateNestOptions(const NestOptions& o, const std::string& source) {
       o.levels == 1 ? 1 : std::max(2, o.blockCells / 2 + 2 * int(marginCells(o.blockCells)));
   if (o.rootCells < leastRootCells)
     throw InputError(
-        source, fmt::format("option rootCells is {}; with {} levels and blockCells {} "
-                            "it must be at least {} (the next level's cube is {} root "
-                            "cells wide{}, and some root cells must stay leaves)",
-                            o.rootCells, o.levels, o.blockCells, leastRootCells, o.blockCells / 2,
-                            marginCells(o.blockCells) > 0
-                                ? ", with one root cell of margin on each side"
-                                : ""));
+        source,
+        fmt::format(
+            "option rootCells is {}; with {} levels and blockCells {} "
+            "it must be at least {} (the next level's cube is {} root "
+            "cells wide{}, and some root cells must stay leaves)",
+            o.rootCells, o.levels, o.blockCells, leastRootCells, o.blockCells / 2,
+            marginCells(o.blockCells) > 0 ? ", with one root cell of margin on each side" : ""));
   const std::int64_t axisLimit = std::int64_t(1) << bricks::kMaxExtentBits;
   if (nestFinestCellsPerAxis(o) > axisLimit)
     throw InputError(source,
@@ -59,8 +59,7 @@ void validateNestOptions(const NestOptions& o, const std::string& source) {
     if (!std::isfinite(rate))
       throw InputError(source, fmt::format("option {} is {}; it must be finite", name, rate));
   if (!(o.maxSpeed > 0.0))
-    throw InputError(source,
-                     fmt::format("option maxSpeed is {}; it must be positive", o.maxSpeed));
+    throw InputError(source, fmt::format("option maxSpeed is {}; it must be positive", o.maxSpeed));
 }
 
 // The cube of `level` centred on `centre` (finest-cell units), its lower corner rounded to the

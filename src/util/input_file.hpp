@@ -23,16 +23,16 @@ inline std::uint64_t regularFileSize(const std::filesystem::path& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) {
     const int error = errno;
-    throw InputError(path.string(), error == ENOENT ? std::string("no such file")
-                                                    : std::string("cannot be read: ") +
-                                                          std::strerror(error));
+    throw InputError(path.string(), error == ENOENT
+                                        ? std::string("no such file")
+                                        : std::string("cannot be read: ") + std::strerror(error));
   }
   if (S_ISDIR(status.st_mode)) throw InputError(path.string(), "is a directory, not a file");
   if (!S_ISREG(status.st_mode))
-    throw InputError(path.string(),
-                     S_ISFIFO(status.st_mode)   ? "is a FIFO (named pipe), not a regular file"
-                     : S_ISSOCK(status.st_mode) ? "is a socket, not a regular file"
-                                                : "is a device, not a regular file");
+    throw InputError(path.string(), S_ISFIFO(status.st_mode)
+                                        ? "is a FIFO (named pipe), not a regular file"
+                                    : S_ISSOCK(status.st_mode) ? "is a socket, not a regular file"
+                                                               : "is a device, not a regular file");
   return std::uint64_t(status.st_size);
 }
 
@@ -44,10 +44,10 @@ inline void requireWithinFile(const std::filesystem::path& path, std::uint64_t f
   const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
   const bool overflows = itemBytes != 0 && count > (limit - offset) / itemBytes;
   if (overflows || offset + count * itemBytes > fileBytes)
-    throw InputError(path.string(),
-                     what + " declares " + std::to_string(count) + " items of " +
-                         std::to_string(itemBytes) + " bytes at byte " + std::to_string(offset) +
-                         ", past the end of the file (" + std::to_string(fileBytes) + " bytes)");
+    throw InputError(path.string(), what + " declares " + std::to_string(count) + " items of " +
+                                        std::to_string(itemBytes) + " bytes at byte " +
+                                        std::to_string(offset) + ", past the end of the file (" +
+                                        std::to_string(fileBytes) + " bytes)");
 }
 
 // a * b, or an InputError naming `source` and `what` when the product does not fit in 64 bits.

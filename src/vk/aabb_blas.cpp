@@ -1,9 +1,8 @@
 // buildAabbBlas: split, build, compact (declared in aabb_scene.hpp).
 #include <fmt/format.h>
 
-#include <cstring>
-
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 #include "vk/aabb_scene.hpp"
@@ -88,8 +87,8 @@ std::vector<AabbBlas> makeAabbBlas(const Context& ctx, std::span<const VkAabbPos
   Buffer* hostBoxes = reuse ? &reuse->hostBoxes : &ownBoxes;
   if (boxes.size() <= kHostReadBoxes) {
     if (hostBoxes->size() < boxes.size_bytes())
-      *hostBoxes = Buffer::upload(ctx, reuse ? 2 * boxes.size_bytes() : boxes.size_bytes(),
-                                  kInput, fmt::format("{} boxes", name));
+      *hostBoxes = Buffer::upload(ctx, reuse ? 2 * boxes.size_bytes() : boxes.size_bytes(), kInput,
+                                  fmt::format("{} boxes", name));
     std::memcpy(hostBoxes->mapped().data(), boxes.data(), boxes.size_bytes());
   } else {
     ownBoxes = uploadToDeviceLocal(ctx, boxes, kInput, fmt::format("{} boxes", name));

@@ -46,8 +46,8 @@ std::string listSeen(const std::vector<Candidate>& all) {
 
 // `surface` is null for a headless context.
 Candidate chooseDevice(VkInstance instance, VkSurfaceKHR surface, CapabilitySet required,
-                       const std::optional<uint32_t>& index,
-                       const std::optional<std::string>& name, uint32_t slot) {
+                       const std::optional<uint32_t>& index, const std::optional<std::string>& name,
+                       uint32_t slot) {
   const bool presenting = surface != VK_NULL_HANDLE;
   std::vector<Candidate> all;
   const auto devices = enumeratePhysicalDevices(instance);
@@ -136,9 +136,8 @@ Context ContextBuilder::build() const {
   }
 
   CapabilitySet capabilities = required_.withImplied();
-  Candidate chosen =
-      chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_, deviceName_,
-                   deviceSlot_);
+  Candidate chosen = chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_,
+                                  deviceName_, deviceSlot_);
   // Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
   // enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
   // request for them alone enables whichever of the two the device has.

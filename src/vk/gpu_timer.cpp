@@ -47,8 +47,8 @@ void GpuTimer::stop(VkCommandBuffer cmd) const {
 std::optional<double> GpuTimer::seconds() const {
   if (!supported()) return std::nullopt;
   std::array<std::uint64_t, 2> ticks{};
-  AMRSTREAM_VK_CHECK(vkGetQueryPoolResults(device_, pool_.get(), 0, 2, sizeof(ticks),
-                                           ticks.data(), sizeof(std::uint64_t),
+  AMRSTREAM_VK_CHECK(vkGetQueryPoolResults(device_, pool_.get(), 0, 2, sizeof(ticks), ticks.data(),
+                                           sizeof(std::uint64_t),
                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   const std::uint64_t mask =
       validBits_ >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << validBits_) - 1;

@@ -25,7 +25,11 @@ std::optional<VkDeviceSize> MemoryLedger::limitFromEnvironment() {
   std::size_t digits = 0;
   while (digits < value.size() && value[digits] >= '0' && value[digits] <= '9') ++digits;
   const std::string suffix = value.substr(digits);
-  const int shift = suffix.empty() ? 0 : suffix == "K" ? 10 : suffix == "M" ? 20 : suffix == "G" ? 30 : -1;
+  const int shift = suffix.empty()  ? 0
+                    : suffix == "K" ? 10
+                    : suffix == "M" ? 20
+                    : suffix == "G" ? 30
+                                    : -1;
   if (digits == 0 || digits > 12 || shift < 0)
     throw std::invalid_argument("AMRSTREAM_DEVICE_MEMORY_LIMIT='" + value +
                                 "' is not a size (bytes, or a number with K, M or G)");

@@ -71,10 +71,9 @@ UniqueHandle<VkPipeline> createComputePipeline(const Context& ctx, VkPipelineLay
   return {ctx.device(), pipeline};
 }
 
-RayTracingPipeline createProceduralRayTracingPipeline(const Context& ctx, VkPipelineLayout layout,
-                                                      const ProceduralHitShaders& shaders,
-                                                      const VkSpecializationInfo* raygenSpecialization,
-                                                      std::string_view name) {
+RayTracingPipeline createProceduralRayTracingPipeline(
+    const Context& ctx, VkPipelineLayout layout, const ProceduralHitShaders& shaders,
+    const VkSpecializationInfo* raygenSpecialization, std::string_view name) {
   const std::string base(name);
   const auto rgen = createShaderModule(ctx, shaders.raygen, base + " ray generation");
   const auto rmiss = createShaderModule(ctx, shaders.miss, base + " miss");

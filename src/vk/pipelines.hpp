@@ -57,9 +57,8 @@ struct RayTracingPipeline {
 
 // Groups: 0 ray generation, 1 miss, 2 the procedural hit group. `raygenSpecialization` (may be
 // null) applies to the ray generation shader only. Recursion depth 1.
-RayTracingPipeline createProceduralRayTracingPipeline(const Context& ctx, VkPipelineLayout layout,
-                                                      const ProceduralHitShaders& shaders,
-                                                      const VkSpecializationInfo* raygenSpecialization,
-                                                      std::string_view name);
+RayTracingPipeline createProceduralRayTracingPipeline(
+    const Context& ctx, VkPipelineLayout layout, const ProceduralHitShaders& shaders,
+    const VkSpecializationInfo* raygenSpecialization, std::string_view name);
 
 }  // namespace amrstream::vk

@@ -41,8 +41,11 @@ void Submission::submitRecorded() {
 }
 
 Submission::Submission(Submission&& other) noexcept
-    : device_(other.device_), queue_(other.queue_), commandBuffer_(std::move(other.commandBuffer_)),
-      fence_(std::move(other.fence_)), pending_(std::exchange(other.pending_, false)) {}
+    : device_(other.device_),
+      queue_(other.queue_),
+      commandBuffer_(std::move(other.commandBuffer_)),
+      fence_(std::move(other.fence_)),
+      pending_(std::exchange(other.pending_, false)) {}
 
 Submission& Submission::operator=(Submission&& other) noexcept {
   if (this != &other) {

@@ -51,10 +51,11 @@ VkAccelerationStructureBuildSizesInfoKHR sizesFor(const Context& ctx, std::uint3
 TlasBuilder::TlasBuilder(const Context& ctx, std::uint32_t capacity, std::string_view name)
     : ctx_(&ctx),
       capacity_(capacity),
-      instances_(Buffer::upload(ctx, capacity * sizeof(VkAccelerationStructureInstanceKHR),
-                                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                fmt::format("{} instances", name))),
+      instances_(
+          Buffer::upload(ctx, capacity * sizeof(VkAccelerationStructureInstanceKHR),
+                         VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                             VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                         fmt::format("{} instances", name))),
       sizes_(sizesFor(ctx, capacity)),
       tlas_(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes_.accelerationStructureSize,
             fmt::format("{} TLAS", name)),
@@ -73,8 +74,8 @@ const AccelerationStructure& TlasBuilder::build(std::span<const AabbBlas> blases
 
 void TlasBuilder::record(VkCommandBuffer cmd, std::span<const AabbBlas> blases) {
   if (blases.size() > capacity_)
-    throw std::length_error(fmt::format("TlasBuilder: {} instances exceed its capacity {}",
-                                        blases.size(), capacity_));
+    throw std::length_error(
+        fmt::format("TlasBuilder: {} instances exceed its capacity {}", blases.size(), capacity_));
   std::vector<VkAccelerationStructureInstanceKHR> instances;
   instances.reserve(blases.size());
   for (const AabbBlas& blas : blases) {
@@ -86,8 +87,7 @@ void TlasBuilder::record(VkCommandBuffer cmd, std::span<const AabbBlas> blases) 
   // Coherent memory, written before the submission: visible to the build.
   std::memcpy(instances_.mapped().data(), instances.data(),
               instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
-  const VkAccelerationStructureGeometryKHR geometry =
-      instanceGeometry(instances_.deviceAddress());
+  const VkAccelerationStructureGeometryKHR geometry = instanceGeometry(instances_.deviceAddress());
   VkAccelerationStructureBuildGeometryInfoKHR build = buildInfo(geometry);
   build.dstAccelerationStructure = tlas_.handle();
   build.scratchData.deviceAddress = scratch_.deviceAddress();

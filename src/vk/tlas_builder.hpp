@@ -6,8 +6,8 @@
 
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <string_view>
+#include <utility>
 
 #include "vk/aabb_scene.hpp"
 #include "vk/acceleration_structure.hpp"

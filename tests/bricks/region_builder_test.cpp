@@ -62,7 +62,8 @@ TEST(BuildRegions, LevelJumpOfThreeAcrossAFace) {
   EXPECT_EQ(finestWidthAt(regions, {7.25f, 4, 4}), 8.0f);
   EXPECT_EQ(bricksAt(regions, {12, 4, 4}).size(), 1u);
   EXPECT_EQ(locateCellUnits(regions, glm::vec3{16.5f, 4, 4}), -1);
-  EXPECT_EQ(locateCellUnits(regions, glm::vec3{14, 10, 4}), -1);  // above the fine block, outside all domains
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{14, 10, 4}),
+            -1);  // above the fine block, outside all domains
 }
 
 TEST(BuildRegions, FineCellsOnTheDomainBoundary) {
@@ -78,9 +79,12 @@ TEST(BuildRegions, FineCellsOnTheDomainBoundary) {
   const RegionSet regions = checkLayout(makeField(lowers, levels), 8, 3, 2000);
   EXPECT_EQ(regions.lower, glm::ivec3(-1, -4, -4));  // the coarse cell pads y and z by 2
   EXPECT_EQ(regions.upper, glm::ivec3(20, 12, 12));
-  EXPECT_GE(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}), 0);  // the root box's lower face is inside
-  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}), locateCellUnits(regions, glm::vec3{-0.25f, 0.25f, 0.25f}));
-  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, -1, 0}), -1);  // in the root box but in no domain
+  EXPECT_GE(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}),
+            0);  // the root box's lower face is inside
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, 0, 0}),
+            locateCellUnits(regions, glm::vec3{-0.25f, 0.25f, 0.25f}));
+  EXPECT_EQ(locateCellUnits(regions, glm::vec3{-0.5f, -1, 0}),
+            -1);  // in the root box but in no domain
   EXPECT_EQ(locateCellUnits(regions, glm::vec3{10, 1, 1}), -1);
 }
 

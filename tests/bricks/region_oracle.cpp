@@ -37,9 +37,7 @@ bool containsPoint(const CellBox& doubled, const double (&p2)[3]) {
 
 glm::vec3 cellUnits(glm::ivec3 lattice) { return 0.5f * glm::vec3(lattice); }
 
-CellBox latticeBox(glm::ivec3 lower, glm::ivec3 upper) {
-  return {lower, upper};
-}
+CellBox latticeBox(glm::ivec3 lower, glm::ivec3 upper) { return {lower, upper}; }
 
 // Half-finest-cell voxels over a box in doubled coordinates.
 class VoxelGrid {
@@ -160,8 +158,7 @@ std::int32_t locateCellUnits(const bricks::RegionSet& regions, glm::vec3 p) {
   for (std::size_t r = 0; r < regions.regions.size(); ++r) {
     const shared::Region& region = regions.regions[r];
     const CellBox box = latticeBox(region.lower, region.upper);
-    if (!contains(root, box) ||
-        glm::any(glm::lessThanEqual(box.upper, box.lower)))
+    if (!contains(root, box) || glm::any(glm::lessThanEqual(box.upper, box.lower)))
       return AssertionFailure() << "region " << r << " has a bad box";
     if (region.brickCount == 0 ||
         std::size_t(region.brickOffset) + region.brickCount > regions.regionBricks.size())
@@ -274,7 +271,8 @@ std::vector<glm::vec3> probePoints(const std::vector<shared::Brick>& bricks,
                                        pick(lo4.z - 4, hi4.z + 4)));
   std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
   for (int i = 0; i < count / 8; ++i)
-    points.push_back(rootLower + (rootUpper - rootLower) * glm::vec3(unit(rng), unit(rng), unit(rng)));
+    points.push_back(rootLower +
+                     (rootUpper - rootLower) * glm::vec3(unit(rng), unit(rng), unit(rng)));
   return points;
 }
 

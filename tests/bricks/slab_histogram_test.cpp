@@ -24,8 +24,8 @@ std::vector<GridCell> cellsWithTwoGaps() {
       for (int x = 0; x < 120; ++x) {
         if (x == 45 || x == 70 || (x > 70 && (y < 10 || y >= 50))) continue;
         if ((x == 55 || x == 60 || x == 65) && (y != x || z != 7)) continue;
-        cells.push_back({glm::ivec3(x, y, z) + glm::ivec3(1000, -7, 3),
-                         std::uint32_t(cells.size())});
+        cells.push_back(
+            {glm::ivec3(x, y, z) + glm::ivec3(1000, -7, 3), std::uint32_t(cells.size())});
       }
   return cells;
 }

@@ -23,7 +23,8 @@ TEST_F(Bench, EveryBackendMatchesTheCpuStepsAndReportsItsTimes) {
   const std::string json = (dir_ / "bench.json").string();
   const amrstream::testing::Outcome r = amrstream::testing::runAmrstream(
       "bench builtin:rotation --levels 3 --root-blocks 2 --target-cells 20000 --particles 16,64 "
-      "--steps 50 --history-points 2000 --json " + json,
+      "--steps 50 --history-points 2000 --json " +
+          json,
       "AMRSTREAM_VALIDATION=1");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("backend   mode      particles"));

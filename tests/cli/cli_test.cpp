@@ -2,8 +2,8 @@
 // clear message and a non-zero exit status.
 
 #include <gmock/gmock.h>
-#include <sys/stat.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <filesystem>
@@ -50,7 +50,7 @@ TEST_F(Cli, GenWritesExaFilesThatInfoAndTraceRead) {
   ASSERT_TRUE(fs::exists(path("abc.exa")));
   std::ifstream exa(path("abc.exa"));
   const std::string exaText((std::istreambuf_iterator<char>(exa)), {});
-  EXPECT_THAT(exaText, HasSubstr("\ntime 0\n"));  // abc is steady, at t = 0
+  EXPECT_THAT(exaText, HasSubstr("\ntime 0\n"));          // abc is steady, at t = 0
   EXPECT_THAT(exaText, HasSubstr("\nperiodic 1 1 1\n"));  // one full period over the unit cube
   r = run("info " + path("abc.exa"));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -186,8 +186,11 @@ TEST_F(Cli, ConvertWritesExaBricksFilesThatReadBackTheSame) {
   };
   EXPECT_THAT(levelCounts(original.output), HasSubstr("cells  width 4"));
   EXPECT_EQ(levelCounts(converted.output), levelCounts(original.output));
-  const auto fromBounds = [](const std::string& out) { return out.substr(out.find("bounds     ")); };
-  EXPECT_EQ(fromBounds(converted.output).substr(0, 200), fromBounds(original.output).substr(0, 200));
+  const auto fromBounds = [](const std::string& out) {
+    return out.substr(out.find("bounds     "));
+  };
+  EXPECT_EQ(fromBounds(converted.output).substr(0, 200),
+            fromBounds(original.output).substr(0, 200));
   // What the builtin dataset says about itself travels in the .exa.
   EXPECT_THAT(original.output, HasSubstr("periodic   x y z\n"));
   EXPECT_THAT(converted.output, HasSubstr("periodic   x y z\n"));
@@ -199,8 +202,8 @@ TEST_F(Cli, HelpSaysWhichInputsAreAccepted) {
   for (const char* command : {"info", "trace", "convert", "bench", "render"}) {
     const Outcome r = run(std::string(command) + " --help");
     EXPECT_EQ(r.status, 0) << r.output;
-    for (const char* input : {"FLASH", "Enzo", "AMReX plotfile", "Gerris", ".exa",
-                              "builtin:rotation|abc|cloud"})
+    for (const char* input :
+         {"FLASH", "Enzo", "AMReX plotfile", "Gerris", ".exa", "builtin:rotation|abc|cloud"})
       EXPECT_THAT(r.output, HasSubstr(input)) << command;
     EXPECT_THAT(r.output, Not(HasSubstr("an ExaBricks .exa file or builtin:NAME"))) << command;
   }
@@ -308,10 +311,11 @@ TEST_F(Cli, InfoNumbersEnzoLevelsFromTheRootGrid) {
   EXPECT_THAT(r.output, HasSubstr("levels     8 used, numbered as Enzo level (0 = root grid)"));
   const std::size_t level0 = r.output.find("\n  level 0 ");
   ASSERT_NE(level0, std::string::npos) << r.output;
-  const std::string line = r.output.substr(level0 + 1, r.output.find('\n', level0 + 1) - level0 - 1);
+  const std::string line =
+      r.output.substr(level0 + 1, r.output.find('\n', level0 + 1) - level0 - 1);
   EXPECT_THAT(line, HasSubstr(" " + withCommas(rootLeaves - underLevelOne) + " cells"));
   EXPECT_THAT(line, HasSubstr("width 128"));  // 2^7 finest cells: root dx 1/16, finest 1/2048
-  for (int level = 1; level <= 7; ++level)  // coarsest first
+  for (int level = 1; level <= 7; ++level)    // coarsest first
     EXPECT_GT(r.output.find("\n  level " + std::to_string(level) + " "), level0) << level;
 
   const Outcome trace = run("trace " + (dir / "moving7_0010").string() +
@@ -346,9 +350,9 @@ TEST_F(Cli, SeedGridRefusesCount) {
 // A rake between the domain's corners: its last seed lies on the open upper faces and is moved
 // just inside.
 TEST_F(Cli, SeedLineMayEndAtTheDomainsUpperCorner) {
-  const Outcome r = run("trace builtin:rotation" + kSmall +
-                        " --backend cpu --seed-line 0,0,0,1,1,1 --count 5 --steps 10 --out " +
-                        path("t.vtp"));
+  const Outcome r =
+      run("trace builtin:rotation" + kSmall +
+          " --backend cpu --seed-line 0,0,0,1,1,1 --count 5 --steps 10 --out " + path("t.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("seeds      5 from a rake"));
 }
@@ -360,8 +364,8 @@ TEST_F(Cli, AutoTracesOnTheCpuWhenTheOnlyDeviceIsASoftwareOne) {
   ASSERT_EQ(devices.status, 0) << devices.output;
   const bool gpu = devices.output.find("discrete GPU") != std::string::npos ||
                    devices.output.find("integrated GPU") != std::string::npos;
-  const Outcome r = run("trace builtin:rotation" + kSmall + " --count 8 --steps 10 --out " +
-                        path("t.vtp"));
+  const Outcome r =
+      run("trace builtin:rotation" + kSmall + " --count 8 --steps 10 --out " + path("t.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   if (gpu) {
     EXPECT_THAT(r.output, Not(HasSubstr("backend    auto: cpu")));
@@ -375,8 +379,8 @@ TEST_F(Cli, EnzoIsPeriodicAsItsParameterFileSays) {
   const fs::path real(AMRSTREAM_REAL_DATA_DIR);
   if (!fs::exists(real)) GTEST_SKIP() << "real datasets not found at " << real;
   const std::string enzo = (real / "enzo-moving7/DD0010/moving7_0010").string();
-  Outcome r = run("trace " + enzo + " --backend cpu --steps 2000 --count 64 --out " +
-                  path("enzo.vtp"));
+  Outcome r =
+      run("trace " + enzo + " --backend cpu --steps 2000 --count 64 --out " + path("enzo.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("periodic images (x,y,z)"));
   EXPECT_THAT(r.output, Not(HasSubstr("out of domain")));  // nothing leaves a periodic box

@@ -51,7 +51,8 @@ TEST_F(PathlinesCli, WritesStreaklinesWithReleaseEvery) {
   generateSwirl(3);
   const Outcome r = run("pathlines '" + path("swirl_*.exa") +
                         "' --seed-line 0.6,0.5,0.5,0.7,0.5,0.5 --count 3 --release-every 0.01 "
-                        "--end-time 0.08 --out " + path("s.vtp"));
+                        "--end-time 0.08 --out " +
+                        path("s.vtp"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("released every 0.01"));
   EXPECT_THAT(r.output, HasSubstr("particles  24 (3 seeds)"));
@@ -78,7 +79,8 @@ TEST_F(PathlinesCli, RunsTheRealGerrisSeriesFromItsFiles) {
 TEST_F(PathlinesCli, AnEnzoOutputsFilesAreOneSnapshot) {
   const fs::path dd = fs::path(AMRSTREAM_REAL_DATA_DIR) / "enzo-moving7" / "DD0010";
   if (!fs::exists(dd)) GTEST_SKIP() << "the Enzo output is not at " << dd;
-  const Outcome r = run("pathlines '" + (dd / "moving7_0010*").string() + "' --out " + path("e.vtp"));
+  const Outcome r =
+      run("pathlines '" + (dd / "moving7_0010*").string() + "' --out " + path("e.vtp"));
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("a series needs two snapshots or more; 1 given"));
 }
@@ -94,9 +96,9 @@ TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
   EXPECT_THAT(r.output, HasSubstr("nothing_*.exa: matches no file"));
 
   // The same time twice.
-  ASSERT_EQ(run("gen swirl --levels 2 --root-blocks 1 --target-cells 600 --out " + path("again"))
-                .status,
-            0);
+  ASSERT_EQ(
+      run("gen swirl --levels 2 --root-blocks 1 --target-cells 600 --out " + path("again")).status,
+      0);
   r = run("pathlines '" + path("swirl_*.exa") + "' " + path("again.exa") + " --out " +
           path("x.vtp"));
   EXPECT_EQ(r.status, 2);
@@ -118,8 +120,7 @@ TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
                 path("rot"))
                 .status,
             0);
-  r = run("pathlines '" + path("swirl_*.exa") + "' " + path("rot.exa") + " --out " +
-          path("x.vtp"));
+  r = run("pathlines '" + path("swirl_*.exa") + "' " + path("rot.exa") + " --out " + path("x.vtp"));
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("rot.exa: its point-data channels are none, the first "
                                   "snapshot's temp"));

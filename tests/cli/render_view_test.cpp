@@ -30,7 +30,8 @@ std::size_t tubeLikePixels(const render::Image& image, double fraction = 1.0) {
 }
 
 std::filesystem::path outputPath(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "amrstream_render_view";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "amrstream_render_view";
   std::filesystem::create_directories(dir);
   std::filesystem::remove(dir / name);
   return dir / name;
@@ -40,7 +41,8 @@ TEST(RenderCommand, WritesAnImageOfTubesWithItsColourBar) {
   const auto png = outputPath("render.png");
   const auto run = testing::runAmrstream(
       "render builtin:cloud --count 64 --steps 300 --width 256 --height 192 --frames 2 "
-      "--tube-radius 1.5 --out " + png.string(),
+      "--tube-radius 1.5 --out " +
+          png.string(),
       "AMRSTREAM_VALIDATION=1");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("output     " + png.string()), std::string::npos) << run.output;
@@ -123,15 +125,18 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
   auto run = testing::runAmrstream("render builtin:cloud --backend cpu --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("needs a Vulkan device"), std::string::npos) << run.output;
-  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --colour-map jet --out x.png");
+  run = testing::runAmrstream(
+      "render builtin:cloud --count 4 --steps 5 --colour-map jet --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("viridis, magma, inferno, plasma, cividis, coolwarm, rdbu, twilight"),
             std::string::npos)
       << run.output;
-  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --colour-by pressure --out x.png");
+  run = testing::runAmrstream(
+      "render builtin:cloud --count 4 --steps 5 --colour-by pressure --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("no field 'pressure'"), std::string::npos) << run.output;
-  run = testing::runAmrstream("render builtin:cloud --count 4 --steps 5 --background pink --out x.png");
+  run = testing::runAmrstream(
+      "render builtin:cloud --count 4 --steps 5 --background pink --out x.png");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("--background: 'pink': give white, black, transparent, #rrggbb"),
             std::string::npos)

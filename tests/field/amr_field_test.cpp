@@ -126,25 +126,30 @@ TEST(AmrField, RejectsExtentBeyondSupportedRange) {
 
 TEST(AmrField, RejectsCornersWhoseUpperFaceOverflowsInt) {
   const int top = std::numeric_limits<int>::max();
-  EXPECT_THAT(testing::inputErrorOf([&] { makeField({{top, 0, 0}}, {0}); }),
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                makeField({{top, 0, 0}}, {0});
+              }),
               HasSubstr("beyond the largest supported corner coordinate"));
   const int bottom = std::numeric_limits<int>::min();
-  EXPECT_THAT(testing::inputErrorOf([&] { makeField({{bottom, 0, 0}, {top - 1, 0, 0}}, {0, 0}); }),
+  EXPECT_THAT(testing::inputErrorOf([&] {
+                makeField({{bottom, 0, 0}, {top - 1, 0, 0}}, {0, 0});
+              }),
               HasSubstr("per axis are supported"));
 }
 
 TEST(AmrField, RejectsTransformsThatFloat32PositionsCannotHold) {
   const auto withTransform = [](WorldTransform t) {
-    return testing::inputErrorOf(
-        [&] { AmrField({{0, 0, 0}}, {0}, {{"rho", {1.0f}}}, t, "t.exa"); });
+    return testing::inputErrorOf([&] {
+      AmrField({{0, 0, 0}}, {0}, {{"rho", {1.0f}}}, t, "t.exa");
+    });
   };
   EXPECT_THAT(withTransform({{1e308, 0, 0}, {1, 1, 1}}), HasSubstr("beyond the float32 range"));
   EXPECT_THAT(withTransform({{0, 0, 0}, {1e300, 1, 1}}), HasSubstr("finest cell width along x"));
   EXPECT_THAT(withTransform({{0, 0, 0}, {1, 1e-320, 1}}), HasSubstr("finest cell width along y"));
   EXPECT_THAT(withTransform({{0, 0, std::nan("")}, {1, 1, 1}}), HasSubstr("origin's z"));
   EXPECT_THAT(withTransform({{0, 0, 0}, {1, 1, -1}}), HasSubstr("t.exa: the finest cell width"));
-  EXPECT_NO_THROW(AmrField({{0, 0, 0}}, {0}, {{"rho", {1.0f}}}, {{-1e30, 0, 0}, {1e-30, 1, 1}},
-                           "ok.exa"));
+  EXPECT_NO_THROW(
+      AmrField({{0, 0, 0}}, {0}, {{"rho", {1.0f}}}, {{-1e30, 0, 0}, {1e-30, 1, 1}}, "ok.exa"));
 }
 
 TEST(AmrField, ChannelLookupListsAvailableChannels) {

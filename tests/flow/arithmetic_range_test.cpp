@@ -20,9 +20,8 @@ using ::testing::HasSubstr;
 
 // A 4^3 grid with the constant vector (s, 0, 0), a scalar "rho" = r and the given spacing.
 bricks::AmrField constantField(float s, float r = 1.0f, double spacing = 1.0) {
-  const bricks::AmrField grid = testing::uniformGrid(4, [s](glm::dvec3) {
-    return glm::vec3(s, 0.0f, 0.0f);
-  });
+  const bricks::AmrField grid =
+      testing::uniformGrid(4, [s](glm::dvec3) { return glm::vec3(s, 0.0f, 0.0f); });
   std::vector<bricks::Channel> channels = grid.channels();
   channels.push_back({"rho", std::vector<float>(grid.cellCount(), r)});
   return bricks::AmrField({grid.lowers().begin(), grid.lowers().end()},

@@ -85,9 +85,8 @@ TEST(FillVolumeValues, ASourceWithTooFewValuesIsRefused) {
   const ChannelSource shortSource = [](const std::string&, const ChannelUse& use) {
     use(std::vector<float>(3, 0.0f));
   };
-  EXPECT_THROW(
-      fillVolumeValues(volume, {{"vx", "vy", "vz"}, "v"}, {}, field.source(), shortSource),
-      std::logic_error);
+  EXPECT_THROW(fillVolumeValues(volume, {{"vx", "vy", "vz"}, "v"}, {}, field.source(), shortSource),
+               std::logic_error);
 }
 
 }  // namespace

@@ -91,7 +91,8 @@ double radiusDriftOverOneRevolution(const VectorVolume& volume, glm::dvec3 centr
     const glm::dvec3 r = glm::dvec3(point(t, end)) - centre;
     maxDrift = std::max(maxDrift, std::abs(glm::length(glm::dvec2(r)) - radius));
   }
-  EXPECT_GE(t.times[t.firstPoint(0) + end], float(period)) << "radius " << radius << ": no full revolution";
+  EXPECT_GE(t.times[t.firstPoint(0) + end], float(period))
+      << "radius " << radius << ": no full revolution";
   EXPECT_NEAR(point(t, end).z, float(centre.z + 0.3), 1e-4f);
   return maxDrift;
 }
@@ -145,7 +146,7 @@ TEST(Integrator, LeavingTheDomainEndsAtTheLastInsidePoint) {
   const glm::vec3 last = point(t, t.pointCount(0) - 1);
   EXPECT_LT(last.x, 16.0f);                 // inside the domain [0, 16)
   EXPECT_GE(last.x + 0.3f, 16.0f - 1e-4f);  // the next step would leave it
-  EXPECT_EQ(t.pointCount(0), 47u);         // 2 + 46 * 0.3 = 15.8
+  EXPECT_EQ(t.pointCount(0), 47u);          // 2 + 46 * 0.3 = 15.8
 }
 
 TEST(Integrator, ZeroFieldStagnatesAtTheSeed) {
@@ -271,8 +272,8 @@ TEST(Integrator, MaxTimeShortensTheLastStepToEndOnIt) {
 TEST(Integrator, MaxTimeInCellModeIsPhysicalTime) {
   // Level-0 cells of width 1, h = 0.25, speed 2: each cell-mode step advances time by 0.25 and
   // moves 0.5 cells; a limit of 1.1 ends with a shortened step of 0.1 (0.2 cells).
-  const VectorVolume volume = testing::volumeOf(
-      testing::uniformGrid(16, [](auto) { return glm::vec3(2.0f, 0.0f, 0.0f); }));
+  const VectorVolume volume =
+      testing::volumeOf(testing::uniformGrid(16, [](auto) { return glm::vec3(2.0f, 0.0f, 0.0f); }));
   TraceOptions options;
   options.maxTime = 1.1f;
   options.direction = Direction::Forward;

@@ -110,7 +110,8 @@ TEST(LinearInterpolant, ReproducesALinearScalarSampledWithItsGradients) {
   for (const glm::dvec3& p : randomPoints(volume, 3000, 6)) {
     const double exact = linearField(p).y;
     linearWorst = std::max(
-        linearWorst, std::abs(*sampleScalar(volume, scalars, glm::vec3(p), nullptr, gradients) - exact));
+        linearWorst,
+        std::abs(*sampleScalar(volume, scalars, glm::vec3(p), nullptr, gradients) - exact));
     tentWorst = std::max(tentWorst, std::abs(*sampleScalar(volume, scalars, glm::vec3(p)) - exact));
   }
   EXPECT_LT(linearWorst, 2e-5);

@@ -4,8 +4,6 @@
 // snapshots against the streamline tracer in time mode; streaklines of a steady rotation; the
 // termination reasons; point data along the paths.
 
-#include "flow/pathline_tracer.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +13,7 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "flow/integrator.hpp"
+#include "flow/pathline_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "synth/generators.hpp"
 #include "synth/swirl_field.hpp"
@@ -66,7 +65,8 @@ PathlineTracer traceSeries(const Series& series, std::span<const glm::dvec3> see
   for (std::size_t i = 0; i + 1 < series.times.size(); ++i) {
     if (series.times[i + 1] <= o.startTime) continue;
     if (series.times[i] >= o.endTime) break;
-    tracer.advance({series.times[i], &series.volumes[i]}, {series.times[i + 1], &series.volumes[i + 1]});
+    tracer.advance({series.times[i], &series.volumes[i]},
+                   {series.times[i + 1], &series.volumes[i + 1]});
   }
   tracer.finish();
   return tracer;
@@ -249,8 +249,9 @@ TEST(Pathlines, CarryPointDataInterpolatedInTime) {
   ASSERT_EQ(set.channelNames, std::vector<std::string>{"temp"});
   double worst = 0.0;
   for (std::uint64_t i = 0; i < set.pointCount(); ++i)
-    worst = std::max(worst, std::abs(set.channels[i] - SwirlField::temperature(
-                                                           glm::dvec3(set.positions[i]), set.times[i])));
+    worst = std::max(worst,
+                     std::abs(set.channels[i] -
+                              SwirlField::temperature(glm::dvec3(set.positions[i]), set.times[i])));
   // temp is linear in space and in time: exact but for float rounding.
   EXPECT_LT(worst, 1e-5);
 }

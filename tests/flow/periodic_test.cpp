@@ -94,8 +94,9 @@ glm::dvec3 abcStep(glm::dvec3 x, double dt) {
 TEST(Periodic, AbcTracesCrossEveryFaceAndFollowTheAnalyticStreamline) {
   const bricks::AmrField field =
       synth::generate("abc", {.levels = 3, .rootBlocks = 4, .targetCells = 400000});
-  const VectorVolume volume = buildVectorVolume(field, chooseVectorChannels(field, ""),
-                                                testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
+  const VectorVolume volume =
+      buildVectorVolume(field, chooseVectorChannels(field, ""),
+                        testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
   constexpr std::uint64_t kCompared = 200;
   TraceOptions options;
   options.stepMode = StepMode::Time;
@@ -118,7 +119,8 @@ TEST(Periodic, AbcTracesCrossEveryFaceAndFollowTheAnalyticStreamline) {
     glm::dvec3 exact = seeds[line], shift(0.0);
     glm::dvec3 previous(t.positions[t.firstPoint(line)]);
     for (std::uint64_t k = 1; k < t.pointCount(line); ++k) {
-      const glm::dvec3 a(t.positions[t.firstPoint(line) + k - 1]), b(t.positions[t.firstPoint(line) + k]);
+      const glm::dvec3 a(t.positions[t.firstPoint(line) + k - 1]),
+          b(t.positions[t.firstPoint(line) + k]);
       for (int axis = 0; axis < 3; ++axis) {
         ASSERT_GE(b[axis], 0.0);
         ASSERT_LT(b[axis], 1.0);

@@ -39,8 +39,8 @@ TEST(PointData, ChannelsUseTheVectorsWeights) {
   const bricks::AmrField field = withScalars(testing::randomAmr(7, layout, [](glm::dvec3 p) {
     return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05);
   }));
-  const VectorVolume volume = buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
-                                                testing::withPointData({"ones", "vx"}));
+  const VectorVolume volume =
+      buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, testing::withPointData({"ones", "vx"}));
   TraceOptions options;
   options.maxSteps = 200;
   std::vector<glm::dvec3> seeds;
@@ -59,10 +59,10 @@ TEST(PointData, ALinearChannelIsExactInsideOneLevel) {
   testing::RandomAmrOptions layout;
   layout.levels = 1;
   layout.rootCells = glm::ivec3(16, 16, 16);
-  const bricks::AmrField field = withScalars(
-      testing::randomAmr(0, layout, [](auto) { return glm::vec3(0.3f, 0.2f, 0.1f); }));
-  const VectorVolume volume = buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
-                                                testing::withPointData({"lin"}));
+  const bricks::AmrField field =
+      withScalars(testing::randomAmr(0, layout, [](auto) { return glm::vec3(0.3f, 0.2f, 0.1f); }));
+  const VectorVolume volume =
+      buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"}, testing::withPointData({"lin"}));
   TraceOptions options;
   options.maxSteps = 40;
   const std::vector<glm::dvec3> seeds{{4.0, 5.0, 6.0}, {8.2, 7.1, 5.5}};

@@ -27,7 +27,8 @@ void expectIdentical(const TraceSet& a, const TraceSet& b) {
   ASSERT_EQ(a.vectors, b.vectors);
   ASSERT_EQ(a.channels.size(), b.channels.size());
   for (std::size_t i = 0; i < a.channels.size(); ++i)  // NaN where a point has no channel value
-    ASSERT_TRUE(a.channels[i] == b.channels[i] || (std::isnan(a.channels[i]) && std::isnan(b.channels[i])));
+    ASSERT_TRUE(a.channels[i] == b.channels[i] ||
+                (std::isnan(a.channels[i]) && std::isnan(b.channels[i])));
 }
 
 class RoundsTest : public ::testing::Test {
@@ -127,7 +128,8 @@ TEST_F(RoundsTest, RecentPiecesJoinIntoTheOneRun) {
     for (std::size_t k = 0; k < recent.lineCount(); ++k) {
       // Lines are laid out forward then backward: find this piece's line by seed and direction.
       std::size_t line = 0;
-      while (once.seedIds[line] != recent.seedIds[k] || once.directions[line] != recent.directions[k])
+      while (once.seedIds[line] != recent.seedIds[k] ||
+             once.directions[line] != recent.directions[k])
         ++line;
       const std::uint64_t first = recent.offsets[k], end = recent.offsets[k + 1];
       // Every piece after the first starts at the line's last point so far.
@@ -161,9 +163,8 @@ TEST(Rounds, TracesOfAHundredThousandStepsStreamed) {
   testing::RandomAmrOptions layout;
   layout.levels = 2;
   layout.rootCells = glm::ivec3(12, 12, 4);
-  const VectorVolume volume = testing::volumeOf(testing::randomAmr(3, layout, [&](glm::dvec3 p) {
-    return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0);
-  }));
+  const VectorVolume volume = testing::volumeOf(testing::randomAmr(
+      3, layout, [&](glm::dvec3 p) { return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0); }));
   const std::vector<glm::dvec3> seeds{{17.0, 12.0, 4.1}, {12.0, 4.5, 2.0}, {15.0, 15.0, 6.0}};
   TraceOptions options;
   options.maxSteps = 100000;

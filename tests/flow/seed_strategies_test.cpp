@@ -49,9 +49,8 @@ TEST(SeedStrategies, RandomSeedsLandInCellsNeverInHoles) {
 }
 
 TEST(SeedStrategies, RandomSeedsInCellsEqualTheBoxDrawWithoutHoles) {
-  const VectorVolume volume = testing::volumeOf(testing::uniformGrid(4, [](glm::dvec3) {
-    return glm::vec3(1.0f);
-  }));
+  const VectorVolume volume =
+      testing::volumeOf(testing::uniformGrid(4, [](glm::dvec3) { return glm::vec3(1.0f); }));
   const SeedList inCells = randomSeedsInCells(volume, {0, 0, 0}, {3.9, 3.9, 3.9}, 100, 11);
   const SeedList inBox = randomSeedsInBox({0, 0, 0}, {3.9, 3.9, 3.9}, 100, 11);
   EXPECT_EQ(inCells.points, inBox.points);
@@ -133,14 +132,14 @@ TEST(SeedStrategies, ValueAtRankIsNthElement) {
   std::vector<float> values(300000);
   for (std::size_t i = 0; i < values.size(); ++i) {
     const std::uint32_t r = rng();
-    values[i] = r % 7 == 0 ? 0.0f
+    values[i] = r % 7 == 0   ? 0.0f
                 : r % 7 == 1 ? -0.0f
                 : r % 7 == 2 ? float(int(r % 100) - 50)
-                : std::ldexp(float(r % 1000) - 500.0f, int(r % 60) - 30);
+                             : std::ldexp(float(r % 1000) - 500.0f, int(r % 60) - 30);
   }
-  for (const std::size_t rank : {std::size_t(0), std::size_t(1), std::size_t(12345),
-                                 values.size() / 2, values.size() * 9 / 10, values.size() - 2,
-                                 values.size() - 1}) {
+  for (const std::size_t rank :
+       {std::size_t(0), std::size_t(1), std::size_t(12345), values.size() / 2,
+        values.size() * 9 / 10, values.size() - 2, values.size() - 1}) {
     std::vector<float> sorted = values;
     std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(rank), sorted.end());
     EXPECT_EQ(valueAtRank(values, rank), sorted[rank]) << "rank " << rank;

@@ -4,7 +4,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -57,8 +56,8 @@ TEST(SeedFile, RejectsMalformedLinesNamingTheLine) {
 
 // Checked before opening: a FIFO without a writer would block the reader, a device never end.
 TEST(SeedFile, RefusesFifosDevicesAndDirectoriesByName) {
-  const fs::path fifo = fs::temp_directory_path() / ("amrstream-seeds-fifo-" +
-                                                     std::to_string(::getpid()));
+  const fs::path fifo =
+      fs::temp_directory_path() / ("amrstream-seeds-fifo-" + std::to_string(::getpid()));
   fs::remove(fifo);
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_THAT(testing::inputErrorOf([&] { readSeedFile(fifo); }),

@@ -2,11 +2,12 @@
 // linear field anywhere with the linear interpolant, and zeros with an invalid mark where no
 // region covers a point.
 
+#include "flow/uniform_resample.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flow/uniform_resample.hpp"
 #include "flow_test_support.hpp"
 
 namespace amrstream::flow {
@@ -24,8 +25,8 @@ glm::dvec3 linearField(glm::dvec3 p) {
 
 glm::dvec3 pointOf(const UniformGridSpec& spec, std::size_t n) {
   const std::size_t nx = spec.dims[0], ny = spec.dims[1];
-  return spec.origin() + spec.spacing() * glm::dvec3(double(n % nx), double(n / nx % ny),
-                                                     double(n / (nx * ny)));
+  return spec.origin() +
+         spec.spacing() * glm::dvec3(double(n % nx), double(n / nx % ny), double(n / (nx * ny)));
 }
 
 TEST(UniformResample, PointsAtCellCentresTakeTheCellsValues) {
@@ -45,8 +46,8 @@ TEST(UniformResample, PointsAtCellCentresTakeTheCellsValues) {
 TEST(UniformResample, LinearInterpolantGivesALinearFieldAnywhereOnAMultiLevelLayout) {
   testing::RandomAmrOptions layout;
   layout.levels = 4;
-  const bricks::AmrField field = testing::randomAmr(
-      3, layout, [](glm::dvec3 c) { return glm::vec3(linearField(c)); });
+  const bricks::AmrField field =
+      testing::randomAmr(3, layout, [](glm::dvec3 c) { return glm::vec3(linearField(c)); });
   VolumeOptions options;
   options.interpolant = Interpolant::Linear;
   options.pointData = {"vy"};

@@ -249,9 +249,10 @@ TEST_F(AmrexReader, HugeDomainsAndBoxCountsAreRefusedWithoutOverflow) {
   writeFile(header, original);
   replaceIn(header, "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))",
             "((-1073741824,0,0) (1073741823,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))");
-  EXPECT_THAT(errorOf(), AllOf(HasSubstr(header.string()),
-                               HasSubstr("the level-0 domain (-1073741824,0,0)-(1073741823,7,7) "
-                                         "spans 2147483648 cells along axis x; at most 1073741823")));
+  EXPECT_THAT(errorOf(),
+              AllOf(HasSubstr(header.string()),
+                    HasSubstr("the level-0 domain (-1073741824,0,0)-(1073741823,7,7) "
+                              "spans 2147483648 cells along axis x; at most 1073741823")));
   writeFile(header, original);
   replaceIn(header, "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,15) (0,0,0))",
             "((0,0,0) (7,7,7) (0,0,0)) ((0,0,0) (15,15,17) (0,0,0))");

@@ -95,8 +95,8 @@ TEST_F(EnzoInfoReal, CodeUnitsSizedByTheCosmology) {
   // The file's own velocity conversion (commented out by Enzo 1.3): comoving length over time
   // times the initial expansion factor 1 / (1 + z_initial).
   const double zInitial = number(text, "CosmologyInitialRedshift");
-  const double velocityUnit = *info.lengthUnitCentimetres * (1.0 + z) /
-                              (1.0 + zInitial) / *info.timeUnitSeconds;
+  const double velocityUnit =
+      *info.lengthUnitCentimetres * (1.0 + z) / (1.0 + zInitial) / *info.timeUnitSeconds;
   EXPECT_NEAR(velocityUnit / number(text, "#DataCGSConversionFactor[2]"), 1.0, 1e-3);
 }
 
@@ -110,10 +110,11 @@ class EnzoInfoWritten : public testing::TempDirTest {
 };
 
 TEST_F(EnzoInfoWritten, NonCosmologicalUnitsFromLengthUnitsAndTimeUnits) {
-  const EnzoParameters parameters(write("InitialTime = 2.5\nComovingCoordinates = 0\n"
-                                        "LengthUnits = 3.0857e+21\nTimeUnits = 3.15e+13\n"
-                                        "LeftFaceBoundaryCondition  = 3 0 3\n"
-                                        "RightFaceBoundaryCondition = 3 3 1\n"));
+  const EnzoParameters parameters(
+      write("InitialTime = 2.5\nComovingCoordinates = 0\n"
+            "LengthUnits = 3.0857e+21\nTimeUnits = 3.15e+13\n"
+            "LeftFaceBoundaryCondition  = 3 0 3\n"
+            "RightFaceBoundaryCondition = 3 3 1\n"));
   const bricks::DatasetInfo info = readEnzoInfo(&parameters, 4);
   EXPECT_EQ(info.time, 2.5);
   EXPECT_EQ(info.lengthUnitCentimetres, 3.0857e21);

@@ -397,10 +397,10 @@ TEST_F(ExaFormat, CellsFirstThenChannelsOneAtATimeGiveReadExasField) {
   const ExaCells cells = readExaCells(config);
   EXPECT_TRUE(cells.field.channels().empty());
   ASSERT_EQ(cells.field.cellCount(), whole.cellCount());
-  EXPECT_TRUE(std::equal(whole.lowers().begin(), whole.lowers().end(),
-                         cells.field.lowers().begin()));
-  EXPECT_TRUE(std::equal(whole.levels().begin(), whole.levels().end(),
-                         cells.field.levels().begin()));
+  EXPECT_TRUE(
+      std::equal(whole.lowers().begin(), whole.lowers().end(), cells.field.lowers().begin()));
+  EXPECT_TRUE(
+      std::equal(whole.levels().begin(), whole.levels().end(), cells.field.levels().begin()));
   ASSERT_EQ(cells.channels.size(), whole.channels().size());
   for (std::size_t c = 0; c < cells.channels.size(); ++c) {
     EXPECT_EQ(cells.channels[c].name, whole.channels()[c].name);

@@ -79,8 +79,8 @@ TEST_P(DeviceTracesTest, PointDataVorticityBatchesAndRoundsReadAsCollected) {
   const bricks::AmrField field = testing::randomAmr(5, layout, [](glm::dvec3 p) {
     return glm::vec3(0.3 + 0.02 * p.y, 0.2 * std::cos(0.3 * p.x), 0.1 + 0.01 * p.z);
   });
-  const flow::VectorVolume volume = flow::buildVectorVolume(
-      field, {{"vx", "vy", "vz"}, "v"}, testing::withPointData({"vy", "vx"}));
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
+                                                            testing::withPointData({"vy", "vx"}));
   flow::TraceOptions options;
   options.maxSteps = 300;
   options.vorticity = true;
@@ -125,9 +125,8 @@ TEST_P(DeviceTracesTest, DeepPositionsReadAsCollected) {
 
 // Lines whose every step might not fit the device's memory stay on the host.
 TEST_P(DeviceTracesTest, LinesThatMightNotFitAreNotKept) {
-  const bricks::AmrField field = testing::randomAmr(2, {}, [](glm::dvec3) {
-    return glm::vec3(1.0f, 0.0f, 0.0f);
-  });
+  const bricks::AmrField field =
+      testing::randomAmr(2, {}, [](glm::dvec3) { return glm::vec3(1.0f, 0.0f, 0.0f); });
   const flow::VectorVolume volume = flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"});
   GpuTracer tracer(ctx(), GetParam(), volume);
   flow::TraceOptions options;

@@ -43,7 +43,8 @@ TEST_P(GpuPathlineTest, ProbeSamplesEqualTheCpusSampler) {
   std::mt19937_64 rng(5);
   const glm::vec3 lower(volume.domain.lower), upper(volume.domain.upper);
   std::uniform_real_distribution<float> u(-0.05f, 1.05f);
-  for (int i = 0; i < 3000; ++i) points.push_back(lower + glm::vec3(u(rng), u(rng), u(rng)) * (upper - lower));
+  for (int i = 0; i < 3000; ++i)
+    points.push_back(lower + glm::vec3(u(rng), u(rng), u(rng)) * (upper - lower));
   for (const shared::Region& r : volume.regions.regions) points.push_back(r.lower);
   std::vector<flow::VectorSample> samples(points.size());
   probe.sample(points, samples);
@@ -87,10 +88,9 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
       cpu.advance({times[i], &volumes[i], {}}, {times[i + 1], &volumes[i + 1], {}});
       VectorProbe* a = probes[i].get();
       VectorProbe* b = probes[i + 1].get();
-      gpu.advance({times[i], &volumes[i],
-                   [a](auto cells, auto out) { a->sample(cells, out); }},
-                  {times[i + 1], &volumes[i + 1],
-                   [b](auto cells, auto out) { b->sample(cells, out); }});
+      gpu.advance(
+          {times[i], &volumes[i], [a](auto cells, auto out) { a->sample(cells, out); }},
+          {times[i + 1], &volumes[i + 1], [b](auto cells, auto out) { b->sample(cells, out); }});
     }
     for (const bool streaks : {false, true}) {
       const flow::TraceSet want = streaks ? cpu.streaklines() : cpu.pathlines();
@@ -110,8 +110,8 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
     }
     const flow::TraceSet paths = cpu.pathlines();
     EXPECT_GT(paths.lineCount(), 48u * 3);
-    EXPECT_NE(std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_OUT_OF_DOMAIN),
-              0);
+    EXPECT_NE(
+        std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_OUT_OF_DOMAIN), 0);
     EXPECT_NE(std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_MAX_TIME), 0);
   }
 }

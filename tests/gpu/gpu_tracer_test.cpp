@@ -167,8 +167,8 @@ TEST_P(GpuTracerTest, MatchesCpuOnAbcInEveryStepModeAndDirection) {
     options.stepMode = mode;
     options.stepSize = mode == flow::StepMode::Time ? 1e-3f : 0.25f;
     options.maxSteps = 200;
-    options.direction = mode == flow::StepMode::Arc ? flow::Direction::Backward
-                                                    : flow::Direction::Both;
+    options.direction =
+        mode == flow::StepMode::Arc ? flow::Direction::Backward : flow::Direction::Both;
     SCOPED_TRACE(static_cast<int>(mode));
     compare(volume, seedsIn(volume, 48), options);
   }
@@ -328,9 +328,9 @@ TEST_P(GpuTracerTest, LinearInterpolantMatchesCpu) {
   small.levels = 3;
   const double pi = std::numbers::pi;
   const flow::VectorVolume wrapped = flow::buildVectorVolume(
-      testing::randomAmr(4, small, [&](glm::dvec3 p) {
-        return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0), 0.3);
-      }),
+      testing::randomAmr(
+          4, small,
+          [&](glm::dvec3 p) { return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0), 0.3); }),
       {{"vx", "vy", "vz"}, "v"}, periodic);
   options.vorticity = false;
   compare(wrapped, seedsIn(wrapped, 32), options);
@@ -345,10 +345,12 @@ TEST_P(GpuTracerTest, PeriodicFlowMatchesCpuAcrossEveryFace) {
   layout.rootCells = glm::ivec3(3, 3, 3);  // 12 finest cells per axis
   const double pi = std::numbers::pi;
   const bricks::AmrField field = testing::randomAmr(4, layout, [&](glm::dvec3 p) {
-    return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0), 0.4 * std::cos(2.0 * pi * p.y / 12.0) + 0.3);
+    return glm::vec3(0.8, 0.5 * std::sin(2.0 * pi * p.x / 12.0),
+                     0.4 * std::cos(2.0 * pi * p.y / 12.0) + 0.3);
   });
-  const flow::VectorVolume volume = flow::buildVectorVolume(
-      field, {{"vx", "vy", "vz"}, "v"}, testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
+  const flow::VectorVolume volume =
+      flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"},
+                              testing::periodicVolume(flow::PeriodicAxes{true, true, true}));
   flow::TraceOptions options;
   options.maxSteps = 400;
   const flow::SeedList seeds = seedsIn(volume, 32);
@@ -377,9 +379,8 @@ TEST_P(GpuTracerTest, LongLinesStreamedInRoundsMatchCpu) {
   testing::RandomAmrOptions layout;
   layout.levels = 2;
   layout.rootCells = glm::ivec3(12, 12, 4);
-  const bricks::AmrField field = testing::randomAmr(3, layout, [&](glm::dvec3 p) {
-    return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0);
-  });
+  const bricks::AmrField field = testing::randomAmr(
+      3, layout, [&](glm::dvec3 p) { return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0); });
   const flow::VectorVolume volume = volumeOf(field);
   const std::vector<glm::dvec3> seeds{{17.0, 12.0, 4.1}, {12.0, 4.5, 2.0}, {15.0, 15.0, 6.0}};
   flow::TraceOptions options;
@@ -462,9 +463,8 @@ TEST_P(GpuTracerTest, Rk45StreamedInRoundsMatchesOneRound) {
   layout.levels = 2;
   layout.rootCells = glm::ivec3(12, 12, 4);
   const glm::dvec3 centre(12.0, 12.0, 4.0);
-  const bricks::AmrField field = testing::randomAmr(3, layout, [&](glm::dvec3 p) {
-    return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0);
-  });
+  const bricks::AmrField field = testing::randomAmr(
+      3, layout, [&](glm::dvec3 p) { return glm::vec3(-(p.y - centre.y), p.x - centre.x, 0.0); });
   const flow::VectorVolume volume = volumeOf(field);
   const std::vector<glm::dvec3> seeds{{17.0, 12.0, 4.1}, {12.0, 4.5, 2.0}, {15.0, 15.0, 6.0}};
   flow::TraceOptions options;

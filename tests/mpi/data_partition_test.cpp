@@ -45,8 +45,8 @@ TEST(DataPartition, BoxesTileTheDomain) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed)
     for (const int parts : {1, 2, 3, 5})
       for (const double halo : {0.0, 6.0}) {
-        SCOPED_TRACE(::testing::Message() << "seed " << seed << ", " << parts << " parts, halo "
-                                          << halo);
+        SCOPED_TRACE(::testing::Message()
+                     << "seed " << seed << ", " << parts << " parts, halo " << halo);
         testing::RandomAmrOptions layout;
         layout.levels = 3;
         const bricks::AmrField f = testing::randomAmr(seed, layout);

@@ -37,8 +37,8 @@ using ::testing::HasSubstr;
 std::string launcher(int ranks, bool validated = false) {
   return std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
          (validated ? "AMRSTREAM_VALIDATION=1 " : "") + AMRSTREAM_MPIEXEC +
-         (validated ? " -x AMRSTREAM_VALIDATION" : "") +
-         " --oversubscribe --bind-to none -np " + std::to_string(ranks);
+         (validated ? " -x AMRSTREAM_VALIDATION" : "") + " --oversubscribe --bind-to none -np " +
+         std::to_string(ranks);
 }
 
 testing::Outcome mpirun(int ranks, const std::string& arguments, bool validated = false) {
@@ -118,9 +118,10 @@ TEST_F(MpiTraceTest, BothDirectionsWithPointDataOnTheCpu) {
 }
 
 TEST_F(MpiTraceTest, ForwardOnAPeriodicFieldFromASeedGrid) {
-  expectRanksAgree("trace builtin:abc --backend cpu --seed-grid 4,3,2 --steps 800 "
-                   "--direction forward --vorticity",
-                   {2, 3});
+  expectRanksAgree(
+      "trace builtin:abc --backend cpu --seed-grid 4,3,2 --steps 800 "
+      "--direction forward --vorticity",
+      {2, 3});
 }
 
 // The lines handed on between ranks that a run printed ("lines handed on 3 / 0 / 5"), summed;
@@ -150,9 +151,10 @@ TEST_F(MpiTraceTest, RebalanceStepsAreForSeeds) {
 
 // Enough seeds for several blocks of the Morton order on each rank.
 TEST_F(MpiTraceTest, ManyBlocksOfSeedsDealtRoundTheRanks) {
-  expectRanksAgree("trace builtin:rotation --backend cpu --count 13000 --steps 40 "
-                   "--point-data none",
-                   {2, 3});
+  expectRanksAgree(
+      "trace builtin:rotation --backend cpu --count 13000 --steps 40 "
+      "--point-data none",
+      {2, 3});
 }
 
 // The pieces' lines read as one process's (dist::GatheredTraces orders them by direction and
@@ -194,9 +196,8 @@ class MpiPiecesTest : public MpiTraceTest {
     flow::TraceSet one = output::readVtpTraces(path("one.vtp"));
     const std::size_t total = one.lineCount();
     setDirectionsByHalves(one, 0, total);
-    const testing::Outcome run =
-        mpirun(3, arguments + (overData ? " --distribute data" : "") + " --pieces --out " +
-                      path("lines.pvtp"));
+    const testing::Outcome run = mpirun(3, arguments + (overData ? " --distribute data" : "") +
+                                               " --pieces --out " + path("lines.pvtp"));
     ASSERT_EQ(run.status, 0) << run.output;
     EXPECT_THAT(run.output,
                 HasSubstr("(3 pieces lines_0.vtp.., " + std::to_string(total) + " polylines"));
@@ -268,8 +269,8 @@ class MpiGpuTraceTest : public MpiTraceTest, public ::testing::WithParamInterfac
   // output.
   std::string expectValidatedRanksAgree(const std::string& arguments, const std::string& ranked,
                                         int ranks) {
-    const testing::Outcome single = testing::runAmrstream(
-        arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
+    const testing::Outcome single =
+        testing::runAmrstream(arguments + " --out " + path("one.vtp"), "AMRSTREAM_VALIDATION=1");
     EXPECT_EQ(single.status, 0) << single.output;
     const testing::Outcome run =
         mpirun(ranks, arguments + ranked + " --out " + path("ranks.vtp"), true);
@@ -297,10 +298,10 @@ TEST_P(MpiGpuTraceTest, RebalancedRoundsEqualOneProcess) {
 // Over data on each GPU backend (lavapipe, validation layers on every rank), against one process
 // on the same backend: lines handed between ranks' GPUs many times.
 TEST_P(MpiGpuTraceTest, OverDataEqualsOneProcess) {
-  const std::string output = expectValidatedRanksAgree(
-      "trace builtin:rotation --backend " + GetParam() +
-          " --count 30 --steps 1200 --point-data none",
-      " --distribute data", 3);
+  const std::string output =
+      expectValidatedRanksAgree("trace builtin:rotation --backend " + GetParam() +
+                                    " --count 30 --steps 1200 --point-data none",
+                                " --distribute data", 3);
   EXPECT_THAT(output, HasSubstr("device     MiB per rank"));
 }
 
@@ -343,10 +344,10 @@ TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
   for (const std::string out : {"out.vtp", "out.pvtp --pieces"}) {
     SCOPED_TRACE(out);
     const std::string options = " --backend cpu --count 32 --out " + path(out);
-    const testing::Outcome run = testing::runAmrstream(
-        "trace " + path("good.exa") + options + " : -np 1 " + AMRSTREAM_BINARY + " trace " +
-            path("bad.exa") + options,
-        "timeout 120 env " + launcher(2));
+    const testing::Outcome run =
+        testing::runAmrstream("trace " + path("good.exa") + options + " : -np 1 " +
+                                  AMRSTREAM_BINARY + " trace " + path("bad.exa") + options,
+                              "timeout 120 env " + launcher(2));
     EXPECT_EQ(run.status, 2) << run.output;
     EXPECT_THAT(run.output, HasSubstr("amrstream: error: rank 2 of 3: "));
     EXPECT_THAT(run.output, HasSubstr("bad.velx.scalars: holds 1000 bytes"));
@@ -393,10 +394,10 @@ class MpiDataTraceTest : public MpiTraceTest {
 
 // Circles about the middle cross the parts' faces again and again.
 TEST_F(MpiDataTraceTest, CirclesCrossingThePartsManyTimes) {
-  const std::string output =
-      expectDataRanksAgree("trace builtin:rotation --backend cpu --count 40 --steps 2500 "
-                           "--point-data none",
-                           {2, 3, 5});
+  const std::string output = expectDataRanksAgree(
+      "trace builtin:rotation --backend cpu --count 40 --steps 2500 "
+      "--point-data none",
+      {2, 3, 5});
   // 80 lines handed on hundreds of times.
   EXPECT_GT(handOffs(output), 100) << output;
 }
@@ -417,8 +418,9 @@ TEST_F(MpiDataTraceTest, NarrowAndWideHalosAndShortRounds) {
 TEST_F(MpiDataTraceTest, LongStepsPastTheFaces) {
   for (const char* halo : {" --halo-steps 1", " --halo-steps 2"}) {
     SCOPED_TRACE(halo);
-    const std::string one = "trace builtin:rotation --backend cpu --count 60 --steps 500 "
-                            "--step-mode arc --step-size 3 --point-data none";
+    const std::string one =
+        "trace builtin:rotation --backend cpu --count 60 --steps 500 "
+        "--step-mode arc --step-size 3 --point-data none";
     expectRanksAgree(one + " --distribute data" + halo, {2, 3}, one);
   }
 }
@@ -426,10 +428,10 @@ TEST_F(MpiDataTraceTest, LongStepsPastTheFaces) {
 // The ABC flow on its periodic box: lines leave through every face and come back through the
 // opposite one, into other ranks' parts; samples near a face reach the cells on the other side.
 TEST_F(MpiDataTraceTest, PeriodicAxesAcrossTheParts) {
-  const std::string output =
-      expectDataRanksAgree("trace builtin:abc --backend cpu --count 40 --steps 800 --step-mode arc "
-                           "--step-size 1 --vorticity --halo-steps 2",
-                           {2, 3, 4});
+  const std::string output = expectDataRanksAgree(
+      "trace builtin:abc --backend cpu --count 40 --steps 800 --step-mode arc "
+      "--step-size 1 --vorticity --halo-steps 2",
+      {2, 3, 4});
   EXPECT_GT(handOffs(output), 0) << output;
 }
 
@@ -439,12 +441,14 @@ TEST_F(MpiDataTraceTest, BothDirectionsWithPointDataAndVorticity) {
 }
 
 TEST_F(MpiDataTraceTest, CellAndTimeModesAndEndpointsOnly) {
-  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 80 --step-mode cell "
-                       "--direction forward",
-                       {3});
-  expectDataRanksAgree("trace builtin:swirl --backend cpu --count 80 --step-mode time "
-                       "--integrator rk2 --endpoints-only",
-                       {2});
+  expectDataRanksAgree(
+      "trace builtin:cloud --backend cpu --count 80 --step-mode cell "
+      "--direction forward",
+      {3});
+  expectDataRanksAgree(
+      "trace builtin:swirl --backend cpu --count 80 --step-mode time "
+      "--integrator rk2 --endpoints-only",
+      {2});
 }
 
 // Seeds on every plane of finest cells across the domain (512 finest cells wide), the parts'
@@ -460,22 +464,24 @@ TEST_F(MpiDataTraceTest, LinesThatStartAndEndOnTheFaces) {
 // Rk45 over data: steps of varying size, each trying up to `--max-step`, whose stages may sample
 // much farther than a step moves (the halo allows for it); and the cloud's level jumps.
 TEST_F(MpiDataTraceTest, Rk45StepsAcrossTheParts) {
-  const std::string output =
-      expectDataRanksAgree("trace builtin:rotation --backend cpu --count 40 --steps 600 "
-                           "--integrator rk45 --step-size 0.1 --max-step 0.3 --point-data none",
-                           {2, 3});
+  const std::string output = expectDataRanksAgree(
+      "trace builtin:rotation --backend cpu --count 40 --steps 600 "
+      "--integrator rk45 --step-size 0.1 --max-step 0.3 --point-data none",
+      {2, 3});
   EXPECT_GT(handOffs(output), 10) << output;
-  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 60 --steps 300 "
-                       "--integrator rk45 --max-step 0.3 --halo-steps 2",
-                       {3});
+  expectDataRanksAgree(
+      "trace builtin:cloud --backend cpu --count 60 --steps 300 "
+      "--integrator rk45 --max-step 0.3 --halo-steps 2",
+      {3});
 }
 
 // The linear interpolant over data, with point data and vorticity (their gradients too): the
 // cells a sample reaches have every face neighbour their gradients were fitted to.
 TEST_F(MpiDataTraceTest, LinearInterpolantAcrossTheParts) {
-  expectDataRanksAgree("trace builtin:cloud --backend cpu --count 80 --steps 500 "
-                       "--interpolant linear --vorticity --halo-steps 1",
-                       {2, 3});
+  expectDataRanksAgree(
+      "trace builtin:cloud --backend cpu --count 80 --steps 500 "
+      "--interpolant linear --vorticity --halo-steps 1",
+      {2, 3});
 }
 
 // What a run over data printed of the values each rank read ("read       each rank its part's

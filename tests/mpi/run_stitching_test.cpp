@@ -76,8 +76,7 @@ TEST(RunsByPiece, SendEachRunToTheRankWritingItsLineAndStitchThere) {
     }
     // A piece's runs do not make the lines of another range.
     if (rank > 0) {
-      EXPECT_THROW(stitchRuns({piece}, layout, pieceLines(kLines, 0, kRanks)),
-                   std::runtime_error);
+      EXPECT_THROW(stitchRuns({piece}, layout, pieceLines(kLines, 0, kRanks)), std::runtime_error);
     }
   }
 }

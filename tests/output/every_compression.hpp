@@ -13,8 +13,7 @@ namespace amrstream::testing {
 inline const auto kEveryCompression = ::testing::Values(
     output::Compression::None, output::Compression::ZLib, output::Compression::LZ4);
 
-inline std::string compressionTestName(
-    const ::testing::TestParamInfo<output::Compression>& info) {
+inline std::string compressionTestName(const ::testing::TestParamInfo<output::Compression>& info) {
   return std::string(output::compressionName(info.param));
 }
 

@@ -51,8 +51,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path dir = argv[1];
-  const TraceSet expected =
-      testing::sampleTraces(testing::kSamplePointCounts);
+  const TraceSet expected = testing::sampleTraces(testing::kSamplePointCounts);
   int failures = 0;
   const auto report = [&](const fs::path& path, const std::string& problem) {
     std::printf("read_vtk_written_vtp: %s: %s\n", path.c_str(),

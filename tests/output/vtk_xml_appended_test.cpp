@@ -1,4 +1,3 @@
-#include "every_compression.hpp"
 #include "output/vtk_xml_appended.hpp"
 
 #include <gmock/gmock.h>
@@ -13,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "every_compression.hpp"
 #include "output/vtk_xml_file.hpp"
 #include "temp_dir_test.hpp"
 

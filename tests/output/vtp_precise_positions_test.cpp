@@ -130,7 +130,8 @@ TEST_P(VtpPrecisePositions, MissingLowPartsAreInconsistentTraces) {
   EXPECT_THROW(write(traces), std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpPrecisePositions, kEveryCompression, compressionTestName);
+INSTANTIATE_TEST_SUITE_P(EveryCompression, VtpPrecisePositions, kEveryCompression,
+                         compressionTestName);
 
 }  // namespace
 }  // namespace amrstream::testing

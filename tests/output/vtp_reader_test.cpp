@@ -355,11 +355,13 @@ TEST_F(VtpReader, RefusesACompressedArrayThatWouldNotFitInMemory) {
   const double memory = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
   const std::uint64_t values = std::max<std::uint64_t>(3'000'000'000, 0.75 * memory / 8 + 1);
   const std::uint64_t compressed = values / 1032 + 1;  // what deflate could inflate that far
-  const std::string header = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+  const std::string header =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
       "byte_order=\"LittleEndian\" header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">"
       "<PolyData><Piece NumberOfPoints=\"1\" NumberOfLines=\"1\"><Lines>"
       "<DataArray type=\"Int8\" Name=\"connectivity\" format=\"appended\" offset=\"0\"/>"
-      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" + std::to_string(values) +
+      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" +
+      std::to_string(values) +
       "</DataArray></Lines></Piece></PolyData><AppendedData encoding=\"raw\">_";
   std::string text = header;
   for (const std::uint64_t word : {std::uint64_t(1), values, std::uint64_t(0), compressed})

@@ -92,9 +92,8 @@ TEST_F(VtpWriterFields, WritesChannelsAndVtkStreamTracersVorticityArrays) {
   std::vector<std::string> names;
   for (const VtpArray& array : vtp.arrays)
     if (array.section == "PointData") names.push_back(array.name());
-  EXPECT_EQ(names, (std::vector<std::string>{"vel", "dens", "temp", "IntegrationTime",
-                                             "Vorticity", "Rotation", "AngularVelocity",
-                                             "Speed"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"vel", "dens", "temp", "IntegrationTime", "Vorticity",
+                                             "Rotation", "AngularVelocity", "Speed"}));
 }
 
 TEST_F(VtpWriterFields, AChannelNamedLikeOurArraysGetsASuffix) {
@@ -134,10 +133,10 @@ TEST_F(VtpWriterFields, PeriodicLinesAreSplitWhereTheyWrap) {
             (std::vector<std::int64_t>{2, 4, 6}));
   EXPECT_EQ(vtp.array("CellData", "SeedIds").values<std::int32_t>(),
             (std::vector<std::int32_t>{3, 3, 3}));
-  EXPECT_EQ(vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
-            (std::vector<std::int32_t>{AMRSTREAM_REASON_PERIODIC_WRAP,
-                                       AMRSTREAM_REASON_PERIODIC_WRAP,
-                                       AMRSTREAM_REASON_MAX_STEPS}));
+  EXPECT_EQ(
+      vtp.array("CellData", "ReasonForTermination").values<std::int32_t>(),
+      (std::vector<std::int32_t>{AMRSTREAM_REASON_PERIODIC_WRAP, AMRSTREAM_REASON_PERIODIC_WRAP,
+                                 AMRSTREAM_REASON_MAX_STEPS}));
   const auto points = vtp.array("Points", "Points").values<glm::vec3>();
   EXPECT_EQ(points[2].x, 0.05f);
   EXPECT_EQ(points[4].x, 0.95f);

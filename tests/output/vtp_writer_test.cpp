@@ -1,4 +1,3 @@
-#include "every_compression.hpp"
 #include "output/vtp_writer.hpp"
 
 #include <gmock/gmock.h>
@@ -18,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "every_compression.hpp"
 #include "sample_traces.hpp"
 #include "vtp_test_reader.hpp"
 
@@ -202,8 +202,7 @@ TEST_P(VtpWriter, EscapesTheVectorNameInXml) {
 
 TEST_P(VtpWriter, RenamesAVectorThatWouldCollideWithSpeedOrTime) {
   for (const std::string name : {"Speed", "IntegrationTime"}) {
-    const VtpFile vtp =
-        writeAndRead(sampleTraces(kSamplePointCounts, name.c_str()));
+    const VtpFile vtp = writeAndRead(sampleTraces(kSamplePointCounts, name.c_str()));
     EXPECT_EQ(vtp.pointData.at("Vectors"), name + "_vector");
     EXPECT_EQ(vtp.array("PointData", name + "_vector").components(), 3);
     EXPECT_EQ(vtp.array("PointData", name).components(), 1);

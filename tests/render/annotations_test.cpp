@@ -1,13 +1,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "glm_pixel.hpp"
-
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <vector>
 
+#include "glm_pixel.hpp"
 #include "render/annotations/axes.hpp"
 #include "render/annotations/line_drawing.hpp"
 #include "render/annotations/overlay_text.hpp"

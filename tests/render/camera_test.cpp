@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "glm_pixel.hpp"
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <vector>
+
+#include "glm_pixel.hpp"
 
 namespace amrstream::render {
 namespace {
@@ -37,13 +37,13 @@ TEST(CameraFraming, EveryPointOfRandomTraceSetsIsInTheImage) {
   for (int set = 0; set < 200; ++set) {
     // A cluster of "trace points" somewhere in a 1000-cell domain, thin or round.
     const glm::vec3 centre = 1000.0f * glm::vec3(unit(random), unit(random), unit(random));
-    const glm::vec3 spread = glm::vec3(unit(random), unit(random), unit(random)) *
-                             (1.0f + 300.0f * unit(random));
+    const glm::vec3 spread =
+        glm::vec3(unit(random), unit(random), unit(random)) * (1.0f + 300.0f * unit(random));
     std::vector<glm::vec3> points;
     glm::vec3 lower(INFINITY), upper(-INFINITY);
     for (int i = 0; i < 200; ++i) {
-      const glm::vec3 p = centre + spread * (2.0f * glm::vec3(unit(random), unit(random),
-                                                              unit(random)) - 1.0f);
+      const glm::vec3 p =
+          centre + spread * (2.0f * glm::vec3(unit(random), unit(random), unit(random)) - 1.0f);
       points.push_back(p);
       lower = glm::min(lower, p), upper = glm::max(upper, p);
     }

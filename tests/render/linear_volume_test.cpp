@@ -89,8 +89,8 @@ class LinearVolumeTest : public testing::GpuTest,
     for (std::uint32_t py = 0; py < kSize; ++py)
       for (std::uint32_t px = 0; px < kSize; ++px) {
         const glm::vec2 ndc = (glm::vec2(px, py) + 0.5f) / float(kSize) * 2.0f - 1.0f;
-        const glm::dvec3 d = glm::normalize(glm::dvec3(view.forward + ndc.x * tanHalfFov * view.right -
-                                                       ndc.y * tanHalfFov * view.up));
+        const glm::dvec3 d = glm::normalize(glm::dvec3(
+            view.forward + ndc.x * tanHalfFov * view.right - ndc.y * tanHalfFov * view.up));
         const glm::dvec3 o(view.eye);
         const double t0 = (double(upper.x) - o.x) / d.x, t1 = (double(lower.x) - o.x) / d.x;
         const glm::dvec3 in = o + t0 * d, out = o + t1 * d;
@@ -121,8 +121,8 @@ TEST_P(LinearVolumeTest, ShowsALinearScalarAsItsAnalyticIntegral) {
   EXPECT_GT(linear.compared, 1500);
   EXPECT_LE(linear.largest, 1) << "the tent's largest error: " << tent.largest;
   EXPECT_GE(tent.largest, 4) << "the oracle should see the tent's errors at level boundaries";
-  std::cout << "largest pixel error (8-bit levels) over " << linear.compared
-            << " pixels: linear " << linear.largest << ", tent " << tent.largest << "\n";
+  std::cout << "largest pixel error (8-bit levels) over " << linear.compared << " pixels: linear "
+            << linear.largest << ", tent " << tent.largest << "\n";
 }
 
 std::string backendLabel(const ::testing::TestParamInfo<gpu::Backend>& info) {

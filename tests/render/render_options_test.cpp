@@ -26,9 +26,8 @@ class RenderOptionChecks : public ::testing::Test {
     return inputErrorOf([&] { prepareScene(options, cells_, volume_, traces_); });
   }
   std::string errorOfFrames(std::uint32_t frames) {
-    return inputErrorOf([&] {
-      renderImage({"auto"}, RenderOptions{}, cells_, volume_, traces_, frames, false);
-    });
+    return inputErrorOf(
+        [&] { renderImage({"auto"}, RenderOptions{}, cells_, volume_, traces_, frames, false); });
   }
 
   Dataset cells_ = synth::generate("rotation", {1, 1, 512, 1, 0.0});

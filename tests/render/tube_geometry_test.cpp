@@ -21,8 +21,8 @@ TEST(TubeGeometry, TheColourRangeIsTheRangeOverRealPoints) {
   const bricks::AmrField field = synth::generate("cloud", {3, 2, 20'000, 1});
   const flow::VectorVolume volume = flow::buildVectorVolume(
       field, flow::chooseVectorChannels(field, ""), testing::withPointData({"dens"}));
-  const flow::SeedList seeds = flow::randomSeedsInBox(flow::domainLower(volume),
-                                                      0.99 * flow::domainUpper(volume), 64, 2);
+  const flow::SeedList seeds =
+      flow::randomSeedsInBox(flow::domainLower(volume), 0.99 * flow::domainUpper(volume), 64, 2);
   flow::TraceOptions options;
   options.maxSteps = 500;
   const flow::TraceSet traces = flow::traceStreamlines(volume, seeds.points, options);

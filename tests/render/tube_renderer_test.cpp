@@ -123,8 +123,7 @@ class TubeRendererTest : public testing::GpuTest,
     PixelCheck check;
     for (std::uint32_t y = 0; y < kHeight; ++y)
       for (std::uint32_t x = 0; x < kWidth; ++x) {
-        const glm::dvec2 ndc =
-            (glm::dvec2(x, y) + 0.5) / glm::dvec2(kWidth, kHeight) * 2.0 - 1.0;
+        const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(kWidth, kHeight) * 2.0 - 1.0;
         const glm::dvec3 offset =
             ndc.x * double(kWidth) / kHeight * halfHeight * glm::dvec3(view.right) -
             ndc.y * halfHeight * glm::dvec3(view.up);
@@ -141,7 +140,7 @@ class TubeRendererTest : public testing::GpuTest,
           continue;
         }
         const Rgba8 c = image.at(x, y);
-        const bool hit = margin < 0.0, shown = c.r > 50 && c.r > c.b + 30;
+        const bool hit = margin<0.0, shown = c.r> 50 && c.r > c.b + 30;
         check.tubePixels += hit;
         check.mismatches += hit != shown;
       }
@@ -218,8 +217,8 @@ TEST_P(TubeRendererTest, ThinTubesInADeepDomainShowInOrthographicViews) {
 // AMRSTREAM_UPDATE_RENDER_REFERENCE=1 to rewrite the reference (then look at it before committing).
 TEST_P(TubeRendererTest, MatchesTheReferenceImage) {
   const flow::VectorVolume volume = smallVolume();
-  const flow::SeedList seeds = flow::seedsAlongLine(
-      glm::dvec3(0.55, 0.5, 0.3), glm::dvec3(0.95, 0.5, 0.7), 12);
+  const flow::SeedList seeds =
+      flow::seedsAlongLine(glm::dvec3(0.55, 0.5, 0.3), glm::dvec3(0.95, 0.5, 0.7), 12);
   flow::TraceOptions options;
   options.maxSteps = 120;
   const flow::TraceSet traces = flow::traceStreamlines(volume, seeds.points, options);
@@ -252,7 +251,8 @@ TEST_P(TubeRendererTest, MatchesTheReferenceImage) {
   const std::filesystem::path reference =
       std::filesystem::path(directory ? directory : AMRSTREAM_RENDER_REFERENCE_DIR) /
       "rotation_tubes.png";
-  if (const char* update = std::getenv("AMRSTREAM_UPDATE_RENDER_REFERENCE"); update && *update == '1') {
+  if (const char* update = std::getenv("AMRSTREAM_UPDATE_RENDER_REFERENCE");
+      update && *update == '1') {
     writePng(reference, image);
     GTEST_SKIP() << "wrote " << reference;
   }

@@ -1,10 +1,10 @@
 #pragma once
 // Whole-dataset HDF5 reads for tests that check a reader against the file independently.
 
-#include <vector>
-
 #include <gtest/gtest.h>
 #include <hdf5.h>
+
+#include <vector>
 
 namespace amrstream::testing {
 

@@ -135,7 +135,8 @@ TEST(BlockRefiner, ValidatesTheOptions) {
   rejects(GeneratorOptions{-1, 2, 100'000}, "levels");
   rejects(GeneratorOptions{3, 0, 100'000}, "rootBlocks");
   rejects(GeneratorOptions{3, -2, 100'000}, "rootBlocks");
-  rejects(GeneratorOptions{8, (1 << 20) + 1, std::size_t(1) << 60}, "rootBlocks");  // over 2^30 finest cells per axis
+  rejects(GeneratorOptions{8, (1 << 20) + 1, std::size_t(1) << 60},
+          "rootBlocks");  // over 2^30 finest cells per axis
   rejects(GeneratorOptions{3, 2048, std::size_t(1) << 60}, "rootBlocks");  // 4.4e12 root cells
   rejects(GeneratorOptions{3, 2, 8 * kBlockCells - 1}, "targetCells");
   EXPECT_NO_THROW(refineBlocks(GeneratorOptions{8, 1, kBlockCells}, "test", hashedPriority));

@@ -24,7 +24,8 @@ struct Brick {
 // The box is half-open, [lower, upper), on the region lattice.
 struct Region {
   ivec3 lower;
-  uint brickOffset;  // the region's bricks are regionBricks[brickOffset .. brickOffset + brickCount)
+  // The region's bricks are regionBricks[brickOffset .. brickOffset + brickCount).
+  uint brickOffset;
   ivec3 upper;
   uint brickCount;
   float finestCellWidth;  // width of the finest cell among the region's bricks
@@ -60,9 +61,11 @@ struct RegionTreeGrid {
 #define AMRSTREAM_NO_REGION 0xffffffffu
 
 #ifdef __cplusplus
-static_assert(sizeof(Brick) == 32 && offsetof(Brick, size) == 16 && offsetof(Brick, valueOffset) == 28);
+static_assert(sizeof(Brick) == 32 && offsetof(Brick, size) == 16 &&
+              offsetof(Brick, valueOffset) == 28);
 static_assert(sizeof(RegionTreeGrid) == 48 && offsetof(RegionTreeGrid, cells) == 32);
-static_assert(sizeof(Region) == 36 && offsetof(Region, upper) == 16 && offsetof(Region, finestCellWidth) == 32);
+static_assert(sizeof(Region) == 36 && offsetof(Region, upper) == 16 &&
+              offsetof(Region, finestCellWidth) == 32);
 static_assert(sizeof(RegionTreeNode) == 12);
 }  // namespace amrstream::shared
 #endif

@@ -31,10 +31,10 @@ struct TubeBvhNode {
 #define AMRSTREAM_RENDER_AO 1u
 #define AMRSTREAM_RENDER_VOLUME 2u
 #define AMRSTREAM_RENDER_LOG_VOLUME 4u
-#define AMRSTREAM_RENDER_LINEAR_VOLUME 8u  // the volume's scalar through the linear interpolant
-#define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u  // parallel rays from the plane through the eye
-#define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u  // the background colour as it is, no gradient
-#define AMRSTREAM_RENDER_TRANSPARENT 64u  // no background: the image's alpha is the coverage
+#define AMRSTREAM_RENDER_LINEAR_VOLUME 8u      // the volume's scalar through the linear interpolant
+#define AMRSTREAM_RENDER_ORTHOGRAPHIC 16u      // parallel rays from the plane through the eye
+#define AMRSTREAM_RENDER_FLAT_BACKGROUND 32u   // the background colour as it is, no gradient
+#define AMRSTREAM_RENDER_TRANSPARENT 64u       // no background: the image's alpha is the coverage
 #define AMRSTREAM_RENDER_RADIUS_BY_VALUE 128u  // tube radii follow the colour field
 
 // The context volume's transfer function runs from this colour at the low end of its range to
@@ -46,13 +46,14 @@ const vec3 kVolumeHighColour = vec3(1.0, 0.88, 0.70);
 // RenderParams::outlineColour rather than through the colour map.
 #define AMRSTREAM_OUTLINE_VALUE (-1.0e38)
 
-// A pinhole (or orthographic) camera and what one frame draws. A frame adds one jittered sample per pixel to the
-// accumulation buffer; pixels show the mean of the frames since the last reset (frameIndex 0).
+// A pinhole (or orthographic) camera and what one frame draws. A frame adds one jittered sample per
+// pixel to the accumulation buffer; pixels show the mean of the frames since the last reset
+// (frameIndex 0).
 struct RenderParams {
   vec3 eye;
   float halfHeight;  // perspective: tan(fovY / 2); orthographic: half the view's height
-  vec3 forward;  // unit vectors
-  float aspect;  // width / height
+  vec3 forward;      // unit vectors
+  float aspect;      // width / height
   vec3 right;
   uint frameIndex;
   vec3 up;
@@ -70,7 +71,7 @@ struct RenderParams {
   float valueMax;
   float volumeMin;  // scalar (or log10 scalar) range of the transfer function
   float volumeMax;
-  float volumeOpacity;  // extinction per finest cell at the top of the transfer function
+  float volumeOpacity;    // extinction per finest cell at the top of the transfer function
   float volumeStepScale;  // ray-march step in units of the region's finest cell width
   vec3 outlineColour;
   // With AMRSTREAM_RENDER_RADIUS_BY_VALUE: the radius at valueMin as a fraction of tubeRadius

@@ -15,19 +15,19 @@ struct CompactionParams {
 };
 
 struct PointDataParams {
-  vec3 cellsPerPhysical;  // 1 / spacing: derivatives in cell units to physical ones
-  uint channelCount;      // scalar channels sampled at every point
-  uint computeVorticity;  // 1: the curl of the reconstructed vector as well
-  uint linearInterpolant; // 1: tent weights over the cells' linear models (the gradients)
-  uint deepPositions;     // 1: positions are offsets from their regions' corners (line_state.h)
+  vec3 cellsPerPhysical;   // 1 / spacing: derivatives in cell units to physical ones
+  uint channelCount;       // scalar channels sampled at every point
+  uint computeVorticity;   // 1: the curl of the reconstructed vector as well
+  uint linearInterpolant;  // 1: tent weights over the cells' linear models (the gradients)
+  uint deepPositions;      // 1: positions are offsets from their regions' corners (line_state.h)
 };
 
 // The totals of a round's compaction, written by the device for the host and for the indirect
 // dispatch of the point data kernel.
 struct RoundSummary {
-  uint points;         // points emitted by all lines
-  uint liveLines;      // lines still running
-  uvec3 pointGroups;   // workgroups of the point data kernel: (ceil(points / 64), 1, 1)
+  uint points;        // points emitted by all lines
+  uint liveLines;     // lines still running
+  uvec3 pointGroups;  // workgroups of the point data kernel: (ceil(points / 64), 1, 1)
 };
 
 #define AMRSTREAM_COMPACTION_GROUP 256

@@ -11,10 +11,11 @@
 #define AMRSTREAM_REASON_MAX_STEPS 5         // the step limit was reached
 #define AMRSTREAM_REASON_STAGNATION 6        // speed below the terminal speed
 #define AMRSTREAM_REASON_MAX_TIME 7          // |IntegrationTime| reached the time limit
-#define AMRSTREAM_REASON_PERIODIC_WRAP 8     // written only: a polyline piece ends at a periodic face
-#define AMRSTREAM_REASON_SERIES_END 9        // pathlines: the snapshot series ended
+#define AMRSTREAM_REASON_PERIODIC_WRAP 8  // written only: a polyline piece ends at a periodic face
+#define AMRSTREAM_REASON_SERIES_END 9     // pathlines: the snapshot series ended
 
-#define AMRSTREAM_STEP_CELL 0  // RK4 on dx/ds = w(x) v(x): step h in finest cell widths of the region
+#define AMRSTREAM_STEP_CELL \
+  0  // RK4 on dx/ds = w(x) v(x): step h in finest cell widths of the region
 #define AMRSTREAM_STEP_TIME 1  // RK4 on dx/dt = v(x) with a fixed physical dt = h
 #define AMRSTREAM_STEP_ARC 2   // RK4 on dx/ds = w(x) v/|v|: unit speed, step h in cell widths
 

@@ -12,8 +12,8 @@
 
 #include "bricks/amr_field.hpp"
 #include "render/camera.hpp"
-#include "render/image/placed_text.hpp"
 #include "render/image/image.hpp"
+#include "render/image/placed_text.hpp"
 
 namespace amrstream::render {
 

@@ -1,5 +1,3 @@
-#include "render/annotations/axes.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -7,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "render/annotations/axes.hpp"
 #include "render/annotations/overlay_text.hpp"
 #include "render/image/colour_scale.hpp"
 

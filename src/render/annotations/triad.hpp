@@ -8,8 +8,8 @@
 #include <glm/vec2.hpp>
 
 #include "render/camera.hpp"
-#include "render/image/placed_text.hpp"
 #include "render/image/image.hpp"
+#include "render/image/placed_text.hpp"
 
 namespace amrstream::render {
 

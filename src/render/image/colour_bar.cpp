@@ -1,10 +1,9 @@
 #include "render/image/colour_bar.hpp"
 
-#include <glm/common.hpp>
-
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <glm/common.hpp>
 
 #include "render/image/colour_bar_layout.hpp"
 #include "render/image/font.hpp"

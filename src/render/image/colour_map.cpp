@@ -16,14 +16,10 @@ struct NamedMap {
 };
 
 constexpr std::array kNamedMaps = {
-    NamedMap{ColourMap::Viridis, "viridis"},
-    NamedMap{ColourMap::Magma, "magma"},
-    NamedMap{ColourMap::Inferno, "inferno"},
-    NamedMap{ColourMap::Plasma, "plasma"},
-    NamedMap{ColourMap::Cividis, "cividis"},
-    NamedMap{ColourMap::CoolWarm, "coolwarm"},
-    NamedMap{ColourMap::RdBu, "rdbu"},
-    NamedMap{ColourMap::Twilight, "twilight"},
+    NamedMap{ColourMap::Viridis, "viridis"}, NamedMap{ColourMap::Magma, "magma"},
+    NamedMap{ColourMap::Inferno, "inferno"}, NamedMap{ColourMap::Plasma, "plasma"},
+    NamedMap{ColourMap::Cividis, "cividis"}, NamedMap{ColourMap::CoolWarm, "coolwarm"},
+    NamedMap{ColourMap::RdBu, "rdbu"},       NamedMap{ColourMap::Twilight, "twilight"},
 };
 
 bool equalIgnoringCase(std::string_view a, std::string_view b) {

@@ -118,8 +118,7 @@ void checkScale(const ColourScale& s) {
         fmt::format("the range's minimum {} is not below its maximum {}", s.min, s.max));
   if (s.kind == ScaleKind::Log && !(s.min > 0.0))
     throw std::invalid_argument(fmt::format(
-        "a log scale needs a positive minimum, not {}; use symlog for data of both signs",
-        s.min));
+        "a log scale needs a positive minimum, not {}; use symlog for data of both signs", s.min));
   if (s.kind == ScaleKind::SymLog && !(s.linearWidth > 0.0 && std::isfinite(s.linearWidth)))
     throw std::invalid_argument(
         fmt::format("symlog's linear width must be positive, not {}", s.linearWidth));

@@ -75,8 +75,9 @@ void Image::blend(std::uint32_t x, std::uint32_t y, Rgba8 c) {
   const auto channel = [&](std::uint8_t source, std::uint8_t destination) {
     return static_cast<std::uint8_t>(std::lround((source * a + destination * b) / out));
   };
-  set(x, y, {channel(c.r, d.r), channel(c.g, d.g), channel(c.b, d.b),
-             static_cast<std::uint8_t>(std::lround(out * 255.0))});
+  set(x, y,
+      {channel(c.r, d.r), channel(c.g, d.g), channel(c.b, d.b),
+       static_cast<std::uint8_t>(std::lround(out * 255.0))});
 }
 
 }  // namespace amrstream::render

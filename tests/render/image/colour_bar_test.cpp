@@ -162,8 +162,8 @@ TEST(ColourBarTest, GradientCentreRowReproducesTheColourMapTable) {
 TEST(ColourBarTest, ABarOfGivenColoursStacksAboveTheFirst) {
   const glm::vec3 low(0.2f, 0.3f, 0.55f), high(1.0f, 0.88f, 0.7f);
   const ColourBar first{ColourMap::Viridis, {ScaleKind::Linear, 0.0, 1.0}, "speed", ""};
-  ColourBar volume{ColourMap::Viridis, {ScaleKind::Log, 1.0, 1e4}, "dens (volume)", "",
-                   {low, high}, 1};
+  ColourBar volume{
+      ColourMap::Viridis, {ScaleKind::Log, 1.0, 1e4}, "dens (volume)", "", {low, high}, 1};
   Image image(800, 600, kBackground);
   drawColourBar(image, volume);
   const auto below = layoutColourBar(800, 600, first), above = layoutColourBar(800, 600, volume);
