@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "formats/enzo_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
 #include "formats/snapshot_time.hpp"
 #include "fuzz_files.hpp"
 #include "hdf5_recipe.hpp"

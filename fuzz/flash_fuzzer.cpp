@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "formats/flash_reader.hpp"
+#include "formats/flash/flash_reader.hpp"
 #include "formats/load_input.hpp"
 #include "formats/snapshot_time.hpp"
 #include "fuzz_files.hpp"

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "flow/seeds.hpp"
-#include "formats/amrex_reader.hpp"
-#include "formats/enzo_reader.hpp"
-#include "formats/exa_format.hpp"
-#include "formats/flash_reader.hpp"
-#include "formats/gerris_reader.hpp"
+#include "formats/amrex/amrex_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
+#include "formats/exa/exa_format.hpp"
+#include "formats/flash/flash_reader.hpp"
+#include "formats/gerris/gerris_reader.hpp"
 #include "formats/hdf5_handle.hpp"
 #include "fuzz_files.hpp"
 #include "hdf5_recipe.hpp"

@@ -13,7 +13,7 @@
 #include "amrstream/backend.hpp"
 #include "amrstream/dataset.hpp"
 #include "amrstream/log.hpp"
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
 #include "render/camera.hpp"

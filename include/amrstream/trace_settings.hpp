@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "flow/vector_volume.hpp"
 
 namespace amrstream {

@@ -7,7 +7,7 @@
 
 #include "amrstream/backend.hpp"
 #include "amrstream/log.hpp"
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "flow/stored_traces.hpp"
 #include "flow/trace_view.hpp"
 #include "flow/vector_volume.hpp"

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "formats/exa_format.hpp"
+#include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
 #include "util/input_error.hpp"
 

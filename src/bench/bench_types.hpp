@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 
 namespace amrstream::bench {
 

@@ -15,12 +15,12 @@
 #include "bench/bench_runner.hpp"
 #include "dataset_files.hpp"
 #include "dataset_options.hpp"
-#include "dist/mpi_world.hpp"
-#include "dist/rank_agreement.hpp"
-#include "dist/seed_shares.hpp"
 #include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "formats/load_input.hpp"
+#include "mpi/mpi_world.hpp"
+#include "mpi/rank_agreement.hpp"
+#include "mpi/seed_shares.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
 #include "output_paths.hpp"
@@ -177,13 +177,13 @@ PreparedBench prepareBench(const BenchCommandOptions& o) {
   return prepared;
 }
 
-// Under mpirun every rank runs every row on its share of the particles (dist::mortonShares);
+// Under mpirun every rank runs every row on its share of the particles (mpi::mortonShares);
 // rank 0 prints and writes the JSON.
-bench::RankShare rankShare(const dist::MpiWorld& world) {
+bench::RankShare rankShare(const mpi::MpiWorld& world) {
   bench::RankShare share;
   share.ranks = world.size();
   share.indicesOf = [&world](std::span<const glm::dvec3> seeds) {
-    return dist::mortonShares(seeds, world.size())[std::size_t(world.rank())];
+    return mpi::mortonShares(seeds, world.size())[std::size_t(world.rank())];
   };
   share.synchronize = [&world] { world.barrier(); };
   share.maxOf = [&world](double v) { return world.maxOverRanks(v); };
@@ -191,8 +191,8 @@ bench::RankShare rankShare(const dist::MpiWorld& world) {
   return share;
 }
 
-void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
-  PreparedBench prepared = dist::agreed(world, [&] { return prepareBench(o); });
+void runBench(const BenchCommandOptions& o, const mpi::MpiWorld& world) {
+  PreparedBench prepared = mpi::agreed(world, [&] { return prepareBench(o); });
   bench::BenchReport& report = prepared.report;
   const bench::DatasetStats& data = report.dataset;
   const flow::VectorVolume& volume = prepared.volume;
@@ -246,7 +246,7 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
   // Rows synchronise the ranks: a failure here ends them all (main), not by agreement.
   bench::runBenchmark(volume, seeds.points, report.config, report, callbacks);
 
-  dist::agreed(world, [&] {
+  mpi::agreed(world, [&] {
     if (!world.isRoot()) return;
     bench::writeJson(o.json, report);
     fmt::print("\njson       {} ({} rows)\n", o.json, report.rows.size());
@@ -255,7 +255,7 @@ void runBench(const BenchCommandOptions& o, const dist::MpiWorld& world) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, const std::string& commandLine, const dist::MpiWorld& world) {
+void addBenchCommand(CLI::App& app, const std::string& commandLine, const mpi::MpiWorld& world) {
   auto options = std::make_shared<BenchCommandOptions>();
   options->commandLine = commandLine;
   CLI::App* command = app.add_subcommand(

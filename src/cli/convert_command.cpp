@@ -7,7 +7,7 @@
 
 #include "dataset_files.hpp"
 #include "dataset_options.hpp"
-#include "formats/exa_format.hpp"
+#include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
 #include "output_paths.hpp"
 #include "util/stopwatch.hpp"

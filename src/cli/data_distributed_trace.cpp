@@ -7,13 +7,13 @@
 #include <utility>
 
 #include "amrstream/backend.hpp"
-#include "dist/data_partition.hpp"
-#include "dist/data_rounds.hpp"
-#include "dist/rank_agreement.hpp"
-#include "dist/value_windows.hpp"
 #include "flow/line_plan.hpp"
 #include "formats/load_input.hpp"
 #include "gpu/gpu_tracer.hpp"
+#include "mpi/data_partition.hpp"
+#include "mpi/data_rounds.hpp"
+#include "mpi/rank_agreement.hpp"
+#include "mpi/value_windows.hpp"
 #include "rank_rounds.hpp"
 #include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
@@ -30,7 +30,7 @@ void checkDataVolume(const flow::VectorVolume& volume) {
 
 struct RankPart {
   PreparedInput input;
-  dist::DataPartition partition;
+  mpi::DataPartition partition;
   flow::LinePlan plan;
   double halo = 0.0;  // finest cells
   std::size_t allBricks = 0;
@@ -51,7 +51,7 @@ RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
     widest = std::max(widest, region.finestCellWidth);
   // A step's stages from anywhere lines stay before they are handed on (the part and a margin),
   // or from the domain's padding next to it.
-  const dist::StepReach reach = dist::stepReach(volume, options, fastest);
+  const mpi::StepReach reach = mpi::stepReach(volume, options, fastest);
   RankReach r;
   r.margin = (haloSteps - 1) * reach.step * 1.01;
   r.halo = r.margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
@@ -72,13 +72,13 @@ bool readsItsPartAlone(const TraceJobOptions& job) {
 }
 
 // The fastest vector of the whole input: each rank reads its part of a first cut alone.
-double fastestOverRanks(const dist::MpiWorld& world, const TraceJobOptions& job,
+double fastestOverRanks(const mpi::MpiWorld& world, const TraceJobOptions& job,
                         const bricks::AmrField& layoutCells) {
-  const dist::DataPartition first = dist::partitionCells(layoutCells, world.size(), 0.0);
+  const mpi::DataPartition first = mpi::partitionCells(layoutCells, world.size(), 0.0);
   const formats::ValueWindow window =
-      dist::partWindow(first, world.rank(), 0.0, layoutCells.bounds(), {});
+      mpi::partWindow(first, world.rank(), 0.0, layoutCells.bounds(), {});
   // Agreed before the collective: a rank that fails to read ends every rank.
-  const double mine = dist::agreed(world, [&] {
+  const double mine = mpi::agreed(world, [&] {
     const bricks::AmrField part =
         formats::loadInput(job.dataset.input, job.dataset.generator, &window);
     const flow::VectorChannels vector = flow::chooseVectorChannels(part, job.field.vector);
@@ -97,7 +97,7 @@ double fastestOverRanks(const dist::MpiWorld& world, const TraceJobOptions& job,
 // the same cells give the same partition), and the window of values this rank reads: its part
 // grown by the cells it keeps and two finest cells, and the cells whose tents reach them.
 struct RankWindow {
-  dist::DataPartition partition;  // finest-cell units of the field
+  mpi::DataPartition partition;  // finest-cell units of the field
   formats::ValueWindow window;
   bricks::CheckedCells cells;  // the layout, which the second read must give
   flow::VectorVolume layout;   // the cells' bricks and regions, without values
@@ -105,7 +105,7 @@ struct RankWindow {
   std::optional<double> fastest;  // in cell mode
 };
 
-RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
+RankWindow rankWindow(const mpi::MpiWorld& world, const TraceJobOptions& job,
                       std::uint32_t haloSteps) {
   formats::ValueWindow nothing;
   nothing.withChannels = false;
@@ -119,9 +119,9 @@ RankWindow rankWindow(const dist::MpiWorld& world, const TraceJobOptions& job,
   const flow::VectorVolume& layout = r.layout;
   if (job.trace.stepMode == "cell") r.fastest = fastestOverRanks(world, job, layoutCells);
   const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps, r.fastest);
-  r.partition = dist::partitionCells(layoutCells, world.size(), reach.halo);
-  r.window = dist::partWindow(r.partition, world.rank(), reach.kept + 2.0, layoutCells.bounds(),
-                              layout.periodic);
+  r.partition = mpi::partitionCells(layoutCells, world.size(), reach.halo);
+  r.window = mpi::partWindow(r.partition, world.rank(), reach.kept + 2.0, layoutCells.bounds(),
+                             layout.periodic);
   r.cells.lowers.assign(layoutCells.lowers().begin(), layoutCells.lowers().end());
   r.cells.levels.assign(layoutCells.levels().begin(), layoutCells.levels().end());
   return r;
@@ -149,13 +149,13 @@ std::string wholeReadReason(const TraceJobOptions& job) {
   return "with the linear interpolant in cell mode a step's reach depends on its gradients";
 }
 
-RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
+RankPart prepareRank(const mpi::MpiWorld& world, const TraceJobOptions& job, bool keepHistory,
                      std::uint32_t haloSteps) {
   RankPart rank;
   PreparedInput& input = rank.input;
   std::optional<InputShare> share;
   std::optional<double> fastest;
-  std::optional<dist::DataPartition> partition;  // found from the layout, in the field's units
+  std::optional<mpi::DataPartition> partition;  // found from the layout, in the field's units
   bricks::CheckedCells checkedCells;
   if (readsItsPartAlone(job)) {
     RankWindow window = rankWindow(world, job, haloSteps);
@@ -166,14 +166,14 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     share->window.checked = &checkedCells;
     share->layout = std::move(window.layout);
     share->layoutTimes = window.layoutTimes;
-    share->cells = dist::shareOverRanks(world);
+    share->cells = mpi::shareOverRanks(world);
     partition = window.partition;
     share->markOwned = [&world, partition = std::move(window.partition)](
                            const bricks::AmrField& cells, std::vector<std::uint8_t>& owned) {
       // Every rank has read its window (a rank that failed to is in the agreement of the phase
       // around) before they choose the seeds together.
-      dist::agreed(world, [] {});
-      owned = dist::ownedCells(cells, partition, world.rank());
+      mpi::agreed(world, [] {});
+      owned = mpi::ownedCells(cells, partition, world.rank());
     };
   }
   input = prepareInput(job, true, CellsAfter::Keep, share ? &*share : nullptr);
@@ -191,7 +191,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     std::vector<glm::dvec3> seedCells(input.seeds.points.size());
     for (std::size_t i = 0; i < seedCells.size(); ++i)
       seedCells[i] = cells.transform().toCellUnits(input.seeds.points[i]);
-    rank.partition = dist::partitionCells(cells, world.size(), rank.halo, seedCells);
+    rank.partition = mpi::partitionCells(cells, world.size(), rank.halo, seedCells);
   }
   // The parts in the volume's cell units: buildCellLayout centres cells that lie far from the
   // origin.
@@ -201,7 +201,7 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
     rank.partition.upper[k] += shift;
   }
   input.options.pauseOutside =
-      dist::pauseBox(rank.partition, world.rank(), reach.margin, input.volume.periodic);
+      mpi::pauseBox(rank.partition, world.rank(), reach.margin, input.volume.periodic);
   rank.plan = flow::planLines(input.volume, input.seeds.points, input.options.direction);
   rank.allBricks = input.volume.bricks.size();
 
@@ -223,12 +223,12 @@ RankPart prepareRank(const dist::MpiWorld& world, const TraceJobOptions& job, bo
 
 }  // namespace
 
-void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+void traceOverDataDistributed(const mpi::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                               std::uint32_t haloSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   Stopwatch preparing;
-  RankPart rank = dist::agreed(world, [&] {
+  RankPart rank = mpi::agreed(world, [&] {
     checkFiles();
     return prepareRank(world, job, keepHistory, haloSteps);
   });
@@ -237,21 +237,21 @@ void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, 
 
   std::vector<shared::LineState> owned;
   for (const shared::LineState& s : rank.plan.states)
-    if (rank.partition.ownerOf(dist::cellPointOf(s)) == world.rank()) owned.push_back(s);
+    if (rank.partition.ownerOf(mpi::cellPointOf(s)) == world.rank()) owned.push_back(s);
   const double ownedLines = double(owned.size());
 
   // The backend, its device and its tracer for this rank's part.
   job.backend.deviceSlot = unsigned(world.localRank());
   RankTracer tracer;
-  dist::agreed(world, [&] { startRankTracer(tracer, job, input, rank.plan.states.size()); });
+  mpi::agreed(world, [&] { startRankTracer(tracer, job, input, rank.plan.states.size()); });
 
   // Rounds exchange lines and sum the live ones: a failure inside ends every rank (main).
-  dist::RoundStats stats;
+  mpi::RoundStats stats;
   Stopwatch clock;
-  flow::TraceSet runs = dist::traceOverData(world, input.volume, rank.partition, std::move(owned),
-                                            input.options, tracer.advance, &stats);
+  flow::TraceSet runs = mpi::traceOverData(world, input.volume, rank.partition, std::move(owned),
+                                           input.options, tracer.advance, &stats);
   const double seconds = clock.seconds();
-  dist::agreed(world, [&] {
+  mpi::agreed(world, [&] {
     if (tracer.ctx) checkValidation(*tracer.ctx);
   });
   const std::optional<gpu::GpuTracer>& gpuTracer = tracer.gpu;

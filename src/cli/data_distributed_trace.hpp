@@ -1,5 +1,5 @@
 #pragma once
-// `trace --distribute data` on the ranks of an MPI job (dist/data_rounds.hpp): space cut among
+// `trace --distribute data` on the ranks of an MPI job (mpi/data_rounds.hpp): space cut among
 // the ranks by cells, each rank holding the bricks of its part and of a halo, lines handed to the
 // rank that owns where they go once they leave the part by more than a margin. Rank 0 puts every
 // line back together as one polyline and writes the file one process would; with pieces, every
@@ -14,7 +14,7 @@ namespace amrstream::cli {
 
 // `haloSteps`: the halo is as wide as that many steps reach; lines are handed on once they are
 // one step's reach less than that outside the part.
-void traceOverDataDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+void traceOverDataDistributed(const mpi::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                               std::uint32_t haloSteps, const std::function<void()>& checkFiles,
                               const DistributedOutput& output);
 

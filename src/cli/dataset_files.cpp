@@ -4,7 +4,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "formats/enzo_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
 #include "formats/load_input.hpp"
 
 namespace amrstream::cli {

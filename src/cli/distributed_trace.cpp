@@ -6,11 +6,11 @@
 #include <utility>
 
 #include "amrstream/backend.hpp"
-#include "dist/even_lines.hpp"
-#include "dist/gathered_traces.hpp"
-#include "dist/rank_agreement.hpp"
-#include "dist/seed_shares.hpp"
-#include "dist/trace_exchange.hpp"
+#include "mpi/even_lines.hpp"
+#include "mpi/gathered_traces.hpp"
+#include "mpi/rank_agreement.hpp"
+#include "mpi/seed_shares.hpp"
+#include "mpi/trace_exchange.hpp"
 #include "option_checks.hpp"
 #include "output/pvtp_writer.hpp"
 #include "rank_rounds.hpp"
@@ -54,24 +54,24 @@ void printWritten(const std::filesystem::path& path, double lines, double points
 
 }  // namespace
 
-void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput& input,
+void writePieces(const mpi::MpiWorld& world, flow::TraceSet part, PreparedInput& input,
                  const DistributedOutput& output, const std::function<void()>& printSummary) {
   const std::filesystem::path piece = piecePath(output.path, world.rank());
-  flow::TraceSet lines = dist::withoutPoints(part);
+  flow::TraceSet lines = mpi::withoutPoints(part);
   try {
     Stopwatch clock;
     std::vector<flow::TraceSet> own;
     own.push_back(std::move(part));
-    const output::VtpCounts counts = dist::agreed(
-        world, [&] { return output.write(piece, dist::GatheredTraces(std::move(own)), input); });
+    const output::VtpCounts counts = mpi::agreed(
+        world, [&] { return output.write(piece, mpi::GatheredTraces(std::move(own)), input); });
     const double seconds = world.maxOverRanks(clock.seconds());
     const double written = world.sumOverRanks(double(counts.lines));
     const double points = world.sumOverRanks(double(counts.points));
     std::vector<flow::TraceSet> parts =
-        dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(lines)); });
-    dist::agreed(world, [&] {
+        mpi::agreed(world, [&] { return mpi::gatherTraces(world, std::move(lines)); });
+    mpi::agreed(world, [&] {
       if (!world.isRoot()) return;
-      const dist::GatheredTraces traces(std::move(parts));
+      const mpi::GatheredTraces traces(std::move(parts));
       printSummary();
       printTraceSummary(traces.lines(), input.report);
       std::vector<std::filesystem::path> pieces;
@@ -92,9 +92,8 @@ void writePieces(const dist::MpiWorld& world, flow::TraceSet part, PreparedInput
 namespace {
 
 // Over seeds in rounds of `steps` steps, the live lines evened out among the ranks between them
-// (dist/even_lines.hpp): the ranks' runs of each line are put together as over data.
-void traceInRebalancedRounds(const dist::MpiWorld& world, TraceJobOptions& job,
-                             PreparedInput& input,
+// (mpi/even_lines.hpp): the ranks' runs of each line are put together as over data.
+void traceInRebalancedRounds(const mpi::MpiWorld& world, TraceJobOptions& job, PreparedInput& input,
                              const std::vector<std::vector<std::uint32_t>>& shares,
                              std::uint32_t steps, const DistributedOutput& output) {
   input.options.roundSteps = steps;
@@ -107,13 +106,13 @@ void traceInRebalancedRounds(const dist::MpiWorld& world, TraceJobOptions& job,
     if (mine[plan.layout.seedIds[s.line]] != 0) owned.push_back(s);
 
   RankTracer tracer;
-  dist::agreed(world, [&] { startRankTracer(tracer, job, input, owned.size()); });
-  dist::RoundStats stats;
+  mpi::agreed(world, [&] { startRankTracer(tracer, job, input, owned.size()); });
+  mpi::RoundStats stats;
   Stopwatch clock;
-  flow::TraceSet runs = dist::traceInRounds(world, input.volume, std::move(owned), input.options,
-                                            tracer.advance, dist::evenOutLines(world), &stats);
+  flow::TraceSet runs = mpi::traceInRounds(world, input.volume, std::move(owned), input.options,
+                                           tracer.advance, mpi::evenOutLines(world), &stats);
   const double seconds = clock.seconds();
-  dist::agreed(world, [&] {
+  mpi::agreed(world, [&] {
     if (tracer.ctx) checkValidation(*tracer.ctx);
   });
   input.report.traceSeconds = world.maxOverRanks(seconds);
@@ -133,12 +132,12 @@ void traceInRebalancedRounds(const dist::MpiWorld& world, TraceJobOptions& job,
 
 }  // namespace
 
-void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+void traceDistributed(const mpi::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       std::uint32_t rebalanceSteps, const std::function<void()>& checkFiles,
                       const DistributedOutput& output) {
   if (!world.isRoot()) job.seedsOut.clear();  // rank 0 writes it
   job.backend.deviceSlot = unsigned(world.localRank());
-  PreparedInput input = dist::agreed(world, [&] {
+  PreparedInput input = mpi::agreed(world, [&] {
     checkFiles();
     PreparedInput prepared = prepareInput(job, true, CellsAfter::Release);
     prepared.releaseField();
@@ -149,14 +148,14 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   if (const std::string warning = world.bindingWarning(); !warning.empty())
     fmt::print("note       {}\n", warning);
   const std::vector<std::vector<std::uint32_t>> shares =
-      dist::mortonShares(input.seeds.points, world.size());
+      mpi::mortonShares(input.seeds.points, world.size());
   if (rebalanceSteps > 0)
     return traceInRebalancedRounds(world, job, input, shares, rebalanceSteps, output);
   const std::vector<std::uint32_t>& mine = shares[std::size_t(world.rank())];
   const std::size_t seedCount = input.seeds.points.size();
   flow::SeedList allSeeds = std::exchange(input.seeds, subset(input.seeds, mine));
 
-  flow::TraceSet part = dist::agreed(world, [&] {
+  flow::TraceSet part = mpi::agreed(world, [&] {
     flow::TraceSet traced = std::move(traceSeeds(job, input, HostValues::Release)).assemble();
     for (std::uint32_t& id : traced.seedIds) id = mine[id];
     return traced;
@@ -179,14 +178,14 @@ void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool kee
   };
   if (output.pieces) return writePieces(world, std::move(part), input, output, printRanks);
 
-  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(part)));
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(mpi::partBytes(part)));
   Stopwatch clock;
   std::vector<flow::TraceSet> parts =
-      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(part)); });
+      mpi::agreed(world, [&] { return mpi::gatherTraces(world, std::move(part)); });
   const double gatherSeconds = clock.seconds();
-  dist::agreed(world, [&] {
+  mpi::agreed(world, [&] {
     if (!world.isRoot()) return;
-    const dist::GatheredTraces traces(std::move(parts));
+    const mpi::GatheredTraces traces(std::move(parts));
     printRanks();
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(traces.lines(), input.report);

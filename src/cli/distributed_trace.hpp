@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "dist/mpi_world.hpp"
 #include "flow/trace_view.hpp"
+#include "mpi/mpi_world.hpp"
 #include "output/vtp_writer.hpp"
 #include "trace_job.hpp"
 
@@ -34,13 +34,13 @@ std::filesystem::path piecePath(const std::filesystem::path& pvtp, int rank);
 // `checkFiles` runs first on every rank (the run's inputs and outputs, RunFiles). With
 // `rebalanceSteps` > 0, the ranks trace in rounds of that many steps and even out their live lines
 // between rounds, handing lines on; the output is the same.
-void traceDistributed(const dist::MpiWorld& world, TraceJobOptions job, bool keepHistory,
+void traceDistributed(const mpi::MpiWorld& world, TraceJobOptions job, bool keepHistory,
                       std::uint32_t rebalanceSteps, const std::function<void()>& checkFiles,
                       const DistributedOutput& output);
 
 // Collective. Every rank writes `lines` as its piece, rank 0 the .pvtp listing the pieces and
 // (after `printSummary`) the summary of every rank's lines; a failure anywhere removes them all.
-void writePieces(const dist::MpiWorld& world, flow::TraceSet lines, PreparedInput& input,
+void writePieces(const mpi::MpiWorld& world, flow::TraceSet lines, PreparedInput& input,
                  const DistributedOutput& output, const std::function<void()>& printSummary);
 
 // "1.2e+04 / 9.9e+03": one value per rank, for the summary lines.

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "dataset_options.hpp"
-#include "formats/exa_format.hpp"
+#include "formats/exa/exa_format.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
 #include "output_paths.hpp"

@@ -11,10 +11,10 @@
 #include "bench_command.hpp"
 #include "convert_command.hpp"
 #include "devices_command.hpp"
-#include "dist/mpi_world.hpp"
-#include "dist/rank_agreement.hpp"
 #include "gen_command.hpp"
 #include "info_command.hpp"
+#include "mpi/mpi_world.hpp"
+#include "mpi/rank_agreement.hpp"
 #include "pathlines_command.hpp"
 #include "progress.hpp"
 #include "render_command.hpp"
@@ -28,7 +28,7 @@
 namespace {
 
 // Under mpirun, ranks other than 0 print neither on stdout nor progress: rank 0 speaks for all.
-void quietUnlessRoot(const amrstream::dist::MpiWorld& world) {
+void quietUnlessRoot(const amrstream::mpi::MpiWorld& world) {
   if (world.isRoot()) return;
   std::freopen("/dev/null", "w", stdout);
   amrstream::cli::Progress::silenceAll();
@@ -37,7 +37,7 @@ void quietUnlessRoot(const amrstream::dist::MpiWorld& world) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const amrstream::dist::MpiWorld world;
+  const amrstream::mpi::MpiWorld world;
   quietUnlessRoot(world);
   std::optional<tbb::global_control> threads;
   if (world.size() > 1)
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (!world.isRoot()) return e.get_exit_code();
     return app.exit(e);
-  } catch (const amrstream::dist::RankFailure& e) {
+  } catch (const amrstream::mpi::RankFailure& e) {
     return fail(e.what(), e.exitCode(), true);
   } catch (const amrstream::InputError& e) {
     return fail(e.what(), 2, world.size() == 1);

@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "amrstream/backend.hpp"
-#include "dist/rank_agreement.hpp"
-#include "dist/run_stitching.hpp"
-#include "dist/trace_exchange.hpp"
+#include "mpi/rank_agreement.hpp"
+#include "mpi/run_stitching.hpp"
+#include "mpi/trace_exchange.hpp"
 #include "util/host_threads.hpp"
 #include "util/stopwatch.hpp"
 
@@ -19,7 +19,7 @@ void startRankTracer(RankTracer& tracer, TraceJobOptions& job, PreparedInput& in
   input.report.backend = gpu::backendName(choice.backend);
   if (choice.backend == gpu::Backend::Cpu) {
     input.report.device = hostThreadsText();
-    tracer.advance = dist::cpuRoundAdvance(input.volume, input.options);
+    tracer.advance = mpi::cpuRoundAdvance(input.volume, input.options);
     return;
   }
   Stopwatch setup;
@@ -38,7 +38,7 @@ void startRankTracer(RankTracer& tracer, TraceJobOptions& job, PreparedInput& in
   };
 }
 
-void writeRankRuns(const dist::MpiWorld& world, flow::TraceSet runs, const flow::LineLayout& layout,
+void writeRankRuns(const mpi::MpiWorld& world, flow::TraceSet runs, const flow::LineLayout& layout,
                    PreparedInput& input, const DistributedOutput& output,
                    const std::function<void()>& printRanks) {
   Stopwatch clock;
@@ -46,26 +46,26 @@ void writeRankRuns(const dist::MpiWorld& world, flow::TraceSet runs, const flow:
     // Each rank joins and writes a contiguous range of lines, so that the pieces in rank order
     // hold the lines in one process's order: the runs go to the rank whose piece holds them.
     const std::size_t lineCount = layout.seedIds.size();
-    std::vector<flow::TraceSet> byPiece = dist::runsByPiece(runs, lineCount, world.size());
+    std::vector<flow::TraceSet> byPiece = mpi::runsByPiece(runs, lineCount, world.size());
     runs = {};
     double bytes = 0.0;
     for (int k = 0; k < world.size(); ++k)
-      if (k != world.rank()) bytes += double(dist::partBytes(byPiece[std::size_t(k)]));
+      if (k != world.rank()) bytes += double(mpi::partBytes(byPiece[std::size_t(k)]));
     bytes = world.sumOverRanks(bytes);
     clock.restart();
-    std::vector<flow::TraceSet> mine = dist::agreed(world, [&] {
+    std::vector<flow::TraceSet> mine = mpi::agreed(world, [&] {
       std::vector<flow::TraceSet> received;
       for (int k = 0; k < world.size(); ++k) {
         std::vector<flow::TraceSet> parts =
-            dist::gatherTraces(world, std::move(byPiece[std::size_t(k)]), k);
+            mpi::gatherTraces(world, std::move(byPiece[std::size_t(k)]), k);
         if (k == world.rank()) received = std::move(parts);
       }
       return received;
     });
     const double exchangeSeconds = world.maxOverRanks(clock.seconds());
-    flow::TraceSet lines = dist::agreed(world, [&] {
-      return dist::stitchRuns(std::move(mine), layout,
-                              dist::pieceLines(lineCount, world.rank(), world.size()));
+    flow::TraceSet lines = mpi::agreed(world, [&] {
+      return mpi::stitchRuns(std::move(mine), layout,
+                             mpi::pieceLines(lineCount, world.rank(), world.size()));
     });
     writePieces(world, std::move(lines), input, output, [&] {
       printRanks();
@@ -75,14 +75,14 @@ void writeRankRuns(const dist::MpiWorld& world, flow::TraceSet runs, const flow:
     return;
   }
 
-  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(dist::partBytes(runs)));
+  const double bytes = world.sumOverRanks(world.isRoot() ? 0.0 : double(mpi::partBytes(runs)));
   clock.restart();
   std::vector<flow::TraceSet> parts =
-      dist::agreed(world, [&] { return dist::gatherTraces(world, std::move(runs)); });
+      mpi::agreed(world, [&] { return mpi::gatherTraces(world, std::move(runs)); });
   const double gatherSeconds = clock.seconds();
-  dist::agreed(world, [&] {
+  mpi::agreed(world, [&] {
     if (!world.isRoot()) return;
-    const flow::TraceSet lines = dist::stitchRuns(std::move(parts), layout);
+    const flow::TraceSet lines = mpi::stitchRuns(std::move(parts), layout);
     printRanks();
     fmt::print("gathered   {:.3g} GB to rank 0 in {:.2f} s\n", bytes * 1e-9, gatherSeconds);
     printTraceSummary(lines, input.report);

@@ -6,11 +6,11 @@
 #include <functional>
 #include <optional>
 
-#include "dist/data_rounds.hpp"
-#include "dist/mpi_world.hpp"
 #include "distributed_trace.hpp"
 #include "flow/line_plan.hpp"
 #include "gpu/gpu_tracer.hpp"
+#include "mpi/data_rounds.hpp"
+#include "mpi/mpi_world.hpp"
 #include "trace_job.hpp"
 #include "vk/context.hpp"
 
@@ -20,7 +20,7 @@ namespace amrstream::cli {
 struct RankTracer {
   std::optional<vk::Context> ctx;
   std::optional<gpu::GpuTracer> gpu;  // none on the CPU backend
-  dist::RoundAdvance advance;
+  mpi::RoundAdvance advance;
 };
 
 // Picks the backend for the rank (its local rank's GPU) and readies `tracer` to advance up to
@@ -30,10 +30,10 @@ struct RankTracer {
 void startRankTracer(RankTracer& tracer, TraceJobOptions& job, PreparedInput& input,
                      std::size_t lineCount);
 
-// Collective. Puts every line back together from the ranks' runs (dist::stitchRuns) and writes
+// Collective. Puts every line back together from the ranks' runs (mpi::stitchRuns) and writes
 // them: rank 0 the whole .vtp after `printRanks`, or with pieces every rank a contiguous range
 // of the lines.
-void writeRankRuns(const dist::MpiWorld& world, flow::TraceSet runs, const flow::LineLayout& layout,
+void writeRankRuns(const mpi::MpiWorld& world, flow::TraceSet runs, const flow::LineLayout& layout,
                    PreparedInput& input, const DistributedOutput& output,
                    const std::function<void()>& printRanks);
 

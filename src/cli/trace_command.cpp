@@ -81,7 +81,7 @@ void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
     files.addOutput("--out", piecePath(o.out, rank).string());
 }
 
-void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
+void runTrace(const TraceCommandOptions& o, const mpi::MpiWorld& world) {
   if (o.job.trace.cpuTail > 0 && (o.distribute == "data" || o.rebalanceSteps > 0))
     throw InputError("--cpu-tail",
                      "finishes the last lines of one process's trace: not with --distribute "
@@ -126,7 +126,7 @@ void runTrace(const TraceCommandOptions& o, const dist::MpiWorld& world) {
 
 }  // namespace
 
-void addTraceCommand(CLI::App& app, const dist::MpiWorld& world) {
+void addTraceCommand(CLI::App& app, const mpi::MpiWorld& world) {
   auto options = std::make_shared<TraceCommandOptions>();
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
   addTraceJobOptions(*command, options->job);

@@ -8,8 +8,8 @@
 
 #include "../../shaders/glsl/shared/line_state.h"
 #include "column.hpp"
-#include "integrator.hpp"
 #include "trace_accumulator.hpp"
+#include "trace_options.hpp"
 #include "vector_volume.hpp"
 
 namespace amrstream::flow {

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "integrator.hpp"
 #include "line_steps.hpp"
+#include "trace_options.hpp"
 
 namespace amrstream::flow {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
-#include "integrator.hpp"
 #include "round_block.hpp"
+#include "trace_options.hpp"
 #include "vector_volume.hpp"
 
 namespace amrstream::flow {

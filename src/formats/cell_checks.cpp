@@ -1,4 +1,4 @@
-#include "cell_checks.hpp"
+#include "formats/cell_checks.hpp"
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>

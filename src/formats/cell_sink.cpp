@@ -1,4 +1,4 @@
-#include "cell_sink.hpp"
+#include "formats/cell_sink.hpp"
 
 #include <utility>
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bricks/amr_field.hpp"
-#include "value_window.hpp"
+#include "formats/value_window.hpp"
 
 namespace amrstream::formats {
 

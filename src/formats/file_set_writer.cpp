@@ -1,4 +1,4 @@
-#include "file_set_writer.hpp"
+#include "formats/file_set_writer.hpp"
 
 #include <system_error>
 

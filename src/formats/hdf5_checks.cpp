@@ -1,4 +1,4 @@
-#include "hdf5_checks.hpp"
+#include "formats/hdf5_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cstring>
 #include <limits>
 
-#include "hdf5_handle.hpp"
+#include "formats/hdf5_handle.hpp"
 #include "util/input_error.hpp"
 #include "util/input_file.hpp"
 

@@ -1,4 +1,4 @@
-#include "input_bytes.hpp"
+#include "formats/input_bytes.hpp"
 
 #include <fmt/format.h>
 

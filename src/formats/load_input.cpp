@@ -1,4 +1,4 @@
-#include "load_input.hpp"
+#include "formats/load_input.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "amrex_reader.hpp"
-#include "enzo_reader.hpp"
-#include "exa_format.hpp"
-#include "flash_reader.hpp"
-#include "gerris_reader.hpp"
-#include "hdf5_handle.hpp"
+#include "formats/amrex/amrex_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
+#include "formats/exa/exa_format.hpp"
+#include "formats/flash/flash_reader.hpp"
+#include "formats/gerris/gerris_reader.hpp"
+#include "formats/hdf5_handle.hpp"
 #include "util/input_error.hpp"
 #include "util/input_file.hpp"
 

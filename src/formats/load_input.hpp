@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include "bricks/amr_field.hpp"
+#include "formats/value_window.hpp"
 #include "synth/generators.hpp"
-#include "value_window.hpp"
 
 namespace amrstream::formats {
 

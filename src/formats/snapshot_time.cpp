@@ -1,4 +1,4 @@
-#include "snapshot_time.hpp"
+#include "formats/snapshot_time.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -9,15 +9,15 @@
 #include <set>
 #include <string_view>
 
-#include "amrex_reader.hpp"
-#include "enzo_info.hpp"
-#include "enzo_parameters.hpp"
-#include "enzo_reader.hpp"
-#include "exa_format.hpp"
-#include "flash_file.hpp"
-#include "flash_info.hpp"
-#include "gerris_reader.hpp"
-#include "load_input.hpp"
+#include "formats/amrex/amrex_reader.hpp"
+#include "formats/enzo/enzo_info.hpp"
+#include "formats/enzo/enzo_parameters.hpp"
+#include "formats/enzo/enzo_reader.hpp"
+#include "formats/exa/exa_format.hpp"
+#include "formats/flash/flash_file.hpp"
+#include "formats/flash/flash_info.hpp"
+#include "formats/gerris/gerris_reader.hpp"
+#include "formats/load_input.hpp"
 #include "synth/generators.hpp"
 #include "util/input_error.hpp"
 

@@ -1,4 +1,4 @@
-#include "text_numbers.hpp"
+#include "formats/text_numbers.hpp"
 
 #include <fmt/format.h>
 

@@ -9,9 +9,9 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "flow/cpu_round.hpp"
+#include "flow/cpu_tracer.hpp"
+#include "flow/morton_order.hpp"
 #include "gpu_rounds.hpp"
-#include "morton_order.hpp"
 #include "util/stopwatch.hpp"
 #include "vector_probe.hpp"
 #include "vk/buffer_transfer.hpp"
@@ -40,7 +40,7 @@ flow::Column<shared::LineState> threadOrder(std::span<const shared::LineState> l
   tbb::parallel_for(std::size_t(0), lines.size(), [&](std::size_t i) {
     positions[i] = glm::vec3(lines[i].anchor) + lines[i].offset;
   });
-  const std::vector<std::uint32_t> order = mortonOrder(positions);
+  const std::vector<std::uint32_t> order = flow::mortonOrder(positions);
   flow::Column<shared::LineState> ordered(lines.size());
   tbb::parallel_for(std::size_t(0), order.size(),
                     [&](std::size_t k) { ordered[k] = lines[order[k]]; });

@@ -21,7 +21,7 @@
 
 #include "backend.hpp"
 #include "device_traces.hpp"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/line_plan.hpp"
 #include "flow/round_tracer.hpp"
 #include "flow/trace_set.hpp"

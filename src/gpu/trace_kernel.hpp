@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "backend.hpp"
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "vk/buffer.hpp"
 #include "vk/pipelines.hpp"
 #include "vk/unique_handle.hpp"

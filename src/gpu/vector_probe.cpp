@@ -9,7 +9,7 @@
 #include <cstring>
 
 #include "../../shaders/glsl/shared/line_state.h"
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"

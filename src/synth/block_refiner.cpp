@@ -10,25 +10,11 @@
 #include <queue>
 
 #include "util/input_error.hpp"
+#include "util/morton.hpp"
 
 namespace amrstream::synth {
 
 namespace {
-
-std::uint64_t spreadBits(std::uint32_t v) {  // 21 bits to every third bit of 63
-  std::uint64_t x = v & 0x1fffffu;
-  x = (x | x << 32) & 0x1f00000000ffffull;
-  x = (x | x << 16) & 0x1f0000ff0000ffull;
-  x = (x | x << 8) & 0x100f00f00f00f00full;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
-  x = (x | x << 2) & 0x1249249249249249ull;
-  return x;
-}
-
-std::uint64_t mortonKey(glm::ivec3 p) {
-  return spreadBits(std::uint32_t(p.x)) | spreadBits(std::uint32_t(p.y)) << 1 |
-         spreadBits(std::uint32_t(p.z)) << 2;
-}
 
 struct Candidate {
   double priority;
@@ -93,7 +79,7 @@ std::vector<Block> refineBlocks(const GeneratorOptions& options, const std::stri
   const auto candidate = [&](const Block& block) {
     const double p = priority(blockBox(block, transform));
     return Candidate{std::isnan(p) ? -std::numeric_limits<double>::infinity() : p,
-                     mortonKey(block.lower), block};
+                     mortonKey(glm::uvec3(block.lower)), block};
   };
 
   const int n = options.rootBlocks;
@@ -128,8 +114,9 @@ std::vector<Block> refineBlocks(const GeneratorOptions& options, const std::stri
   }
   for (; !queue.empty(); queue.pop()) leaves.push_back(queue.top().block);
 
-  std::sort(leaves.begin(), leaves.end(),
-            [](const Block& a, const Block& b) { return mortonKey(a.lower) < mortonKey(b.lower); });
+  std::sort(leaves.begin(), leaves.end(), [](const Block& a, const Block& b) {
+    return mortonKey(glm::uvec3(a.lower)) < mortonKey(glm::uvec3(b.lower));
+  });
   return leaves;
 }
 

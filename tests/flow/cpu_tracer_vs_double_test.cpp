@@ -14,7 +14,7 @@
 
 #include "deep_nest.hpp"
 #include "double_tracer.hpp"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
 #include "synth/generators.hpp"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow_test_support.hpp"
 
 namespace amrstream::flow {

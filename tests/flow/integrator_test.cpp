@@ -1,14 +1,13 @@
 // The integrator against analytic answers: constant fields, solid-body rotation, and each
 // termination reason.
 
-#include "flow/integrator.hpp"
-
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "flow/cpu_tracer.hpp"
 #include "flow_test_support.hpp"
 
 namespace amrstream::flow {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/line_steps.hpp"
 #include "flow_test_support.hpp"
 

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "flow/cell_gradients.hpp"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
 

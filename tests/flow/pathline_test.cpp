@@ -12,7 +12,7 @@
 #include <random>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/pathline_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "synth/generators.hpp"

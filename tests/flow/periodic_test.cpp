@@ -7,7 +7,7 @@
 #include <numbers>
 #include <random>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
 #include "synth/abc_field.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/sampler.hpp"
 #include "flow_test_support.hpp"
 #include "volume_options.hpp"

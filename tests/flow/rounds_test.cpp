@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/line_plan.hpp"
 #include "flow/progressive_traces.hpp"
 #include "flow/round_tracer.hpp"

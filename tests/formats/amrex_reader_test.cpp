@@ -2,7 +2,7 @@
 // read back cell by cell, covered coarse cells dropped, with their time, level numbers and
 // periodicity (from job_info); damaged plotfiles are rejected naming the file.
 
-#include "formats/amrex_reader.hpp"
+#include "formats/amrex/amrex_reader.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include <map>
 #include <sstream>
 
-#include "formats/amrex_info.hpp"
+#include "formats/amrex/amrex_info.hpp"
 #include "input_error_of.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"

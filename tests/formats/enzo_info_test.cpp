@@ -2,7 +2,7 @@
 // file read here as text and against cosmology (its time unit must turn InitialTime into the age
 // of its Einstein-de Sitter universe at its redshift), and parameter files written here.
 
-#include "formats/enzo_info.hpp"
+#include "formats/enzo/enzo_info.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-#include "formats/enzo_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
 #include "input_error_of.hpp"
 #include "temp_dir_test.hpp"
 

@@ -1,4 +1,4 @@
-#include "formats/enzo_reader.hpp"
+#include "formats/enzo/enzo_reader.hpp"
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>

@@ -2,7 +2,7 @@
 // axes; truncated, inconsistent and malformed files are rejected with errors naming the file (and
 // line) and the numbers involved.
 
-#include "formats/exa_format.hpp"
+#include "formats/exa/exa_format.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // here with the HDF5 C API read back as their leaf cells with the right values and transform;
 // missing, misshapen, inconsistent and truncated files are rejected with errors naming the file.
 
-#include "formats/flash_reader.hpp"
+#include "formats/flash/flash_reader.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Gerris text leaf dumps: the real vortex-ring dump and small files with known fields read back
 // cell by cell; malformed files are rejected naming the file and the line.
 
-#include "formats/gerris_reader.hpp"
+#include "formats/gerris/gerris_reader.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

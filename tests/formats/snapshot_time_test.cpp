@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/exa_format.hpp"
+#include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
 #include "input_error_of.hpp"
 #include "synth/generators.hpp"

@@ -9,7 +9,7 @@
 
 #include "deep_nest.hpp"
 #include "double_tracer.hpp"
-#include "flow/integrator.hpp"
+#include "flow/trace_options.hpp"
 #include "flow/vector_selection.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "gpu_test.hpp"

@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "bricks/descent_tree.hpp"
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/line_plan.hpp"
 #include "flow/progressive_traces.hpp"
 #include "flow/sampler.hpp"

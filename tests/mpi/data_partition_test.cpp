@@ -2,7 +2,7 @@
 // halves the cells; with one, no rank holds more cells (its box and the halo) than the median
 // cut's larger side.
 
-#include "dist/data_partition.hpp"
+#include "mpi/data_partition.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "random_amr.hpp"
 #include "synth/generators.hpp"
 
-namespace amrstream::dist {
+namespace amrstream::mpi {
 namespace {
 
 std::int64_t volumeOf(glm::ivec3 lower, glm::ivec3 upper) {
@@ -159,4 +159,4 @@ TEST(DataPartition, ParallelPlaneCountsGiveTheSequentialCut) {
 }
 
 }  // namespace
-}  // namespace amrstream::dist
+}  // namespace amrstream::mpi

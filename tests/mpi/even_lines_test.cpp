@@ -2,14 +2,14 @@
 // mean, one more on the first ranks), only ranks above their share send, and no rank sends to
 // itself; checked on hand-made counts and on random ones.
 
-#include "dist/even_lines.hpp"
+#include "mpi/even_lines.hpp"
 
 #include <gtest/gtest.h>
 
 #include <numeric>
 #include <random>
 
-namespace amrstream::dist {
+namespace amrstream::mpi {
 namespace {
 
 void expectEvenedOut(const std::vector<std::uint64_t>& live) {
@@ -58,4 +58,4 @@ TEST(EvenOutMoves, RandomCounts) {
 }
 
 }  // namespace
-}  // namespace amrstream::dist
+}  // namespace amrstream::mpi

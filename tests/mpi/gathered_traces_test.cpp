@@ -1,13 +1,13 @@
 // GatheredTraces: parts of any composition read as one process's lines: forward before backward,
 // each by seed id, with their points; a seed traced twice in one direction is refused.
 
-#include "dist/gathered_traces.hpp"
+#include "mpi/gathered_traces.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-namespace amrstream::dist {
+namespace amrstream::mpi {
 namespace {
 
 // A line of `points` points whose positions encode (seed, direction, k).
@@ -75,4 +75,4 @@ TEST(GatheredTraces, RefuseASeedTracedTwiceInOneDirection) {
 }
 
 }  // namespace
-}  // namespace amrstream::dist
+}  // namespace amrstream::mpi

@@ -20,7 +20,7 @@
 #include <string>
 #include <thread>
 
-#include "dist/gathered_traces.hpp"
+#include "mpi/gathered_traces.hpp"
 #include "output/vtp_reader.hpp"
 #include "run_amrstream.hpp"
 #include "temp_dir_test.hpp"
@@ -157,10 +157,10 @@ TEST_F(MpiTraceTest, ManyBlocksOfSeedsDealtRoundTheRanks) {
       {2, 3});
 }
 
-// The pieces' lines read as one process's (dist::GatheredTraces orders them by direction and
+// The pieces' lines read as one process's (mpi::GatheredTraces orders them by direction and
 // seed id), their points copied out.
 flow::TraceSet mergedPieces(std::vector<flow::TraceSet> pieces) {
-  const dist::GatheredTraces gathered(std::move(pieces));
+  const mpi::GatheredTraces gathered(std::move(pieces));
   flow::TraceSet merged = gathered.lines();
   std::vector<float> scratch;
   for (std::size_t line = 0; line < merged.lineCount(); ++line) {

@@ -1,7 +1,7 @@
 // Runs of lines traced over data: routed to the rank whose piece holds their line (contiguous
 // ranges that tile the lines), and stitched there into whole lines of that range.
 
-#include "dist/run_stitching.hpp"
+#include "mpi/run_stitching.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 
-namespace amrstream::dist {
+namespace amrstream::mpi {
 namespace {
 
 // A run of line `line` ending after `steps` steps, `points` points encoding (line, steps, k).
@@ -82,4 +82,4 @@ TEST(RunsByPiece, SendEachRunToTheRankWritingItsLineAndStitchThere) {
 }
 
 }  // namespace
-}  // namespace amrstream::dist
+}  // namespace amrstream::mpi

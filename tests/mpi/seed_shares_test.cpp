@@ -2,16 +2,16 @@
 // seeds of the Morton order, block k on rank k mod parts; counts within one block of each other;
 // the same split every time.
 
-#include "dist/seed_shares.hpp"
+#include "mpi/seed_shares.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
-#include "gpu/morton_order.hpp"
+#include "flow/morton_order.hpp"
 
-namespace amrstream::dist {
+namespace amrstream::mpi {
 namespace {
 
 std::vector<glm::dvec3> randomPoints(std::size_t n) {
@@ -30,7 +30,7 @@ TEST(MortonShares, DealBlocksOfTheMortonOrderRoundTheRanks) {
       const auto shares = mortonShares(seeds, parts);
       ASSERT_EQ(shares.size(), std::size_t(parts));
       const std::vector<glm::vec3> floats(seeds.begin(), seeds.end());
-      const std::vector<std::uint32_t> order = gpu::mortonOrder(floats);
+      const std::vector<std::uint32_t> order = flow::mortonOrder(floats);
       const std::size_t block =
           std::max<std::size_t>(1, std::min(kSeedBlock, (n + parts - 1) / std::size_t(parts)));
       std::vector<std::vector<std::uint32_t>> expected(shares.size());
@@ -49,4 +49,4 @@ TEST(MortonShares, DealBlocksOfTheMortonOrderRoundTheRanks) {
 }
 
 }  // namespace
-}  // namespace amrstream::dist
+}  // namespace amrstream::mpi

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/seeds.hpp"
 #include "synth/generators.hpp"
 #include "volume_options.hpp"

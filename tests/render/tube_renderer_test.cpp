@@ -12,7 +12,7 @@
 #include <optional>
 #include <random>
 
-#include "flow/integrator.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "flow/seed_strategies.hpp"
 #include "flow/seeds.hpp"
 #include "gpu_test.hpp"

@@ -1,0 +1,399 @@
+#include "formats/amrex/amrex_reader.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "formats/amrex/amrex_fab.hpp"
+#include "formats/amrex/amrex_info.hpp"
+#include "formats/amrex/amrex_text.hpp"
+#include "formats/cell_checks.hpp"
+#include "formats/cell_sink.hpp"
+#include "formats/input_bytes.hpp"
+#include "formats/text_numbers.hpp"
+#include "util/input_error.hpp"
+#include "util/input_file.hpp"
+
+namespace amrstream::formats {
+namespace {
+
+namespace fs = std::filesystem;
+
+using amrex::Box;
+using amrex::boxText;
+using amrex::Cursor;
+using amrex::readBox;
+
+// Ghost cells stored around each box; plotfiles store none.
+constexpr int kMaxGhostCells = 1024;
+
+struct PlotHeader {
+  std::vector<std::string> names;
+  double time = 0.0;
+  int finestLevel = 0;
+  glm::dvec3 probLo{0.0}, probHi{0.0};
+  std::vector<int> ratios;  // level L -> L+1
+  std::vector<Box> domains;
+  std::vector<glm::dvec3> dx;
+  std::vector<int> gridCounts;
+  std::vector<std::string> levelPaths;  // e.g. Level_1/Cell
+};
+
+PlotHeader parseHeader(const fs::path& path) {
+  Cursor in(readWholeFile(path, "the plotfile Header"), path.string());
+  PlotHeader h;
+  const std::string version = in.line("the version line");
+  if (version.rfind("HyperCLaw", 0) != 0)
+    in.fail(fmt::format("version '{}' is not a HyperCLaw plotfile", excerpt(version)));
+  const int ncomp = in.smallInt("the number of variables", 1, 100000);
+  for (int c = 0; c < ncomp; ++c) h.names.push_back(in.line("a variable name"));
+  const int dim = in.smallInt("the dimension", 1, 3);
+  if (dim != 3) in.fail(fmt::format("the plotfile is {}D; amrstream reads 3D plotfiles", dim));
+  h.time = in.real("(the time)");
+  h.finestLevel = in.smallInt("finest_level", 0, bricks::kMaxLevel);
+  const int levels = h.finestLevel + 1;
+  for (int axis = 0; axis < 3; ++axis) h.probLo[axis] = in.real("in prob_lo");
+  for (int axis = 0; axis < 3; ++axis) h.probHi[axis] = in.real("in prob_hi");
+  if (glm::any(glm::lessThanEqual(h.probHi, h.probLo))) in.fail("prob_hi is not above prob_lo");
+  for (int l = 0; l < h.finestLevel; ++l) {
+    const int ratio = in.smallInt("a refinement ratio", 1, 1 << 20);
+    if (!std::has_single_bit(static_cast<unsigned>(ratio)))
+      in.fail(fmt::format("refinement ratio {} is not a power of two", ratio));
+    h.ratios.push_back(ratio);
+  }
+  for (int l = 0; l < levels; ++l) h.domains.push_back(readBox(in, "a level domain box"));
+  for (int l = 0; l < levels; ++l) in.integer("(a level step)");
+  for (int l = 0; l < levels; ++l) {
+    glm::dvec3 dx;
+    for (int axis = 0; axis < 3; ++axis) dx[axis] = in.real("in a level's dx");
+    h.dx.push_back(dx);
+  }
+  if (in.smallInt("coord_sys", 0, 2) != 0) in.fail("only Cartesian plotfiles (coord_sys 0)");
+  in.integer("(bwidth)");
+  for (int l = 0; l < levels; ++l) {
+    if (in.integer("(the level number)") != l) in.fail(fmt::format("expected level {}", l));
+    h.gridCounts.push_back(in.smallInt("a level's grid count", 1, 1 << 30));
+    in.real("(the level time)");
+    in.integer("(the level step)");
+    for (long long g = 0; g < h.gridCounts.back() * 3LL; ++g) {
+      in.real("(a grid's lower extent)");
+      in.real("(a grid's upper extent)");
+    }
+    const std::string levelPath = in.word("the level's path (Level_N/Cell)");
+    const fs::path relative(levelPath);
+    if (relative.is_absolute() || std::ranges::find(relative, "..") != relative.end())
+      in.fail(fmt::format("level path '{}' leads outside the plotfile", excerpt(levelPath)));
+    h.levelPaths.push_back(levelPath);
+  }
+  // Each level's domain is the coarser one refined by their ratio, and the finest spans fewer than
+  // 2^kMaxExtentBits cells per axis: the boxes inside them then fit the cells' arithmetic.
+  for (int l = 0; l < levels; ++l) {
+    const glm::i64vec3 size = h.domains[l].size();
+    for (int a = 0; a < 3; ++a)
+      if (size[a] >= (std::int64_t{1} << bricks::kMaxExtentBits))
+        throw InputError(path.string(),
+                         fmt::format("the level-{} domain {} spans {} cells along axis {}; at "
+                                     "most {} are supported",
+                                     l, boxText(h.domains[l]), size[a], "xyz"[a],
+                                     (std::int64_t{1} << bricks::kMaxExtentBits) - 1));
+    if (l == 0) continue;
+    const std::int64_t ratio = h.ratios[l - 1];
+    const glm::i64vec3 lo = glm::i64vec3(h.domains[l - 1].lo) * ratio;
+    const glm::i64vec3 hi =
+        (glm::i64vec3(h.domains[l - 1].hi) + std::int64_t{1}) * ratio - std::int64_t{1};
+    if (lo != glm::i64vec3(h.domains[l].lo) || hi != glm::i64vec3(h.domains[l].hi))
+      throw InputError(
+          path.string(),
+          fmt::format("the level-{} domain {} is not the level-{} domain {} refined "
+                      "by {}",
+                      l, boxText(h.domains[l]), l - 1, boxText(h.domains[l - 1]), ratio));
+  }
+  return h;
+}
+
+struct FabEntry {
+  Box box;
+  std::string file;
+  long long offset = 0;
+};
+
+struct LevelLayout {
+  int nghost = 0;
+  std::vector<FabEntry> fabs;  // in box order
+};
+
+LevelLayout parseCellHeader(const fs::path& path, int ncomp, int gridCount, const Box& domain,
+                            int level) {
+  Cursor in(readWholeFile(path, "the level header (Cell_H)"), path.string());
+  in.integer("(the version)");
+  in.integer("(how)");
+  const long long fileComps = in.integer("(ncomp)");
+  if (fileComps != ncomp)
+    in.fail(
+        fmt::format("{} components, but the plotfile Header names {} variables", fileComps, ncomp));
+  LevelLayout layout;
+  layout.nghost = in.smallInt("nghost", 0, kMaxGhostCells);
+  in.expect('(', "opening the BoxArray");
+  const long long boxes = in.integer("(the box count)");
+  if (boxes != gridCount)
+    in.fail(fmt::format("{} boxes, but the plotfile Header lists {} grids", boxes, gridCount));
+  in.integer("(the BoxArray tag)");
+  // Entries are added as they are read: the declared count allocates nothing.
+  for (long long b = 0; b < boxes; ++b) {
+    const Box box = readBox(in, "a BoxArray box");
+    if (!domain.contains(box))
+      in.fail(fmt::format("box {} {} lies outside the level-{} domain {}", b, boxText(box), level,
+                          boxText(domain)));
+    layout.fabs.push_back({box, {}, 0});
+  }
+  in.expect(')', "closing the BoxArray");
+  if (in.integer("(the FAB count)") != boxes) in.fail("the FAB count differs from the box count");
+  for (FabEntry& fab : layout.fabs) {
+    if (in.word("'FabOnDisk:'") != "FabOnDisk:") in.fail("expected 'FabOnDisk: FILE OFFSET'");
+    fab.file = in.word("a Cell_D file name");
+    if (fab.file.find('/') != std::string::npos || fab.file == "..")
+      in.fail(fmt::format("FAB file name '{}' is not a plain file name", excerpt(fab.file)));
+    fab.offset = in.integer("(a FAB byte offset)");
+    if (fab.offset < 0) in.fail("negative FAB byte offset");
+  }
+  return layout;
+}
+
+// Per Cell_D file, the offsets of its FABs in increasing order: a FAB's data ends where the next
+// begins.
+std::map<std::string, std::vector<long long>> fabOffsets(const LevelLayout& layout) {
+  std::map<std::string, std::vector<long long>> offsets;
+  for (const FabEntry& fab : layout.fabs) offsets[fab.file].push_back(fab.offset);
+  for (auto& [file, list] : offsets) {
+    std::ranges::sort(list);
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return offsets;
+}
+
+std::optional<std::uint64_t> nextFabOffset(const std::vector<long long>& sorted, long long offset) {
+  const auto next = std::ranges::upper_bound(sorted, offset);
+  if (next == sorted.end()) return std::nullopt;
+  return static_cast<std::uint64_t>(*next);
+}
+
+Box coarsen(const Box& box, int ratio) {
+  auto down = [ratio](int v) { return v >= 0 ? v / ratio : -((-v + ratio - 1) / ratio); };
+  return {glm::ivec3(down(box.lo.x), down(box.lo.y), down(box.lo.z)),
+          glm::ivec3(down(box.hi.x), down(box.hi.y), down(box.hi.z))};
+}
+
+// A FAB left unread (outside a window) must still hold its box's values, at 4 bytes or more
+// each: the box's cells are laid out from the layout alone.
+void requireFabBytes(const fs::path& file, const FabEntry& fab,
+                     const std::vector<long long>& offsets, const Box& stored, int ncomp) {
+  const std::uint64_t size = regularFileSize(file);  // refuses directories and FIFOs by name
+  const std::uint64_t end =
+      nextFabOffset(offsets, fab.offset).value_or(std::max(size, std::uint64_t(fab.offset)));
+  const std::uint64_t held = std::min(end, size) - std::min(std::uint64_t(fab.offset), size);
+  const double needed = double(amrex::cellCount(stored, file.string())) * ncomp * 4.0;
+  if (double(held) < needed)
+    throw InputError(file.string(),
+                     fmt::format("FAB at byte {} holds {} bytes, fewer than the {:.0f} its box {} "
+                                 "needs",
+                                 fab.offset, held, needed, boxText(fab.box)));
+}
+
+fs::path plotfileHeader(const fs::path& directory) {
+  const fs::path headerPath = directory / "Header";
+  std::error_code ec;
+  if (!fs::exists(headerPath, ec))
+    throw InputError(directory.string(), "not an AMReX plotfile: no 'Header' file");
+  return headerPath;
+}
+
+void requireFile(const fs::path& path, const std::string& problem) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path.string(), problem);
+}
+
+}  // namespace
+
+bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow* window,
+                                   WindowedRead* read) {
+  const fs::path headerPath = plotfileHeader(directory);
+  const PlotHeader h = parseHeader(headerPath);
+  const int levels = h.finestLevel + 1;
+  const int ncomp = static_cast<int>(h.names.size());
+
+  // widths[L] = finest cells per level-L cell.
+  std::vector<int> widths(levels, 1);
+  for (int l = h.finestLevel - 1; l >= 0; --l) {
+    const long long width = static_cast<long long>(widths[l + 1]) * h.ratios[l];
+    if (width > (1LL << bricks::kMaxLevel))
+      throw InputError(headerPath.string(), "the refinement ratios exceed 2^20 in total");
+    widths[l] = static_cast<int>(width);
+  }
+  const Box& finestDomain = h.domains[h.finestLevel];
+  const glm::dvec3 spacing = (h.probHi - h.probLo) / glm::dvec3(finestDomain.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!std::isnormal(spacing[axis]))
+      throw InputError(headerPath.string(),
+                       fmt::format("prob_lo {} to prob_hi {} over {} cells along axis {} gives "
+                                   "cells {} wide",
+                                   h.probLo[axis], h.probHi[axis], finestDomain.size()[axis],
+                                   "xyz"[axis], spacing[axis]));
+    if (!(std::abs(h.dx[h.finestLevel][axis] - spacing[axis]) <= 1e-6 * spacing[axis]))
+      throw InputError(headerPath.string(),
+                       fmt::format("finest dx {} differs from (prob_hi - prob_lo) / cells = {}",
+                                   h.dx[h.finestLevel][axis], spacing[axis]));
+  }
+  const bricks::WorldTransform transform{h.probLo, spacing};
+  const glm::ivec3 domainCorners[] = {glm::ivec3(0), glm::ivec3(finestDomain.size()) - 1};
+  const std::uint8_t finestLevels[] = {0, 0};
+  if (const auto problem = unrepresentablePositions(transform, domainCorners, finestLevels))
+    throw InputError(headerPath.string(),
+                     "prob_lo and prob_hi cannot place the cells: " + *problem);
+
+  std::vector<LevelLayout> layouts;
+  for (int l = 0; l < levels; ++l) {
+    const fs::path cellH = directory / (h.levelPaths[l] + "_H");
+    requireFile(cellH, fmt::format("missing level-{} header", l));
+    layouts.push_back(parseCellHeader(cellH, ncomp, h.gridCounts[l], h.domains[l], l));
+  }
+
+  CellSink sink(window, directory.string(), read);
+  for (const std::string& name : h.names) sink.addChannel(name);
+  // Which boxes have leaves and are read, and where their cells go, box after box (the cells'
+  // order); then the boxes in parallel.
+  struct FabPlan {
+    int level = 0;
+    const FabEntry* fab = nullptr;
+    std::size_t at = 0;  // its first cell
+    bool wanted = false;
+  };
+  std::vector<FabPlan> plans;
+  std::vector<std::vector<Box>> coverings(static_cast<std::size_t>(levels));  // finer, coarsened
+  std::vector<std::map<std::string, std::vector<long long>>> levelOffsets;
+  std::size_t total = 0;
+  for (int l = 0; l < levels; ++l) {
+    const fs::path levelDir = (directory / h.levelPaths[l]).parent_path();
+    std::vector<Box>& covering = coverings[std::size_t(l)];
+    if (l < h.finestLevel) {
+      const int ratio = h.ratios[l];
+      for (const FabEntry& fine : layouts[l + 1].fabs) {
+        if (glm::any(glm::notEqual(fine.box.lo % ratio, glm::ivec3(0))) ||
+            glm::any(glm::notEqual((fine.box.hi + 1) % ratio, glm::ivec3(0))))
+          throw InputError((directory / (h.levelPaths[l + 1] + "_H")).string(),
+                           fmt::format("box {} does not cover whole level-{} cells (ratio {})",
+                                       boxText(fine.box), l, ratio));
+        covering.push_back(coarsen(fine.box, ratio));
+      }
+    }
+    levelOffsets.push_back(fabOffsets(layouts[l]));
+    for (const FabEntry& fab : layouts[l].fabs) {
+      const fs::path file = levelDir / fab.file;
+      requireFile(file, fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
+      // A box that finer boxes cover (they are disjoint) has no leaves: its data is not read.
+      std::uint64_t coveredCells = 0;
+      for (const Box& cover : covering) {
+        const glm::i64vec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
+        if (glm::all(glm::lessThanEqual(lo, hi))) {
+          const glm::i64vec3 n = hi - lo + std::int64_t(1);
+          coveredCells += std::uint64_t(n.x * n.y * n.z);
+        }
+      }
+      const glm::i64vec3 boxCells =
+          glm::i64vec3(fab.box.hi) - glm::i64vec3(fab.box.lo) + std::int64_t(1);
+      const std::uint64_t cells = std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
+      const bool wanted =
+          coveredCells < cells &&
+          (!window || window->meets(fab.box.lo * widths[l] - finestDomain.lo,
+                                    (fab.box.hi + 1) * widths[l] - finestDomain.lo, widths[l]));
+      if (read) {
+        ++read->pieces;
+        read->piecesRead += wanted;
+      }
+      if (coveredCells == cells) continue;
+      // The box's cells are laid out before any FAB is read: its FAB must hold them.
+      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+      requireFabBytes(file, fab, levelOffsets.back().at(fab.file), stored, ncomp);
+      if (wanted || !sink.skipsPieces()) plans.push_back({l, &fab, total, wanted});
+      total += cells - coveredCells;
+    }
+  }
+  sink.presize(total);
+
+  std::vector<std::exception_ptr> failures(plans.size());
+  tbb::parallel_for(std::size_t(0), plans.size(), [&](std::size_t p) {
+    try {
+      const FabPlan& plan = plans[p];
+      const int l = plan.level;
+      const FabEntry& fab = *plan.fab;
+      const fs::path file = (directory / h.levelPaths[l]).parent_path() / fab.file;
+      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+      const std::vector<double> values =
+          plan.wanted
+              ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
+                               nextFabOffset(levelOffsets[std::size_t(l)].at(fab.file), fab.offset),
+                               stored, ncomp)
+              : std::vector<double>();
+      const glm::ivec3 size(fab.box.size());
+      std::vector<bool> covered(amrex::cellCount(fab.box, file.string()), false);
+      for (const Box& cover : coverings[std::size_t(l)]) {
+        const glm::ivec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
+        for (int k = lo.z; k <= hi.z; ++k)
+          for (int j = lo.y; j <= hi.y; ++j)
+            for (int i = lo.x; i <= hi.x; ++i) {
+              const glm::ivec3 local = glm::ivec3(i, j, k) - fab.box.lo;
+              covered[(static_cast<std::size_t>(local.z) * size.y + local.y) * size.x + local.x] =
+                  true;
+            }
+      }
+      const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(widths[l])));
+      const glm::ivec3 storedSize(stored.size());
+      const std::size_t points = amrex::cellCount(stored, file.string());
+      std::size_t index = 0, at = plan.at;
+      for (int k = 0; k < size.z; ++k)
+        for (int j = 0; j < size.y; ++j)
+          for (int i = 0; i < size.x; ++i, ++index) {
+            if (covered[index]) continue;
+            const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
+            sink.place(at, cell * widths[l] - finestDomain.lo, ourLevel);
+            const glm::ivec3 s = glm::ivec3(i, j, k) + layouts[l].nghost;
+            const std::size_t point =
+                (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
+            for (int c = 0; plan.wanted && c < ncomp; ++c) {
+              const double value = values[c * points + point];
+              if (const auto problem = unusableFieldValue(value))
+                throw InputError(file.string(),
+                                 fmt::format("FAB at byte {}: variable '{}' at level-{} cell "
+                                             "({}, {}, {}) is {} ({})",
+                                             fab.offset, h.names[c], l, cell.x, cell.y, cell.z,
+                                             *problem, value));
+              sink.set(std::size_t(c), at, static_cast<float>(value));
+            }
+            ++at;
+          }
+    } catch (...) {
+      failures[p] = std::current_exception();
+    }
+  });
+  // The first box's failure in the cells' order, as one box after another would meet it.
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  bricks::AmrField field = sink.finish(transform);
+  std::vector<int> internalLevels;
+  for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
+  field.setInfo(readAmrexInfo(directory, h.time, internalLevels));
+  return field;
+}
+
+double amrexPlotfileTime(const fs::path& directory) {
+  return parseHeader(plotfileHeader(directory)).time;
+}
+
+}  // namespace amrstream::formats

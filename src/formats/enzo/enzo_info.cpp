@@ -1,0 +1,82 @@
+#include "formats/enzo/enzo_info.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "util/input_error.hpp"
+
+namespace amrstream::formats {
+
+namespace {
+
+constexpr int kEnzoPeriodicBoundary = 3;
+constexpr double kMegaparsecCm = 3.0856775814913673e24;
+constexpr double kHubble100PerSecond = 1e7 / kMegaparsecCm;  // 100 km/s/Mpc in 1/s
+
+void readPeriodicity(const EnzoParameters& p, bricks::DatasetInfo& info) {
+  const auto left = p.threeNumbers("LeftFaceBoundaryCondition");
+  const auto right = p.threeNumbers("RightFaceBoundaryCondition");
+  if (!left || !right) return;
+  info.periodicKnown = true;
+  for (int a = 0; a < 3; ++a)
+    info.periodic[a] = (*left)[a] == kEnzoPeriodicBoundary && (*right)[a] == kEnzoPeriodicBoundary;
+}
+
+void readUnits(const EnzoParameters& p, bricks::DatasetInfo& info) {
+  info.lengthUnit = "code units";
+  info.timeUnit = "code units";
+  if (p.number("ComovingCoordinates").value_or(0.0) == 1.0) {
+    const auto h = p.number("CosmologyHubbleConstantNow");
+    const auto omegaMatter = p.number("CosmologyOmegaMatterNow");
+    const auto boxSize = p.number("CosmologyComovingBoxSize");
+    const auto initialRedshift = p.number("CosmologyInitialRedshift");
+    const auto redshift = p.number("CosmologyCurrentRedshift");
+    if (!h || !omegaMatter || !boxSize || !initialRedshift || !redshift) return;
+    if (!(*h > 0 && *omegaMatter > 0 && *boxSize > 0 && *initialRedshift > -1 && *redshift > -1))
+      throw InputError(p.file().string(),
+                       "the cosmology parameters (Hubble constant, Omega matter, box size, "
+                       "redshifts) are out of range");
+    const double seconds =
+        1.0 / (*h * kHubble100PerSecond *
+               std::sqrt(1.5 * *omegaMatter * std::pow(1 + *initialRedshift, 3)));
+    const double centimetres = *boxSize / *h * kMegaparsecCm / (1 + *redshift);
+    info.timeUnitSeconds = seconds;
+    info.lengthUnitCentimetres = centimetres;
+    info.timeUnit = fmt::format("code units (1 = {:.4g} s)", seconds);
+    info.lengthUnit = fmt::format(
+        "code units (1 = {:.4g} cm proper at z = {:.4g}; {:g} Mpc/h "
+        "comoving)",
+        centimetres, *redshift, *boxSize);
+    return;
+  }
+  if (const auto cm = p.number("LengthUnits"); cm && *cm > 0) {
+    info.lengthUnitCentimetres = *cm;
+    info.lengthUnit = fmt::format("code units (1 = {:.4g} cm)", *cm);
+  }
+  if (const auto s = p.number("TimeUnits"); s && *s > 0) {
+    info.timeUnitSeconds = *s;
+    info.timeUnit = fmt::format("code units (1 = {:.4g} s)", *s);
+  }
+}
+
+}  // namespace
+
+bricks::DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
+  bricks::DatasetInfo info;
+  info.format = "Enzo";
+  info.finestFileLevel = finestLevel;
+  info.levelsCountDown = true;
+  info.levelName = "Enzo level (0 = root grid)";
+  if (parameters == nullptr) return info;
+  info.time = readEnzoTime(*parameters);
+  readPeriodicity(*parameters, info);
+  readUnits(*parameters, info);
+  return info;
+}
+
+std::optional<double> readEnzoTime(const EnzoParameters& parameters) {
+  return parameters.number("InitialTime");
+}
+
+}  // namespace amrstream::formats

@@ -1,0 +1,536 @@
+#include "formats/enzo/enzo_reader.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "formats/cell_checks.hpp"
+#include "formats/cell_sink.hpp"
+#include "formats/enzo/enzo_info.hpp"
+#include "formats/enzo/enzo_parameters.hpp"
+#include "formats/hdf5_checks.hpp"
+#include "formats/hdf5_handle.hpp"
+#include "formats/input_bytes.hpp"
+#include "formats/text_numbers.hpp"
+#include "util/input_error.hpp"
+#include "util/input_file.hpp"
+
+namespace amrstream::formats {
+namespace {
+
+namespace fs = std::filesystem;
+
+using Handle = Hdf5Handle;
+
+Handle checked(hid_t id, herr_t (*close)(hid_t), const fs::path& file, const std::string& what) {
+  if (id < 0) throw InputError(file.string(), fmt::format("HDF5 could not {}", what));
+  return Handle(id, close);
+}
+
+struct Grid {
+  int id = 0;  // 1-based, as in the files
+  glm::dvec3 left{0.0}, right{0.0};
+  glm::ivec3 dims{0};   // active zones, x y z
+  int level = -1;       // Enzo level (0 = root), -1 until known
+  std::string file;     // basename of the field file
+  glm::ivec3 lower{0};  // in finest-cell units
+  int width = 1;        // cell width in finest cells
+};
+
+struct Domain {
+  glm::dvec3 left{0.0}, right{1.0};
+  glm::ivec3 topDims{0};
+  bool known = false;
+};
+
+std::string trim(std::string s) {
+  const auto* ws = " \t\r\n";
+  s.erase(0, s.find_first_not_of(ws));
+  s.erase(s.find_last_not_of(ws) + 1);
+  return s;
+}
+
+// Active zones per grid axis and per grid: beyond these no grid fits the cells' extent or this
+// machine's memory.
+constexpr std::int64_t kMaxZonesPerAxis = std::int64_t{1} << bricks::kMaxExtentBits;
+constexpr std::int64_t kMaxZonesPerGrid = std::int64_t{1} << 31;
+
+glm::ivec3 toIvec3(const std::array<std::int64_t, 3>& v) {
+  return glm::ivec3(static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]));
+}
+glm::dvec3 toDvec3(const std::array<double, 3>& v) { return glm::dvec3(v[0], v[1], v[2]); }
+
+// The grid's active zones, or an InputError unless they are 1 to kMaxZonesPerAxis per axis and at
+// most kMaxZonesPerGrid in all, before anything is allocated for them.
+glm::ivec3 requireGridSize(int id, const glm::i64vec3& dims, const std::string& table) {
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] < 1 || dims[a] > kMaxZonesPerAxis)
+      throw InputError(table, fmt::format("grid {} has {} active zones along axis {} (expected 1 "
+                                          "to {})",
+                                          id, dims[a], "xyz"[a], kMaxZonesPerAxis));
+  const glm::u64vec3 size(dims);  // up to 2^21 each: the product fits in 64 bits unsigned
+  const std::uint64_t zones = size.x * size.y * size.z;
+  if (zones > std::uint64_t(kMaxZonesPerGrid))
+    throw InputError(table, fmt::format("grid {} has {} x {} x {} = {} active zones, more than "
+                                        "the {} accepted",
+                                        id, dims.x, dims.y, dims.z, zones, kMaxZonesPerGrid));
+  return glm::ivec3(dims);
+}
+
+Domain readParameters(const EnzoParameters& parameters) {
+  const auto& kv = parameters.values();
+  const std::string file = parameters.file().string();
+  auto need = [&](const char* key) -> const std::string& {
+    const auto it = kv.find(key);
+    if (it == kv.end()) throw InputError(file, fmt::format("missing {}", key));
+    return it->second;
+  };
+  Domain d;
+  d.topDims = toIvec3(parseThreeIntegers(need("TopGridDimensions"), file, "TopGridDimensions", 1,
+                                         kMaxZonesPerAxis));
+  d.left = toDvec3(parseThreeFinite(need("DomainLeftEdge"), file, "DomainLeftEdge"));
+  d.right = toDvec3(parseThreeFinite(need("DomainRightEdge"), file, "DomainRightEdge"));
+  if (const auto it = kv.find("RefineBy"); it != kv.end()) {
+    const std::int64_t refineBy = parseInteger(it->second, file, "RefineBy", 1, 1 << 30);
+    if (refineBy != 2)
+      throw InputError(file, fmt::format("RefineBy {} is not supported (only 2)", refineBy));
+  }
+  if (kv.contains("TopGridRank") && need("TopGridRank") != "3")
+    throw InputError(file, "only 3D data (TopGridRank 3) is supported");
+  d.known = true;
+  return d;
+}
+
+// "Pointer: Grid[A]->NextGridWHICH" = TARGET (blanks after the colon optional); false when the
+// key is not of that form.
+bool parsePointer(std::string_view key, std::string_view value, const std::string& where,
+                  std::int64_t& grid, std::string& which, std::int64_t& target) {
+  constexpr std::string_view kPointer = "Pointer:", kGrid = "Grid[", kArrow = "]->NextGrid";
+  if (!key.starts_with(kPointer)) return false;
+  key.remove_prefix(kPointer.size());
+  while (!key.empty() && (key.front() == ' ' || key.front() == '\t')) key.remove_prefix(1);
+  if (!key.starts_with(kGrid)) return false;
+  const std::size_t close = key.find(kArrow);
+  if (close == std::string_view::npos) return false;
+  grid = parseInteger(key.substr(kGrid.size(), close - kGrid.size()), where, "a pointer's grid", 1,
+                      std::numeric_limits<std::int32_t>::max());
+  which = std::string(key.substr(close + kArrow.size()));
+  const auto words = splitWords(value);
+  if (words.empty()) return false;
+  target = parseInteger(words.front(), where, "a pointer's target grid", 0,
+                        std::numeric_limits<std::int32_t>::max());
+  return true;
+}
+
+// The text hierarchy: blocks `Grid = N` of `Key = value` lines, then `Pointer:` lines.
+std::vector<Grid> readHierarchy(const fs::path& file) {
+  const std::string source = file.string();
+  const std::string text = readWholeFile(file, "the hierarchy file");
+  std::vector<std::map<std::string, std::string>> blocks;
+  std::set<std::pair<std::int64_t, std::string>> pointers;  // (grid, ThisLevel/NextLevel)
+  std::int64_t maxTarget = 0;
+  std::size_t lineStart = 0;
+  for (int number = 1; lineStart < text.size(); ++number) {
+    const std::size_t lineEnd = std::min(text.find('\n', lineStart), text.size());
+    const std::string line = text.substr(lineStart, lineEnd - lineStart);
+    lineStart = lineEnd + 1;
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    const auto key = trim(line.substr(0, eq));
+    const auto value = trim(line.substr(eq + 1));
+    const std::string where = fmt::format("{}:{}", source, number);
+    if (key == "Grid") {
+      if (value != std::to_string(blocks.size() + 1))
+        throw InputError(where, fmt::format("expected Grid = {}, got Grid = {}", blocks.size() + 1,
+                                            excerpt(value)));
+      blocks.emplace_back();
+    } else if (key.starts_with("Pointer:")) {
+      std::int64_t grid = 0, target = 0;
+      std::string which;
+      if (!parsePointer(key, value, where, grid, which, target))
+        throw InputError(where, fmt::format("cannot parse '{}' (truncated?)", excerpt(trim(line))));
+      pointers.emplace(grid, which);
+      maxTarget = std::max(maxTarget, target);
+    } else if (!blocks.empty()) {
+      blocks.back()[key] = value;
+    }
+  }
+  const std::size_t n = blocks.size();
+  if (n == 0) throw InputError(source, "no grids (no `Grid = 1` line)");
+  if (maxTarget > static_cast<std::int64_t>(n))
+    throw InputError(
+        source, fmt::format("a pointer names grid {} but only {} grids are listed (truncated?)",
+                            maxTarget, n));
+  std::vector<Grid> grids;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& b = blocks[i];
+    const int id = static_cast<int>(i) + 1;
+    auto need = [&](const char* key) -> const std::string& {
+      const auto it = b.find(key);
+      if (it == b.end())
+        throw InputError(source, fmt::format("grid {} lacks {} (truncated?)", id, key));
+      return it->second;
+    };
+    for (const char* which : {"ThisLevel", "NextLevel"})
+      if (!pointers.contains({id, which}))
+        throw InputError(
+            source, fmt::format("grid {} lacks its NextGrid{} pointer (truncated?)", id, which));
+    if (trim(need("GridRank")) != "3")
+      throw InputError(source, fmt::format("grid {}: only GridRank 3 is supported", id));
+    Grid g;
+    g.id = id;
+    const std::string what = fmt::format("grid {} ", id);
+    const std::int64_t kIntMax = std::numeric_limits<std::int32_t>::max();
+    const auto start =
+        parseThreeIntegers(need("GridStartIndex"), source, what + "GridStartIndex", 0, kIntMax);
+    const auto end =
+        parseThreeIntegers(need("GridEndIndex"), source, what + "GridEndIndex", 0, kIntMax);
+    const auto total =
+        parseThreeIntegers(need("GridDimension"), source, what + "GridDimension", 1, kIntMax);
+    glm::i64vec3 dims;
+    for (int a = 0; a < 3; ++a) {
+      if (end[a] >= total[a] || end[a] < start[a])
+        throw InputError(source, fmt::format("grid {}: start/end index {}..{} along axis {} is "
+                                             "not inside GridDimension {}",
+                                             id, start[a], end[a], "xyz"[a], total[a]));
+      dims[a] = end[a] - start[a] + 1;
+    }
+    g.dims = requireGridSize(id, dims, source);
+    g.left = toDvec3(parseThreeFinite(need("GridLeftEdge"), source, what + "GridLeftEdge"));
+    g.right = toDvec3(parseThreeFinite(need("GridRightEdge"), source, what + "GridRightEdge"));
+    if (const auto it = b.find("Level"); it != b.end())
+      g.level = static_cast<int>(parseInteger(it->second, source, what + "Level", 0, kIntMax));
+    // An absolute path from the machine that wrote it: only the basename is meaningful.
+    g.file = fs::path(need("BaryonFileName")).filename().string();
+    grids.push_back(g);
+  }
+  return grids;
+}
+
+std::vector<hsize_t> shapeOf(hid_t dataset, const fs::path& file, const std::string& name) {
+  const auto space = checked(H5Dget_space(dataset), H5Sclose, file, "get the shape of " + name);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0 || rank > H5S_MAX_RANK)
+    throw InputError(file.string(), fmt::format("HDF5 could not get the rank of {}", name));
+  std::vector<hsize_t> dims(rank);
+  if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0)
+    throw InputError(file.string(), fmt::format("HDF5 could not get the shape of {}", name));
+  return dims;
+}
+
+template <typename T>
+std::vector<T> readTable(hid_t h5file, const fs::path& file, const char* name, hid_t memType,
+                         std::vector<hsize_t> expected) {
+  const auto ds = checked(H5Dopen2(h5file, name, H5P_DEFAULT), H5Dclose, file,
+                          fmt::format("open dataset {}", name));
+  if (shapeOf(ds.get(), file, name) != expected)
+    throw InputError(file.string(), fmt::format("dataset {} has an unexpected shape", name));
+  std::vector<T> values(requireStoredValues(ds.get(), file.string(), name));
+  if (H5Dread(ds.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", name));
+  return values;
+}
+
+Handle openHdf5(const fs::path& file) {
+  regularFileSize(file);  // refuses a directory or FIFO before HDF5 opens it
+  return checked(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
+                 "open the file (not HDF5, truncated or corrupt?)");
+}
+
+// The HDF5 grid table: LeftEdges, RightEdges, ActiveDimensions (n,3, x y z), Level (n).
+std::vector<Grid> readHarrays(const fs::path& file) {
+  const auto h5 = openHdf5(file);
+  const auto ds =
+      checked(H5Dopen2(h5.get(), "Level", H5P_DEFAULT), H5Dclose, file, "open dataset Level");
+  const auto shape = shapeOf(ds.get(), file, "Level");
+  if (shape.size() != 1 || shape[0] == 0)
+    throw InputError(file.string(), "dataset Level must be a non-empty 1D array");
+  const hsize_t n = shape[0];
+  const auto levels = readTable<int>(h5.get(), file, "Level", H5T_NATIVE_INT, {n});
+  const auto lefts = readTable<double>(h5.get(), file, "LeftEdges", H5T_NATIVE_DOUBLE, {n, 3});
+  const auto rights = readTable<double>(h5.get(), file, "RightEdges", H5T_NATIVE_DOUBLE, {n, 3});
+  const auto dims = readTable<int>(h5.get(), file, "ActiveDimensions", H5T_NATIVE_INT, {n, 3});
+  std::vector<Grid> grids(n);
+  for (hsize_t i = 0; i < n; ++i) {
+    auto& g = grids[i];
+    g.id = static_cast<int>(i) + 1;
+    g.level = levels[i];
+    g.left = {lefts[3 * i], lefts[3 * i + 1], lefts[3 * i + 2]};
+    g.right = {rights[3 * i], rights[3 * i + 1], rights[3 * i + 2]};
+    g.dims = requireGridSize(g.id, glm::i64vec3(dims[3 * i], dims[3 * i + 1], dims[3 * i + 2]),
+                             file.string());
+  }
+  return grids;
+}
+
+// Sets level (checked against the cell size), lower and width of every grid; returns the finest
+// dx. Every grid must lie inside the domain, which spans fewer than 2^kMaxExtentBits finest cells
+// per axis, so the cells' integer arithmetic cannot overflow.
+glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::path& table) {
+  const auto src = table.string();
+  const glm::dvec3 topDx = (domain.right - domain.left) / glm::dvec3(domain.topDims);
+  for (int a = 0; a < 3; ++a)
+    if (!std::isnormal(topDx[a]) || !(topDx[a] > 0))
+      throw InputError(
+          src, fmt::format("the domain [{}, {}] along axis {} over {} top-grid "
+                           "cells gives cells {} wide",
+                           domain.left[a], domain.right[a], "xyz"[a], domain.topDims[a], topDx[a]));
+  int finest = 0;
+  for (auto& g : grids) {
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(g.left[a]) || !std::isfinite(g.right[a]) || !(g.right[a] > g.left[a]))
+        throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}", g.id, g.left[a],
+                                          g.right[a], "xyz"[a]));
+    const glm::dvec3 ratio = topDx * glm::dvec3(g.dims) / (g.right - g.left);
+    const double log2Ratio = std::log2(ratio.x);
+    if (!(log2Ratio > -0.5 && log2Ratio < bricks::kMaxLevel + 0.5))
+      throw InputError(src, fmt::format("grid {}: its cells are 1/{} of a top-grid cell, not "
+                                        "1/2^L for a level L in 0..{}",
+                                        g.id, ratio.x, bricks::kMaxLevel));
+    const int level = static_cast<int>(std::lround(log2Ratio));
+    for (int a = 0; a < 3; ++a)
+      if (!(std::abs(ratio[a] / std::ldexp(1.0, level) - 1.0) < 1e-6))
+        throw InputError(src, fmt::format("grid {}: cell size is not the top-grid cell size / 2^L "
+                                          "(edges and dimensions disagree)",
+                                          g.id));
+    if (g.level >= 0 && g.level != level)
+      throw InputError(
+          src, fmt::format("grid {}: Level {} but its cell size says {}", g.id, g.level, level));
+    g.level = level;
+    finest = std::max(finest, level);
+  }
+  const glm::dvec3 finestDx = topDx / std::ldexp(1.0, finest);
+  const glm::i64vec3 domainCells = glm::i64vec3(domain.topDims) << std::int64_t(finest);
+  for (int a = 0; a < 3; ++a)
+    if (domainCells[a] >= kMaxZonesPerAxis)
+      throw InputError(src, fmt::format("the domain spans {} finest cells along axis {} ({} "
+                                        "top-grid cells refined {} times); at most {} are "
+                                        "supported",
+                                        domainCells[a], "xyz"[a], domain.topDims[a], finest,
+                                        kMaxZonesPerAxis - 1));
+  for (auto& g : grids) {
+    g.width = 1 << (finest - g.level);
+    const glm::dvec3 lo = (g.left - domain.left) / finestDx;
+    const glm::dvec3 hi = (g.right - domain.left) / finestDx;
+    for (int a = 0; a < 3; ++a) {
+      const std::int64_t upper = std::int64_t{g.dims[a]} * g.width;
+      if (!(lo[a] > -0.5 && lo[a] + upper < domainCells[a] + 0.5))
+        throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}, outside the "
+                                          "domain [{}, {}]",
+                                          g.id, g.left[a], g.right[a], "xyz"[a], domain.left[a],
+                                          domain.right[a]));
+      g.lower[a] = static_cast<int>(std::lround(lo[a]));
+      const double up = static_cast<double>(g.lower[a]) + static_cast<double>(upper);
+      if (std::abs(lo[a] - g.lower[a]) > 1e-3 || !(std::abs(hi[a] - up) <= 1e-3) ||
+          g.lower[a] % g.width != 0)
+        throw InputError(src, fmt::format("grid {} is not aligned to its level's cells", g.id));
+    }
+  }
+  return finestDx;
+}
+
+// Marks the cells of `g` covered by grids one level finer. Those align with g's cells; deeper grids
+// nest inside them (a violation shows up as an overlap in AmrField).
+std::vector<bool> coveredCells(const Grid& g, const std::vector<Grid>& grids,
+                               const fs::path& table) {
+  const glm::ivec3 n = g.dims;
+  std::vector<bool> covered(std::size_t(n.x) * n.y * n.z, false);
+  const glm::ivec3 gUpper = g.lower + n * g.width;
+  for (const auto& h : grids) {
+    if (h.level != g.level + 1) continue;
+    const glm::ivec3 lo = glm::max(g.lower, h.lower) - g.lower;
+    const glm::ivec3 hi = glm::min(gUpper, h.lower + h.dims * h.width) - g.lower;
+    if (glm::any(glm::lessThanEqual(hi, lo))) continue;
+    for (int a = 0; a < 3; ++a)
+      if (lo[a] % g.width != 0 || hi[a] % g.width != 0)
+        throw InputError(table.string(),
+                         fmt::format("grid {} covers only part of a cell of grid {}", h.id, g.id));
+    const glm::ivec3 c0 = lo / g.width, c1 = hi / g.width;
+    for (int k = c0.z; k < c1.z; ++k)
+      for (int j = c0.y; j < c1.y; ++j)
+        for (int i = c0.x; i < c1.x; ++i) covered[(std::size_t(k) * n.y + j) * n.x + i] = true;
+  }
+  return covered;
+}
+
+herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out) {
+  static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+  return 0;
+}
+
+// One field of a grid, as stored (read as float64 so that no value is rounded before it is
+// checked).
+std::vector<double> readField(hid_t group, const fs::path& file, const std::string& groupName,
+                              const std::string& name, glm::ivec3 dims) {
+  const auto what = fmt::format("{}/{}", groupName, name);
+  if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
+    throw InputError(file.string(), fmt::format("dataset {} is missing", what));
+  const auto ds = checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, file,
+                          fmt::format("open dataset {}", what));
+  const std::vector<hsize_t> expected{hsize_t(dims.z), hsize_t(dims.y), hsize_t(dims.x)};
+  const auto shape = shapeOf(ds.get(), file, what);
+  if (shape != expected) {
+    std::string got;
+    for (auto s : shape) got += fmt::format("{}{}", got.empty() ? "" : ",", s);
+    throw InputError(file.string(), fmt::format("dataset {} has shape ({}), expected ({},{},{}) "
+                                                "= (nz,ny,nx) active zones",
+                                                what, got, dims.z, dims.y, dims.x));
+  }
+  const auto type = checked(H5Dget_type(ds.get()), H5Tclose, file, "get the type of " + what);
+  if (H5Tget_class(type.get()) != H5T_FLOAT)
+    throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
+  std::vector<double> values(requireStoredValues(ds.get(), file.string(), what));
+  if (H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", what));
+  return values;
+}
+
+struct Siblings {
+  fs::path dir, parameter, hierarchy, harrays;
+};
+
+// A path that is there, whatever it is: reading it then refuses a directory or FIFO by name.
+bool present(const fs::path& path) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+
+Siblings findSiblings(const fs::path& file) {
+  regularFileSize(file);
+  fs::path base = file;
+  const auto ext = file.extension().string();
+  if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) base.replace_extension();
+  Siblings s;
+  s.dir = file.parent_path();
+  s.parameter = base;
+  s.hierarchy = base.string() + ".hierarchy";
+  s.harrays = base.string() + ".harrays";
+  return s;
+}
+
+}  // namespace
+
+bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, WindowedRead* read) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const auto sib = findSiblings(file);
+  const bool hasHierarchy = present(sib.hierarchy);
+  const bool hasHarrays = present(sib.harrays);
+  if (!hasHierarchy && !hasHarrays)
+    throw InputError(file.string(),
+                     fmt::format("neither {} nor {} exists", sib.hierarchy.filename().string(),
+                                 sib.harrays.filename().string()));
+
+  std::vector<Grid> grids;
+  fs::path table;
+  std::vector<Grid> text;
+  if (hasHierarchy) text = readHierarchy(sib.hierarchy);
+  if (hasHarrays) {
+    table = sib.harrays;
+    grids = readHarrays(sib.harrays);
+    if (hasHierarchy && text.size() != grids.size())
+      throw InputError(sib.hierarchy.string(),
+                       fmt::format("lists {} grids but {} lists {}", text.size(),
+                                   sib.harrays.filename().string(), grids.size()));
+    for (std::size_t i = 0; i < grids.size(); ++i)
+      grids[i].file = hasHierarchy ? text[i].file : sib.parameter.filename().string() + ".cpu0000";
+  } else {
+    table = sib.hierarchy;
+    grids = std::move(text);
+  }
+
+  Domain domain;
+  std::optional<EnzoParameters> parameters;
+  std::error_code ec;
+  if (present(sib.parameter) && !fs::is_directory(sib.parameter, ec)) {
+    parameters.emplace(sib.parameter);
+    domain = readParameters(*parameters);
+  } else {
+    // Without the parameter file, the first grid is the root grid spanning the domain.
+    domain.left = grids[0].left;
+    domain.right = grids[0].right;
+    domain.topDims = grids[0].dims;
+  }
+  const glm::dvec3 finestDx = placeGrids(grids, domain, table);
+
+  CellSink sink(window, file.string(), read);
+  std::vector<std::string> channels;
+  std::map<std::string, Handle> files;
+  const int finest = std::ranges::max(grids, {}, &Grid::level).level;
+
+  for (const auto& g : grids) {
+    const bool wanted = !window || window->meets(g.lower, g.lower + g.dims * g.width, g.width);
+    if (read) {
+      ++read->pieces;
+      read->piecesRead += wanted;
+    }
+    if (!wanted && sink.skipsPieces() && !channels.empty()) {
+      const auto covered = coveredCells(g, grids, table);
+      sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)));
+      continue;
+    }
+    const fs::path path = sib.dir / g.file;
+    auto it = files.find(g.file);
+    if (it == files.end()) {
+      if (!present(path))
+        throw InputError(path.string(), fmt::format("grid {}'s field file is missing", g.id));
+      it = files.emplace(g.file, openHdf5(path)).first;
+    }
+    const auto groupName = fmt::format("/Grid{:08d}", g.id);
+    const auto group = checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose,
+                               path, fmt::format("open group {}", groupName));
+    if (channels.empty()) {
+      std::vector<std::string> names;
+      if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) < 0)
+        throw InputError(path.string(), fmt::format("HDF5 could not list group {}", groupName));
+      for (auto& name : names)
+        if (!name.starts_with("particle_")) channels.push_back(name);
+      if (channels.empty())
+        throw InputError(path.string(), fmt::format("group {} has no field datasets", groupName));
+      for (const std::string& name : channels) sink.addChannel(name);
+    }
+    // The fields first: their storage bounds the grid's size before anything else is allocated.
+    std::vector<std::vector<double>> fields;
+    if (wanted)
+      for (const std::string& name : channels)
+        fields.push_back(readField(group.get(), path, groupName, name, g.dims));
+    const auto covered = coveredCells(g, grids, table);
+
+    const auto level = static_cast<std::uint8_t>(finest - g.level);
+    std::size_t index = 0;
+    for (int k = 0; k < g.dims.z; ++k)
+      for (int j = 0; j < g.dims.y; ++j)
+        for (int i = 0; i < g.dims.x; ++i, ++index) {
+          if (covered[index]) continue;
+          const std::size_t at = sink.cell(g.lower + glm::ivec3(i, j, k) * g.width, level);
+          for (std::size_t c = 0; wanted && c < channels.size(); ++c) {
+            const double value = fields[c][index];
+            if (const auto problem = unusableFieldValue(value))
+              throw InputError(path.string(),
+                               fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
+                                           "{}) is {}",
+                                           groupName, channels[c], value, i, j, k, *problem));
+            sink.set(c, at, static_cast<float>(value));
+          }
+        }
+  }
+  const bricks::WorldTransform transform{domain.left, finestDx};
+  if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
+    throw InputError(table.string(), "the grids cannot be placed: " + *problem);
+  bricks::AmrField field = sink.finish(transform);
+  field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
+  return field;
+}
+
+fs::path enzoParameterFile(const fs::path& file) { return findSiblings(file).parameter; }
+
+}  // namespace amrstream::formats
