@@ -9,7 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::fuzz {
 

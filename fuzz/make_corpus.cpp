@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "flow/seeds.hpp"
 #include "formats/amrex/amrex_reader.hpp"
 #include "formats/enzo/enzo_reader.hpp"
@@ -31,7 +32,6 @@
 #include "output/seed_file_writer.hpp"
 #include "output/vtp_writer.hpp"
 #include "random_amr.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::fuzz {
 namespace {
@@ -72,7 +72,7 @@ void exaSeeds(const fs::path& corpus, const fs::path& scratch) {
                          {random.levels().begin(), random.levels().end()},
                          {{"u", values(0)}, {"v", values(1)}}, {{0.5, -1, 2}, {0.25, 0.25, 0.5}},
                          "seed");
-  bricks::DatasetInfo info;
+  DatasetInfo info;
   info.time = 2.5;
   info.periodic = {true, false, true};
   info.periodicKnown = true;

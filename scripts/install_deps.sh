@@ -16,6 +16,8 @@ packages=(
   libglfw3-dev libimgui-dev xvfb xauth
   # MPI: distributed tracing and its tests (mpirun)
   libopenmpi-dev openmpi-bin
+  # the sources' format check (scripts/check_format.sh)
+  clang-format
   # clang and its libFuzzer runtime (a recommendation, which --no-install-recommends skips)
   # for scripts/fuzz.sh
   clang libclang-rt-dev

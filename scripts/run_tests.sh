@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Quick start, command 2: installs what is missing, builds, and runs the whole test suite; then
-# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the `cpu` tests again.
+# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the `cpu` tests again. First
+# checks that the C++ sources follow .clang-format.
 # Usage: scripts/run_tests.sh [--no-sanitize]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc 2>/dev/null || echo 2)
 "$root/scripts/install_deps.sh"
+
+echo "== format"
+"$root/scripts/check_format.sh"
 
 echo "== release build: all tests"
 "$root/scripts/build.sh" release

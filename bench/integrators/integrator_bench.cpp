@@ -36,6 +36,10 @@
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/trace_settings.hpp"
+#include "api/device.hpp"
+#include "api/handles.hpp"
+#include "api/stepping.hpp"
+#include "flow/cpu_tracer.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "synth/rotation_field.hpp"
 
@@ -144,7 +148,7 @@ int main(int argc, char** argv) {
   const bool rotation = dataset == "rotation";
   const Dataset cells = load("builtin:" + dataset, {6, 4, targetCells, 1});
   Field field = buildField(cells, {"", "none", "none", rotation ? "linear" : "tent"});
-  flow::VectorVolume& volume = field.volume;
+  flow::VectorVolume& volume = volumeOf(field);
 
   // Random seeds in the middle of the domain; for the rotation, within 0.05 of its refined ring.
   std::mt19937_64 rng(7);

@@ -1,49 +1,41 @@
 #pragma once
-// Picks the tracing backend and device (`auto`, or a named backend and a device name filter) and
-// makes a Vulkan context for it.
+// Where tracing and rendering run: the backend (`auto`, or a named one) and the Vulkan device,
+// and what each device on this machine supports.
 
 #include <string>
+#include <vector>
 
-#include "amrstream/log.hpp"
-#include "gpu/backend.hpp"
-#include "vk/context.hpp"
+#include "amrstream/settings.hpp"
 
 namespace amrstream {
 
 struct BackendRequest {
-  std::string backend = "auto";  // auto, rayquery, pipeline, compute or cpu
-  std::string device;            // a substring of the device name; empty: the default device
-  bool validation = false;       // Vulkan validation layers (debug builds, AMRSTREAM_VALIDATION)
-  // Which of the qualifying devices (vk::ContextBuilder::deviceSlot): an MPI rank's local rank.
+  std::string backend{settings::kBackend.shown};  // backend: auto, rayquery, pipeline, compute, cpu
+  std::string device;       // device: a substring of the device name; empty: the default device
+  bool validation = false;  // Vulkan validation layers (see validationRequested)
+  // Which of the qualifying devices: an MPI rank's local rank, so each takes its host's GPU.
   unsigned deviceSlot = 0;
 };
-
-struct BackendChoice {
-  gpu::Backend backend;
-  std::string deviceFilter;  // empty: the default device
-};
-
-// What the backend is for: tracing alone may fall back to the CPU reference, rendering needs a
-// Vulkan device.
-enum class BackendUse { Trace, Render };
-
-// Resolves `auto` (saying what was chosen and why) or parses the named backend (InputError for
-// an unknown name). For tracing, `auto` picks the fastest: a GPU backend on a GPU, the CPU
-// reference when the only Vulkan device is a software one (lavapipe), which traces several times
-// slower than the CPU path.
-BackendChoice chooseBackend(const BackendRequest& request, BackendUse use = BackendUse::Render,
-                            const Log& log = {});
-
-// A context for the choice's backend and device, plus `extra` capabilities. Throws
-// vk::ContextError naming what is missing.
-vk::Context createContext(const BackendRequest& request, const BackendChoice& choice,
-                          vk::CapabilitySet extra = {});
-
-// Throws when the context's validation layer reported errors.
-void checkValidation(const vk::Context& ctx);
 
 // Validation layers: always in debug builds unless AMRSTREAM_VALIDATION=0, and in release builds
 // only with AMRSTREAM_VALIDATION=1.
 bool validationRequested();
+
+// A Vulkan device and the backends it runs.
+struct DeviceDescription {
+  unsigned index = 0;
+  std::string name, type, driverName, driverInfo;  // type: "discrete GPU", "CPU", ...
+  struct BackendSupport {
+    std::string backend;               // rayquery, pipeline, compute
+    std::vector<std::string> missing;  // what the device lacks for it; empty: supported
+  };
+  std::vector<BackendSupport> backends;
+  std::string autoRender, autoTrace;  // what `auto` picks on it for each use
+  bool software = false;              // a software device (lavapipe): auto traces on the CPU
+};
+
+// Every Vulkan device (an empty list: a driver loaded but offers none). Throws when there is no
+// Vulkan loader or driver at all.
+std::vector<DeviceDescription> describeDevices();
 
 }  // namespace amrstream

@@ -1,49 +1,67 @@
 #pragma once
 // A dataset made ready for tracing: the vector and point-data channels chosen, periodic images
-// added, bricks and active brick regions built (flow::VectorVolume).
+// added, bricks and active brick regions built, and the values laid out brick by brick.
 
+#include <array>
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "amrstream/dataset.hpp"
-#include "flow/vector_selection.hpp"
-#include "flow/vector_volume.hpp"
+#include "amrstream/settings.hpp"
 
 namespace amrstream {
 
+// The settings of amrstream/settings.hpp the comments name.
 struct FieldOptions {
-  std::string vector;                // "a,b,c"; empty: the velocity, else the magnetic field
-  std::string pointData = "all";     // all (every channel but the vector's), none, or NAME,NAME,...
-  std::string periodic = "auto";     // auto (as the file says), none, or axes such as "x,y,z"
-  std::string interpolant = "tent";  // tent (the paper's) or linear (exact for linear fields)
+  std::string vector;  // vector: "a,b,c"; empty: the velocity, else the magnetic field
+  std::string pointData{settings::kPointData.shown};      // point_data
+  std::string periodic{settings::kPeriodic.shown};        // periodic
+  std::string interpolant{settings::kInterpolant.shown};  // interpolant
 };
 
-struct Field {
-  flow::VectorVolume volume;
-  flow::VectorChannels vector;
-  std::string source;        // the dataset's name
-  bricks::DatasetInfo info;  // what the dataset says of itself
-  flow::VolumeBuildTimes times;
+// Seconds the field's parts took to build.
+struct FieldBuildTimes {
+  double bricks = 0.0, regions = 0.0, gradients = 0.0, gather = 0.0;
 };
+
+// A handle: copies share the field. The dataset it was built from stays with it when asked for
+// (rendering colours tubes by its channels and shows its volume), else only what tracing reads.
+class Field {
+ public:
+  const std::string& source() const;                         // the dataset's name
+  const DatasetInfo& info() const;                           // what the dataset says of itself
+  const std::string& vectorName() const;                     // e.g. "vel"
+  const std::array<std::string, 3>& vectorChannels() const;  // e.g. velx, vely, velz
+  const std::vector<std::string>& pointDataNames() const;    // channels sampled along lines
+  std::string periodicAxes() const;                          // "x,z"; empty for none
+  std::string interpolant() const;                           // "tent" or "linear"
+  std::size_t brickCount() const;      // the dataset's own, without periodic images
+  std::size_t periodicImages() const;  // bricks added as periodic images
+  std::size_t regionCount() const;
+  glm::dvec3 lower() const;  // the domain, physical coordinates
+  glm::dvec3 upper() const;
+  const FieldBuildTimes& buildTimes() const;
+  // The dataset it was built from, where kept (KeepDataset).
+  const std::optional<Dataset>& dataset() const;
+
+  struct Impl;  // the library's: src/api/handles.hpp
+  explicit Field(std::shared_ptr<Impl> impl);
+  Impl& impl() const { return *impl_; }
+
+ private:
+  std::shared_ptr<Impl> impl_;
+};
+
+// Whether a Field keeps the Dataset it was built from (rendering reads its channels) or only what
+// tracing reads.
+enum class KeepDataset { No, Yes };
 
 // Throws InputError naming the missing channel or the bad option.
-Field buildField(const Dataset& cells, const FieldOptions& options);
-
-// What buildField builds from a dataset's channel names and what it says of itself: the vector,
-// and the volume's options (periodic axes, point data, interpolant). For a volume built in two
-// steps, its layout before the values (flow::buildCellLayout, then flow::fillVolumeValues).
-struct FieldPlan {
-  flow::VectorChannels vector;
-  flow::VolumeOptions volume;
-};
-FieldPlan planField(const flow::ChannelCatalog& channels, const bricks::DatasetInfo& info,
-                    const FieldOptions& options);
-
-// "auto", "none", or the periodic axes, e.g. "x,y,z" or "xz".
-flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::DatasetInfo& info);
-std::string axesText(const flow::PeriodicAxes& axes);  // "x,z"; empty for none
-
-// "tent" or "linear"; InputError otherwise.
-flow::Interpolant parseInterpolant(const std::string& name);
-std::string interpolantName(flow::Interpolant interpolant);
+Field buildField(const Dataset& cells, const FieldOptions& options,
+                 KeepDataset keep = KeepDataset::Yes);
 
 }  // namespace amrstream

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace amrstream::mpi {
+namespace amrstream {
 
 // Whether the environment says an MPI launcher started this process (Open MPI's, PMIx's or PMI's
 // rank variables).
@@ -35,8 +35,9 @@ class MpiWorld {
   // then get one thread. Empty otherwise.
   std::string bindingWarning() const;
   // The threads this rank's parallel loops should use: the cores it may run on, shared among
-  // the ranks of its host when they may all run on all of them (mpirun --bind-to none). Ranks
-  // that each used every core ran their host work up to twice as slowly (docs/distributed.md).
+  // the ranks of its host when they may all run on all of them (mpirun --bind-to none), so that
+  // the ranks' host work does not contend for the cores
+  // (docs/distributed.md, "`--distribute seeds`").
   int threadsPerRank() const;
   // "rank 2 of 4" for messages; empty in a world of one.
   std::string rankName() const;
@@ -53,7 +54,7 @@ class MpiWorld {
   std::vector<std::byte> gatherToAll(std::span<const std::byte> bytes) const;
 
   // Ends every rank at once (MPI_Abort), for a failure outside the points where ranks agree on
-  // errors (rank_agreement.hpp); exits with `code` in a world of one.
+  // errors (the library's agreement on failures); exits with `code` in a world of one.
   [[noreturn]] void abort(int code) const;
 
  private:
@@ -61,4 +62,4 @@ class MpiWorld {
   int rank_ = 0, size_ = 1, localRank_ = 0, localSize_ = 1;
 };
 
-}  // namespace amrstream::mpi
+}  // namespace amrstream

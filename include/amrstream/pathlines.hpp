@@ -4,19 +4,19 @@
 // and built one at a time, the next on another thread while the current interval is traced, so at
 // most three are in memory whatever the series' length.
 
+#include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "amrstream/backend.hpp"
+#include "amrstream/dataset_info.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/log.hpp"
 #include "amrstream/seeding.hpp"
-#include "flow/pathline_tracer.hpp"
-#include "output/vtk_field_data.hpp"
+#include "amrstream/tracing.hpp"
 
 namespace amrstream {
 
@@ -35,7 +35,15 @@ struct PathlineSettings {
   std::optional<double> endTime;     // default: the last snapshot's time
   std::optional<double> stepSize;    // physical time; default: the shortest interval used / 10
   double releaseEvery = 0.0;         // > 0: streaklines, new particles at this interval
-  std::uint64_t maxResultBytes = 0;  // 0: a share of the machine's memory (kTraceMemoryShare)
+  std::uint64_t maxResultBytes = 0;  // 0: a share of the machine's memory
+};
+
+struct PathlineJob {
+  std::vector<SnapshotFile> series;  // listSnapshots'
+  FieldOptions field;
+  SeedRequest seeds;  // chosen on the snapshot at or before the start time
+  PathlineSettings settings;
+  BackendRequest backend;
 };
 
 // Where the time went: reading and building every snapshot (on the loading thread, except the
@@ -53,31 +61,33 @@ struct PathlineReport {
   double readSeconds = 0.0, buildSeconds = 0.0, traceSeconds = 0.0, waitSeconds = 0.0;
   double wallSeconds = 0.0;
   std::uint64_t steps = 0;
-  flow::PathlineOptions options;  // as resolved from the settings
-  std::size_t seedCount = 0;
+  // As resolved from the settings.
+  double stepSize = 0.0, startTime = 0.0, endTime = 0.0, releaseEvery = 0.0;
+  std::size_t seedCount = 0, particleCount = 0;
   std::string seedDescription;
   std::string vectorName;
   std::vector<std::string> channelNames;
   std::string interpolant;
-  bricks::DatasetInfo firstInfo;  // what the first snapshot used says of itself
+  DatasetInfo firstInfo;  // what the first snapshot used says of itself
 };
 
-// Called after each interval with the intervals done and their number.
-using IntervalProgress = std::function<void(std::size_t done, std::size_t intervals)>;
+struct PathlineResult {
+  Traces lines;  // pathlines, or with releaseEvery streaklines (one per seed)
+  PathlineReport report;
+  bool streaklines = false;
+};
 
-// Traces particles released from the seeds (chosen on the snapshot at or before the start time)
-// through the series. With a GPU backend each snapshot is uploaded with its point-location
-// structure and the RK4 stages' samples are taken on the device (gpu/vector_probe.hpp); the
-// host does the rest. Throws InputError for a start or end time outside the series, a snapshot
-// that lacks the vector or a point-data channel, or seeds outside the domain.
-flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const FieldOptions& field,
-                                    const SeedRequest& seeds, const PathlineSettings& settings,
-                                    const BackendRequest& backend, PathlineReport& report,
-                                    const IntervalProgress& progress = {}, const Log& log = {});
+// Traces particles released from the seeds through the series. With a GPU backend each snapshot
+// is uploaded with its point-location structure and the RK4 stages' samples are taken on the
+// device; the host does the rest. Progress: stage "intervals". Says the "series", "seeds" and
+// "tracing" lines, then "stepping", "particles", "time" and, on a GPU, "samples". Throws
+// InputError for a start or end time outside the series, a snapshot that lacks the vector or a
+// point-data channel, or seeds outside the domain.
+PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter = {});
 
-// The .vtp's FieldData for paths made so (`kind`: "pathlines" or "streaklines").
-std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotFile> series,
-                                                       const PathlineReport& report,
-                                                       const std::string& kind);
+// `amrstream pathlines`: tracePathlines, then the lines written ("output") and the host memory's
+// peak ("memory").
+void runPathlineJob(const PathlineJob& job, const TraceOutput& output,
+                    const Reporter& reporter = {});
 
 }  // namespace amrstream

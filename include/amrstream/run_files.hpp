@@ -12,7 +12,11 @@
 #include <string>
 #include <vector>
 
-namespace amrstream::cli {
+namespace amrstream {
+
+// Throws InputError naming the path unless it names an existing regular file (symbolic links
+// followed): a directory, FIFO, socket or device is refused by name before anything opens it.
+void checkRegularFile(const std::filesystem::path& path);
 
 class RunFiles {
  public:
@@ -45,4 +49,4 @@ class RunFiles {
   std::vector<File> inputs_, outputs_;
 };
 
-}  // namespace amrstream::cli
+}  // namespace amrstream

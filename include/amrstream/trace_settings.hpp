@@ -1,51 +1,35 @@
 #pragma once
-// The stepping settings as users give them (names as on the command line), checked and turned
-// into the tracer's TraceOptions.
+// The stepping settings as users give them (names as on the command line); the library checks
+// them against the field when a job is prepared.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
-#include "flow/trace_options.hpp"
-#include "flow/vector_volume.hpp"
+#include "amrstream/settings.hpp"
 
 namespace amrstream {
 
+// Each member is the setting of amrstream/settings.hpp its comment names, with its default.
 struct TraceSettings {
-  std::uint32_t steps = 1000;      // at most this many steps per line
-  std::optional<float> stepSize;   // default: see chooseStepSize
-  std::string stepMode = "arc";    // arc, cell (the paper's) or time: see docs/cli.md
-  std::string integrator = "rk4";  // rk4, rk45, rk2 or euler
-  float tolerance = 1e-4f;         // rk45: error per step, in finest cell widths of its region
-  std::optional<float> minStep;    // rk45: default the first step / 100
-  std::optional<float> maxStep;    // rk45: default the first step x 4
-  std::string direction = "both";  // forward, backward or both (two lines per seed)
-  float terminalSpeed = 1e-12f;
-  float maxLength = 0.0f;  // 0: no limit
-  float maxTime = 0.0f;    // 0: no limit
-  bool vorticity = false;
-  bool keepHistory = true;         // false: only each line's last point
-  std::uint64_t memoryBudget = 0;  // 0: automatic
-  std::uint32_t cpuTail = 0;       // TraceOptions::cpuTailLines: GPU lines the CPU finishes
+  std::uint32_t steps = std::uint32_t(settings::kSteps.fallback);  // steps
+  std::optional<float> stepSize;  // step_size: unset, the step mode's default (chooseStepSize)
+  std::string stepMode{settings::kStepMode.shown};                 // step_mode
+  std::string integrator{settings::kIntegrator.shown};             // integrator
+  float tolerance = float(settings::kTolerance.fallback);          // tolerance
+  std::optional<float> minStep;                                    // min_step
+  std::optional<float> maxStep;                                    // max_step
+  std::string direction{settings::kDirection.shown};               // direction
+  float terminalSpeed = float(settings::kTerminalSpeed.fallback);  // terminal_speed
+  float maxLength = float(settings::kMaxLength.fallback);          // max_length
+  float maxTime = float(settings::kMaxTime.fallback);              // max_time
+  bool vorticity = false;                                          // vorticity
+  bool keepHistory = true;  // false: only each line's last point (endpoints_only)
+  std::uint64_t memoryBudget = std::uint64_t(settings::kMemoryBudget.fallback);  // memory_budget
+  std::uint32_t cpuTail = std::uint32_t(settings::kCpuTail.fallback);            // cpu_tail
 };
 
-// The settings checked (InputError naming the setting) against the volume. The collected traces
-// may take at most a share of the machine's memory (kTraceMemoryShare).
-flow::TraceOptions traceOptions(const TraceSettings& settings, const flow::VectorVolume& volume);
-
-// "cell", "time" or "arc"; InputError otherwise.
-flow::StepMode parseStepMode(const std::string& name);
-std::string stepModeName(flow::StepMode mode);  // "cell", "time", "arc"
-// "rk4", "rk45", "rk2" or "euler"; InputError otherwise.
-flow::Integrator parseIntegrator(const std::string& name);
-std::string integratorName(flow::Integrator integrator);
-// "forward", "backward" or "both"; InputError otherwise.
-flow::Direction parseDirection(const std::string& name);
-std::string directionName(flow::Direction direction);  // "forward", "backward", "both"
-
-// The step size the user gave, else the default of the mode: 0.25 cell widths, or for `time`
-// 1/4 of the finest cell crossed at the volume's maximum speed. Throws InputError unless > 0.
-float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
-                     const flow::VectorVolume& volume);
+// The most memoryBudget may be: the machine's memory (any count where it is unknown).
+std::uint64_t maxMemoryBudget();
 
 }  // namespace amrstream

@@ -1,18 +1,22 @@
 #pragma once
-// Tracing on the chosen backend: the CPU reference or a GPU backend on a Vulkan device.
+// Traced lines as one result: every line's points and the data along them, what ended each line,
+// and how they were made (what a .vtp records as FieldData).
 
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
-#include "amrstream/backend.hpp"
-#include "amrstream/log.hpp"
-#include "flow/trace_options.hpp"
-#include "flow/stored_traces.hpp"
-#include "flow/trace_view.hpp"
-#include "flow/vector_volume.hpp"
+#include "amrstream/settings.hpp"
 
 namespace amrstream {
+
+class Field;
 
 // What ran a trace and where its time went: creating the device context, uploading the volume
 // and building its point-location structure and kernels (0 on the CPU), then tracing proper.
@@ -23,43 +27,59 @@ struct TraceReport {
   double traceSeconds = 0.0;
 };
 
-// What happens to the volume's host copy of its values once a GPU backend has uploaded them.
-enum class HostValues { Keep, Release };
-
-// Traces `seeds` (physical coordinates, inside the domain) with the requested backend, saying on
-// `log` what was chosen, the device setup and where a GPU trace's host time went. With
-// HostValues::Release and a GPU backend, the volume's values, channel values, gradients and cell
-// map are freed once on the device (the CPU path keeps them, and so does a GPU trace with
-// options.cpuTailLines, whose last lines the CPU finishes). Throws vk::ContextError naming the
-// missing extension when a named backend is not available. The points stay in the rounds that made
-// them (StoredTraces::assemble() gives a TraceSet).
-flow::StoredTraces trace(const BackendRequest& request, flow::VectorVolume& volume,
-                         std::span<const glm::dvec3> seeds, const flow::TraceOptions& options,
-                         const flow::TraceProgress& progress = {}, TraceReport* report = nullptr,
-                         HostValues hostValues = HostValues::Keep, const Log& log = {});
-
-// Where a GPU trace's points wait until they are written: in host memory, or on the device that
-// traced them, copied out as they are written (host memory then holds a few windows of lines
-// instead of every point). Auto keeps them on a GPU (not a software device) where they fit.
-enum class TraceStore { Auto, Host, Device };
-
-// Traces held for a writer, wherever their points are; a device's traces keep the device open.
-class HeldTraces {
- public:
-  virtual ~HeldTraces() = default;
-  virtual const flow::TraceView& view() const = 0;
-};
-
-// As trace(), the points kept where `store` says: on the device where a GPU backend traces and
-// TraceStore::Device is asked (or Auto, on a GPU) and every line's maxSteps + 1 points fit (see
-// gpu::GpuTracer::traceOnDevice), else in host memory as trace() keeps them. `volume` must
-// outlive the result.
-std::unique_ptr<HeldTraces> traceForWriting(
-    const BackendRequest& request, flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
-    const flow::TraceOptions& options, TraceStore store, const flow::TraceProgress& progress = {},
-    TraceReport* report = nullptr, HostValues hostValues = HostValues::Keep, const Log& log = {});
-
 // The ReasonForTermination's name, e.g. "out of domain".
 const char* reasonName(int reason);
+
+// How a .vtp of lines is written.
+struct TraceOutput {
+  std::string path = "traces.vtp";
+  std::string compression{settings::kCompression.shown};      // compression
+  std::string periodicLines{settings::kPeriodicLines.shown};  // periodic_lines
+};
+
+// What a writer wrote.
+struct WrittenLines {
+  std::uint64_t lines = 0, points = 0;
+  double seconds = 0.0;
+};
+
+// Lines stored one after another, as vtkStreamTracer orders them: with both directions, the
+// forward lines of all seeds, then the backward ones; every line starts at its seed. Points are in
+// physical coordinates. A handle: copies share the lines.
+class Traces {
+ public:
+  Traces();  // no lines
+  std::size_t lineCount() const;
+  std::uint64_t pointCount() const;
+  // Line i's points are [offsets()[i], offsets()[i + 1]).
+  std::span<const std::uint64_t> offsets() const;
+  std::span<const std::uint32_t> seedIds() const;
+  std::span<const std::uint32_t> steps() const;   // integration steps each line took
+  std::span<const std::int32_t> reasons() const;  // ReasonForTermination (reasonName)
+  glm::dvec3 point(std::uint64_t i) const;
+  std::span<const float> integrationTimes() const;  // negative along backward lines
+  const std::string& vectorName() const;
+  std::span<const glm::vec3> vectors() const;  // the traced vector at every point
+  const std::vector<std::string>& pointDataNames() const;
+  // A point-data channel's value at every point. Throws InputError for an absent channel.
+  std::vector<float> pointData(const std::string& name) const;
+  const TraceReport& report() const;
+  // The field they were traced in (render colours by its channels); none for pathlines.
+  const std::optional<Field>& field() const;
+
+  // Writes them as a VTK PolyData .vtp with their provenance (through a temporary file).
+  WrittenLines write(const TraceOutput& output) const;
+
+  struct Impl;  // the library's: src/api/traces_impl.hpp
+  explicit Traces(std::shared_ptr<const Impl> impl);
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+};
+
+// Traces read from a .vtp (one amrstream or ParaView's Stream Tracer wrote). Throws InputError
+// naming the file and the problem.
+Traces readTraces(const std::filesystem::path& path);
 
 }  // namespace amrstream

@@ -47,28 +47,24 @@ def _vector_text(vector):
     return ",".join(names)
 
 
-def prepare(dataset, vector=None, point_data="all", periodic="auto", interpolant="tent"):
-    """A Field ready for tracing: the vector ('a,b,c' or three names; default the velocity,
-    else the magnetic field), the point data ('all', 'none' or names), periodic axes ('auto' as
-    the file says, 'none', or e.g. 'x,y,z'), the interpolant ('tent', the paper's, or 'linear',
-    exact for linear fields across level jumps); bricks and regions built once for many
-    traces."""
+def prepare(dataset, vector=None, point_data=None, **settings):
+    """A Field ready for tracing: the vector ('a,b,c' or three names), the point data ('all',
+    'none' or names), the periodic axes and the interpolant; bricks and regions built once for
+    many traces. The settings, with their defaults, are those of amrstream._amrstream.prepare
+    (below)."""
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
-    return _amrstream.prepare(dataset, vector=_vector_text(vector), point_data=point_data,
-                              periodic=periodic, interpolant=interpolant)
+    if point_data is not None:
+        settings["point_data"] = point_data
+    return _amrstream.prepare(dataset, vector=_vector_text(vector), **settings)
 
 
 def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpolant=None,
           **settings):
-    """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field.
-
-    Settings, as `amrstream trace` names them: steps=1000, step_size (default 0.25 cell
-    widths), step_mode='cell'|'time'|'arc', direction='both'|'forward'|'backward',
-    vorticity=False, max_length=0, max_time=0, terminal_speed=1e-12, memory_budget=0 (bytes),
-    backend='auto'|'cpu'|'compute'|'pipeline'|'rayquery', device='' (a device name part),
-    progress=callable(done, total), verbose=False. vector, point_data, periodic and interpolant
-    are those of prepare() (only with a Dataset). Returns Traces.
+    """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field
+    (vector, point_data, periodic and interpolant only with a Dataset). Returns Traces. The
+    settings, as `amrstream trace` names them, with their defaults, are those of
+    amrstream._amrstream.trace (below).
     """
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
@@ -81,12 +77,9 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
     files, folders (AMReX plotfiles) or glob patterns (a single string is one pattern), ordered
     by the times the files state.
 
-    Settings, as `amrstream pathlines` names them: start_time (default: the first snapshot's),
-    end_time (default: the last's), step_size (default: a tenth of the shortest interval),
-    release_every (streaklines: new particles from every seed at this interval), periodic,
-    interpolant, backend, device, progress=callable(done, total) over the intervals,
-    verbose=False. vector and point_data as for prepare(). Returns Traces (one line per
-    particle; integration_time is physical time), which to_vtp() writes.
+    Returns Traces (one line per particle; integration_time is physical time), which to_vtp()
+    writes. The settings, as `amrstream pathlines` names them, with their defaults, are those of
+    amrstream._amrstream.pathlines (below).
     """
     if isinstance(snapshots, str):
         snapshots = [snapshots]
@@ -98,18 +91,16 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
 
 def render(traces, **look):
     """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
-    RGBA image. Options as `amrstream render` names them: width=1024, height=768,
-    camera=(azimuth, elevation[, zoom]) or view='iso'|'+x'|'-x'|..., zoom=1, up='+z', fov=35,
-    projection='perspective'|'orthographic', frame='traces'|'domain', look_at=(x, y, z),
-    view_box=(x0, y0, z0, x1, y1, z1) the camera frames (default: the traces),
-    tube_radius (finest cells) or tube_radius_physical or tube_radius_view=0.003 (of the
-    view's height), colour_by='speed'|'time'|a field, colour_map='viridis'|'magma'|'inferno'|
-    'plasma'|'cividis'|'coolwarm'|'rdbu'|'twilight', colour_scale='linear'|'log'|'symlog',
-    symlog_width, range=(min, max), outline='domain'|'bricks'|'none', axes=False, triad=True,
-    scale_bar=False, background='white'|'transparent'|'#rrggbb'|'r,g,b', ao_samples=4,
-    volume=<a field shown behind the tubes>, volume_range, volume_opacity=0.05,
-    linear_volume=False, frames=32, colour_bar=True, backend, device, progress, verbose."""
+    RGBA image. The options, as `amrstream render` names them, with their defaults, are those of
+    Traces.render (below)."""
     return traces.render(**look)
+
+
+# The compiled functions' signatures and settings (defaults and meanings, from the library's one
+# list of settings) complete the wrappers' docstrings.
+for _wrapper, _compiled in ((prepare, _amrstream.prepare), (trace, _amrstream.trace),
+                            (pathlines, _amrstream.pathlines), (render, Traces.render)):
+    _wrapper.__doc__ += "\n" + _compiled.__doc__
 
 
 def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):

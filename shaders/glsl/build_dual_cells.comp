@@ -9,13 +9,17 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
 #include "shared/amr_types.h"
+#include "shared/dual_cell_bindings.h"
 #include "shared/dual_cell_params.h"
 
 layout(local_size_x = AMRSTREAM_DUAL_CELL_GROUP) in;
 
-layout(scalar, set = 0, binding = 0) readonly buffer BrickBuffer { Brick bricks[]; };
-layout(std430, set = 0, binding = 1) readonly buffer ValueBuffer { vec4 values[]; };
-layout(std430, set = 0, binding = 2) readonly buffer DualOffsetBuffer { uint dualOffsets[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_DUAL_CELL_BRICKS)
+readonly buffer BrickBuffer { Brick bricks[]; };
+layout(std430, set = 0, binding = AMRSTREAM_BINDING_DUAL_CELL_VALUES)
+readonly buffer ValueBuffer { vec4 values[]; };
+layout(std430, set = 0, binding = AMRSTREAM_BINDING_DUAL_CELL_OFFSETS)
+readonly buffer DualOffsetBuffer { uint dualOffsets[]; };
 layout(buffer_reference, std430, buffer_reference_align = 16) writeonly buffer DualCellBlock {
   vec4 corners[8];
 };

@@ -7,25 +7,38 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/amr_types.h"
+#include "shared/round_bindings.h"
 #include "shared/round_params.h"
 #include "include/cell_point.glsl"
 
 layout(push_constant, scalar) uniform PointDataBlock { PointDataParams pc; };
-layout(scalar, set = 0, binding = 0) readonly buffer BrickBuffer { Brick bricks[]; };
-layout(std430, set = 0, binding = 1) readonly buffer ValueBuffer { vec4 values[]; };
-layout(scalar, set = 0, binding = 2) readonly buffer RegionBuffer { Region regions[]; };
-layout(scalar, set = 0, binding = 3) readonly buffer RegionBrickBuffer { Brick regionBricks[]; };
-layout(scalar, set = 0, binding = 4) readonly buffer ChannelValueBuffer { float channelValues[]; };
-layout(scalar, set = 0, binding = 5) readonly buffer SummaryBuffer { RoundSummary summary; };
-layout(scalar, set = 0, binding = 6) readonly buffer PositionBuffer { vec3 positions[]; };
-layout(scalar, set = 0, binding = 7) readonly buffer RegionIdBuffer { int regionIds[]; };
-layout(scalar, set = 0, binding = 8) writeonly buffer ChannelBuffer { float channels[]; };
-layout(scalar, set = 0, binding = 9) writeonly buffer VorticityBuffer { vec3 vorticity[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_BRICKS)
+readonly buffer BrickBuffer { Brick bricks[]; };
+layout(std430, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_VALUES)
+readonly buffer ValueBuffer { vec4 values[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_REGIONS)
+readonly buffer RegionBuffer { Region regions[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_REGION_BRICKS)
+readonly buffer RegionBrickBuffer { Brick regionBricks[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_CHANNEL_VALUES)
+readonly buffer ChannelValueBuffer { float channelValues[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_SUMMARY)
+readonly buffer SummaryBuffer { RoundSummary summary; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_POSITIONS)
+readonly buffer PositionBuffer { vec3 positions[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_REGION_IDS)
+readonly buffer RegionIdBuffer { int regionIds[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_CHANNELS)
+writeonly buffer ChannelBuffer { float channels[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_VORTICITY)
+writeonly buffer VorticityBuffer { vec3 vorticity[]; };
 // The linear interpolant's cells (per slot the value, then the gradients of its three
 // components) and channel gradients (per slot and channel), per finest cell; one element each,
 // unread, with the tent interpolant.
-layout(scalar, set = 0, binding = 10) readonly buffer LinearCellBuffer { vec3 linearCells[]; };
-layout(scalar, set = 0, binding = 11) readonly buffer ChannelGradientBuffer { vec3 channelGradients[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_LINEAR_CELLS)
+readonly buffer LinearCellBuffer { vec3 linearCells[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_POINT_DATA_CHANNEL_GRADIENTS)
+readonly buffer ChannelGradientBuffer { vec3 channelGradients[]; };
 
 layout(local_size_x = AMRSTREAM_POINT_DATA_GROUP) in;
 

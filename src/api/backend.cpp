@@ -7,8 +7,9 @@
 #include <cstdlib>
 #include <optional>
 
+#include "amrstream/error.hpp"
+#include "api/device.hpp"
 #include "gpu/backend.hpp"
-#include "util/input_error.hpp"
 #include "vk/context.hpp"
 #include "vk/context_error.hpp"
 #include "vk/device_report.hpp"
@@ -56,7 +57,7 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use, const
     if (use == BackendUse::Trace && request.device.empty() && device &&
         device->type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
       say(log, fmt::format("backend    auto: cpu ({} is a software Vulkan device, slower than the "
-                           "CPU reference; name --backend rayquery, pipeline or compute to trace "
+                           "CPU reference; name {{backend}} rayquery, pipeline or compute to trace "
                            "on it)",
                            device->name));
       return choice;
@@ -67,8 +68,8 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use, const
   } else {
     const std::optional<gpu::Backend> named = gpu::parseBackend(request.backend);
     if (!named)
-      throw InputError("backend",
-                       "'" + request.backend + "' is not auto, rayquery, pipeline, compute or cpu");
+      throw settingError(
+          "backend", "'" + request.backend + "' is not auto, rayquery, pipeline, compute or cpu");
     choice.backend = *named;
   }
   return choice;
@@ -89,6 +90,28 @@ void checkValidation(const vk::Context& ctx) {
   if (ctx.validationErrorCount() > 0)
     throw std::runtime_error(
         fmt::format("the Vulkan validation layer reported {} errors", ctx.validationErrorCount()));
+}
+
+std::vector<DeviceDescription> describeDevices() {
+  std::vector<DeviceDescription> described;
+  for (const vk::DeviceReport& d : vk::listDevices()) {
+    DeviceDescription out;
+    out.index = d.index;
+    out.name = d.name;
+    out.type = vk::deviceTypeName(d.type);
+    out.driverName = d.driverName;
+    out.driverInfo = d.driverInfo;
+    for (gpu::Backend b : {gpu::Backend::RayQuery, gpu::Backend::Pipeline, gpu::Backend::Compute})
+      out.backends.push_back(
+          {std::string(gpu::backendName(b)), d.missingFor(gpu::requiredCapabilities(b))});
+    std::string why;
+    const gpu::Backend best = gpu::chooseBackend(&d, why);
+    out.software = d.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    out.autoRender = gpu::backendName(best);
+    out.autoTrace = out.software ? "cpu" : out.autoRender;
+    described.push_back(std::move(out));
+  }
+  return described;
 }
 
 bool validationRequested() {

@@ -4,39 +4,57 @@
 
 #include <algorithm>
 
+#include "amrstream/error.hpp"
+#include "api/handles.hpp"
+#include "formats/dataset_files.hpp"
 #include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream {
 
-Dataset load(const std::string& input, const synth::GeneratorOptions& builtin) {
-  return formats::loadInput(input, builtin);
+Dataset datasetOf(bricks::AmrField cells) {
+  return Dataset(std::make_shared<const Dataset::Impl>(Dataset::Impl{std::move(cells)}));
 }
 
-DeferredDataset loadDeferred(const std::string& input, const synth::GeneratorOptions& builtin) {
-  if (formats::detectFormat(input) == formats::Format::ExaBricks) {
-    formats::ExaCells exa = formats::readExaCells(input);
-    DeferredDataset deferred{std::make_shared<Dataset>(std::move(exa.field)), {}, {}};
-    deferred.catalog.source = deferred.cells->source();
-    for (const formats::ExaChannelFile& file : exa.channels)
-      deferred.catalog.names.push_back(file.name);
-    deferred.channels = [files = std::move(exa.channels)](const std::string& name,
-                                                          const flow::ChannelUse& use) {
-      const auto file =
-          std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.name == name; });
-      if (file == files.end())
-        throw std::logic_error("loadDeferred: no channel '" + name + "' was listed");
-      use(formats::readExaChannel(*file));
-    };
-    return deferred;
-  }
-  auto whole = std::make_shared<Dataset>(load(input, builtin));
-  DeferredDataset deferred{whole, flow::catalogOf(*whole), {}};
-  deferred.channels = [whole](const std::string& name, const flow::ChannelUse& use) {
-    use(whole->channel(name).values);
-  };
-  return deferred;
+Dataset::Dataset(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+const std::string& Dataset::source() const { return impl_->cells.source(); }
+const DatasetInfo& Dataset::info() const { return impl_->cells.info(); }
+std::size_t Dataset::cellCount() const { return impl_->cells.cellCount(); }
+std::span<const glm::ivec3> Dataset::corners() const { return impl_->cells.lowers(); }
+std::span<const std::uint8_t> Dataset::levels() const { return impl_->cells.levels(); }
+std::vector<std::string> Dataset::channelNames() const {
+  std::vector<std::string> names;
+  for (const Channel& c : impl_->cells.channels()) names.push_back(c.name);
+  return names;
+}
+bool Dataset::hasChannel(std::string_view name) const {
+  return impl_->cells.findChannel(name).has_value();
+}
+std::span<const float> Dataset::channel(std::string_view name) const {
+  return impl_->cells.channel(name).values;
+}
+const WorldTransform& Dataset::transform() const { return impl_->cells.transform(); }
+CellBox Dataset::bounds() const { return impl_->cells.bounds(); }
+glm::dvec3 Dataset::lower() const { return transform().toPhysical(glm::dvec3(bounds().lower)); }
+glm::dvec3 Dataset::upper() const { return transform().toPhysical(glm::dvec3(bounds().upper)); }
+int Dataset::finestLevel() const { return impl_->cells.finestLevel(); }
+int Dataset::coarsestLevel() const { return impl_->cells.coarsestLevel(); }
+std::vector<std::size_t> Dataset::cellsPerLevel() const { return impl_->cells.cellsPerLevel(); }
+
+Dataset load(const std::string& input, const BuiltinOptions& builtin) {
+  return datasetOf(formats::loadInput(input, builtin));
+}
+
+std::vector<std::filesystem::path> datasetFiles(const std::string& input) {
+  return formats::datasetFiles(input);
+}
+
+std::string formatName(const std::string& input) {
+  return std::string(formats::formatName(formats::detectFormat(input)));
+}
+
+std::filesystem::path writeExaBricks(const Dataset& dataset, const std::filesystem::path& prefix) {
+  return formats::writeExa(cellsOf(dataset), prefix);
 }
 
 Dataset fromCells(CellArrays cells) {
@@ -57,7 +75,7 @@ Dataset fromCells(CellArrays cells) {
         glm::all(glm::lessThan(glm::abs(cells.origin), glm::dvec3(1e300)))))
     throw InputError(cells.source, "the finest cell width must be positive and the origin finite");
 
-  bricks::DatasetInfo info;
+  DatasetInfo info;
   info.format = cells.format;
   info.time = cells.time;
   info.timeUnit = cells.timeUnit;
@@ -67,9 +85,9 @@ Dataset fromCells(CellArrays cells) {
   info.finestFileLevel = finest;
   info.levelsCountDown = true;
   info.levelName = "level (0 = coarsest)";
-  return Dataset(std::move(cells.corners), std::move(levels), std::move(cells.channels),
-                 bricks::WorldTransform{cells.origin, cells.finestWidth}, cells.source,
-                 std::move(info));
+  return datasetOf(bricks::AmrField(
+      std::move(cells.corners), std::move(levels), std::move(cells.channels),
+      WorldTransform{cells.origin, cells.finestWidth}, cells.source, std::move(info)));
 }
 
 }  // namespace amrstream

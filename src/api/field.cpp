@@ -5,11 +5,14 @@
 #include <cctype>
 #include <string_view>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
+#include "api/field_plan.hpp"
+#include "api/handles.hpp"
+#include "flow/seeds.hpp"
 
 namespace amrstream {
 
-flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::DatasetInfo& info) {
+flow::PeriodicAxes periodicAxes(const std::string& request, const DatasetInfo& info) {
   flow::PeriodicAxes axes{};
   if (request == "auto") return info.periodicKnown ? info.periodic : axes;
   if (request == "none") return axes;
@@ -18,8 +21,8 @@ flow::PeriodicAxes periodicAxes(const std::string& request, const bricks::Datase
     const auto axis =
         std::string_view("xyz").find(char(std::tolower(static_cast<unsigned char>(c))));
     if (axis == std::string_view::npos)
-      throw InputError(
-          "--periodic",
+      throw settingError(
+          "periodic",
           fmt::format("'{}' is not auto, none or a list of the axes x, y and z", request));
     axes[axis] = true;
   }
@@ -36,14 +39,14 @@ std::string axesText(const flow::PeriodicAxes& axes) {
 flow::Interpolant parseInterpolant(const std::string& name) {
   if (name == "tent") return flow::Interpolant::Tent;
   if (name == "linear") return flow::Interpolant::Linear;
-  throw InputError("--interpolant", "'" + name + "' is not tent or linear");
+  throw settingError("interpolant", "'" + name + "' is not tent or linear");
 }
 
 std::string interpolantName(flow::Interpolant interpolant) {
   return interpolant == flow::Interpolant::Linear ? "linear" : "tent";
 }
 
-FieldPlan planField(const flow::ChannelCatalog& channels, const bricks::DatasetInfo& info,
+FieldPlan planField(const flow::ChannelCatalog& channels, const DatasetInfo& info,
                     const FieldOptions& options) {
   FieldPlan plan;
   plan.vector = flow::chooseVectorChannels(channels, options.vector);
@@ -53,14 +56,44 @@ FieldPlan planField(const flow::ChannelCatalog& channels, const bricks::DatasetI
   return plan;
 }
 
-Field buildField(const Dataset& cells, const FieldOptions& options) {
-  const FieldPlan plan = planField(flow::catalogOf(cells), cells.info(), options);
-  Field field;
-  field.source = cells.source();
-  field.info = cells.info();
-  field.vector = plan.vector;
-  field.volume = flow::buildVectorVolume(cells, field.vector, plan.volume, &field.times);
-  return field;
+Field fieldOf(flow::VectorVolume volume, flow::VectorChannels vector, std::string source,
+              DatasetInfo info, const flow::VolumeBuildTimes& times,
+              std::optional<Dataset> dataset) {
+  auto impl = std::make_shared<Field::Impl>();
+  impl->volume = std::move(volume);
+  impl->vector = std::move(vector);
+  impl->source = std::move(source);
+  impl->info = std::move(info);
+  impl->times = {times.bricks, times.regions, times.gradients, times.gather};
+  impl->dataset = std::move(dataset);
+  return Field(std::move(impl));
 }
+
+Field buildField(const Dataset& dataset, const FieldOptions& options, KeepDataset keep) {
+  const bricks::AmrField& cells = cellsOf(dataset);
+  const FieldPlan plan = planField(flow::catalogOf(cells), cells.info(), options);
+  flow::VolumeBuildTimes times;
+  flow::VectorVolume volume = flow::buildVectorVolume(cells, plan.vector, plan.volume, &times);
+  return fieldOf(std::move(volume), plan.vector, cells.source(), cells.info(), times,
+                 keep == KeepDataset::Yes ? std::optional<Dataset>(dataset) : std::nullopt);
+}
+
+Field::Field(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
+const std::string& Field::source() const { return impl_->source; }
+const DatasetInfo& Field::info() const { return impl_->info; }
+const std::string& Field::vectorName() const { return impl_->volume.vectorName; }
+const std::array<std::string, 3>& Field::vectorChannels() const { return impl_->vector.channels; }
+const std::vector<std::string>& Field::pointDataNames() const { return impl_->volume.channelNames; }
+std::string Field::periodicAxes() const { return axesText(impl_->volume.periodic); }
+std::string Field::interpolant() const { return interpolantName(impl_->volume.interpolant); }
+std::size_t Field::brickCount() const { return impl_->volume.originalBrickCount; }
+std::size_t Field::periodicImages() const {
+  return impl_->volume.bricks.size() - impl_->volume.originalBrickCount;
+}
+std::size_t Field::regionCount() const { return impl_->volume.regions.regions.size(); }
+glm::dvec3 Field::lower() const { return flow::domainLower(impl_->volume); }
+glm::dvec3 Field::upper() const { return flow::domainUpper(impl_->volume); }
+const FieldBuildTimes& Field::buildTimes() const { return impl_->times; }
+const std::optional<Dataset>& Field::dataset() const { return impl_->dataset; }
 
 }  // namespace amrstream

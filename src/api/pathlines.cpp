@@ -10,11 +10,20 @@
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "amrstream/dataset.hpp"
+#include "amrstream/error.hpp"
+#include "amrstream/version.hpp"
+#include "api/device.hpp"
+#include "api/field_plan.hpp"
+#include "api/handles.hpp"
+#include "api/job_state.hpp"
+#include "api/seed_choice.hpp"
+#include "api/traces_impl.hpp"
+#include "flow/pathline_tracer.hpp"
 #include "formats/snapshot_time.hpp"
 #include "gpu/vector_probe.hpp"
 #include "util/host_memory.hpp"
 #include "util/host_threads.hpp"
-#include "util/input_error.hpp"
+#include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream {
@@ -23,7 +32,7 @@ namespace {
 
 struct LoadedSnapshot {
   double time = 0.0;
-  Field field;
+  std::optional<Field> field;
   std::optional<Dataset> cells;  // kept for the first only: density seeding reads them
   std::uint64_t cellCount = 0;
   double readSeconds = 0.0, buildSeconds = 0.0;
@@ -39,7 +48,7 @@ std::unique_ptr<LoadedSnapshot> loadSnapshot(const SnapshotFile& file, const Fie
   loaded.readSeconds = clock.seconds();
   loaded.cellCount = cells.cellCount();
   clock.restart();
-  loaded.field = buildField(cells, options);
+  loaded.field = buildField(cells, options, KeepDataset::No);
   loaded.buildSeconds = clock.seconds();
   if (keepCells) loaded.cells.emplace(std::move(cells));
   return owned;
@@ -54,7 +63,7 @@ std::string joined(const std::vector<std::string>& names) {
 // Every snapshot must offer what the first one traced with.
 void checkLikeTheFirst(const LoadedSnapshot& s, const std::string& path,
                        const PathlineReport& report) {
-  const flow::VectorVolume& v = s.field.volume;
+  const flow::VectorVolume& v = volumeOf(*s.field);
   if (v.vectorName != report.vectorName)
     throw InputError(path, fmt::format("its vector is '{}', the first snapshot's '{}'",
                                        v.vectorName, report.vectorName));
@@ -131,34 +140,21 @@ std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
   return series;
 }
 
-flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const FieldOptions& field,
-                                    const SeedRequest& seedRequest,
-                                    const PathlineSettings& settings,
-                                    const BackendRequest& backendRequest, PathlineReport& report,
-                                    const IntervalProgress& progress, const Log& log) {
-  Stopwatch wall;
-  const BackendChoice choice = chooseBackend(backendRequest, BackendUse::Trace, log);
-  std::optional<GpuSampling> gpu;
-  if (choice.backend == gpu::Backend::Cpu) {
-    report.backend = "cpu";
-    report.device = hostThreadsText();
-  } else {
-    Stopwatch setup;
-    gpu.emplace(backendRequest, choice);
-    report.backend = gpu::backendName(choice.backend);
-    report.device = gpu->ctx.deviceName();
-    report.deviceSeconds += setup.seconds();
-  }
+namespace {
+
+// The tracer's options from the settings and the series, checked.
+flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
+                                      const PathlineSettings& settings) {
   const double seriesStart = series.front().time, seriesEnd = series.back().time;
-  flow::PathlineOptions& options = report.options;
+  flow::PathlineOptions options;
   options.startTime = settings.startTime.value_or(seriesStart);
   options.endTime = settings.endTime.value_or(seriesEnd);
   if (options.startTime < seriesStart || options.startTime >= seriesEnd)
-    throw InputError("--start-time",
-                     fmt::format("{:g} is outside the series, which runs from {:g} to {:g}",
-                                 options.startTime, seriesStart, seriesEnd));
+    throw settingError("start_time",
+                       fmt::format("{:g} is outside the series, which runs from {:g} to {:g}",
+                                   options.startTime, seriesStart, seriesEnd));
   if (!(options.endTime > options.startTime))
-    throw InputError("--end-time", fmt::format("{:g} is not after the start time {:g}",
+    throw settingError("end_time", fmt::format("{:g} is not after the start time {:g}",
                                                options.endTime, options.startTime));
   if (options.endTime >= seriesEnd) {
     options.endTime = seriesEnd;
@@ -170,68 +166,102 @@ flow::PathlineTracer tracePathlines(std::span<const SnapshotFile> series, const 
     shortest = std::min(shortest, series[i + 1].time - series[i].time);
   options.stepSize = settings.stepSize.value_or(shortest / 10);
   if (!(options.stepSize > 0.0) || !std::isfinite(options.stepSize))
-    throw InputError("--step-size", fmt::format("{:g} is not a positive time", options.stepSize));
+    throw settingError("step_size", fmt::format("{:g} is not a positive time", options.stepSize));
   if (settings.releaseEvery < 0.0 || !std::isfinite(settings.releaseEvery))
-    throw InputError("--release-every",
-                     fmt::format("{:g} is not a positive time", settings.releaseEvery));
+    throw settingError("release_every",
+                       fmt::format("{:g} is not a positive time", settings.releaseEvery));
   options.releaseEvery = settings.releaseEvery;
   options.maxResultBytes =
       settings.maxResultBytes > 0
           ? settings.maxResultBytes
           : static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
-  report.snapshotsUsed = last - first + 1;
+  return options;
+}
 
-  // On the heap: a GPU probe points at its snapshot's volume, which must not move.
-  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], field, true);
-  report.readSeconds += a->readSeconds;
-  report.buildSeconds += a->buildSeconds;
-  report.cellsRead += a->cellCount;
-  const flow::VectorVolume& firstVolume = a->field.volume;
-  report.vectorName = firstVolume.vectorName;
-  report.channelNames = firstVolume.channelNames;
-  report.interpolant = interpolantName(firstVolume.interpolant);
-  report.firstInfo = a->field.info;
+// The backend's device and probe kernel, or none for the CPU.
+std::optional<GpuSampling> openSampling(const BackendRequest& request, PathlineReport& report,
+                                        const Log& log) {
+  const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  std::optional<GpuSampling> gpu;
+  if (choice.backend == gpu::Backend::Cpu) {
+    report.backend = "cpu";
+    report.device = hostThreadsText();
+    return gpu;
+  }
+  Stopwatch setup;
+  gpu.emplace(request, choice);
+  report.backend = gpu::backendName(choice.backend);
+  report.device = gpu->ctx.deviceName();
+  report.deviceSeconds += setup.seconds();
+  return gpu;
+}
+
+void addLoadTimes(const LoadedSnapshot& s, PathlineReport& report) {
+  report.readSeconds += s.readSeconds;
+  report.buildSeconds += s.buildSeconds;
+  report.cellsRead += s.cellCount;
+}
+
+// Traces the particles through the intervals of snapshots first..last, loading each next
+// snapshot on another thread while the current interval is traced.
+void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
+                    std::unique_ptr<LoadedSnapshot> a, std::optional<GpuSampling>& gpu,
+                    flow::PathlineTracer& tracer, PathlineReport& report,
+                    const Reporter& reporter) {
+  const std::span<const SnapshotFile> series = job.series;
   const auto loadAhead = [&](std::size_t i) {
-    return std::async(std::launch::async, [&, i] { return loadSnapshot(series[i], field, false); });
+    return std::async(std::launch::async,
+                      [&, i] { return loadSnapshot(series[i], job.field, false); });
   };
   std::future<std::unique_ptr<LoadedSnapshot>> next = loadAhead(first + 1);
-
-  flow::SeedList seeds =
-      chooseSeeds(seedRequest, domainOf(firstVolume), &*a->cells, report.seedDescription);
-  placeSeeds(firstVolume, seeds);
-  a->cells.reset();
-  report.seedCount = seeds.points.size();
-  say(log, fmt::format("seeds      {} from {}", seeds.points.size(), report.seedDescription));
-  flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
-  say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
-
   std::unique_ptr<gpu::VectorProbe> probeA, probeB;
-  if (gpu) probeA = gpu->probe(a->field.volume, report);
+  if (gpu) probeA = gpu->probe(volumeOf(*a->field), report);
   for (std::size_t i = first; i < last; ++i) {
     Stopwatch waiting;
     std::unique_ptr<LoadedSnapshot> b = next.get();
     report.waitSeconds += waiting.seconds();
-    report.readSeconds += b->readSeconds;
-    report.buildSeconds += b->buildSeconds;
-    report.cellsRead += b->cellCount;
+    addLoadTimes(*b, report);
     checkLikeTheFirst(*b, series[i + 1].path, report);
     if (i + 2 <= last) next = loadAhead(i + 2);
-    if (gpu) probeB = gpu->probe(b->field.volume, report);
+    if (gpu) probeB = gpu->probe(volumeOf(*b->field), report);
     Stopwatch tracing;
-    tracer.advance({a->time, &a->field.volume, samplerOf(probeA.get())},
-                   {b->time, &b->field.volume, samplerOf(probeB.get())});
+    tracer.advance({a->time, &volumeOf(*a->field), samplerOf(probeA.get())},
+                   {b->time, &volumeOf(*b->field), samplerOf(probeB.get())});
     report.traceSeconds += tracing.seconds();
     if (probeA) addProbeTimes(*probeA, report);
     probeA = std::move(probeB);
     a = std::move(b);
-    if (progress) progress(i - first + 1, last - first);
+    reporter.advance("intervals", i - first + 1, last - first);
   }
   if (probeA) addProbeTimes(*probeA, report);
-  tracer.finish();
-  if (gpu) checkValidation(gpu->ctx);
-  report.steps = tracer.stepCount();
-  report.wallSeconds = wall.seconds();
-  return tracer;
+}
+
+void sayPathlineSummary(const flow::PathlineTracer& tracer, const PathlineReport& report,
+                        const Log& log) {
+  say(log, fmt::format("stepping   dt = {:g} from t = {:g} to {:g}{}, {} snapshots used, "
+                       "interpolant {}",
+                       report.stepSize, report.startTime, report.endTime,
+                       report.releaseEvery > 0.0
+                           ? fmt::format(", released every {:g}", report.releaseEvery)
+                           : std::string(),
+                       report.snapshotsUsed, report.interpolant));
+  say(log, fmt::format("particles  {} ({} seeds), {} steps; reasons {}",
+                       withCommas(tracer.particleCount()), withCommas(report.seedCount),
+                       withCommas(report.steps), reasonHistogram(tracer.reasons())));
+  const double readBuild = report.readSeconds + report.buildSeconds;
+  say(log, fmt::format("time       {:.2f} s in all: reading {:.2f} s and building {:.2f} s ({} "
+                       "cells), device setup {:.2f} s, tracing {:.2f} s ({:.3g} "
+                       "particle-steps/s), waiting for snapshots {:.2f} s; {:.2f}x the reading "
+                       "and building",
+                       report.wallSeconds, report.readSeconds, report.buildSeconds,
+                       withCommas(report.cellsRead), report.deviceSeconds, report.traceSeconds,
+                       double(report.steps) / std::max(report.traceSeconds, 1e-9),
+                       report.waitSeconds, report.wallSeconds / std::max(readBuild, 1e-9)));
+  if (report.probeCalls > 0)
+    say(log, fmt::format("samples    {} batches on the device: writing the points {:.2f} s, "
+                         "the device {:.2f} s, reading the samples {:.2f} s",
+                         withCommas(report.probeCalls), report.probeWriteSeconds,
+                         report.probeDeviceSeconds, report.probeReadSeconds));
 }
 
 std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotFile> series,
@@ -239,8 +269,7 @@ std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotF
                                                        const std::string& kind) {
   using output::numberField;
   using output::textField;
-  const flow::PathlineOptions& o = report.options;
-  const bricks::DatasetInfo& info = report.firstInfo;
+  const DatasetInfo& info = report.firstInfo;
   std::vector<output::FieldDataArray> fields{
       textField("amrstream", "amrstream " AMRSTREAM_VERSION),
       textField("Output", kind),
@@ -252,15 +281,84 @@ std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotF
       textField("Seeds", fmt::format("{} from {}", report.seedCount, report.seedDescription)),
       textField("Interpolant", report.interpolant),
       textField("StepMode", "time"),
-      numberField("StepSize", o.stepSize),
-      numberField("StartTime", o.startTime),
-      numberField("EndTime", o.endTime),
-      numberField("ReleaseEvery", o.releaseEvery),
+      numberField("StepSize", report.stepSize),
+      numberField("StartTime", report.startTime),
+      numberField("EndTime", report.endTime),
+      numberField("ReleaseEvery", report.releaseEvery),
       textField("Backend", report.backend + " on " + report.device),
   };
   if (!info.timeUnit.empty()) fields.push_back(textField("TimeUnit", info.timeUnit));
   if (!info.lengthUnit.empty()) fields.push_back(textField("LengthUnit", info.lengthUnit));
   return fields;
+}
+
+}  // namespace
+
+PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) {
+  const Log& log = reporter.log;
+  const std::span<const SnapshotFile> series = job.series;
+  if (series.size() < 2)
+    throw InputError("pathlines",
+                     fmt::format("a series needs two snapshots or more; {} given", series.size()));
+  say(log, fmt::format("series     {} snapshots from t = {:g} ({}) to {:g} ({})", series.size(),
+                       series.front().time, series.front().path, series.back().time,
+                       series.back().path));
+  Stopwatch wall;
+  PathlineResult result;
+  PathlineReport& report = result.report;
+  std::optional<GpuSampling> gpu = openSampling(job.backend, report, log);
+  const flow::PathlineOptions options = pathlineOptions(series, job.settings);
+  report.stepSize = options.stepSize;
+  report.startTime = options.startTime;
+  report.endTime = options.endTime;
+  report.releaseEvery = options.releaseEvery;
+  const auto [first, last] = snapshotsUsed(series, options.startTime, options.endTime);
+  report.snapshotsUsed = last - first + 1;
+
+  // On the heap: a GPU probe points at its snapshot's volume, which must not move.
+  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], job.field, true);
+  addLoadTimes(*a, report);
+  const flow::VectorVolume& firstVolume = volumeOf(*a->field);
+  report.vectorName = firstVolume.vectorName;
+  report.channelNames = firstVolume.channelNames;
+  report.interpolant = interpolantName(firstVolume.interpolant);
+  report.firstInfo = a->field->info();
+
+  flow::SeedList seeds =
+      chooseSeeds(job.seeds, domainOf(firstVolume), &cellsOf(*a->cells), report.seedDescription);
+  placeSeeds(firstVolume, seeds);
+  a->cells.reset();
+  report.seedCount = seeds.points.size();
+  say(log, fmt::format("seeds      {} from {}", seeds.points.size(), report.seedDescription));
+  flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
+  say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
+  traceIntervals(job, first, last, std::move(a), gpu, tracer, report, reporter);
+  tracer.finish();
+  if (gpu) checkValidation(gpu->ctx);
+  report.steps = tracer.stepCount();
+  report.particleCount = tracer.particleCount();
+  report.wallSeconds = wall.seconds();
+  sayPathlineSummary(tracer, report, log);
+
+  result.streaklines = options.releaseEvery > 0.0;
+  Traces::Impl lines;
+  lines.lines = result.streaklines ? tracer.streaklines() : tracer.pathlines();
+  lines.provenance =
+      pathlineProvenance(series, report, result.streaklines ? "streaklines" : "pathlines");
+  lines.report = {report.backend, report.device, report.deviceSeconds, report.traceSeconds};
+  result.lines = tracesOf(std::move(lines));
+  return result;
+}
+
+void runPathlineJob(const PathlineJob& job, const TraceOutput& output, const Reporter& reporter) {
+  const PathlineResult result = tracePathlines(job, reporter);
+  const WrittenLines written = result.lines.write(output);
+  say(reporter.log,
+      fmt::format("output     {} ({} {}, {} points) [{:.2f} s]", output.path,
+                  withCommas(written.lines), result.streaklines ? "streaklines" : "pathlines",
+                  withCommas(written.points), written.seconds));
+  say(reporter.log, fmt::format("memory     {:.2f} GiB peak resident on the host",
+                                double(peakResidentBytes()) / 0x1p30));
 }
 
 }  // namespace amrstream

@@ -1,14 +1,14 @@
-#include "amrstream/provenance.hpp"
+#include "api/provenance.hpp"
 
-#include "amrstream/field.hpp"
-#include "amrstream/trace_settings.hpp"
+#include "amrstream/version.hpp"
+#include "api/field_plan.hpp"
+#include "api/stepping.hpp"
 
 namespace amrstream {
 
 namespace {
 
-std::vector<output::FieldDataArray> inputFields(const std::string& source,
-                                                const bricks::DatasetInfo& info,
+std::vector<output::FieldDataArray> inputFields(const std::string& source, const DatasetInfo& info,
                                                 const flow::VectorVolume& volume) {
   using output::textField;
   std::string pointData;
@@ -26,7 +26,7 @@ std::vector<output::FieldDataArray> inputFields(const std::string& source,
   };
 }
 
-void addTimeAndUnits(const bricks::DatasetInfo& info, std::vector<output::FieldDataArray>& fields) {
+void addTimeAndUnits(const DatasetInfo& info, std::vector<output::FieldDataArray>& fields) {
   if (info.time) fields.push_back(output::numberField("SimulationTime", *info.time));
   if (!info.timeUnit.empty()) fields.push_back(output::textField("TimeUnit", info.timeUnit));
   if (!info.lengthUnit.empty()) fields.push_back(output::textField("LengthUnit", info.lengthUnit));
@@ -35,7 +35,7 @@ void addTimeAndUnits(const bricks::DatasetInfo& info, std::vector<output::FieldD
 }  // namespace
 
 std::vector<output::FieldDataArray> datasetProvenance(const std::string& source,
-                                                      const bricks::DatasetInfo& info,
+                                                      const DatasetInfo& info,
                                                       const flow::VectorVolume& volume) {
   std::vector<output::FieldDataArray> fields = inputFields(source, info, volume);
   addTimeAndUnits(info, fields);

@@ -1,5 +1,3 @@
-#include "amrstream/rendering.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,10 +5,17 @@
 #include <span>
 #include <utility>
 
+#include "amrstream/error.hpp"
+#include "api/device.hpp"
+#include "api/handles.hpp"
+#include "api/job_state.hpp"
+#include "api/render_scene.hpp"
+#include "api/traces_impl.hpp"
+#include "flow/seeds.hpp"
 #include "render/image/font.hpp"
+#include "render/image/png_io.hpp"
 #include "render/volume_range.hpp"
 #include "scene_overlays.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream {
@@ -23,31 +28,31 @@ float tubeRadiusOf(const RenderOptions& o, const flow::VectorVolume& volume,
                    const render::OrbitCamera& camera) {
   const int given = int(o.tubeRadius.has_value()) + int(o.tubeRadiusPhysical.has_value());
   if (given > 1)
-    throw InputError("--tube-radius", "give the radius in cells or in physical units, not both");
+    throw settingError("tube_radius", "give the radius in cells or in physical units, not both");
   float radius = 0.0f;
-  const char* option = "--tube-radius";
+  const char* option = "tube_radius";
   if (o.tubeRadius) {
     radius = *o.tubeRadius;
   } else if (o.tubeRadiusPhysical) {
     const glm::dvec3 spacing = volume.transform.spacing;
     radius = float(*o.tubeRadiusPhysical / std::cbrt(spacing.x * spacing.y * spacing.z));
-    option = "--tube-radius-physical";
+    option = "tube_radius_physical";
   } else {
     if (!(o.tubeRadiusOfView > 0.0f && o.tubeRadiusOfView <= 0.5f))
-      throw InputError("--tube-radius-view",
-                       fmt::format("{} is outside (0, 0.5]", o.tubeRadiusOfView));
+      throw settingError("tube_radius_view",
+                         fmt::format("{} is outside (0, 0.5]", o.tubeRadiusOfView));
     radius = o.tubeRadiusOfView * 2.0f * camera.distance * render::halfHeightAtUnitDistance(camera);
-    option = "--tube-radius-view";
+    option = "tube_radius_view";
   }
   if (!(radius > 0.0f) || !std::isfinite(radius))
-    throw InputError(option, "must be positive and finite");
+    throw settingError(option, "must be positive and finite");
   return radius;
 }
 
 render::ValueRange parseRange(const std::vector<float>& values, const char* option) {
   if (values.size() != 2 || !(values[0] < values[1]) || !std::isfinite(values[0]) ||
       !std::isfinite(values[1]))
-    throw InputError(option, "expected finite MIN,MAX with MIN < MAX");
+    throw settingError(option, "expected finite MIN,MAX with MIN < MAX");
   return {values[0], values[1]};
 }
 
@@ -55,31 +60,30 @@ template <class T>
 void requireFinite(const std::vector<T>& values, const char* option) {
   for (const T value : values)
     if (!std::isfinite(value))
-      throw InputError(option, fmt::format("{} is not a finite number", value));
+      throw settingError(option, fmt::format("{} is not a finite number", value));
 }
 
 void checkImageOptions(const RenderOptions& o) {
-  for (const auto& [side, option] :
-       {std::pair{o.width, "--width"}, std::pair{o.height, "--height"}})
+  for (const auto& [side, option] : {std::pair{o.width, "width"}, std::pair{o.height, "height"}})
     if (side < kMinImageSide || side > kMaxImageSide)
-      throw InputError(option, fmt::format("{} pixels is outside the range {} to {}", side,
-                                           kMinImageSide, kMaxImageSide));
+      throw settingError(option, fmt::format("{} pixels is outside the range {} to {}", side,
+                                             kMinImageSide, kMaxImageSide));
   if (o.aoSamples > kMaxAoSamples)
-    throw InputError("--ao-samples", fmt::format("{} rays per pixel and frame are more than {}",
+    throw settingError("ao_samples", fmt::format("{} rays per pixel and frame are more than {}",
                                                  o.aoSamples, kMaxAoSamples));
-  requireFinite(o.camera, "--camera");
-  requireFinite(o.viewBox, "--view-box");
-  requireFinite(o.lookAt, "--look-at");
+  requireFinite(o.camera, "camera");
+  requireFinite(o.viewBox, "view_box");
+  requireFinite(o.lookAt, "look_at");
   if (!(o.volumeOpacity >= 0.0f) || !std::isfinite(o.volumeOpacity))
-    throw InputError("--volume-opacity",
-                     fmt::format("{} is not a finite number >= 0", o.volumeOpacity));
+    throw settingError("volume_opacity",
+                       fmt::format("{} is not a finite number >= 0", o.volumeOpacity));
 }
 
 render::ScaleKind scaleKindOf(const RenderOptions& o) {
   const std::optional<render::ScaleKind> kind = render::parseScaleKind(o.colourScale);
   if (!kind)
-    throw InputError("--colour-scale",
-                     fmt::format("no scale '{}'; choose linear, log or symlog", o.colourScale));
+    throw settingError("colour_scale",
+                       fmt::format("no scale '{}'; choose linear, log or symlog", o.colourScale));
   return *kind;
 }
 
@@ -101,7 +105,7 @@ render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange se
   render::ColourScale scale;
   scale.kind = kind;
   if (!o.range.empty()) {
-    const render::ValueRange range = parseRange(o.range, "--range");
+    const render::ValueRange range = parseRange(o.range, "range");
     scale.min = range.min, scale.max = range.max;
   } else {
     double lo = seen.min, hi = seen.max;
@@ -117,7 +121,7 @@ render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange se
   try {
     render::checkScale(scale);
   } catch (const std::invalid_argument& e) {
-    throw InputError(o.range.empty() ? "--colour-scale" : "--range", e.what());
+    throw settingError(o.range.empty() ? "colour_scale" : "range", e.what());
   }
   return scale;
 }
@@ -141,7 +145,7 @@ std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
   if (o.outline == "domain")
     return render::boxOutline(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper));
   if (o.outline != "bricks")
-    throw InputError("--outline", fmt::format("'{}': choose domain, bricks or none", o.outline));
+    throw settingError("outline", fmt::format("'{}': choose domain, bricks or none", o.outline));
   std::vector<shared::TubeSegment> edges;
   for (std::size_t i = 0; i < volume.originalBrickCount; ++i) {
     const shared::Brick& brick = volume.bricks[i];
@@ -155,7 +159,7 @@ std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
 
 }  // namespace
 
-std::string integrationTimeUnit(flow::StepMode mode, const bricks::DatasetInfo& info) {
+std::string integrationTimeUnit(flow::StepMode mode, const DatasetInfo& info) {
   return mode == flow::StepMode::Arc ? shortLengthUnit(info) : info.timeUnit;
 }
 
@@ -164,7 +168,7 @@ void setTubeRadius(render::RenderSettings& settings, float radius) {
   settings.aoDistance = 8.0f * radius;  // occluders within a few tube widths
 }
 
-void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cells,
+void updateTubes(RenderScene& scene, const RenderOptions& o, const bricks::AmrField& cells,
                  const flow::VectorVolume& volume, const flow::TraceSet& traces) {
   render::ColourField colour =
       render::colourFieldOf(traces, o.colourBy, cells, volume, scene.colourChannel);
@@ -178,7 +182,7 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const Dataset& cell
 
 std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
                                                             const RenderOptions& o,
-                                                            const Dataset& cells,
+                                                            const bricks::AmrField& cells,
                                                             const flow::VectorVolume& volume,
                                                             const flow::TraceSet& recent) {
   render::ColourField colour =
@@ -199,13 +203,13 @@ std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
   return added;
 }
 
-RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
+RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
                          const flow::VectorVolume& volume, const flow::TraceSet& traces) {
   checkImageOptions(o);
   RenderScene scene;
   const auto map = render::parseColourMap(o.colourMap);
   if (!map)
-    throw InputError("--colour-map", fmt::format("no colour map '{}'; choose one of: {}",
+    throw settingError("colour_map", fmt::format("no colour map '{}'; choose one of: {}",
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
@@ -217,7 +221,7 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
     s.outlineColour = glm::vec3(0.5f);  // whatever the image will be laid on
   } else {
     if (!o.background.empty()) {
-      s.background = parseColour(o.background, "--background");
+      s.background = parseColour(o.background, "background");
       s.flatBackground = true;
     }
     s.outlineColour = outlineColourOn(s.background);
@@ -225,30 +229,29 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   s.ambientOcclusion = o.aoSamples > 0;
   s.aoSamples = o.aoSamples;
   if (!(o.radiusByColour > 0.0f && o.radiusByColour <= 1.0f))
-    throw InputError("--radius-by-colour", fmt::format("{} is outside (0, 1]", o.radiusByColour));
+    throw settingError("radius_by_colour", fmt::format("{} is outside (0, 1]", o.radiusByColour));
   s.leastRadiusFraction = o.radiusByColour;
   updateTubes(scene, o, cells, volume, traces);
 
   if (!o.volume.empty()) {
     if (!cells.findChannel(o.volume)) {
       std::string choices;
-      for (const bricks::Channel& c : cells.channels())
-        choices += (choices.empty() ? "" : ", ") + c.name;
-      throw InputError("--volume",
-                       fmt::format("no channel '{}'; the input has: {}", o.volume, choices));
+      for (const Channel& c : cells.channels()) choices += (choices.empty() ? "" : ", ") + c.name;
+      throw settingError("volume",
+                         fmt::format("no channel '{}'; the input has: {}", o.volume, choices));
     }
     scene.contextScalars = flow::gatherScalar(cells, volume, o.volume);
     s.volume = true;
     s.logVolume = !o.linearVolume;
     s.volumeRange = o.volumeRange.empty()
                         ? render::defaultVolumeRange(scene.contextScalars, s.logVolume)
-                        : parseRange(o.volumeRange, "--volume-range");
+                        : parseRange(o.volumeRange, "volume_range");
     s.volumeOpacity = o.volumeOpacity;
   }
 
   // Framed without the tubes' radius when the radius follows from the view: the margin holds it.
   if (o.tubeRadius && !(*o.tubeRadius > 0.0f && std::isfinite(*o.tubeRadius)))
-    throw InputError("--tube-radius", "must be positive and finite");
+    throw settingError("tube_radius", "must be positive and finite");
   setTubeRadius(s, o.tubeRadius.value_or(0.0f));
   frameCamera(scene, o, volume);
   setTubeRadius(s, tubeRadiusOf(o, volume, scene.camera));
@@ -257,22 +260,44 @@ RenderScene prepareScene(const RenderOptions& o, const Dataset& cells,
   return scene;
 }
 
+std::string colourMapNames() { return render::colourMapNames(); }
+
 void requireRenderBackend(const BackendRequest& request) {
   if (request.backend == "cpu")
-    throw InputError("--backend",
-                     "rendering needs a Vulkan device: choose auto, rayquery, pipeline or compute");
+    throw settingError(
+        "backend", "rendering needs a Vulkan device: choose auto, rayquery, pipeline or compute");
 }
 
+namespace {
+
+Image publicImage(render::Image image) {
+  return {image.width, image.height, std::move(image.rgba)};
+}
+
+// The dataset whose channels the tubes and the volume show.
+const bricks::AmrField& renderedCells(const Field& field) {
+  if (!field.dataset())
+    throw std::logic_error("renderImage: the field was built without keeping its dataset");
+  return cellsOf(*field.dataset());
+}
+
+}  // namespace
+
 RenderedImage renderImage(const BackendRequest& request, const RenderOptions& options,
-                          const Dataset& cells, const flow::VectorVolume& volume,
-                          const flow::TraceSet& traces, std::uint32_t frames, bool colourBar,
-                          const FrameProgress& progress, const Log& log) {
+                          const Field& field, const Traces& traces, const Reporter& reporter) {
+  const std::uint32_t frames = options.frames;
+  const Log& log = reporter.log;
   requireRenderBackend(request);
   if (frames == 0 || frames > kMaxRenderFrames)
-    throw InputError("--frames",
-                     fmt::format("{} is outside the range 1 to {}", frames, kMaxRenderFrames));
-  const RenderScene scene = prepareScene(options, cells, volume, traces);
-  if (colourBar || options.axes || options.triad || options.scaleBar)
+    throw settingError("frames",
+                       fmt::format("{} is outside the range 1 to {}", frames, kMaxRenderFrames));
+  const bricks::AmrField& cells = renderedCells(field);
+  const flow::VectorVolume& volume = volumeOf(field);
+  RenderOptions o = options;
+  if (o.timeUnit.empty() && traces.impl().stepMode)
+    o.timeUnit = integrationTimeUnit(*traces.impl().stepMode, field.info());
+  const RenderScene scene = prepareScene(o, cells, volume, linesOf(traces));
+  if (o.colourBar || o.axes || o.triad || o.scaleBar)
     render::defaultFont();  // a missing font is told before the work, not after
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)
@@ -288,26 +313,53 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   render::TubeRenderer renderer(ctx, choice.backend, volume, scene.contextScalars);
   renderer.setTubes(scene.segments, scene.settings.tubeRadius);
   renderer.setColourMap(render::colourMapTable(scene.colourMap));
-  renderer.resize(options.width, options.height);
+  renderer.resize(o.width, o.height);
   result.setupSeconds = clock.seconds();
-  say(log,
-      fmt::format("render     backend {} on {}: {} tube segments (radius {:g} cells), {} x "
-                  "{}, {} frames [setup {:.2f} s]",
-                  result.backend, result.device, scene.segments.size(), scene.settings.tubeRadius,
-                  options.width, options.height, frames, result.setupSeconds));
+  say(log, fmt::format("render     backend {} on {}: {} tube segments (radius {:g} cells), {} x "
+                       "{}, {} frames [setup {:.2f} s]",
+                       result.backend, result.device, scene.segments.size(),
+                       scene.settings.tubeRadius, o.width, o.height, frames, result.setupSeconds));
   clock.restart();
   double kernelSeconds = 0.0;
   for (std::uint32_t f = 0; f < frames; ++f) {
     renderer.renderFrame(scene.camera, scene.settings);
     kernelSeconds += renderer.lastFrameSeconds().value_or(0.0);
-    if (progress) progress(f + 1, frames);
+    reporter.advance("rendering", f + 1, frames);
   }
   checkValidation(ctx);
-  result.image = renderer.readImage();
-  drawOverlays(result.image, options, scene, volume, cells.info(), colourBar);
+  render::Image image = renderer.readImage();
+  drawOverlays(image, o, scene, volume, cells.info(), o.colourBar);
+  result.image = publicImage(std::move(image));
   result.renderSeconds = clock.seconds();
   result.kernelSecondsPerFrame = kernelSeconds / frames;
   return result;
+}
+
+void writePng(const std::filesystem::path& path, const Image& image) {
+  render::Image raster;
+  raster.width = image.width;
+  raster.height = image.height;
+  raster.rgba = image.rgba;
+  render::writePng(path, raster);
+}
+
+void checkTracesInDomain(const std::string& path, const Traces& traces, const Field& field,
+                         const Log& log) {
+  const flow::TraceSet& lines = linesOf(traces);
+  const glm::dvec3 lower = field.lower(), upper = field.upper();
+  const std::size_t points = lines.positions.size();
+  std::size_t inside = 0;
+  for (const glm::vec3& p : lines.positions) {
+    const glm::dvec3 x(p);
+    inside += glm::all(glm::greaterThanEqual(x, lower)) && glm::all(glm::lessThanEqual(x, upper));
+  }
+  say(log, fmt::format("traces     {} lines from {} ({} points)", withCommas(lines.lineCount()),
+                       path, withCommas(points)));
+  if (points > 0 && inside == 0)
+    throw InputError(path, fmt::format("no trace point lies in the input's domain [{:g}, {:g}] x "
+                                       "[{:g}, {:g}] x [{:g}, {:g}]; were they traced in another "
+                                       "dataset?",
+                                       lower.x, upper.x, lower.y, upper.y, lower.z, upper.z));
 }
 
 }  // namespace amrstream

@@ -1,4 +1,4 @@
-#include "output_paths.hpp"
+#include "amrstream/run_files.hpp"
 
 #include <fmt/format.h>
 #include <sys/stat.h>
@@ -6,11 +6,14 @@
 #include <system_error>
 #include <utility>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
+#include "util/input_file.hpp"
 
-namespace amrstream::cli {
+namespace amrstream {
 
 namespace fs = std::filesystem;
+
+void checkRegularFile(const fs::path& path) { regularFileSize(path); }
 
 std::optional<RunFiles::Identity> RunFiles::identityOf(const fs::path& path, bool* directory) {
   struct stat status {};
@@ -88,4 +91,4 @@ void RunFiles::checkOutput(const std::string& option, const fs::path& path) cons
                                            shown, other.name, other.path.string()));
 }
 
-}  // namespace amrstream::cli
+}  // namespace amrstream

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "amrstream/rendering.hpp"
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
+#include "api/render_scene.hpp"
 
 namespace amrstream {
 
@@ -34,11 +34,11 @@ std::vector<glm::vec3> boxCorners(glm::vec3 lower, glm::vec3 upper) {
 std::optional<std::pair<glm::vec3, glm::vec3>> viewBoxOf(const RenderOptions& o,
                                                          const flow::VectorVolume& volume) {
   if (o.viewBox.empty()) return std::nullopt;
-  if (o.viewBox.size() != 6) throw InputError("--view-box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
+  if (o.viewBox.size() != 6) throw settingError("view_box", "expected 6 numbers x0,y0,z0,x1,y1,z1");
   const glm::dvec3 a(o.viewBox[0], o.viewBox[1], o.viewBox[2]);
   const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
   if (!glm::all(glm::lessThan(a, b)))
-    throw InputError("--view-box", "the lower corner must be below the upper one on every axis");
+    throw settingError("view_box", "the lower corner must be below the upper one on every axis");
   return std::pair{glm::vec3(volume.transform.toCellUnits(a)),
                    glm::vec3(volume.transform.toCellUnits(b))};
 }
@@ -53,7 +53,7 @@ Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
                     std::span<const shared::TubeSegment> segments, float radius) {
   if (const auto box = viewBoxOf(o, volume)) return {boxCorners(box->first, box->second)};
   if (o.frame != "traces" && o.frame != "domain")
-    throw InputError("--frame", fmt::format("'{}': choose traces or domain", o.frame));
+    throw settingError("frame", fmt::format("'{}': choose traces or domain", o.frame));
   if (o.frame == "traces" && !segments.empty()) {
     Framed framed{{}, radius};
     framed.points.reserve(2 * segments.size() + 8);
@@ -75,23 +75,23 @@ Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
 render::OrbitCamera cameraOf(const RenderOptions& o) {
   render::OrbitCamera camera;
   const std::optional<render::Axis> up = render::parseAxis(o.up);
-  if (!up) throw InputError("--up", fmt::format("'{}': choose +x, -x, +y, -y, +z or -z", o.up));
+  if (!up) throw settingError("up", fmt::format("'{}': choose +x, -x, +y, -y, +z or -z", o.up));
   camera.up = *up;
   if (!(o.fovDegrees >= 1.0f && o.fovDegrees <= 150.0f))
-    throw InputError("--fov", fmt::format("{} degrees is outside 1 to 150", o.fovDegrees));
+    throw settingError("fov", fmt::format("{} degrees is outside 1 to 150", o.fovDegrees));
   camera.fovYDegrees = o.fovDegrees;
   if (o.projection == "orthographic")
     camera.projection = render::Projection::Orthographic;
   else if (o.projection != "perspective")
-    throw InputError("--projection",
-                     fmt::format("'{}': choose perspective or orthographic", o.projection));
+    throw settingError("projection",
+                       fmt::format("'{}': choose perspective or orthographic", o.projection));
   if (!o.view.empty()) {
     if (!o.camera.empty())
-      throw InputError("--view", "give either --view or --camera's azimuth and elevation");
+      throw settingError("view", "give either {view} or {camera}'s azimuth and elevation");
     const std::optional<render::NamedView> view = render::namedView(o.view, camera.up);
     if (!view)
-      throw InputError("--view", fmt::format("no view '{}'; choose one of: {}", o.view,
-                                             render::namedViewNames()));
+      throw settingError(
+          "view", fmt::format("no view '{}'; choose one of: {}", o.view, render::namedViewNames()));
     camera.azimuthDegrees = view->azimuthDegrees;
     camera.elevationDegrees = view->elevationDegrees;
   } else if (o.camera.size() >= 2) {
@@ -119,12 +119,12 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
   // Axes need room outside the framed box for their labels.
   const float zoom = o.zoom * (o.camera.size() == 3 ? o.camera[2] : 1.0f) * (o.axes ? 0.8f : 1.0f);
   if (!(zoom > 0.0f) || !std::isfinite(zoom))
-    throw InputError(o.camera.size() == 3 ? "--camera" : "--zoom",
-                     "the zoom factor must be positive and finite");
+    throw settingError(o.camera.size() == 3 ? "camera" : "zoom",
+                       "the zoom factor must be positive and finite");
   const Framed framed = framedPoints(o, volume, traceSegments(scene), scene.settings.tubeRadius);
   std::optional<glm::vec3> target;
   if (!o.lookAt.empty()) {
-    if (o.lookAt.size() != 3) throw InputError("--look-at", "expected 3 numbers x,y,z");
+    if (o.lookAt.size() != 3) throw settingError("look_at", "expected 3 numbers x,y,z");
     target =
         glm::vec3(volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
   }

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "amrstream/error.hpp"
 #include "render/annotations/axes.hpp"
 #include "render/annotations/scale_bar.hpp"
 #include "render/annotations/triad.hpp"
 #include "render/image/colour_bar.hpp"
 #include "render/image/font.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream {
 
@@ -29,9 +29,9 @@ glm::vec3 parseColour(const std::string& text, const char* option) {
         glm::all(glm::lessThanEqual(c, glm::vec3(1.0f))))
       return c;
   }
-  throw InputError(option, fmt::format("'{}': give white, black, transparent, #rrggbb or R,G,B "
-                                       "from 0 to 1",
-                                       text));
+  throw settingError(option, fmt::format("'{}': give white, black, transparent, #rrggbb or R,G,B "
+                                         "from 0 to 1",
+                                         text));
 }
 
 namespace {
@@ -41,7 +41,7 @@ float luminance(glm::vec3 colour) { return glm::dot(colour, glm::vec3(0.2126f, 0
 // The axes, triad and scale bar the options ask for, drawn over the rendered image in a grey
 // that stands out from the background.
 void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderScene& scene,
-                     const flow::VectorVolume& volume, const bricks::DatasetInfo& info) {
+                     const flow::VectorVolume& volume, const DatasetInfo& info) {
   const std::uint32_t w = image.width, h = image.height;
   const int size = render::overlayLabelPixelSize(w, h);
   const glm::vec3 grey = scene.settings.outlineColour * 1.15f;
@@ -82,8 +82,7 @@ glm::vec3 outlineColourOn(glm::vec3 background) {
 }
 
 void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScene& scene,
-                  const flow::VectorVolume& volume, const bricks::DatasetInfo& info,
-                  bool colourBars) {
+                  const flow::VectorVolume& volume, const DatasetInfo& info, bool colourBars) {
   drawAnnotations(image, o, scene, volume, info);
   if (!colourBars) return;
   const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
@@ -97,7 +96,7 @@ void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScen
   }
 }
 
-std::string shortLengthUnit(const bricks::DatasetInfo& info) {
+std::string shortLengthUnit(const DatasetInfo& info) {
   return info.lengthUnit.substr(0, info.lengthUnit.find(" ("));
 }
 

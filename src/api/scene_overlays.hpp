@@ -5,8 +5,8 @@
 #include <glm/vec3.hpp>
 #include <string>
 
-#include "amrstream/rendering.hpp"
-#include "bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
+#include "api/render_scene.hpp"
 
 namespace amrstream {
 
@@ -20,7 +20,6 @@ glm::vec3 outlineColourOn(glm::vec3 background);
 // Draws the axes, triad and scale bar `o` asks for and, with `colourBars`, the tubes' colour bar
 // and the context volume's above it; light bars on a light background.
 void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScene& scene,
-                  const flow::VectorVolume& volume, const bricks::DatasetInfo& info,
-                  bool colourBars);
+                  const flow::VectorVolume& volume, const DatasetInfo& info, bool colourBars);
 
 }  // namespace amrstream

@@ -4,10 +4,12 @@
 
 #include <utility>
 
+#include "amrstream/error.hpp"
+#include "api/handles.hpp"
+#include "api/seed_choice.hpp"
 #include "flow/seed_strategies.hpp"
 #include "flow/trace_set.hpp"
 #include "util/host_memory.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream {
 
@@ -19,21 +21,21 @@ glm::dvec3 corner(const std::vector<double>& v, int which) {
 
 void checkSize(const std::vector<double>& values, const char* option) {
   if (values.size() != 6)
-    throw InputError(option,
-                     fmt::format("needs 6 numbers x0,y0,z0,x1,y1,z1, not {}", values.size()));
+    throw settingError(option,
+                       fmt::format("needs 6 numbers x0,y0,z0,x1,y1,z1, not {}", values.size()));
 }
 
 // The seed box: the request's box, checked against the domain, or the domain itself.
 std::pair<glm::dvec3, glm::dvec3> seedBox(const SeedRequest& request, const Domain& domain) {
   const glm::dvec3 domainLo = domain.lower, domainHi = domain.upper;
   if (request.box.empty()) return {domainLo, domainHi};
-  checkSize(request.box, "--seed-box");
+  checkSize(request.box, "seed_box");
   const glm::dvec3 lo = corner(request.box, 0), hi = corner(request.box, 1);
   if (glm::any(glm::greaterThan(lo, hi)))
-    throw InputError("--seed-box", "the lower corner must not exceed the upper corner");
+    throw settingError("seed_box", "the lower corner must not exceed the upper corner");
   if (glm::any(glm::lessThan(lo, domainLo)) || glm::any(glm::greaterThan(hi, domainHi)))
-    throw InputError(
-        "--seed-box",
+    throw settingError(
+        "seed_box",
         fmt::format("the box reaches outside the domain [{:g}, {:g}) x [{:g}, "
                     "{:g}) x [{:g}, {:g})",
                     domainLo.x, domainHi.x, domainLo.y, domainHi.y, domainLo.z, domainHi.z));
@@ -50,21 +52,21 @@ const double kLeastBytesPerSeed =
 
 void checkSeedCount(double count, const std::string& option) {
   if (count > double(kMaxSeedCount))
-    throw InputError(option, fmt::format("{:.0f} seeds are more than the {} one run may trace "
-                                         "(lines are numbered in 32 bits, two per seed)",
-                                         count, kMaxSeedCount));
+    throw settingError(option, fmt::format("{:.0f} seeds are more than the {} one run may trace "
+                                           "(lines are numbered in 32 bits, two per seed)",
+                                           count, kMaxSeedCount));
   const double bytes = count * kLeastBytesPerSeed;
   const double limit = kTraceMemoryShare * physicalMemoryBytes();
   if (limit > 0.0 && bytes > limit)
-    throw InputError(option,
-                     fmt::format("{:.0f} seeds need at least {:.1f} GiB ({:.0f} bytes each "
-                                 "for the seed and its traced line), more than the {:.1f} "
-                                 "GiB (3/4 of the memory) traces may take on this machine",
-                                 count, bytes / 0x1p30, kLeastBytesPerSeed, limit / 0x1p30));
+    throw settingError(option,
+                       fmt::format("{:.0f} seeds need at least {:.1f} GiB ({:.0f} bytes each "
+                                   "for the seed and its traced line), more than the {:.1f} "
+                                   "GiB (3/4 of the memory) traces may take on this machine",
+                                   count, bytes / 0x1p30, kLeastBytesPerSeed, limit / 0x1p30));
 }
 
-Domain domainOf(const Dataset& cells) {
-  const bricks::WorldTransform& t = cells.transform();
+Domain domainOf(const bricks::AmrField& cells) {
+  const WorldTransform& t = cells.transform();
   return {t.toPhysical(glm::dvec3(cells.bounds().lower)),
           t.toPhysical(glm::dvec3(cells.bounds().upper)), t.spacing};
 }
@@ -77,13 +79,14 @@ void checkSeedRequest(const SeedRequest& request) {
   if (!request.points.empty() || !request.file.empty()) return;
   if (request.line.empty() && request.density.empty() && request.grid.size() == 3)
     checkSeedCount(double(request.grid[0]) * double(request.grid[1]) * double(request.grid[2]),
-                   "--seed-grid");
+                   "seed_grid");
   else
-    checkSeedCount(double(request.count), "--count");
+    checkSeedCount(double(request.count), "count");
 }
 
-flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, const Dataset* cells,
-                           std::string& description, const flow::SharedCells* shared) {
+flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain,
+                           const bricks::AmrField* cells, std::string& description,
+                           const flow::SharedCells* shared) {
   checkSeedRequest(request);
   if (!request.points.empty()) {
     description = "given points";
@@ -97,12 +100,12 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
     return flow::readSeedFile(request.file);
   }
   if (!request.line.empty()) {
-    checkSize(request.line, "--seed-line");
+    checkSize(request.line, "seed_line");
     description = "a rake (--seed-line)";
     return flow::seedsAlongLine(corner(request.line, 0), corner(request.line, 1), request.count);
   }
   if (!request.density.empty()) {
-    if (!cells) throw InputError("--seed-density", "needs the dataset's cells");
+    if (!cells) throw settingError("seed_density", "needs the dataset's cells");
     description = fmt::format("random cells with {} at or above its {:g}th percentile{} (seed {})",
                               request.density, request.percentile,
                               request.weighted ? ", weighted by it" : "", request.seed);
@@ -113,10 +116,10 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
   // Keep seeds off the domain's open upper faces, where rounding to float could put them.
   hi = glm::min(hi, domain.upper - 1e-4 * domain.finestWidth);
   if (!request.grid.empty()) {
-    if (request.grid.size() != 3) throw InputError("--seed-grid", "needs 3 counts NX,NY,NZ");
+    if (request.grid.size() != 3) throw settingError("seed_grid", "needs 3 counts NX,NY,NZ");
     const glm::ivec3 counts(request.grid[0], request.grid[1], request.grid[2]);
     if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
-      throw InputError("--seed-grid", "every count must be at least 1");
+      throw settingError("seed_grid", "every count must be at least 1");
     description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
     return flow::seedsOnGrid(lo, hi, counts);
   }
@@ -130,6 +133,25 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain, con
 void placeSeeds(const flow::VectorVolume& volume, flow::SeedList& seeds) {
   flow::closeUpperFaces(volume, seeds);
   flow::checkSeedsInDomain(volume, seeds);
+}
+
+std::vector<glm::dvec3> makeSeeds(const SeedRequest& request, const Field& field,
+                                  std::string* description) {
+  std::string text;
+  const std::optional<Dataset>& dataset = field.dataset();
+  flow::SeedList seeds =
+      chooseSeeds(request, domainOf(volumeOf(field)), dataset ? &cellsOf(*dataset) : nullptr, text);
+  if (description) *description = text;
+  return std::move(seeds.points);
+}
+
+std::vector<glm::dvec3> makeSeeds(const SeedRequest& request, const Dataset& dataset,
+                                  std::string* description) {
+  std::string text;
+  const bricks::AmrField& cells = cellsOf(dataset);
+  flow::SeedList seeds = chooseSeeds(request, domainOf(cells), &cells, text);
+  if (description) *description = text;
+  return std::move(seeds.points);
 }
 
 }  // namespace amrstream

@@ -1,4 +1,4 @@
-#include "amrstream/trace_settings.hpp"
+#include "api/stepping.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "amrstream/error.hpp"
 #include "util/host_memory.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream {
 
@@ -15,7 +15,7 @@ flow::StepMode parseStepMode(const std::string& name) {
   if (name == "cell") return flow::StepMode::Cell;
   if (name == "time") return flow::StepMode::Time;
   if (name == "arc") return flow::StepMode::Arc;
-  throw InputError("step mode", "'" + name + "' is not cell, time or arc");
+  throw settingError("step_mode", "'" + name + "' is not cell, time or arc");
 }
 
 std::string stepModeName(flow::StepMode mode) {
@@ -35,7 +35,7 @@ flow::Integrator parseIntegrator(const std::string& name) {
   if (name == "rk45") return flow::Integrator::Rk45;
   if (name == "rk2") return flow::Integrator::Rk2;
   if (name == "euler") return flow::Integrator::Euler;
-  throw InputError("integrator", "'" + name + "' is not rk4, rk45, rk2 or euler");
+  throw settingError("integrator", "'" + name + "' is not rk4, rk45, rk2 or euler");
 }
 
 std::string integratorName(flow::Integrator integrator) {
@@ -56,7 +56,7 @@ flow::Direction parseDirection(const std::string& name) {
   if (name == "forward") return flow::Direction::Forward;
   if (name == "backward") return flow::Direction::Backward;
   if (name == "both") return flow::Direction::Both;
-  throw InputError("direction", "'" + name + "' is not forward, backward or both");
+  throw settingError("direction", "'" + name + "' is not forward, backward or both");
 }
 
 std::string directionName(flow::Direction direction) {
@@ -75,7 +75,7 @@ float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
                      const flow::VectorVolume& volume) {
   if (requested) {
     if (!(*requested > 0.0f) || !std::isfinite(*requested))
-      throw InputError("--step-size", fmt::format("{} is not a positive finite step", *requested));
+      throw settingError("step_size", fmt::format("{} is not a positive finite step", *requested));
     return *requested;
   }
   if (mode != flow::StepMode::Time) return flow::TraceOptions{}.stepSize;
@@ -92,7 +92,7 @@ float chooseStepSize(flow::StepMode mode, std::optional<float> requested,
     throw InputError(volume.vectorName,
                      fmt::format("the default time step (a quarter of the finest cell, {:g}, "
                                  "crossed at the maximum speed, {:g}) is {:g}, outside float32's "
-                                 "range: give --step-size or rescale the field",
+                                 "range: give {{step_size}} or rescale the field",
                                  finest, maxSpeed, step));
   return float(step);
 }
@@ -106,10 +106,16 @@ void checkVorticityRange(const flow::VectorVolume& volume) {
   const double finest = std::min(s.x, std::min(s.y, s.z));
   const double bound = 4.0 * double(maxComponent) / finest;
   if (!(bound <= 1e36))
-    throw InputError("--vorticity",
-                     fmt::format("'{}' reaches {:g} over a finest cell of {:g}: its curl would "
-                                 "overflow float32; rescale the field or its coordinates",
-                                 volume.vectorName, maxComponent, finest));
+    throw settingError("vorticity",
+                       fmt::format("'{}' reaches {:g} over a finest cell of {:g}: its curl would "
+                                   "overflow float32; rescale the field or its coordinates",
+                                   volume.vectorName, maxComponent, finest));
+}
+
+std::uint64_t maxMemoryBudget() {
+  const double memory = physicalMemoryBytes();
+  return memory > 0.0 ? static_cast<std::uint64_t>(memory)
+                      : std::numeric_limits<std::uint64_t>::max();
 }
 
 flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume& volume) {
@@ -120,22 +126,22 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   options.integrator = parseIntegrator(s.integrator);
   // rk45's tolerance squared must stay a normal float (the controller reads its exponent).
   if (!(s.tolerance >= 1e-8f && s.tolerance <= 1.0f))
-    throw InputError(
-        "--tolerance",
+    throw settingError(
+        "tolerance",
         fmt::format("{} is not in [1e-8, 1] (finest cell widths per step)", s.tolerance));
   options.tolerance = s.tolerance;
   options.minStep = s.minStep.value_or(options.stepSize / 100.0f);
   options.maxStep = s.maxStep.value_or(options.stepSize * 4.0f);
   if (!(options.minStep > 0.0f && std::isfinite(options.maxStep) &&
         options.minStep <= options.stepSize && options.stepSize <= options.maxStep))
-    throw InputError("--min-step",
-                     fmt::format("rk45 needs 0 < --min-step ({:g}) <= the first step ({:g}) <= "
-                                 "--max-step ({:g})",
-                                 options.minStep, options.stepSize, options.maxStep));
+    throw settingError("min_step",
+                       fmt::format("rk45 needs 0 < {{min_step}} ({:g}) <= the first step ({:g}) <= "
+                                   "{{max_step}} ({:g})",
+                                   options.minStep, options.stepSize, options.maxStep));
   options.keepHistory = s.keepHistory;
-  if (!(s.terminalSpeed >= 0.0f)) throw InputError("--terminal-speed", "must be 0 or positive");
-  if (!(s.maxLength >= 0.0f)) throw InputError("--max-length", "must be 0 (no limit) or positive");
-  if (!(s.maxTime >= 0.0f)) throw InputError("--max-time", "must be 0 (no limit) or positive");
+  if (!(s.terminalSpeed >= 0.0f)) throw settingError("terminal_speed", "must be 0 or positive");
+  if (!(s.maxLength >= 0.0f)) throw settingError("max_length", "must be 0 (no limit) or positive");
+  if (!(s.maxTime >= 0.0f)) throw settingError("max_time", "must be 0 (no limit) or positive");
   options.terminalSpeed = s.terminalSpeed;
   options.maxLength = s.maxLength;
   options.maxTime = s.maxTime;

@@ -51,13 +51,13 @@ class RowPlanner {
 
   bool runs(const std::string& backend, bool history, std::size_t particles) {
     if (backend == "cpu" && particles > config_.cpuMaxParticles)
-      return skip("cpu", fmt::format("cpu skips counts above --cpu-max-particles {}",
+      return skip("cpu", fmt::format("cpu skips counts above {{cpu_max_particles}} {}",
                                      config_.cpuMaxParticles));
     const std::uint64_t points = std::uint64_t(particles) * (config_.trace.maxSteps + 1);
     if (history && points > config_.historyPointBudget)
       return skip("history " + backend,
                   fmt::format("{} skips history rows from {} particles: {} points exceed "
-                              "--history-points {}",
+                              "{{history_points}} {}",
                               backend, particles, points, config_.historyPointBudget));
     return true;
   }

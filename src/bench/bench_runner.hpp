@@ -16,7 +16,6 @@ namespace amrstream::bench {
 // measurement starts together and is combined over the ranks (steps summed, times and device
 // memory the largest), so that a row reads as one run on all the ranks' devices.
 struct RankShare {
-  int ranks = 1;
   // This rank's seeds among a row's (indices into them).
   std::function<std::vector<std::uint32_t>(std::span<const glm::dvec3>)> indicesOf;
   std::function<void()> synchronize;

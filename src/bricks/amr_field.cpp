@@ -15,8 +15,8 @@
 #include <set>
 #include <unordered_set>
 
+#include "amrstream/error.hpp"
 #include "util/first_failing.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::bricks {
 
@@ -280,7 +280,29 @@ void AmrField::checkChannelValues(const Channel& c) const {
                              describeCell(i, lowers_[i], levels_[i], info_)));
 }
 
+// The box of each level's corners; a level without cells has lower > upper.
+struct AmrField::LevelBoxes {
+  std::array<glm::ivec3, kMaxLevel + 1> lower, upper;
+};
+
 void AmrField::validate(const CheckedCells* checked) {
+  checkCellCounts();
+  checkCellLevels();
+  for (const Channel& c : channels_) checkChannelValues(c);
+
+  const LevelBoxes boxes = levelBoxes();
+  bounds_ = checkedBounds(boxes);
+  validateTransform();
+
+  if (checked) {
+    if (lowers_ != checked->lowers || levels_ != checked->levels)
+      throw InputError(source_, "its cells differ from those of a first read (did it change?)");
+    return;
+  }
+  checkOverlaps(boxes);
+}
+
+void AmrField::checkCellCounts() const {
   const std::size_t n = lowers_.size();
   if (n == 0) throw InputError(source_, "the dataset has no cells");
   if (levels_.size() != n)
@@ -292,7 +314,10 @@ void AmrField::validate(const CheckedCells* checked) {
     if (!names.insert(c.name).second)
       throw InputError(source_, fmt::format("channel '{}' appears twice", c.name));
   }
+}
 
+void AmrField::checkCellLevels() const {
+  const std::size_t n = lowers_.size();
   if (std::size_t i = firstFailing(n, [&](std::size_t i) { return levels_[i] > kMaxLevel; }); i < n)
     throw InputError(source_,
                      fmt::format("{} has a level above the supported maximum {}",
@@ -306,19 +331,15 @@ void AmrField::validate(const CheckedCells* checked) {
                                           "coordinates must be multiples of {})",
                                           describeCell(i, lowers_[i], levels_[i], info_),
                                           cellWidth(levels_[i])));
+}
 
-  for (const Channel& c : channels_) checkChannelValues(c);
-
-  // The box of each level's corners (in one pass), then of all cells in 64 bits: a corner near
-  // INT_MAX plus its width, or INT_MIN..INT_MAX, overflows int.
-  struct LevelBoxes {
-    std::array<glm::ivec3, kMaxLevel + 1> lower, upper;
-  };
+// The box of each level's corners, in one pass.
+AmrField::LevelBoxes AmrField::levelBoxes() const {
   LevelBoxes empty;
   empty.lower.fill(glm::ivec3(std::numeric_limits<int>::max()));
   empty.upper.fill(glm::ivec3(std::numeric_limits<int>::min()));
-  const LevelBoxes boxes = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, n), empty,
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, lowers_.size()), empty,
       [&](const tbb::blocked_range<std::size_t>& range, LevelBoxes b) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           b.lower[levels_[i]] = glm::min(b.lower[levels_[i]], lowers_[i]);
@@ -333,6 +354,11 @@ void AmrField::validate(const CheckedCells* checked) {
         }
         return a;
       });
+}
+
+// The box of all cells, from the levels' boxes, in 64 bits: a corner near INT_MAX plus its width,
+// or INT_MIN..INT_MAX, overflows int.
+CellBox AmrField::checkedBounds(const LevelBoxes& boxes) const {
   const auto& levelLower = boxes.lower;
   const auto& levelUpper = boxes.upper;
   glm::i64vec3 lower(std::numeric_limits<std::int64_t>::max());
@@ -353,24 +379,19 @@ void AmrField::validate(const CheckedCells* checked) {
                      fmt::format("the cells reach {},{},{}, beyond the largest "
                                  "supported corner coordinate {}",
                                  upper.x, upper.y, upper.z, std::numeric_limits<int>::max()));
-  const CellBox box{glm::ivec3(lower), glm::ivec3(upper)};
-  bounds_ = box;
-  validateTransform();
+  return CellBox{glm::ivec3(lower), glm::ivec3(upper)};
+}
 
-  if (checked) {
-    if (lowers_ != checked->lowers || levels_ != checked->levels)
-      throw InputError(source_, "its cells differ from those of a first read (did it change?)");
-    return;
-  }
-
-  // Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
-  // inside a coarser one finds that cell's aligned corner in the coarser level's set.
+// Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
+// inside a coarser one finds that cell's aligned corner in the coarser level's set.
+void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
+  const std::size_t n = lowers_.size();
   const std::vector<std::size_t> perLevel = cellsPerLevel();
   std::vector<std::unique_ptr<LevelCornerSet>> sets(perLevel.size());
   for (std::size_t level = 0; level < perLevel.size(); ++level)
     if (perLevel[level] > 0)
-      sets[level] = std::make_unique<LevelCornerSet>(perLevel[level], int(level), levelLower[level],
-                                                     levelUpper[level]);
+      sets[level] = std::make_unique<LevelCornerSet>(perLevel[level], int(level),
+                                                     boxes.lower[level], boxes.upper[level]);
   const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(lowers_[i]); };
   if (std::size_t i = firstFailing(n, duplicated); i < n)
     throw InputError(

@@ -22,7 +22,8 @@
 #include <utility>
 #include <vector>
 
-#include "dataset_info.hpp"
+#include "amrstream/cell_types.hpp"
+#include "amrstream/dataset_info.hpp"
 
 namespace amrstream::bricks {
 
@@ -31,26 +32,6 @@ namespace amrstream::bricks {
 inline constexpr int kMaxLevel = 29;  // coarsest supported level (cell width 2^29)
 inline constexpr int kMaxExtentBits =
     30;  // the cells' bounding box spans at most 2^30 finest cells
-
-// Maps cell units (finest-cell units) to the input's physical coordinates.
-struct WorldTransform {
-  glm::dvec3 origin{0.0};   // physical position of the cell-unit origin
-  glm::dvec3 spacing{1.0};  // physical size of one finest cell, per axis
-
-  glm::dvec3 toPhysical(glm::dvec3 cellUnits) const { return origin + spacing * cellUnits; }
-  glm::dvec3 toCellUnits(glm::dvec3 physical) const { return (physical - origin) / spacing; }
-};
-
-struct Channel {
-  std::string name;
-  std::vector<float> values;  // one per cell, in cell order
-};
-
-// Integer box [lower, upper) in finest-cell units.
-struct CellBox {
-  glm::ivec3 lower{0};
-  glm::ivec3 upper{0};
-};
 
 // The corners and levels of cells an AmrField has checked, kept to check a second read of the
 // same input cheaply (an MPI rank reads an output twice: its layout, then its part's values).
@@ -105,7 +86,18 @@ class AmrField {
   AmrField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
            std::vector<Channel> channels, WorldTransform transform, std::string source,
            const CheckedCells* checked);
+  // Per level, the box of its cells' corners (defined in amr_field.cpp).
+  struct LevelBoxes;
+
   void validate(const CheckedCells* checked = nullptr);  // also sets bounds_
+  // The steps of validate(), in its order: the counts of cells and levels and the channels'
+  // shapes and names; the cells' levels and alignment; the levels' boxes, then all cells' box
+  // within the supported extent; no two cells overlapping.
+  void checkCellCounts() const;
+  void checkCellLevels() const;
+  LevelBoxes levelBoxes() const;
+  CellBox checkedBounds(const LevelBoxes& boxes) const;
+  void checkOverlaps(const LevelBoxes& boxes) const;
   void checkChannelShape(const Channel& channel) const;
   void checkChannelValues(const Channel& channel) const;
   void validateTransform() const;

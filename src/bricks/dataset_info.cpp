@@ -1,8 +1,8 @@
-#include "dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 
 #include <fmt/format.h>
 
-namespace amrstream::bricks {
+namespace amrstream {
 
 int DatasetInfo::fileLevel(int internalLevel) const {
   if (!fileLevelOfInternal.empty())
@@ -29,4 +29,4 @@ std::string periodicAxesText(const DatasetInfo& info) {
   return axes.empty() ? "none" : axes;
 }
 
-}  // namespace amrstream::bricks
+}  // namespace amrstream

@@ -1,262 +1,20 @@
 #include "bench_command.hpp"
 
-#include <fmt/format.h>
-
-#include <algorithm>
 #include <limits>
 #include <memory>
-#include <optional>
 
-#include "amrstream/backend.hpp"
-#include "amrstream/field.hpp"
+#include "amrstream/bench.hpp"
+#include "amrstream/run_files.hpp"
 #include "amrstream/seeding.hpp"
-#include "amrstream/trace_settings.hpp"
-#include "bench/bench_report.hpp"
-#include "bench/bench_runner.hpp"
-#include "dataset_files.hpp"
+#include "console.hpp"
 #include "dataset_options.hpp"
-#include "flow/seed_strategies.hpp"
-#include "flow/seeds.hpp"
-#include "formats/load_input.hpp"
-#include "mpi/mpi_world.hpp"
-#include "mpi/rank_agreement.hpp"
-#include "mpi/seed_shares.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
-#include "output_paths.hpp"
-#include "util/input_error.hpp"
-#include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
 
-namespace {
-
-struct BenchCommandOptions {
-  DatasetOptions dataset;
-  std::string vector;
-  std::vector<std::string> backends{"cpu", "rayquery", "pipeline", "compute"};
-  std::vector<std::size_t> particles;
-  std::size_t cpuMaxParticles = 65536;
-  std::string mode = "both";
-  std::uint64_t historyPoints = std::uint64_t(1) << 28;
-  std::uint32_t repeats = 1;
-  std::uint32_t steps = 1000;
-  std::uint32_t roundSteps = 0;
-  std::uint32_t cpuTailLines = 0;
-  std::optional<float> stepSize;
-  std::string stepMode = "cell";
-  std::string interpolant = "tent";
-  std::string seedsFile;
-  std::string seedDensity;
-  double seedPercentile = 90.0;
-  std::uint64_t seed = 1;
-  std::string device;
-  std::string regionHint = "default";
-  std::string dualValues = "default";
-  std::int64_t spreadThreads = -1;
-  std::string seedOrder = "spatial";
-  std::string json = "bench.json";
-  std::string commandLine;
-};
-
-std::vector<std::size_t> defaultParticleCounts() {
-  std::vector<std::size_t> counts;
-  for (std::size_t n = 1 << 10; n <= (1 << 20); n *= 2) counts.push_back(n);
-  return counts;
-}
-
-// `dens` if present, else the first scalar that is not part of the vector, else none.
-std::string defaultSeedChannel(const bricks::AmrField& field, const flow::VectorChannels& vector) {
-  if (field.findChannel("dens")) return "dens";
-  for (const bricks::Channel& c : field.channels())
-    if (std::find(vector.channels.begin(), vector.channels.end(), c.name) == vector.channels.end())
-      return c.name;
-  return {};
-}
-
-// The paper's seeding (random points in random cells among the densest) on --seed-density, else
-// on `dens` or the first scalar that is not part of the vector; a uniform box without scalars.
-flow::SeedList benchSeeds(const BenchCommandOptions& o, const bricks::AmrField& field,
-                          const flow::VectorVolume& volume, const flow::VectorChannels& vector,
-                          std::size_t count, std::string& description) {
-  if (!o.seedsFile.empty()) {
-    flow::SeedList seeds = flow::readSeedFile(o.seedsFile);
-    if (seeds.points.size() < count)
-      throw InputError(o.seedsFile, fmt::format("has {} seeds, fewer than the largest particle "
-                                                "count {}",
-                                                seeds.points.size(), count));
-    description = o.seedsFile;
-    return seeds;
-  }
-  const std::string channel =
-      o.seedDensity.empty() ? defaultSeedChannel(field, vector) : o.seedDensity;
-  if (channel.empty()) {
-    description = fmt::format("uniform random in the domain (seed {}; no scalar channel)", o.seed);
-    const glm::dvec3 hi = flow::domainUpper(volume) - 1e-4 * volume.transform.spacing;
-    return flow::randomSeedsInBox(flow::domainLower(volume), hi, count, o.seed);
-  }
-  description = fmt::format("random cells with {} at or above its {:g}th percentile (seed {})",
-                            channel, o.seedPercentile, o.seed);
-  return flow::seedsInDensestCells(field, {channel, o.seedPercentile, false, count, o.seed});
-}
-
-bench::BenchConfig makeConfig(const BenchCommandOptions& o, const flow::VectorVolume& volume) {
-  bench::BenchConfig config;
-  config.backends = o.backends;
-  config.particles = o.particles.empty() ? defaultParticleCounts() : o.particles;
-  std::sort(config.particles.begin(), config.particles.end());
-  config.particles.erase(std::unique(config.particles.begin(), config.particles.end()),
-                         config.particles.end());
-  config.cpuMaxParticles = o.cpuMaxParticles;
-  config.historyModes = o.mode == "endpoints" ? std::vector<bool>{false}
-                        : o.mode == "history" ? std::vector<bool>{true}
-                                              : std::vector<bool>{false, true};
-  config.historyPointBudget = o.historyPoints;
-  config.repeats = o.repeats;
-  config.trace.stepMode = parseStepMode(o.stepMode);
-  config.trace.stepSize = chooseStepSize(config.trace.stepMode, o.stepSize, volume);
-  config.trace.maxSteps = o.steps;
-  config.trace.roundSteps = o.roundSteps;
-  config.trace.cpuTailLines = o.cpuTailLines;
-  config.trace.direction = flow::Direction::Forward;  // the paper's experiment
-  config.deviceFilter = o.device;
-  if (o.regionHint != "default") config.regionHint = o.regionHint == "on";
-  if (o.dualValues != "default") config.dualValues = o.dualValues == "on";
-  if (o.spreadThreads >= 0) config.spreadThreads = static_cast<std::uint32_t>(o.spreadThreads);
-  config.spatialSeedOrder = o.seedOrder == "spatial";
-  config.validation = validationRequested();
-  return config;
-}
-
-struct PreparedBench {
-  bench::BenchReport report;
-  flow::VectorVolume volume;
-  flow::SeedList seeds;
-  flow::VolumeBuildTimes times;
-};
-
-PreparedBench prepareBench(const BenchCommandOptions& o) {
-  checkBuiltinSize(o.dataset);
-  if (!o.particles.empty())
-    checkSeedCount(double(*std::max_element(o.particles.begin(), o.particles.end())),
-                   "--particles");
-  RunFiles files;
-  files.addInputs(datasetFiles(o.dataset.input));
-  if (!o.seedsFile.empty()) files.addInput(o.seedsFile);
-  files.addOutput("--json", o.json);
-
-  PreparedBench prepared;
-  bench::BenchReport& report = prepared.report;
-  report.command = o.commandLine;
-  report.host = bench::hostDescription();
-  bench::DatasetStats& data = report.dataset;
-
-  Stopwatch clock;
-  const bricks::AmrField field = formats::loadInput(o.dataset.input, o.dataset.generator);
-  data.loadSeconds = clock.seconds();
-  const flow::VectorChannels vector = flow::chooseVectorChannels(field, o.vector);
-  flow::VolumeOptions volumeOptions;
-  volumeOptions.interpolant = parseInterpolant(o.interpolant);
-  prepared.volume = flow::buildVectorVolume(field, vector, volumeOptions, &prepared.times);
-  const flow::VectorVolume& volume = prepared.volume;
-  data.source = field.source();
-  data.cells = field.cellCount();
-  data.finestLevel = field.finestLevel();
-  data.coarsestLevel = field.coarsestLevel();
-  data.vector = vector.name;
-  data.bricks = volume.bricks.size();
-  data.regions = volume.regions.regions.size();
-  data.bricksSeconds = prepared.times.bricks;
-  data.regionsSeconds = prepared.times.regions;
-  data.gatherSeconds = prepared.times.gather;
-  report.config = makeConfig(o, volume);
-  const std::size_t maxParticles = report.config.particles.back();
-
-  prepared.seeds = benchSeeds(o, field, volume, vector, maxParticles, data.seeding);
-  flow::checkSeedsInDomain(volume, prepared.seeds);
-  return prepared;
-}
-
-// Under mpirun every rank runs every row on its share of the particles (mpi::mortonShares);
-// rank 0 prints and writes the JSON.
-bench::RankShare rankShare(const mpi::MpiWorld& world) {
-  bench::RankShare share;
-  share.ranks = world.size();
-  share.indicesOf = [&world](std::span<const glm::dvec3> seeds) {
-    return mpi::mortonShares(seeds, world.size())[std::size_t(world.rank())];
-  };
-  share.synchronize = [&world] { world.barrier(); };
-  share.maxOf = [&world](double v) { return world.maxOverRanks(v); };
-  share.sumOf = [&world](double v) { return world.sumOverRanks(v); };
-  return share;
-}
-
-void runBench(const BenchCommandOptions& o, const mpi::MpiWorld& world) {
-  PreparedBench prepared = mpi::agreed(world, [&] { return prepareBench(o); });
-  bench::BenchReport& report = prepared.report;
-  const bench::DatasetStats& data = report.dataset;
-  const flow::VectorVolume& volume = prepared.volume;
-  const flow::SeedList& seeds = prepared.seeds;
-  report.ranks = world.size();
-  report.config.deviceSlot = unsigned(world.localRank());
-
-  fmt::print("input      {}: {} cells, levels {}..{}, vector {} [{:.2f} s]\n", data.source,
-             withCommas(data.cells), data.finestLevel, data.coarsestLevel, data.vector,
-             data.loadSeconds);
-  fmt::print(
-      "structure  {} bricks [{:.2f} s], {} regions [{:.2f} s], gather [{:.2f} s]{}\n",
-      withCommas(data.bricks), data.bricksSeconds, withCommas(data.regions), data.regionsSeconds,
-      data.gatherSeconds,
-      volume.interpolant == flow::Interpolant::Linear
-          ? fmt::format(", linear interpolant's gradients [{:.2f} s]", prepared.times.gradients)
-          : std::string());
-  fmt::print("seeds      {} from {}; GPU threads take them in {} order\n",
-             withCommas(seeds.points.size()), data.seeding,
-             report.config.spatialSeedOrder ? "Morton (spatial)" : "the given");
-  fmt::print("stepping   mode {}, h = {:g}, at most {} steps, {} interpolant; best of {}\n",
-             o.stepMode, report.config.trace.stepSize, o.steps, o.interpolant,
-             report.config.repeats);
-  fmt::print("host       {}\n", report.host);
-  if (world.size() > 1)
-    fmt::print(
-        "ranks      {}: each row's particles in blocks of the Morton order dealt round the "
-        "ranks; steps "
-        "summed, times the slowest rank's, device memory the largest rank's\n",
-        world.size());
-  if (const std::string warning = world.bindingWarning(); !warning.empty())
-    fmt::print("note       {}\n", warning);
-  fmt::print("\n");
-
-  bench::BenchCallbacks callbacks;
-  if (world.size() > 1) callbacks.share = rankShare(world);
-  bool headerPrinted = false;
-  callbacks.setupDone = [](const bench::BackendSetup& s) {
-    fmt::print("setup      {}", bench::setupLine(s));
-  };
-  callbacks.rowDone = [&](const bench::BenchRow& row) {
-    if (!headerPrinted) fmt::print("{}", bench::tableHeader());
-    headerPrinted = true;
-    fmt::print("{}", bench::tableRow(row));
-    std::fflush(stdout);
-    // The runner has appended the row: rewriting the JSON now keeps what an interrupted run
-    // measured.
-    if (world.isRoot()) bench::writeJson(o.json, report);
-  };
-  callbacks.note = [](const std::string& note) { fmt::print("note       {}\n", note); };
-  // Rows synchronise the ranks: a failure here ends them all (main), not by agreement.
-  bench::runBenchmark(volume, seeds.points, report.config, report, callbacks);
-
-  mpi::agreed(world, [&] {
-    if (!world.isRoot()) return;
-    bench::writeJson(o.json, report);
-    fmt::print("\njson       {} ({} rows)\n", o.json, report.rows.size());
-  });
-}
-
-}  // namespace
-
-void addBenchCommand(CLI::App& app, const std::string& commandLine, const mpi::MpiWorld& world) {
-  auto options = std::make_shared<BenchCommandOptions>();
+void addBenchCommand(CLI::App& app, const std::string& commandLine, const MpiWorld& world) {
+  auto options = std::make_shared<BenchRequest>();
   options->commandLine = commandLine;
   CLI::App* command = app.add_subcommand(
       "bench", "the paper's performance experiment: particle-steps per second of every backend");
@@ -368,7 +126,19 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine, const mpi::M
       ->capture_default_str()
       ->check(CLI::IsMember({"spatial", "given"}));
   command->add_option("--json", options->json, "where to write the results")->capture_default_str();
-  command->callback([options, &world] { runBench(*options, world); });
+  command->callback([options, &world] {
+    const BenchRequest& o = *options;
+    const Console console;
+    runBench(
+        world, o,
+        [&o] {
+          RunFiles files;
+          files.addInputs(datasetFiles(o.dataset.input));
+          if (!o.seedsFile.empty()) files.addInput(o.seedsFile);
+          files.addOutput("--json", o.json);
+        },
+        console);
+  });
 }
 
 }  // namespace amrstream::cli

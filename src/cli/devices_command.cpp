@@ -3,34 +3,26 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "gpu/backend.hpp"
-#include "vk/device_report.hpp"
+#include "amrstream/backend.hpp"
+#include "console.hpp"
 
 namespace amrstream::cli {
 
 namespace {
 
 void runDevices() {
-  const std::vector<vk::DeviceReport> devices = vk::listDevices();
-  if (devices.empty()) fmt::print("no Vulkan devices: only the cpu backend is available\n");
-  for (const vk::DeviceReport& d : devices) {
-    fmt::print("{}: {} ({}, {} {})\n", d.index, d.name, vk::deviceTypeName(d.type), d.driverName,
-               d.driverInfo);
-    for (gpu::Backend b : {gpu::Backend::RayQuery, gpu::Backend::Pipeline, gpu::Backend::Compute}) {
-      const vk::CapabilitySet need = gpu::requiredCapabilities(b);
-      if (d.supports(need))
-        fmt::print("   {:<9} yes\n", gpu::backendName(b));
-      else
-        fmt::print("   {:<9} no: missing {}\n", gpu::backendName(b),
-                   fmt::join(d.missingFor(need), ", "));
-    }
-    std::string why;
-    const gpu::Backend best = gpu::chooseBackend(&d, why);
-    // Tracing on a software device is slower than the CPU reference (amrstream/backend.hpp).
-    const bool software = d.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    fmt::print("   auto      -> {} for render and view, {} for trace{}\n", gpu::backendName(best),
-               software ? "cpu" : gpu::backendName(best),
-               software ? " (a software device: the CPU reference is faster)" : "");
+  const std::vector<DeviceDescription> devices = describeDevices();
+  if (devices.empty()) printLine("no Vulkan devices: only the cpu backend is available");
+  for (const DeviceDescription& d : devices) {
+    printLine(
+        fmt::format("{}: {} ({}, {} {})", d.index, d.name, d.type, d.driverName, d.driverInfo));
+    for (const DeviceDescription::BackendSupport& b : d.backends)
+      printLine(b.missing.empty() ? fmt::format("   {:<9} yes", b.backend)
+                                  : fmt::format("   {:<9} no: missing {}", b.backend,
+                                                fmt::join(b.missing, ", ")));
+    printLine(fmt::format("   auto      -> {} for render and view, {} for trace{}", d.autoRender,
+                          d.autoTrace,
+                          d.software ? " (a software device: the CPU reference is faster)" : ""));
   }
 }
 

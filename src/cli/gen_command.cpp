@@ -2,20 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <vector>
 
+#include "amrstream/builtin.hpp"
+#include "amrstream/dataset.hpp"
+#include "amrstream/error.hpp"
+#include "amrstream/run_files.hpp"
+#include "console.hpp"
 #include "dataset_options.hpp"
-#include "formats/exa/exa_format.hpp"
 #include "option_checks.hpp"
 #include "option_limits.hpp"
-#include "output_paths.hpp"
-#include "synth/block_refiner.hpp"
-#include "synth/generators.hpp"
-#include "synth/nest_generator.hpp"
-#include "util/input_error.hpp"
-#include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
 
@@ -24,8 +23,8 @@ namespace {
 struct GenOptions {
   std::string kind;
   std::string out;
-  synth::GeneratorOptions generator;
-  synth::NestOptions nest;     // kind nest: its levels and time are the generator's
+  BuiltinOptions generator;
+  NestOptions nest;            // kind nest: its levels and time are the generator's
   std::vector<double> centre;  // kind nest: x,y,z; empty: NestOptions' default
   int series = 0;              // snapshots; 0: one dataset named by --out alone
   double interval = 0.1;       // time between snapshots
@@ -33,36 +32,40 @@ struct GenOptions {
 
 bool isNest(const GenOptions& o) { return o.kind == "nest"; }
 
-synth::NestOptions nestOptions(const GenOptions& o, double time) {
-  synth::NestOptions nest = o.nest;
+NestOptions nestOptions(const GenOptions& o, double time) {
+  NestOptions nest = o.nest;
   if (o.centre.size() == 3) nest.centre = glm::dvec3(o.centre[0], o.centre[1], o.centre[2]);
   nest.levels = o.generator.levels;
   nest.time = time;
   return nest;
 }
 
-bricks::AmrField generate(const GenOptions& o, double time) {
-  if (isNest(o)) return synth::generateNest(nestOptions(o, time));
-  synth::GeneratorOptions generator = o.generator;
+Dataset generate(const GenOptions& o, double time) {
+  if (isNest(o)) return generateNest(nestOptions(o, time));
+  BuiltinOptions generator = o.generator;
   generator.time = time;
-  return synth::generate(o.kind, generator);
+  return generateBuiltin(o.kind, generator);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void writeOne(const GenOptions& o, double time, const std::string& out) {
-  Stopwatch clock;
-  const bricks::AmrField field = generate(o, time);
-  const double generateSeconds = clock.seconds();
-  clock.restart();
-  const std::filesystem::path exa = formats::writeExa(field, out);
-  fmt::print("generated  {}: {} cells, levels {}..{} [{:.2f} s]\n", field.source(),
-             withCommas(field.cellCount()), field.finestLevel(), field.coarsestLevel(),
-             generateSeconds);
-  fmt::print("wrote      {} and its .cells/.scalars files [{:.2f} s]\n", exa.string(),
-             clock.seconds());
+  auto start = std::chrono::steady_clock::now();
+  const Dataset dataset = generate(o, time);
+  const double generateSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const std::filesystem::path exa = writeExaBricks(dataset, out);
+  printLine(fmt::format("generated  {}: {} cells, levels {}..{} [{:.2f} s]", dataset.source(),
+                        withCommas(dataset.cellCount()), dataset.finestLevel(),
+                        dataset.coarsestLevel(), generateSeconds));
+  printLine(fmt::format("wrote      {} and its .cells/.scalars files [{:.2f} s]", exa.string(),
+                        secondsSince(start)));
 }
 
 // nest and the other kinds take different sizes: a size given to a kind that does not take it
-// is refused rather than ignored, and only nest takes more than kMaxGeneratorLevels levels.
+// is refused rather than ignored, and only nest takes more than kMaxBuiltinLevels levels.
 void checkKindOptions(const CLI::App& command, const GenOptions& o) {
   for (const char* flag : {"--root-cells", "--block-cells", "--centre", "--max-speed"})
     if (!isNest(o) && command.count(flag) > 0)
@@ -72,20 +75,20 @@ void checkKindOptions(const CLI::App& command, const GenOptions& o) {
       throw InputError(flag,
                        "does not apply to kind nest (sized by --levels, --root-cells and "
                        "--block-cells)");
-  if (!isNest(o) && o.generator.levels > synth::kMaxGeneratorLevels)
-    throw InputError("--levels", fmt::format("{} is outside the range 1 to {} of kind {} (nest "
-                                             "takes up to {})",
-                                             o.generator.levels, synth::kMaxGeneratorLevels, o.kind,
-                                             synth::kMaxNestLevels));
+  if (!isNest(o) && o.generator.levels > kMaxBuiltinLevels)
+    throw InputError("--levels",
+                     fmt::format("{} is outside the range 1 to {} of kind {} (nest "
+                                 "takes up to {})",
+                                 o.generator.levels, kMaxBuiltinLevels, o.kind, kMaxNestLevels));
 }
 
 // gen reads nothing and names every file apart: what is left to check before the work is the
 // size and that the first file can be written (its directory exists, it is no directory).
 void checkOutputs(const GenOptions& o) {
   if (isNest(o))
-    checkGeneratedCells(synth::nestCellCount(nestOptions(o, o.generator.time)), "--root-cells");
+    checkGeneratedCells(nestCellCount(nestOptions(o, o.generator.time)), "--root-cells");
   else
-    checkGeneratorSize(o.generator);
+    checkBuiltinSize(o.generator);
   const std::string first = o.series == 0 ? o.out + ".exa" : fmt::format("{}_0000.exa", o.out);
   RunFiles().checkOutput("--out", first);
 }
@@ -103,12 +106,12 @@ void runGen(const CLI::App& command, const GenOptions& o) {
 void addGenCommand(CLI::App& app) {
   auto options = std::make_shared<GenOptions>();
   std::string kinds;
-  for (const std::string& k : synth::generatorKinds()) kinds += (kinds.empty() ? "" : ", ") + k;
+  for (const std::string& k : builtinKinds()) kinds += (kinds.empty() ? "" : ", ") + k;
   CLI::App* command = app.add_subcommand("gen", "write a synthetic dataset as ExaBricks files");
   command->add_option("kind", options->kind, "dataset kind: " + kinds)->required();
   command->add_option("--out", options->out, "output prefix: writes PREFIX.exa, PREFIX.cells, ...")
       ->required();
-  addGeneratorOptions(*command, options->generator, "--seed", synth::kMaxNestLevels);
+  addGeneratorOptions(*command, options->generator, "--seed", kMaxNestLevels);
   command
       ->add_option("--root-cells", options->nest.rootCells,
                    "nest: coarsest cells per axis over the domain")

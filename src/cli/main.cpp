@@ -8,27 +8,22 @@
 #include <optional>
 #include <string>
 
-#include "bench_command.hpp"
-#include "convert_command.hpp"
-#include "devices_command.hpp"
-#include "gen_command.hpp"
-#include "info_command.hpp"
-#include "mpi/mpi_world.hpp"
-#include "mpi/rank_agreement.hpp"
-#include "pathlines_command.hpp"
+#include "amrstream/error.hpp"
+#include "amrstream/mpi_world.hpp"
+#include "amrstream/settings.hpp"
+#include "amrstream/version.hpp"
+#include "commands.hpp"
 #include "progress.hpp"
-#include "render_command.hpp"
-#include "resample_command.hpp"
-#include "trace_command.hpp"
-#include "util/input_error.hpp"
-#ifdef AMRSTREAM_HAVE_VIEWER
-#include "view_command.hpp"
-#endif
 
 namespace {
 
+// An input error as the command line names settings: --step-size for step_size.
+std::string spelled(const amrstream::InputError& error) {
+  return error.spelled(amrstream::cliFlag);
+}
+
 // Under mpirun, ranks other than 0 print neither on stdout nor progress: rank 0 speaks for all.
-void quietUnlessRoot(const amrstream::mpi::MpiWorld& world) {
+void quietUnlessRoot(const amrstream::MpiWorld& world) {
   if (world.isRoot()) return;
   std::freopen("/dev/null", "w", stdout);
   amrstream::cli::Progress::silenceAll();
@@ -37,7 +32,7 @@ void quietUnlessRoot(const amrstream::mpi::MpiWorld& world) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const amrstream::mpi::MpiWorld world;
+  const amrstream::MpiWorld world;
   quietUnlessRoot(world);
   std::optional<tbb::global_control> threads;
   if (world.size() > 1)
@@ -55,21 +50,10 @@ int main(int argc, char** argv) {
   };
   CLI::App app("amrstream: streamlines through adaptive-mesh-refinement vector fields");
   app.require_subcommand(1);
-  app.set_version_flag("--version", "amrstream 0.1.0");
-  amrstream::cli::addTraceCommand(app, world);
-  amrstream::cli::addPathlinesCommand(app);
-  amrstream::cli::addInfoCommand(app);
-  amrstream::cli::addGenCommand(app);
-  amrstream::cli::addDevicesCommand(app);
-  amrstream::cli::addConvertCommand(app);
-  amrstream::cli::addResampleCommand(app);
-  amrstream::cli::addRenderCommand(app);
-#ifdef AMRSTREAM_HAVE_VIEWER
-  amrstream::cli::addViewCommand(app);
-#endif
+  app.set_version_flag("--version", std::string("amrstream ") + amrstream::kVersion);
   std::string commandLine = "amrstream";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
-  amrstream::cli::addBenchCommand(app, commandLine, world);
+  amrstream::cli::addCommands(app, world, commandLine);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ValidationError& e) {
@@ -78,10 +62,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (!world.isRoot()) return e.get_exit_code();
     return app.exit(e);
-  } catch (const amrstream::mpi::RankFailure& e) {
-    return fail(e.what(), e.exitCode(), true);
+  } catch (const amrstream::RankFailure& e) {
+    const std::string message = e.cause() ? e.rank() + spelled(*e.cause()) : e.what();
+    return fail(message.c_str(), e.exitCode(), true);
   } catch (const amrstream::InputError& e) {
-    return fail(e.what(), 2, world.size() == 1);
+    return fail(spelled(e).c_str(), 2, world.size() == 1);
   } catch (const std::exception& e) {
     return fail(e.what(), 1, world.size() == 1);
   }

@@ -9,7 +9,8 @@
 #include <string>
 #include <system_error>
 
-#include "util/input_file.hpp"
+#include "amrstream/error.hpp"
+#include "amrstream/run_files.hpp"
 
 namespace amrstream::cli {
 
@@ -83,7 +84,7 @@ CLI::Validator regularFile() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         try {
-          regularFileSize(text);
+          checkRegularFile(text);
         } catch (const InputError& error) {
           return error.what();
         }

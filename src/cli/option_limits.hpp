@@ -14,9 +14,6 @@ inline constexpr std::uint64_t kMaxSteps = 1'000'000'000;
 // Counts of lines and of GPU invocations (--cpu-tail, --spread-threads): 32 bits.
 inline constexpr std::uint64_t kMaxLineCount = 2'147'483'647;
 
-// Builtin datasets: cells are numbered in 32 bits.
-inline constexpr std::uint64_t kMaxTargetCells = 2'147'483'647;
-
 // view: frames before closing (about 4.6 hours at 60 frames per second), and the steps every
 // particle takes before each frame.
 inline constexpr std::uint64_t kMaxViewFrames = 1'000'000;

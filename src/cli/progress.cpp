@@ -31,7 +31,8 @@ void Progress::clear() {
 
 void Progress::update(std::size_t done) {
   std::lock_guard lock(mutex_);
-  const double now = clock_.seconds();
+  const double now =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (now < 1.0 || total_ == 0 || silenced) return;
   const int percent = int(100.0 * double(done) / double(total_));
   if (terminal_) {

@@ -2,11 +2,10 @@
 // Progress of long work on stderr: "tracing  45% (460 of 1024)". Silent for work that ends within
 // a second; rewrites one line on a terminal, prints every 10% otherwise. Thread-safe.
 
+#include <chrono>
 #include <cstddef>
 #include <mutex>
 #include <string>
-
-#include "util/stopwatch.hpp"
 
 namespace amrstream::cli {
 
@@ -24,7 +23,7 @@ class Progress {
  private:
   std::string label_;
   std::size_t total_;
-  Stopwatch clock_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::mutex mutex_;
   double lastPrint_ = 0.0;
   int lastDecile_ = 0;

@@ -2,12 +2,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "mpi/mpi_world.hpp"
+#include "amrstream/mpi_world.hpp"
 
 namespace amrstream::cli {
 
 // `amrstream trace INPUT ... --out traces.vtp`; under mpirun, over the ranks of `world`, which
 // must outlive the parse.
-void addTraceCommand(CLI::App& app, const mpi::MpiWorld& world);
+void addTraceCommand(CLI::App& app, const MpiWorld& world);
 
 }  // namespace amrstream::cli

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "amrstream/error.hpp"
 #include "sampler.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::flow {
 

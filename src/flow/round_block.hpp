@@ -25,8 +25,6 @@ struct RoundBlock {
   Column<glm::vec3> vectors;
   Column<float> channels;       // channelCount values per point
   Column<glm::vec3> vorticity;  // empty without vorticity
-
-  std::size_t pointCount() const { return times.size(); }
 };
 
 }  // namespace amrstream::flow

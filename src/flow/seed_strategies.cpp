@@ -13,8 +13,8 @@
 #include <random>
 #include <span>
 
+#include "amrstream/error.hpp"
 #include "sampler.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::flow {
 
@@ -126,7 +126,7 @@ SeedList seedsAlongLine(glm::dvec3 from, glm::dvec3 to, std::size_t count) {
     const double t = count == 1 ? 0.5 : double(i) / double(count - 1);
     seeds.points.push_back(from + t * (to - from));
   }
-  seeds.origin = [](std::size_t i) { return fmt::format("--seed-line point #{}", i); };
+  seeds.origin = [](std::size_t i) { return fmt::format("{{seed_line}} point #{}", i); };
   return seeds;
 }
 
@@ -140,7 +140,7 @@ SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts) {
       }
   seeds.origin = [counts](std::size_t n) {
     const std::size_t x = std::size_t(counts.x), y = std::size_t(counts.y);
-    return fmt::format("--seed-grid point ({}, {}, {})", n % x, n / x % y, n / (x * y));
+    return fmt::format("{{seed_grid}} point ({}, {}, {})", n % x, n / x % y, n / (x * y));
   };
   return seeds;
 }
@@ -170,7 +170,7 @@ SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::d
       throw InputError("random seeds",
                        fmt::format("only {} of {} random points in the box ({:g}, {:g}, {:g}) .. "
                                    "({:g}, {:g}, {:g}) fell inside cells: the box is nearly all "
-                                   "holes; give a --seed-box around the data or --seed-density",
+                                   "holes; give a {{seed_box}} around the data or {{seed_density}}",
                                    seeds.points.size(), draws, lower.x, lower.y, lower.z, upper.x,
                                    upper.y, upper.z));
     ++draws;
@@ -184,10 +184,10 @@ SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::d
 }
 
 SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOptions& options) {
-  const bricks::Channel& channel = field.channel(options.channel);  // throws if absent
+  const Channel& channel = field.channel(options.channel);  // throws if absent
   if (!(options.percentile >= 0.0 && options.percentile <= 100.0))
-    throw InputError("--seed-percentile",
-                     fmt::format("{} is not a percentile in [0, 100]", options.percentile));
+    throw settingError("seed_percentile",
+                       fmt::format("{} is not a percentile in [0, 100]", options.percentile));
 
   // The value at the percentile (nearest rank), then every cell at or above it.
   const std::size_t rank =
@@ -204,7 +204,7 @@ SeedList seedsInDensestCells(const bricks::AmrField& field, const DensestCellsOp
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       if (!(candidateValues[i] > 0.0f))
         throw InputError(field.source(),
-                         fmt::format("--seed-weighted needs positive values of '{}', but cell {} "
+                         fmt::format("{{seed_weighted}} needs positive values of '{}', but cell {} "
                                      "has {}",
                                      options.channel, candidates[i], candidateValues[i]));
       cumulative.push_back(sum += candidateValues[i]);

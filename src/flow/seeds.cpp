@@ -13,9 +13,9 @@
 #include <string>
 #include <string_view>
 
+#include "amrstream/error.hpp"
 #include "sampler.hpp"
 #include "util/host_memory.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::flow {

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::flow {
 
@@ -44,7 +44,7 @@ void TraceAccumulator::add(RoundBlock&& round) {
   if (maxBytes_ > 0 && bytes > maxBytes_)
     throw InputError("traces", fmt::format("the traces grew past {:.1f} GiB, the limit for this "
                                            "machine, with {} of {} lines finished; trace fewer "
-                                           "seeds or steps, or use --endpoints-only",
+                                           "seeds or steps, or use {{endpoints_only}}",
                                            double(maxBytes_) / 0x1p30, finished_, lineCount()));
 
   std::vector<LinePoints> runs = takeReports(round.lines).first;

@@ -43,7 +43,6 @@ class TraceAccumulator {
   std::size_t lineCount() const { return layout_.seedIds.size(); }
   const LineLayout& layout() const { return layout_; }
   std::size_t finishedLines() const { return finished_; }
-  std::uint64_t pointCount() const { return points_; }
 
   // The TraceSet of all rounds so far; the accumulator is left empty.
   TraceSet assemble();

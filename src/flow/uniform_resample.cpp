@@ -9,17 +9,17 @@
 #include <mutex>
 #include <span>
 
+#include "amrstream/error.hpp"
 #include "sampler.hpp"
 #include "util/host_memory.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::flow {
 
 void checkGridCounts(std::span<const std::uint64_t> dims) {
   if (dims.size() != 1 && dims.size() != 3)
-    throw InputError("--dims", "give one count (the longest axis) or three (NX,NY,NZ)");
+    throw settingError("dims", "give one count (the longest axis) or three (NX,NY,NZ)");
   for (const std::uint64_t n : dims)
-    if (n < 1 || n > 65535) throw InputError("--dims", fmt::format("{} is outside 1..65535", n));
+    if (n < 1 || n > 65535) throw settingError("dims", fmt::format("{} is outside 1..65535", n));
 }
 
 UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std::uint64_t> dims,
@@ -29,12 +29,12 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
   spec.lower = volume.transform.toPhysical(glm::dvec3(volume.domain.lower));
   spec.upper = volume.transform.toPhysical(glm::dvec3(volume.domain.upper));
   if (!box.empty()) {
-    if (box.size() != 6) throw InputError("--box", "give x0,y0,z0,x1,y1,z1");
+    if (box.size() != 6) throw settingError("box", "give x0,y0,z0,x1,y1,z1");
     spec.lower = {box[0], box[1], box[2]};
     spec.upper = {box[3], box[4], box[5]};
     if (!glm::all(glm::lessThan(spec.lower, spec.upper)) ||
         !std::all_of(box.begin(), box.end(), [](double v) { return std::isfinite(v); }))
-      throw InputError("--box", "each upper bound must be above its lower bound");
+      throw settingError("box", "each upper bound must be above its lower bound");
   }
   if (dims.size() == 3) {
     spec.dims = {std::uint32_t(dims[0]), std::uint32_t(dims[1]), std::uint32_t(dims[2])};
@@ -48,7 +48,7 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
   const double bytes = double(spec.pointCount()) * double(12 + 4 * volume.channelCount() + 1);
   const double limit = kTraceMemoryShare * physicalMemoryBytes();
   if (limit > 0.0 && bytes > limit)
-    throw InputError("--dims", fmt::format("{} x {} x {} points need {:.1f} GiB, more than the "
+    throw settingError("dims", fmt::format("{} x {} x {} points need {:.1f} GiB, more than the "
                                            "{:.1f} GiB (3/4 of the memory) this machine allows",
                                            spec.dims[0], spec.dims[1], spec.dims[2], bytes / 0x1p30,
                                            limit / 0x1p30));

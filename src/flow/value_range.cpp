@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "amrstream/error.hpp"
 #include "util/first_failing.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::flow {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::flow {
 
@@ -70,7 +70,7 @@ std::string ChannelCatalog::list() const {
 
 ChannelCatalog catalogOf(const bricks::AmrField& field) {
   ChannelCatalog catalog{field.source(), {}};
-  for (const bricks::Channel& c : field.channels()) catalog.names.push_back(c.name);
+  for (const Channel& c : field.channels()) catalog.names.push_back(c.name);
   return catalog;
 }
 
@@ -90,7 +90,7 @@ VectorChannels chooseVectorChannels(const ChannelCatalog& field, const std::stri
     }
     throw InputError(field.source,
                      fmt::format("no velocity or magnetic field channels found; choose three with "
-                                 "--vector a,b,c (channels: {})",
+                                 "{{vector}} a,b,c (channels: {})",
                                  field.list()));
   }
 
@@ -98,7 +98,7 @@ VectorChannels chooseVectorChannels(const ChannelCatalog& field, const std::stri
   std::istringstream parts(request);
   for (std::string part; std::getline(parts, part, ',');) names.push_back(part);
   if (names.size() != 3 || request.back() == ',')
-    throw InputError(field.source, fmt::format("--vector '{}' must name exactly three channels "
+    throw InputError(field.source, fmt::format("{{vector}} '{}' must name exactly three channels "
                                                "separated by commas",
                                                request));
   std::copy(names.begin(), names.end(), result.channels.begin());

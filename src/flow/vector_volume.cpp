@@ -7,8 +7,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "amrstream/error.hpp"
 #include "cell_gradients.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "value_range.hpp"
 
@@ -33,8 +33,7 @@ namespace {
 // Images of the bricks across the periodic faces: for every non-zero periodic shift, the shifted
 // brick whose domain reaches into the domain box.
 std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bricks,
-                                          const bricks::CellBox& domain,
-                                          const PeriodicAxes& periodic) {
+                                          const CellBox& domain, const PeriodicAxes& periodic) {
   std::vector<glm::ivec3> shifts = periodicShifts(periodic);
   shifts.erase(shifts.begin());
   const glm::i64vec3 period(domain.upper - domain.lower);
@@ -42,7 +41,7 @@ std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bric
                      upperDoubled = std::int64_t(2) * glm::i64vec3(domain.upper);
   std::vector<shared::Brick> images;
   for (const shared::Brick& brick : bricks) {
-    const bricks::CellBox d = bricks::brickDomainDoubled(brick);
+    const CellBox d = bricks::brickDomainDoubled(brick);
     for (const glm::ivec3& s : shifts) {
       const glm::i64vec3 offset = std::int64_t(2) * glm::i64vec3(s) * period;
       if (glm::all(glm::lessThan(glm::i64vec3(d.lower) + offset, upperDoubled)) &&
@@ -61,19 +60,19 @@ std::vector<shared::Brick> periodicImages(const std::vector<shared::Brick>& bric
 // bits at any depth and float positions in cell units keep the most precision. The transform
 // moves by the same whole cells, so physical positions are unchanged.
 struct CentredCells {
-  bricks::CellBox domain;
-  bricks::WorldTransform transform;
+  CellBox domain;
+  WorldTransform transform;
 };
 
 CentredCells centreCells(const bricks::AmrField& field, std::vector<shared::Brick>& bricks) {
-  const bricks::CellBox bounds = field.bounds();
+  const CellBox bounds = field.bounds();
   constexpr int kNear = 1 << 20;
   if (glm::all(glm::greaterThanEqual(bounds.lower, glm::ivec3(-kNear))) &&
       glm::all(glm::lessThanEqual(bounds.upper, glm::ivec3(kNear))))
     return {bounds, field.transform()};
   const glm::ivec3 centre = bounds.lower + (bounds.upper - bounds.lower) / 2;
   for (shared::Brick& brick : bricks) brick.lower -= centre;
-  bricks::WorldTransform transform = field.transform();
+  WorldTransform transform = field.transform();
   transform.origin += transform.spacing * glm::dvec3(centre);
   return {{bounds.lower - centre, bounds.upper - centre}, transform};
 }
@@ -91,7 +90,7 @@ namespace {
 // |p - lower| <= p), and then cropping, which moves lower, changes nothing. Where lower < 0, on a
 // brick or on its image a period below, p - lower rounds, and differently for another lower:
 // such bricks keep their lower corner along that axis.
-void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box, const bricks::CellBox& domain,
+void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box, const CellBox& domain,
                 const PeriodicAxes& periodic) {
   std::vector<VolumeOptions::Box> boxes;
   const glm::dvec3 period(domain.upper - domain.lower);
@@ -113,7 +112,7 @@ void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box, const bric
       hi = glm::max(hi, h);
     }
     if (glm::any(glm::greaterThanEqual(lo, hi))) continue;
-    const bricks::CellBox d = bricks::brickDomainDoubled(brick);
+    const CellBox d = bricks::brickDomainDoubled(brick);
     for (int a = 0; a < 3; ++a) {
       const bool imageBelow = periodic[a] && d.upper[a] > 2 * domain.upper[a];
       if (brick.lower[a] < 0 || imageBelow) lo[a] = 0;
@@ -268,7 +267,7 @@ void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
 
 std::vector<float> gatherScalar(const bricks::AmrField& field, const VectorVolume& volume,
                                 std::string_view channel) {
-  const bricks::Channel& source = field.channel(channel);
+  const Channel& source = field.channel(channel);
   std::vector<float> values(volume.cellIds.size());
   tbb::parallel_for(std::size_t(0), values.size(),
                     [&](std::size_t slot) { values[slot] = source.values[volume.cellIds[slot]]; });
@@ -294,7 +293,7 @@ std::vector<std::string> choosePointData(const ChannelCatalog& channels,
   for (std::string name; std::getline(list, name, ',');) {
     if (name.empty()) continue;
     if (!channels.has(name))
-      throw InputError("--point-data", fmt::format("no channel '{}' in {}; the channels are: {}",
+      throw settingError("point_data", fmt::format("no channel '{}' in {}; the channels are: {}",
                                                    name, channels.source, channels.list()));
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }

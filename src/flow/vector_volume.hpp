@@ -54,9 +54,9 @@ struct VectorVolume {
   // half-cell padding of the brick domains reaches beyond it. Cell units are the field's, or,
   // when the field's reach beyond 2^20 of the origin, centred on the domain (buildCellLayout
   // moves the cells, and the transform with them).
-  bricks::CellBox domain;
+  CellBox domain;
   PeriodicAxes periodic{};
-  bricks::WorldTransform transform;
+  WorldTransform transform;
   std::string vectorName;
 
   glm::ivec3 period() const { return domain.upper - domain.lower; }

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include "amrstream/error.hpp"
 #include "bricks/amr_field.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 
@@ -88,7 +88,7 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
                                            extent[a], "xyz"[a], lower[a], upper[a], limit));
 }
 
-std::optional<std::string> unrepresentablePositions(const bricks::WorldTransform& transform,
+std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
                                                     std::span<const glm::ivec3> lowers,
                                                     std::span<const std::uint8_t> levels) {
   const CellsBox box = cellsBox(lowers, levels);

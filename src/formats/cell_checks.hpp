@@ -33,7 +33,7 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
 // spacing lies outside [kMinSpacing, kMaxPositionMagnitude], a corner of the cells' bounding box
 // lies beyond kMaxPositionMagnitude, or a finest cell is too small for positions there to tell
 // neighbouring cells apart. The reason names the axis and the numbers.
-std::optional<std::string> unrepresentablePositions(const bricks::WorldTransform& transform,
+std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
                                                     std::span<const glm::ivec3> lowers,
                                                     std::span<const std::uint8_t> levels);
 

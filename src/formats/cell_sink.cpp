@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::formats {
 
@@ -14,9 +14,8 @@ namespace {
 
 // The field a reader read, checked: against `window->checked` when there is one.
 bricks::AmrField checkedField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
-                              std::vector<bricks::Channel> channels,
-                              bricks::WorldTransform transform, std::string source,
-                              const ValueWindow* window) {
+                              std::vector<Channel> channels, WorldTransform transform,
+                              std::string source, const ValueWindow* window) {
   if (window && window->checked)
     return bricks::AmrField(std::move(lowers), std::move(levels), std::move(channels), transform,
                             std::move(source), *window->checked);
@@ -36,7 +35,7 @@ void CellSink::reserve(std::size_t cells) {
   if (checked_) return;
   lowers_.reserve(cells);
   levels_.reserve(cells);
-  for (bricks::Channel& channel : channels_) channel.values.reserve(cells);
+  for (Channel& channel : channels_) channel.values.reserve(cells);
 }
 
 void CellSink::addChannel(std::string name) {
@@ -59,7 +58,7 @@ std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
   }
   lowers_.push_back(lower);
   levels_.push_back(level);
-  for (bricks::Channel& channel : channels_) channel.values.push_back(0.0f);
+  for (Channel& channel : channels_) channel.values.push_back(0.0f);
   return lowers_.size() - 1;
 }
 
@@ -71,7 +70,7 @@ void CellSink::presize(std::size_t cells) {
   }
   lowers_.resize(cells);
   levels_.resize(cells);
-  for (bricks::Channel& channel : channels_) channel.values.resize(cells);
+  for (Channel& channel : channels_) channel.values.resize(cells);
 }
 
 void CellSink::place(std::size_t at, glm::ivec3 lower, std::uint8_t level) {
@@ -83,7 +82,7 @@ void CellSink::place(std::size_t at, glm::ivec3 lower, std::uint8_t level) {
   levels_[at] = level;
 }
 
-bricks::AmrField CellSink::finish(bricks::WorldTransform transform) {
+bricks::AmrField CellSink::finish(WorldTransform transform) {
   if (read_) read_->channels = names_;
   if (checked_) {
     if (!presized_ && at_ != checked_->lowers.size()) differs(source_);

@@ -26,7 +26,6 @@ class CellSink {
   void reserve(std::size_t cells);
   // Adds a channel, every cell's value 0 until set.
   void addChannel(std::string name);
-  std::size_t channelCount() const { return channels_.size(); }
   // The next cell's index; on a second read, InputError unless it is the first read's.
   std::size_t cell(glm::ivec3 lower, std::uint8_t level);
   void set(std::size_t channel, std::size_t cell, float value);
@@ -39,7 +38,7 @@ class CellSink {
   void presize(std::size_t cells);
   void place(std::size_t at, glm::ivec3 lower, std::uint8_t level);
   // The field, checked (against the first read's cells on a second read).
-  bricks::AmrField finish(bricks::WorldTransform transform);
+  bricks::AmrField finish(WorldTransform transform);
 
   // The cells laid out so far (a first read), for checks before finish.
   const std::vector<glm::ivec3>& lowers() const { return lowers_; }
@@ -53,7 +52,7 @@ class CellSink {
   std::string source_;
   std::vector<glm::ivec3> lowers_;
   std::vector<std::uint8_t> levels_;
-  std::vector<bricks::Channel> channels_;
+  std::vector<Channel> channels_;
   std::size_t at_ = 0;  // second read: the next cell
   bool presized_ = false;
 };

@@ -1,4 +1,4 @@
-#include "dataset_files.hpp"
+#include "formats/dataset_files.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -7,7 +7,7 @@
 #include "formats/enzo/enzo_reader.hpp"
 #include "formats/load_input.hpp"
 
-namespace amrstream::cli {
+namespace amrstream::formats {
 
 namespace {
 
@@ -37,7 +37,7 @@ std::vector<fs::path> exaFiles(const fs::path& config) {
 
 // The input, its parameter file, PARAMETER.hierarchy, .harrays and every PARAMETER.cpuNNNN.
 std::vector<fs::path> enzoFiles(const fs::path& input) {
-  const fs::path parameter = formats::enzoParameterFile(input);
+  const fs::path parameter = enzoParameterFile(input);
   std::vector<fs::path> files{input, parameter, parameter.string() + ".hierarchy",
                               parameter.string() + ".harrays"};
   const std::string cpuPrefix = parameter.filename().string() + ".cpu";
@@ -55,19 +55,19 @@ std::vector<fs::path> enzoFiles(const fs::path& input) {
 }  // namespace
 
 std::vector<fs::path> datasetFiles(const std::string& input) {
-  switch (formats::detectFormat(input)) {
-    case formats::Format::Builtin:
+  switch (detectFormat(input)) {
+    case Format::Builtin:
       return {};
-    case formats::Format::ExaBricks:
+    case Format::ExaBricks:
       return exaFiles(input);
-    case formats::Format::Enzo:
+    case Format::Enzo:
       return enzoFiles(input);
-    case formats::Format::Amrex:
-    case formats::Format::Flash:
-    case formats::Format::Gerris:
+    case Format::Amrex:
+    case Format::Flash:
+    case Format::Gerris:
       break;
   }
   return {input};
 }
 
-}  // namespace amrstream::cli
+}  // namespace amrstream::formats

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace amrstream::cli {
+namespace amrstream::formats {
 
 // The existing files and directories that reading `input` may open: nothing for builtin:KIND;
 // an AMReX plotfile directory itself (everything under it); an ExaBricks .exa with the cells and
@@ -14,4 +14,4 @@ namespace amrstream::cli {
 // would, for an input that does not exist or is in no known format.
 std::vector<std::filesystem::path> datasetFiles(const std::string& input);
 
-}  // namespace amrstream::cli
+}  // namespace amrstream::formats

@@ -2,7 +2,7 @@
 
 #include <system_error>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::formats {
 

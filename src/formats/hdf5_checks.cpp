@@ -6,8 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "amrstream/error.hpp"
 #include "formats/hdf5_handle.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats {

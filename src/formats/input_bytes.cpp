@@ -6,7 +6,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats {

@@ -6,13 +6,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "amrstream/error.hpp"
 #include "formats/amrex/amrex_reader.hpp"
 #include "formats/enzo/enzo_reader.hpp"
 #include "formats/exa/exa_format.hpp"
 #include "formats/flash/flash_reader.hpp"
 #include "formats/gerris/gerris_reader.hpp"
 #include "formats/hdf5_handle.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats {
@@ -110,8 +110,7 @@ bool readsValueWindows(Format format) {
   return format == Format::Amrex || format == Format::Enzo || format == Format::Flash;
 }
 
-bricks::AmrField loadInput(const std::string& input,
-                           const synth::GeneratorOptions& generatorOptions,
+bricks::AmrField loadInput(const std::string& input, const BuiltinOptions& generatorOptions,
                            const ValueWindow* window, WindowedRead* read) {
   switch (detectFormat(input)) {
     case Format::Builtin:

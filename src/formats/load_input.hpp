@@ -24,8 +24,7 @@ Format detectFormat(const std::string& input);
 bool readsValueWindows(Format format);
 // `generatorOptions` sizes builtin datasets. Throws InputError for unknown formats or kinds.
 // `window`: see value_window.hpp; formats that cannot read part of their values read them all.
-bricks::AmrField loadInput(const std::string& input,
-                           const synth::GeneratorOptions& generatorOptions,
+bricks::AmrField loadInput(const std::string& input, const BuiltinOptions& generatorOptions,
                            const ValueWindow* window = nullptr, WindowedRead* read = nullptr);
 
 }  // namespace amrstream::formats

@@ -9,6 +9,7 @@
 #include <set>
 #include <string_view>
 
+#include "amrstream/error.hpp"
 #include "formats/amrex/amrex_reader.hpp"
 #include "formats/enzo/enzo_info.hpp"
 #include "formats/enzo/enzo_parameters.hpp"
@@ -19,7 +20,6 @@
 #include "formats/gerris/gerris_reader.hpp"
 #include "formats/load_input.hpp"
 #include "synth/generators.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::formats {
 

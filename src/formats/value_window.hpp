@@ -14,7 +14,7 @@
 namespace amrstream::formats {
 
 struct ValueWindow {
-  std::vector<bricks::CellBox> boxes;  // finest-cell units of the field read, half open
+  std::vector<CellBox> boxes;  // finest-cell units of the field read, half open
   // A piece whose cells are w finest cells wide is read when it meets a box grown by
   // cellsAround * w: cells whose tents, or whose neighbours' tents, reach into a box.
   double cellsAround = 3.0;
@@ -28,7 +28,7 @@ struct ValueWindow {
   // Whether the cells [lower, upper), each `width` finest cells wide, are read.
   bool meets(glm::ivec3 lower, glm::ivec3 upper, int width) const {
     const glm::dvec3 grow(cellsAround * width);
-    for (const bricks::CellBox& box : boxes)
+    for (const CellBox& box : boxes)
       if (glm::all(glm::lessThan(glm::dvec3(lower), glm::dvec3(box.upper) + grow)) &&
           glm::all(glm::lessThan(glm::dvec3(box.lower) - grow, glm::dvec3(upper))))
         return true;

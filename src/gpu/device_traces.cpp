@@ -11,6 +11,7 @@
 #include "point_positions.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
+#include "vk/descriptor_writes.hpp"
 
 namespace amrstream::gpu {
 
@@ -140,7 +141,8 @@ void DeviceTraces::gather(Fetcher& fetcher, const WindowPlan& plan) const {
     std::memcpy(fetcher.regions.mapped().data(), plan.regions.data(), regionBytes);
     if (!fetcher.pool || fetcher.poolSets < plan.groups.size()) {
       fetcher.poolSets = std::max<std::uint32_t>(16, 2 * std::uint32_t(plan.groups.size()));
-      const VkDescriptorPoolSize perSet{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGatherBindingCount};
+      const VkDescriptorPoolSize perSet{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                        AMRSTREAM_GATHER_BINDING_COUNT};
       fetcher.pool.emplace(*ctx_, fetcher.poolSets, std::span(&perSet, 1));
     } else {
       fetcher.pool->reset();
@@ -148,10 +150,11 @@ void DeviceTraces::gather(Fetcher& fetcher, const WindowPlan& plan) const {
     std::vector<VkDescriptorSet> sets;
     for (const WindowPlan::Group& group : plan.groups) {
       sets.push_back(fetcher.pool->allocate(gather_->setLayout.get()));
-      const std::array<vk::DescriptorTarget, kGatherBindingCount> targets{
-          vk::storageTarget(rounds_[group.round].arrays[group.array]),
-          vk::storageTarget(fetcher.staging), vk::storageTarget(fetcher.regions)};
-      vk::writeDescriptors(*ctx_, sets.back(), targets);
+      vk::DescriptorWrites("gather", AMRSTREAM_GATHER_BINDING_COUNT)
+          .set(AMRSTREAM_BINDING_GATHER_SOURCE, rounds_[group.round].arrays[group.array])
+          .set(AMRSTREAM_BINDING_GATHER_TARGET, fetcher.staging)
+          .set(AMRSTREAM_BINDING_GATHER_REGIONS, fetcher.regions)
+          .write(*ctx_, sets.back());
     }
     if (!fetcher.copy) fetcher.copy.emplace(*ctx_);
     const std::uint32_t most = ctx_->limits().maxComputeWorkGroupCount[0];

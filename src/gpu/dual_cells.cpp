@@ -3,18 +3,19 @@
 #include <algorithm>
 #include <array>
 
+#include "../../shaders/glsl/shared/dual_cell_bindings.h"
 #include "../../shaders/glsl/shared/dual_cell_params.h"
 #include "build_dual_cells_comp.h"
 #include "device_upload.hpp"
 #include "vk/commands.hpp"
 #include "vk/descriptor_pool.hpp"
+#include "vk/descriptor_writes.hpp"
 #include "vk/pipelines.hpp"
 
 namespace amrstream::gpu {
 
 namespace {
 
-constexpr std::uint32_t kBindingCount = 3;
 // Workgroups per dispatch: the smallest maxComputeWorkGroupCount[0] Vulkan allows.
 constexpr std::uint32_t kBricksPerDispatch = 65535;
 
@@ -36,22 +37,23 @@ vk::Buffer buildDualValues(const vk::Context& ctx, DeviceUploader& uploader,
                        out.begin(), [](std::uint64_t d) { return static_cast<std::uint32_t>(d); });
       });
 
-  std::array<VkDescriptorSetLayoutBinding, kBindingCount> bindings{};
-  for (std::uint32_t i = 0; i < kBindingCount; ++i)
-    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-  const auto setLayout = vk::createDescriptorSetLayout(ctx, bindings);
+  const auto setLayout = vk::createDescriptorSetLayout(
+      ctx,
+      vk::storageBufferBindings(AMRSTREAM_DUAL_CELL_BINDING_COUNT, VK_SHADER_STAGE_COMPUTE_BIT));
   const auto layout = vk::createPipelineLayout(ctx, setLayout.get(), sizeof(shared::DualCellParams),
                                                VK_SHADER_STAGE_COMPUTE_BIT);
   const auto pipeline =
       vk::createComputePipeline(ctx, layout.get(), vk::spirv(amrstream_spirv_build_dual_cells_comp),
                                 nullptr, "build dual cells");
   const std::array<VkDescriptorPoolSize, 1> sizes{
-      {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindingCount}}};
+      {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, AMRSTREAM_DUAL_CELL_BINDING_COUNT}}};
   vk::DescriptorPool pool(ctx, 1, sizes);
   const VkDescriptorSet set = pool.allocate(setLayout.get());
-  const std::array<vk::DescriptorTarget, kBindingCount> targets{
-      vk::storageTarget(bricks), vk::storageTarget(values), vk::storageTarget(firstCells)};
-  vk::writeDescriptors(ctx, set, targets);
+  vk::DescriptorWrites("dual cells", AMRSTREAM_DUAL_CELL_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_DUAL_CELL_BRICKS, bricks)
+      .set(AMRSTREAM_BINDING_DUAL_CELL_VALUES, values)
+      .set(AMRSTREAM_BINDING_DUAL_CELL_OFFSETS, firstCells)
+      .write(ctx, set);
 
   const VkDeviceAddress address = dual.deviceAddress();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {

@@ -1,7 +1,5 @@
 #include "gather_kernel.hpp"
 
-#include <array>
-
 #include "../../shaders/glsl/shared/gather_params.h"
 #include "gather_runs_comp.h"
 #include "vk/pipelines.hpp"
@@ -9,11 +7,9 @@
 namespace amrstream::gpu {
 
 GatherKernel createGatherKernel(const vk::Context& ctx) {
-  std::array<VkDescriptorSetLayoutBinding, kGatherBindingCount> bindings{};
-  for (std::uint32_t i = 0; i < kGatherBindingCount; ++i)
-    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   GatherKernel k;
-  k.setLayout = vk::createDescriptorSetLayout(ctx, bindings);
+  k.setLayout = vk::createDescriptorSetLayout(
+      ctx, vk::storageBufferBindings(AMRSTREAM_GATHER_BINDING_COUNT, VK_SHADER_STAGE_COMPUTE_BIT));
   k.layout = vk::createPipelineLayout(ctx, k.setLayout.get(), sizeof(shared::GatherParams),
                                       VK_SHADER_STAGE_COMPUTE_BIT);
   k.pipeline = vk::createComputePipeline(

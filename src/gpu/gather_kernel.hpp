@@ -1,12 +1,10 @@
 #pragma once
 // The kernel that copies scattered runs of words into one buffer (shaders/glsl/gather_runs.comp):
-// bindings 0 the source, 1 the target, 2 the regions (shared::GatherRegion); push constants
-// shared::GatherParams.
+// bindings in shaders/glsl/shared/gather_bindings.h, push constants shared::GatherParams.
 
 #include <vulkan/vulkan.h>
 
-#include <cstdint>
-
+#include "../../shaders/glsl/shared/gather_bindings.h"
 #include "vk/unique_handle.hpp"
 
 namespace amrstream::vk {
@@ -14,8 +12,6 @@ class Context;
 }
 
 namespace amrstream::gpu {
-
-inline constexpr std::uint32_t kGatherBindingCount = 3;
 
 struct GatherKernel {
   vk::UniqueHandle<VkDescriptorSetLayout> setLayout;

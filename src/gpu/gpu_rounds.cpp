@@ -2,15 +2,19 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
+#include "../../shaders/glsl/shared/round_bindings.h"
 #include "../../shaders/glsl/shared/round_params.h"
+#include "../../shaders/glsl/shared/trace_bindings.h"
 #include "point_positions.hpp"
 #include "staged_layout.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
+#include "vk/descriptor_writes.hpp"
 
 namespace amrstream::gpu {
 
@@ -20,7 +24,9 @@ constexpr std::uint32_t kMostLaneShift = 5;  // a line alone in a subgroup of 32
 
 constexpr std::array<VkDescriptorPoolSize, 3> kPerSet{
     {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompactionBindingCount},
+     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+      std::max({AMRSTREAM_TRACE_BINDING_COUNT, AMRSTREAM_COMPACTION_BINDING_COUNT,
+                AMRSTREAM_POINT_DATA_BINDING_COUNT})},
      {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
 
 std::uint32_t groups(std::size_t threads, std::uint32_t groupSize) {
@@ -66,6 +72,68 @@ void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t
   });
 }
 
+// The tracing round's bindings; `parity` picks the line reports the round writes. The kernel
+// reads dual cells with their own region brick records where the volume has them.
+void writeTraceSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
+                   const RoundBuffers& b, int parity) {
+  const bool dual = device.dualValues.size() > 0;
+  vk::DescriptorWrites("trace", AMRSTREAM_TRACE_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_TRACE_PARAMS, vk::uniformTarget(b.params))
+      .set(AMRSTREAM_BINDING_TRACE_BRICKS, device.bricks)
+      .set(AMRSTREAM_BINDING_TRACE_VALUES, device.values)
+      .set(AMRSTREAM_BINDING_TRACE_REGIONS, device.regions)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_BRICKS,
+           dual ? device.dualRegionBricks : device.regionBricks)
+      .set(AMRSTREAM_BINDING_TRACE_STATES_IN, b.states)
+      .set(AMRSTREAM_BINDING_TRACE_STATES_OUT, b.roundStates)
+      .set(AMRSTREAM_BINDING_TRACE_LINE_ROUNDS, b.lineRounds[parity])
+      .set(AMRSTREAM_BINDING_TRACE_POSITIONS, b.positions)
+      .set(AMRSTREAM_BINDING_TRACE_TIMES, b.times)
+      .set(AMRSTREAM_BINDING_TRACE_VECTORS, b.vectors)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_IDS, b.regionIds)
+      .set(AMRSTREAM_BINDING_TRACE_LOCATE, device.locateTarget())
+      .set(AMRSTREAM_BINDING_TRACE_LINEAR_CELLS, device.vectorGradients)
+      .write(ctx, set);
+}
+
+void writeCompactionSet(const vk::Context& ctx, VkDescriptorSet set, const RoundBuffers& b,
+                        int parity) {
+  vk::DescriptorWrites("compaction", AMRSTREAM_COMPACTION_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_COMPACTION_LINE_ROUNDS, b.lineRounds[parity])
+      .set(AMRSTREAM_BINDING_COMPACTION_PREFIX, b.prefix)
+      .set(AMRSTREAM_BINDING_COMPACTION_BLOCK_SUMS, b.blockSums)
+      .set(AMRSTREAM_BINDING_COMPACTION_SUMMARY, b.summary)
+      .set(AMRSTREAM_BINDING_COMPACTION_STATES, b.roundStates)
+      .set(AMRSTREAM_BINDING_COMPACTION_NEXT_STATES, b.states)
+      .set(AMRSTREAM_BINDING_COMPACTION_POSITIONS, b.positions)
+      .set(AMRSTREAM_BINDING_COMPACTION_TIMES, b.times)
+      .set(AMRSTREAM_BINDING_COMPACTION_VECTORS, b.vectors)
+      .set(AMRSTREAM_BINDING_COMPACTION_REGION_IDS, b.regionIds)
+      .set(AMRSTREAM_BINDING_COMPACTION_DENSE_POSITIONS, b.densePositions)
+      .set(AMRSTREAM_BINDING_COMPACTION_DENSE_TIMES, b.denseTimes)
+      .set(AMRSTREAM_BINDING_COMPACTION_DENSE_VECTORS, b.denseVectors)
+      .set(AMRSTREAM_BINDING_COMPACTION_DENSE_REGION_IDS, b.denseRegionIds)
+      .write(ctx, set);
+}
+
+void writePointDataSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
+                       const RoundBuffers& b) {
+  vk::DescriptorWrites("point data", AMRSTREAM_POINT_DATA_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_POINT_DATA_BRICKS, device.bricks)
+      .set(AMRSTREAM_BINDING_POINT_DATA_VALUES, device.values)
+      .set(AMRSTREAM_BINDING_POINT_DATA_REGIONS, device.regions)
+      .set(AMRSTREAM_BINDING_POINT_DATA_REGION_BRICKS, device.regionBricks)
+      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNEL_VALUES, device.channelValues)
+      .set(AMRSTREAM_BINDING_POINT_DATA_SUMMARY, b.summary)
+      .set(AMRSTREAM_BINDING_POINT_DATA_POSITIONS, b.densePositions)
+      .set(AMRSTREAM_BINDING_POINT_DATA_REGION_IDS, b.denseRegionIds)
+      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNELS, b.channels)
+      .set(AMRSTREAM_BINDING_POINT_DATA_VORTICITY, b.vorticity)
+      .set(AMRSTREAM_BINDING_POINT_DATA_LINEAR_CELLS, device.vectorGradients)
+      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNEL_GRADIENTS, device.channelGradients)
+      .write(ctx, set);
+}
+
 }  // namespace
 
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
@@ -97,63 +165,17 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
                     volume.deepPositions()))
     throw std::logic_error("GpuRounds: the round buffers do not fit the lines");
   buffers.setStates(ctx, lines);
-  const RoundBuffers& b = buffers_;
   // The kernel reads dual cells through their address where the volume has them (GpuTracer
   // sets both alike).
-  const bool dual = device.dualValues.size() > 0;
   params_.dualValuesAddress = device.dualValuesAddress();
   for (int parity = 0; parity < 2; ++parity) {
     traceSets_[parity] = pool_.allocate(trace.setLayout.get());
-    const std::array<vk::DescriptorTarget, kTraceBindingCount> traceTargets{
-        vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.handle()},
-        vk::storageTarget(device.bricks),
-        vk::storageTarget(device.values),
-        vk::storageTarget(device.regions),
-        vk::storageTarget(dual ? device.dualRegionBricks : device.regionBricks),
-        vk::storageTarget(b.states),
-        vk::storageTarget(b.roundStates),
-        vk::storageTarget(b.lineRounds[parity]),
-        vk::storageTarget(b.positions),
-        vk::storageTarget(b.times),
-        vk::storageTarget(b.vectors),
-        vk::storageTarget(b.regionIds),
-        device.locateTarget(),
-        vk::storageTarget(device.vectorGradients)};
-    vk::writeDescriptors(ctx, traceSets_[parity], traceTargets);
-
+    writeTraceSet(ctx, traceSets_[parity], device, buffers_, parity);
     compactionSets_[parity] = pool_.allocate(kernels.compactionSetLayout.get());
-    const std::array<vk::DescriptorTarget, kCompactionBindingCount> compactionTargets{
-        vk::storageTarget(b.lineRounds[parity]),
-        vk::storageTarget(b.prefix),
-        vk::storageTarget(b.blockSums),
-        vk::storageTarget(b.summary),
-        vk::storageTarget(b.roundStates),
-        vk::storageTarget(b.states),
-        vk::storageTarget(b.positions),
-        vk::storageTarget(b.times),
-        vk::storageTarget(b.vectors),
-        vk::storageTarget(b.regionIds),
-        vk::storageTarget(b.densePositions),
-        vk::storageTarget(b.denseTimes),
-        vk::storageTarget(b.denseVectors),
-        vk::storageTarget(b.denseRegionIds)};
-    vk::writeDescriptors(ctx, compactionSets_[parity], compactionTargets);
+    writeCompactionSet(ctx, compactionSets_[parity], buffers_, parity);
   }
   pointDataSet_ = pool_.allocate(kernels.pointDataSetLayout.get());
-  const std::array<vk::DescriptorTarget, kPointDataBindingCount> pointDataTargets{
-      vk::storageTarget(device.bricks),
-      vk::storageTarget(device.values),
-      vk::storageTarget(device.regions),
-      vk::storageTarget(device.regionBricks),
-      vk::storageTarget(device.channelValues),
-      vk::storageTarget(b.summary),
-      vk::storageTarget(b.densePositions),
-      vk::storageTarget(b.denseRegionIds),
-      vk::storageTarget(b.channels),
-      vk::storageTarget(b.vorticity),
-      vk::storageTarget(device.vectorGradients),
-      vk::storageTarget(device.channelGradients)};
-  vk::writeDescriptors(ctx, pointDataSet_, pointDataTargets);
+  writePointDataSet(ctx, pointDataSet_, device, buffers_);
   if (timeKernels) {
     traceTimer_.emplace(ctx);
     compactionTimer_.emplace(ctx);

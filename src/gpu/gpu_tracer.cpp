@@ -65,8 +65,8 @@ VkDeviceSize deviceLocalBytes(const vk::Context& ctx) {
 
 // Dual cells take 8 times the values' memory (10 times with their padding on the cloud); they
 // make samples faster where one line's latency or the ray tracing pipeline bounds the kernel
-// (docs/benchmarks.md). The kernels read them through a buffer device address, and they take at
-// most a quarter of the device's memory.
+// (docs/performance-notes.md, "Dual cells read through their address"). The kernels read them
+// through a buffer device address, and they take at most a quarter of the device's memory.
 bool useDualValues(const vk::Context& ctx, const flow::VectorVolume& volume,
                    std::optional<bool> asked) {
   if (!asked.value_or(ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)) return false;

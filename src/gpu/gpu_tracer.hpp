@@ -95,7 +95,7 @@ class GpuTracer {
   // One round of at most `steps` steps for `lines` (states of any earlier rounds, in any order),
   // in the tracer's kept buffers: the round's block, and `lines` left holding the live lines'
   // states. For MPI ranks that hand lines to each other between rounds. Adds its work to
-  // lastRun() (reset it with resetRunStats()).
+  // lastRun().
   // With `order`, the lines are first put in the tracer's thread order (Morton, when spatial);
   // the lines coming back keep the order they went in (less those that ended).
   flow::RoundBlock advanceRound(std::vector<shared::LineState>& lines,
@@ -111,7 +111,6 @@ class GpuTracer {
   const KernelSettings& settings() const { return settings_; }
   const VolumeBuffers& volumeBuffers() const { return device_; }
   const TraceRunStats& lastRun() const { return lastRun_; }
-  void resetRunStats() { lastRun_ = {}; }
   // Lines one batch of trace() holds for these options.
   std::size_t linesPerBatch(const flow::TraceOptions& options, std::size_t lines) const;
   // Output slots for a batch: the budget's, within the device's buffer range.

@@ -8,7 +8,7 @@ namespace amrstream::gpu {
 void toPhysicalPositions(const flow::VectorVolume& volume, const glm::vec3* cells,
                          const std::int32_t* ids, std::size_t count, glm::vec3* high,
                          glm::vec3* low) {
-  const bricks::WorldTransform& transform = volume.transform;
+  const WorldTransform& transform = volume.transform;
   const std::vector<shared::Region>& regions = volume.regions.regions;
   for (std::size_t i = 0; i < count; ++i) {
     if (ids) {

@@ -1,7 +1,6 @@
 #include "round_kernels.hpp"
 
-#include <vector>
-
+#include "../../shaders/glsl/shared/round_bindings.h"
 #include "../../shaders/glsl/shared/round_params.h"
 #include "compact_round_comp.h"
 #include "point_data_comp.h"
@@ -16,10 +15,8 @@ namespace {
 
 vk::UniqueHandle<VkDescriptorSetLayout> storageBufferLayout(const vk::Context& ctx,
                                                             std::uint32_t count) {
-  std::vector<VkDescriptorSetLayoutBinding> bindings(count);
-  for (std::uint32_t i = 0; i < count; ++i)
-    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-  return vk::createDescriptorSetLayout(ctx, bindings);
+  return vk::createDescriptorSetLayout(
+      ctx, vk::storageBufferBindings(count, VK_SHADER_STAGE_COMPUTE_BIT));
 }
 
 }  // namespace
@@ -27,7 +24,7 @@ vk::UniqueHandle<VkDescriptorSetLayout> storageBufferLayout(const vk::Context& c
 RoundKernels createRoundKernels(const vk::Context& ctx) {
   using vk::spirv;
   RoundKernels k;
-  k.compactionSetLayout = storageBufferLayout(ctx, kCompactionBindingCount);
+  k.compactionSetLayout = storageBufferLayout(ctx, AMRSTREAM_COMPACTION_BINDING_COUNT);
   k.compactionLayout =
       vk::createPipelineLayout(ctx, k.compactionSetLayout.get(), sizeof(shared::CompactionParams),
                                VK_SHADER_STAGE_COMPUTE_BIT);
@@ -39,7 +36,7 @@ RoundKernels createRoundKernels(const vk::Context& ctx) {
   k.compact = vk::createComputePipeline(ctx, k.compactionLayout.get(),
                                         spirv(amrstream_spirv_compact_round_comp), nullptr,
                                         "compact round");
-  k.pointDataSetLayout = storageBufferLayout(ctx, kPointDataBindingCount);
+  k.pointDataSetLayout = storageBufferLayout(ctx, AMRSTREAM_POINT_DATA_BINDING_COUNT);
   k.pointDataLayout =
       vk::createPipelineLayout(ctx, k.pointDataSetLayout.get(), sizeof(shared::PointDataParams),
                                VK_SHADER_STAGE_COMPUTE_BIT);

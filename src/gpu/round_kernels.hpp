@@ -2,8 +2,8 @@
 // The kernels that follow a tracing round on every backend, all plain compute: the compaction of
 // the round's output (scan_lines, scan_blocks, compact_round: one descriptor layout, push
 // constants shared::CompactionParams) and the point data at the compacted points (point_data,
-// push constants shared::PointDataParams). Their bindings are listed in
-// shaders/glsl/include/compaction_buffers.glsl and shaders/glsl/point_data.comp.
+// push constants shared::PointDataParams). Their bindings are named in
+// shaders/glsl/shared/round_bindings.h.
 
 #include <vulkan/vulkan.h>
 
@@ -16,9 +16,6 @@ class Context;
 }
 
 namespace amrstream::gpu {
-
-inline constexpr std::uint32_t kCompactionBindingCount = 14;
-inline constexpr std::uint32_t kPointDataBindingCount = 12;
 
 struct RoundKernels {
   vk::UniqueHandle<VkDescriptorSetLayout> compactionSetLayout;

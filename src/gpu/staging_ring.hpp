@@ -2,8 +2,8 @@
 // A few pinned host buffers that the output of a round passes through on its way to the host,
 // piece by piece: while the host unpacks one piece, the device copies the next ones into the
 // other slots. Pinned memory stays the same few megabytes however large the rounds are (making
-// it is slow, about 3 GB/s on the H100 host of docs/benchmarks.md), and the copies overlap the
-// unpacking instead of preceding it.
+// pinned memory is slow, a few GB/s), and the copies overlap the unpacking instead of
+// preceding it.
 //
 // The buffers are made on another thread from the constructor on, so that making them overlaps
 // the caller's other setup; the first use waits for them.

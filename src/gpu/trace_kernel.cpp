@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "locate_probe_compute_comp.h"
 #include "locate_probe_pipeline_rgen.h"
@@ -27,16 +28,12 @@ namespace {
 constexpr std::uint32_t kPreferredWorkgroupSize = 64;
 
 void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
-  std::array<VkDescriptorSetLayoutBinding, kTraceBindingCount> bindings{};
-  for (std::uint32_t i = 0; i < kTraceBindingCount; ++i) {
-    bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[i].descriptorCount = 1;
-    bindings[i].stageFlags = kernel.stages;
-  }
-  bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  std::vector<VkDescriptorSetLayoutBinding> bindings =
+      vk::storageBufferBindings(AMRSTREAM_TRACE_BINDING_COUNT, kernel.stages);
+  bindings[AMRSTREAM_BINDING_TRACE_PARAMS].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   if (kernel.backend != Backend::Compute)
-    bindings[kLocateBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    bindings[AMRSTREAM_BINDING_TRACE_LOCATE].descriptorType =
+        VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
   kernel.setLayout = vk::createDescriptorSetLayout(ctx, bindings);
   kernel.pipelineLayout = vk::createPipelineLayout(ctx, kernel.setLayout.get());
 }

@@ -1,13 +1,14 @@
 #pragma once
 // The tracing-round kernel of one backend: its descriptor set layout (the bindings of
-// shaders/glsl/include/amr_buffers.glsl, with the point-location structure at 12), its
-// pipeline layout and pipeline, and for the ray tracing pipeline its shader binding table.
+// shaders/glsl/shared/trace_bindings.h), its pipeline layout and pipeline, and for the ray
+// tracing pipeline its shader binding table.
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <optional>
 
+#include "../../shaders/glsl/shared/trace_bindings.h"
 #include "backend.hpp"
 #include "flow/trace_options.hpp"
 #include "vk/buffer.hpp"
@@ -19,9 +20,6 @@ class Context;
 }
 
 namespace amrstream::gpu {
-
-inline constexpr std::uint32_t kTraceBindingCount = 14;
-inline constexpr std::uint32_t kLocateBinding = 12;  // then 13: the vector's gradients
 
 using vk::ShaderBindingTable;
 
@@ -61,10 +59,10 @@ struct KernelSettings {
   std::optional<std::uint32_t> spreadThreads;
 };
 
-// About the threads of a backend's tracing kernel that a large GPU keeps resident, as measured on
-// an H200 (docs/benchmarks.md): 2^17 for the compute kernels (132 multiprocessors of 32
-// subgroups: their 64 registers a thread allow no more), 2^16 for the ray tracing pipeline.
-// Spread past them, lines of equal length run in two waves.
+// About the threads of a backend's tracing kernel that a large GPU keeps resident: 2^17 for the
+// compute kernels (an H200's 132 multiprocessors of 32 subgroups: their 64 registers a thread
+// allow no more), 2^16 for the ray tracing pipeline. Spread past them, lines of equal length
+// run in two waves (docs/benchmarks.md, "A lone line's latency, the spread and the CPU tail").
 std::uint32_t residentThreads(Backend backend);
 
 // The settings each backend runs with unless told otherwise: the region hint on everywhere.

@@ -13,6 +13,7 @@
 #include "util/stopwatch.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
+#include "vk/descriptor_writes.hpp"
 
 namespace amrstream::gpu {
 
@@ -52,27 +53,32 @@ void VectorProbe::reserve(std::size_t points) {
   regions_ = vk::Buffer::readback(*ctx_, points * sizeof(std::int32_t), usage, "probe regions");
   const std::array<VkDescriptorPoolSize, 3> sizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTraceBindingCount},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, AMRSTREAM_TRACE_BINDING_COUNT},
        {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
   pool_ = std::make_unique<vk::DescriptorPool>(*ctx_, 1, sizes);
   set_ = pool_->allocate(kernel_->setLayout.get());
-  const std::array<vk::DescriptorTarget, kTraceBindingCount> targets{
-      vk::DescriptorTarget{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle()},
-      vk::storageTarget(device_->bricks),
-      vk::storageTarget(device_->values),
-      vk::storageTarget(device_->regions),
-      vk::storageTarget(device_->regionBricks),
-      vk::storageTarget(points_),   // probePoints
-      vk::storageTarget(unused_),   // statesOut
-      vk::storageTarget(unused_),   // lineRounds
-      vk::storageTarget(unused_),   // outPositions
-      vk::storageTarget(unused_),   // outTimes
-      vk::storageTarget(vectors_),  // outVectors
-      vk::storageTarget(regions_),  // outRegions
-      device_->locateTarget(),
-      vk::storageTarget(device_->vectorGradients)};
-  vk::writeDescriptors(*ctx_, set_, targets);
+  writeSet();
   capacity_ = points;
+}
+
+void VectorProbe::writeSet() {
+  const VolumeBuffers& device = *device_;
+  vk::DescriptorWrites("probe", AMRSTREAM_TRACE_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_TRACE_PARAMS, vk::uniformTarget(params_))
+      .set(AMRSTREAM_BINDING_TRACE_BRICKS, device.bricks)
+      .set(AMRSTREAM_BINDING_TRACE_VALUES, device.values)
+      .set(AMRSTREAM_BINDING_TRACE_REGIONS, device.regions)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_BRICKS, device.regionBricks)
+      .set(AMRSTREAM_BINDING_TRACE_PROBE_POINTS, points_)
+      .set(AMRSTREAM_BINDING_TRACE_STATES_OUT, unused_)
+      .set(AMRSTREAM_BINDING_TRACE_LINE_ROUNDS, unused_)
+      .set(AMRSTREAM_BINDING_TRACE_POSITIONS, unused_)
+      .set(AMRSTREAM_BINDING_TRACE_TIMES, unused_)
+      .set(AMRSTREAM_BINDING_TRACE_VECTORS, vectors_)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_IDS, regions_)
+      .set(AMRSTREAM_BINDING_TRACE_LOCATE, device.locateTarget())
+      .set(AMRSTREAM_BINDING_TRACE_LINEAR_CELLS, device.vectorGradients)
+      .write(*ctx_, set_);
 }
 
 void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out) {

@@ -50,6 +50,9 @@ class VectorProbe {
   void makeFixedBuffers();
   // Host-visible buffers and their descriptor set for `points` points per dispatch.
   void reserve(std::size_t points);
+  // Points set_ at the buffers: the points where the tracer reads line states, and unused_ for
+  // the outputs the probe does not write.
+  void writeSet();
 
   const vk::Context* ctx_;
   const flow::VectorVolume* volume_;

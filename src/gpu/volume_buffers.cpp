@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "amrstream/error.hpp"
 #include "bricks/descent_tree.hpp"
 #include "device_upload.hpp"
 #include "dual_cells.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 #include "vk/vk_error.hpp"
@@ -121,16 +121,16 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
   // The pipeline's intersection shader sees only the ray's float origin (locate_pipeline.glsl).
   const glm::ivec3 extent = volume.period();
   if (backend == Backend::Pipeline && glm::any(glm::greaterThan(extent, glm::ivec3(1 << 22))))
-    throw InputError("--backend pipeline",
-                     fmt::format("the domain spans {}x{}x{} finest cells; the pipeline backend "
-                                 "locates points in float coordinates, exact up to 2^22 finest "
-                                 "cells per axis: use --backend compute or rayquery",
-                                 extent.x, extent.y, extent.z));
+    throw settingError("backend",
+                       fmt::format("pipeline: the domain spans {}x{}x{} finest cells; the "
+                                   "pipeline backend locates points in float coordinates, exact "
+                                   "up to 2^22 finest cells per axis: use {{backend}} compute or "
+                                   "rayquery",
+                                   extent.x, extent.y, extent.z));
   Stopwatch clock;
   DeviceUploader uploader(ctx);
   bricks = uploader.upload(std::span(volume.bricks), kStorage, "bricks");
-  // The values padded to 16 bytes, which the kernels read in one aligned load (1.32x the compute
-  // backend's particle-steps/s on an H200).
+  // The values padded to 16 bytes, which the kernels read in one aligned load.
   values = uploader.upload<glm::vec4>(volume.values.size(), kStorage, "vector values",
                                       [&](std::size_t first, std::span<glm::vec4> out) {
                                         tbb::parallel_for(
@@ -187,8 +187,7 @@ VolumeBuffers::VolumeBuffers(const vk::Context& ctx, Backend backend,
 }
 
 vk::DescriptorTarget VolumeBuffers::locateTarget() const {
-  if (scene)
-    return {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_NULL_HANDLE, scene->tlas.handle()};
+  if (scene) return vk::structureTarget(scene->tlas.handle());
   return vk::storageTarget(tree);
 }
 

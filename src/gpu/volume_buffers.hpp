@@ -11,7 +11,7 @@
 #include "flow/vector_volume.hpp"
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
-#include "vk/descriptor_pool.hpp"
+#include "vk/descriptor_writes.hpp"
 
 namespace amrstream::gpu {
 

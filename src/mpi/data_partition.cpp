@@ -184,7 +184,7 @@ DataPartition partitionCells(const bricks::AmrField& field, int parts, double ha
   DataPartition partition;
   partition.lower.resize(std::size_t(std::max(parts, 1)));
   partition.upper.resize(partition.lower.size());
-  const bricks::CellBox bounds = field.bounds();
+  const CellBox bounds = field.bounds();
   bisect({centres.begin(), centres.end(), seedCentres.begin(), seedCentres.end()}, bounds.lower,
          bounds.upper, 0, partition.parts(), halo, partition);
   return partition;

@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "../../shaders/glsl/shared/dormand_prince.h"
+#include "amrstream/error.hpp"
 #include "flow/cpu_tracer.hpp"
 #include "flow/line_plan.hpp"
 #include "line_exchange.hpp"
-#include "util/input_error.hpp"
 #include "util/stopwatch.hpp"
 
 namespace amrstream::mpi {

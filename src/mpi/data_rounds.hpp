@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
+#include "amrstream/mpi_world.hpp"
 #include "data_partition.hpp"
 #include "flow/round_block.hpp"
 #include "flow/trace_options.hpp"
 #include "flow/trace_set.hpp"
 #include "flow/vector_volume.hpp"
-#include "mpi_world.hpp"
 
 namespace amrstream::mpi {
 

@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
+#include "amrstream/mpi_world.hpp"
 #include "data_rounds.hpp"
-#include "mpi_world.hpp"
 
 namespace amrstream::mpi {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/line_state.h"
-#include "mpi_world.hpp"
+#include "amrstream/mpi_world.hpp"
 
 namespace amrstream::mpi {
 

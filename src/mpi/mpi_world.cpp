@@ -1,4 +1,4 @@
-#include "mpi_world.hpp"
+#include "amrstream/mpi_world.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace amrstream::mpi {
+namespace amrstream {
 
 bool launchedByMpi() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
@@ -132,4 +132,4 @@ void MpiWorld::abort(int code) const {
   std::exit(code);
 }
 
-}  // namespace amrstream::mpi
+}  // namespace amrstream

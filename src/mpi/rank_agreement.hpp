@@ -9,22 +9,10 @@
 #include <string>
 #include <type_traits>
 
-#include "mpi_world.hpp"
+#include "amrstream/error.hpp"
+#include "amrstream/mpi_world.hpp"
 
 namespace amrstream::mpi {
-
-// What every rank throws when some rank's phase failed: the lowest failing rank's message,
-// prefixed with that rank ("rank 1 of 3: ...") unless every rank failed, and its exit code (2
-// for bad input, else 1).
-class RankFailure : public std::runtime_error {
- public:
-  RankFailure(const std::string& message, int exitCode)
-      : std::runtime_error(message), exitCode_(exitCode) {}
-  int exitCode() const { return exitCode_; }
-
- private:
-  int exitCode_;
-};
 
 // Collective: every rank calls it with what its phase threw (null when it succeeded). Returns
 // when no rank failed; throws RankFailure on every rank otherwise. In a world of one, rethrows

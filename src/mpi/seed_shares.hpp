@@ -3,8 +3,7 @@
 // of neighbouring seeds, dealt to the ranks in turn. Within a block the seeds lie together, so a
 // rank's GPU threads stay coherent; dealing many blocks round the ranks gives every rank seeds
 // from all over the domain, so that regions where traces run long or end early weigh on every
-// rank alike (one contiguous range per rank left the two ranks of the H200 pair 10 % apart in
-// steps; docs/distributed.md).
+// rank alike (docs/distributed.md, "`--distribute seeds`").
 
 #include <cstdint>
 #include <glm/glm.hpp>

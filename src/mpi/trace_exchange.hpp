@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "amrstream/mpi_world.hpp"
 #include "flow/trace_set.hpp"
-#include "mpi_world.hpp"
 
 namespace amrstream::mpi {
 

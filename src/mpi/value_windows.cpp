@@ -12,7 +12,7 @@
 namespace amrstream::mpi {
 
 formats::ValueWindow partWindow(const DataPartition& partition, int rank, double grow,
-                                const bricks::CellBox& domain, const flow::PeriodicAxes& periodic) {
+                                const CellBox& domain, const flow::PeriodicAxes& periodic) {
   const glm::dvec3 lower = glm::dvec3(partition.lower[std::size_t(rank)]) - grow;
   const glm::dvec3 upper = glm::dvec3(partition.upper[std::size_t(rank)]) + grow;
   const glm::dvec3 period(domain.upper - domain.lower);

@@ -6,9 +6,9 @@
 #include <optional>
 #include <string>
 
+#include "amrstream/error.hpp"
 #include "atomic_file.hpp"
 #include "buffered_writer.hpp"
-#include "util/input_error.hpp"
 #include "vtk_xml_appended.hpp"
 #include "xml_header.hpp"
 

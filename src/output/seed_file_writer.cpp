@@ -7,9 +7,9 @@
 #include <string_view>
 #include <system_error>
 
+#include "amrstream/error.hpp"
 #include "output/atomic_file.hpp"
 #include "output/buffered_writer.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::output {
 

@@ -19,8 +19,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "amrstream/error.hpp"
 #include "util/host_memory.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::output {

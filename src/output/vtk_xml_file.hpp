@@ -47,11 +47,10 @@ class VtkXmlFile {
   VtkXmlFile(const VtkXmlFile&) = delete;
   VtkXmlFile& operator=(const VtkXmlFile&) = delete;
 
-  const std::string& source() const { return source_; }
   const XmlElement& root() const { return root_; }  // <VTKFile>
   std::string datasetType() const;                  // the type attribute: "PolyData", ...
 
-  // Throws InputError(source(), problem).
+  // Throws InputError naming the file, with `problem`.
   [[noreturn]] void fail(const std::string& problem) const;
 
   // An unsigned integer attribute of `element`; `fallback` when absent (throws when absent

@@ -27,8 +27,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "../flow/trace_set.hpp"
-#include "../flow/trace_view.hpp"
+#include "flow/trace_set.hpp"
+#include "flow/trace_view.hpp"
 #include "output/vtk_compression.hpp"
 #include "output/vtk_field_data.hpp"
 

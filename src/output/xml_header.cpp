@@ -8,7 +8,7 @@
 #include <new>
 #include <type_traits>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::output {
 namespace {

@@ -3,10 +3,15 @@
 
 #include <pybind11/pybind11.h>
 
+#include "amrstream/tracing.hpp"
+
 namespace amrstream::python {
 
 void bindDataset(pybind11::module_& m);
 void bindSeeding(pybind11::module_& m);
 void bindTracing(pybind11::module_& m);
+
+// Traces.render, on the class the tracing part makes.
+void bindRendering(pybind11::class_<Traces>& traces);
 
 }  // namespace amrstream::python

@@ -7,11 +7,12 @@
 
 #include "amrstream/dataset.hpp"
 #include "amrstream/field.hpp"
+#include "api/handles.hpp"
 #include "bindings.hpp"
 #include "flow/seeds.hpp"
 #include "flow/uniform_resample.hpp"
 #include "numpy_views.hpp"
-#include "prepared_field.hpp"
+#include "setting_args.hpp"
 
 namespace amrstream::python {
 
@@ -19,27 +20,20 @@ namespace {
 
 py::tuple tuple3(glm::dvec3 v) { return py::make_tuple(v.x, v.y, v.z); }
 
-py::object periodicOf(const bricks::DatasetInfo& info) {
+py::object periodicOf(const DatasetInfo& info) {
   if (!info.periodicKnown) return py::none();
   return py::make_tuple(info.periodic[0], info.periodic[1], info.periodic[2]);
 }
 
-std::vector<std::string> channelNames(const Dataset& d) {
-  std::vector<std::string> names;
-  for (const bricks::Channel& c : d.channels()) names.push_back(c.name);
-  return names;
-}
-
 // Field.resample: the grid's arrays indexed [i, j, k] (x first, as yt's covering grids), views
 // over one grid that the returned arrays keep alive.
-py::dict resampled(const PreparedField& p, py::object dims,
-                   std::optional<std::vector<double>> box) {
+py::dict resampled(const Field& p, py::object dims, std::optional<std::vector<double>> box) {
   std::vector<std::uint64_t> counts;
   if (py::isinstance<py::int_>(dims))
     counts.push_back(dims.cast<std::uint64_t>());
   else
     counts = dims.cast<std::vector<std::uint64_t>>();
-  const flow::VectorVolume& volume = p.field.volume;
+  const flow::VectorVolume& volume = volumeOf(p);
   const flow::UniformGridSpec spec =
       flow::uniformGridSpec(volume, counts, box.value_or(std::vector<double>{}));
   auto grid = std::make_shared<flow::UniformGrid>();
@@ -150,15 +144,13 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
   return std::make_shared<Dataset>(fromCells(std::move(cells)));
 }
 
-}  // namespace
-
-void bindDataset(py::module_& m) {
+void bindDatasetClass(py::module_& m) {
   py::class_<Dataset, std::shared_ptr<Dataset>>(
       m, "Dataset", "Leaf cells of an AMR output, their fields, and what the file says of itself.")
       .def_property_readonly("source", &Dataset::source)
       .def_property_readonly("format", [](const Dataset& d) { return d.info().format; })
       .def_property_readonly("cell_count", &Dataset::cellCount)
-      .def_property_readonly("field_names", &channelNames)
+      .def_property_readonly("field_names", &Dataset::channelNames)
       .def_property_readonly("time", [](const Dataset& d) { return d.info().time; })
       .def_property_readonly("time_unit", [](const Dataset& d) { return d.info().timeUnit; })
       .def_property_readonly("length_unit", [](const Dataset& d) { return d.info().lengthUnit; })
@@ -170,21 +162,14 @@ void bindDataset(py::module_& m) {
           "physical position of corner (0, 0, 0)")
       .def_property_readonly("finest_width",
                              [](const Dataset& d) { return tuple3(d.transform().spacing); })
-      .def_property_readonly(
-          "domain_left_edge",
-          [](const Dataset& d) {
-            return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().lower)));
-          })
-      .def_property_readonly(
-          "domain_right_edge",
-          [](const Dataset& d) {
-            return tuple3(d.transform().toPhysical(glm::dvec3(d.bounds().upper)));
-          })
+      .def_property_readonly("domain_left_edge", [](const Dataset& d) { return tuple3(d.lower()); })
+      .def_property_readonly("domain_right_edge",
+                             [](const Dataset& d) { return tuple3(d.upper()); })
       .def_property_readonly(
           "corners",
           [](py::object self) {
             const Dataset& d = self.cast<const Dataset&>();
-            return view3(d.lowers().data(), d.cellCount(), self);
+            return view3(d.corners().data(), d.cellCount(), self);
           },
           "(N, 3) int32: each cell's lower corner in finest cells, counted from `origin`")
       .def_property_readonly("levels", &fileLevels,
@@ -194,41 +179,32 @@ void bindDataset(py::module_& m) {
           "field",
           [](py::object self, const std::string& name) {
             const Dataset& d = self.cast<const Dataset&>();
-            const bricks::Channel& c = d.channel(name);
-            return view(c.values.data(), c.values.size(), self);
+            const std::span<const float> values = d.channel(name);
+            return view(values.data(), values.size(), self);
           },
           py::arg("name"), "(N,) float32 values of one field, in cell order (no copy)")
       .def("__repr__", [](const Dataset& d) {
         return fmt::format("<amrstream.Dataset {}: {} cells, fields {}>", d.source(), d.cellCount(),
-                           fmt::join(channelNames(d), ", "));
+                           fmt::join(d.channelNames(), ", "));
       });
+}
 
-  py::class_<PreparedField, std::shared_ptr<PreparedField>>(
+void bindFieldClass(py::module_& m) {
+  py::class_<Field, std::shared_ptr<Field>>(
       m, "Field", "A dataset made ready for tracing: vector, point data, bricks and regions.")
-      .def_property_readonly("source", [](const PreparedField& p) { return p.field.source; })
-      .def_property_readonly("vector_name",
-                             [](const PreparedField& p) { return p.field.vector.name; })
-      .def_property_readonly("vector",
-                             [](const PreparedField& p) { return p.field.vector.channels; })
-      .def_property_readonly("point_data",
-                             [](const PreparedField& p) { return p.field.volume.channelNames; })
+      .def_property_readonly("source", &Field::source)
+      .def_property_readonly("vector_name", &Field::vectorName)
+      .def_property_readonly("vector", &Field::vectorChannels)
+      .def_property_readonly("point_data", &Field::pointDataNames)
       .def_property_readonly("periodic",
-                             [](const PreparedField& p) {
-                               const Field& f = p.field;
-                               return py::make_tuple(f.volume.periodic[0], f.volume.periodic[1],
-                                                     f.volume.periodic[2]);
+                             [](const Field& f) {
+                               const flow::PeriodicAxes& p = volumeOf(f).periodic;
+                               return py::make_tuple(p[0], p[1], p[2]);
                              })
-      .def_property_readonly(
-          "brick_count", [](const PreparedField& p) { return p.field.volume.originalBrickCount; })
-      .def_property_readonly(
-          "region_count",
-          [](const PreparedField& p) { return p.field.volume.regions.regions.size(); })
-      .def_property_readonly(
-          "domain_left_edge",
-          [](const PreparedField& p) { return tuple3(flow::domainLower(p.field.volume)); })
-      .def_property_readonly(
-          "domain_right_edge",
-          [](const PreparedField& p) { return tuple3(flow::domainUpper(p.field.volume)); })
+      .def_property_readonly("brick_count", &Field::brickCount)
+      .def_property_readonly("region_count", &Field::regionCount)
+      .def_property_readonly("domain_left_edge", [](const Field& f) { return tuple3(f.lower()); })
+      .def_property_readonly("domain_right_edge", [](const Field& f) { return tuple3(f.upper()); })
       .def("resample", &resampled, py::arg("dims") = 128, py::kw_only(),
            py::arg("box") = py::none(),
            "The reconstructed vector and point data on a uniform grid, as `amrstream resample` "
@@ -237,18 +213,23 @@ void bindDataset(py::module_& m) {
            "dict: 'origin' (the first point), 'spacing', 'dims', the vector (NX, NY, NZ, 3) and "
            "each channel (NX, NY, NZ) as float32 indexed [i, j, k], and 'valid' (NX, NY, NZ) "
            "bool, False (and zeros) where no region covers a point.")
-      .def("__repr__", [](const PreparedField& p) {
-        const Field& f = p.field;
+      .def("__repr__", [](const Field& f) {
         return fmt::format("<amrstream.Field {} of {}: point data [{}], {} bricks, {} regions>",
-                           f.vector.name, f.source, fmt::join(f.volume.channelNames, ", "),
-                           f.volume.originalBrickCount, f.volume.regions.regions.size());
+                           f.vectorName(), f.source(), fmt::join(f.pointDataNames(), ", "),
+                           f.brickCount(), f.regionCount());
       });
+}
 
+}  // namespace
+
+void bindDataset(py::module_& m) {
+  bindDatasetClass(m);
+  bindFieldClass(m);
   m.def(
       "load",
       [](const std::string& path, std::optional<int> levels, std::optional<int> rootBlocks,
          std::optional<std::size_t> targetCells, std::optional<std::uint64_t> genSeed) {
-        synth::GeneratorOptions builtin;
+        BuiltinOptions builtin;
         if (levels) builtin.levels = *levels;
         if (rootBlocks) builtin.rootBlocks = *rootBlocks;
         if (targetCells) builtin.targetCells = *targetCells;
@@ -276,15 +257,17 @@ void bindDataset(py::module_& m) {
       [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector, std::string pointData,
          std::string periodic, std::string interpolant) {
         py::gil_scoped_release unlocked;
-        return std::make_shared<PreparedField>(PreparedField{
-            dataset,
-            buildField(*dataset, {vector.value_or(""), pointData, periodic, interpolant})});
+        return std::make_shared<Field>(
+            buildField(*dataset, {vector.value_or(""), pointData, periodic, interpolant}));
       },
-      py::arg("dataset").none(false), py::kw_only(), py::arg("vector") = py::none(),
-      py::arg("point_data") = "all", py::arg("periodic") = "auto", py::arg("interpolant") = "tent",
-      "Chooses the vector ('a,b,c'; default: the velocity, else the magnetic field), the point "
-      "data (all, none or 'a,b') and the interpolant (tent or linear), adds periodic images, "
-      "builds bricks and regions.");
+      py::arg("dataset").none(false), py::kw_only(), arg(settings::kVector) = py::none(),
+      arg(settings::kPointData) = FieldOptions{}.pointData,
+      arg(settings::kPeriodic) = FieldOptions{}.periodic,
+      arg(settings::kInterpolant) = FieldOptions{}.interpolant,
+      ("Chooses the vector and the point data, adds periodic images, builds bricks and "
+       "regions.\n\n" +
+       settingsDoc(keywords::kField))
+          .c_str());
 }
 
 }  // namespace amrstream::python

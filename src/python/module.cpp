@@ -1,7 +1,9 @@
 // The compiled part of the `amrstream` Python package (python/amrstream/__init__.py).
 
+#include "amrstream/error.hpp"
+#include "amrstream/settings.hpp"
+#include "amrstream/version.hpp"
 #include "bindings.hpp"
-#include "util/input_error.hpp"
 #include "vk/context_error.hpp"
 
 PYBIND11_MODULE(_amrstream, m) {
@@ -15,7 +17,8 @@ PYBIND11_MODULE(_amrstream, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const amrstream::InputError& e) {
-      PyErr_SetString(inputError.ptr(), e.what());
+      // Settings by their keywords, which are their neutral names.
+      PyErr_SetString(inputError.ptr(), e.spelled(amrstream::plainName).c_str());
     } catch (const amrstream::vk::ContextError& e) {
       PyErr_SetString(backendError.ptr(), e.what());
     }

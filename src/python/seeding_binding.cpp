@@ -4,9 +4,10 @@
 
 #include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
+#include "api/handles.hpp"
+#include "api/seed_choice.hpp"
 #include "bindings.hpp"
 #include "numpy_views.hpp"
-#include "prepared_field.hpp"
 
 namespace amrstream::python {
 
@@ -14,9 +15,8 @@ namespace {
 
 // The domain of a Dataset or a Field.
 Domain domainOfTarget(py::handle target) {
-  if (py::isinstance<Dataset>(target)) return domainOf(target.cast<const Dataset&>());
-  if (py::isinstance<PreparedField>(target))
-    return domainOf(target.cast<const PreparedField&>().field.volume);
+  if (py::isinstance<Dataset>(target)) return domainOf(cellsOf(target.cast<const Dataset&>()));
+  if (py::isinstance<Field>(target)) return domainOf(volumeOf(target.cast<const Field&>()));
   throw py::type_error("expected an amrstream.Dataset or amrstream.Field");
 }
 
@@ -32,7 +32,8 @@ std::vector<double> boxOf(const std::optional<std::vector<double>>& box) {
   return *box;
 }
 
-py::array seedsFor(const SeedRequest& request, const Domain& domain, const Dataset* cells) {
+py::array seedsFor(const SeedRequest& request, const Domain& domain,
+                   const bricks::AmrField* cells) {
   std::string description;
   flow::SeedList seeds;
   {
@@ -51,7 +52,7 @@ py::array randomSeedsFor(const SeedRequest& request, py::handle target) {
   {
     py::gil_scoped_release unlocked;
     checkSeedRequest(request);
-    layout = flow::buildCellLayout(cells);
+    layout = flow::buildCellLayout(cellsOf(cells));
   }
   return seedsFor(request, domainOf(layout), nullptr);
 }
@@ -69,8 +70,8 @@ void bindSeeding(py::module_& m) {
         r.seed = seed;
         return randomSeedsFor(r, target);
       },
-      py::arg("target"), py::arg("count") = 256, py::kw_only(), py::arg("box") = py::none(),
-      py::arg("seed") = 1,
+      py::arg("target"), py::arg("count") = SeedRequest{}.count, py::kw_only(),
+      py::arg("box") = py::none(), py::arg("seed") = SeedRequest{}.seed,
       "(count, 3) random points in the cells within box (x0, y0, z0, x1, y1, z1; default: the "
       "domain), never in holes between the cells.");
   m.def(
@@ -92,7 +93,7 @@ void bindSeeding(py::module_& m) {
         r.count = count;
         return seedsFor(r, {}, nullptr);
       },
-      py::arg("start"), py::arg("end"), py::arg("count") = 256,
+      py::arg("start"), py::arg("end"), py::arg("count") = SeedRequest{}.count,
       "count points evenly from start to end, both included (a rake).");
   m.def(
       "seeds_densest",
@@ -104,10 +105,11 @@ void bindSeeding(py::module_& m) {
         r.percentile = percentile;
         r.weighted = weighted;
         r.seed = seed;
-        return seedsFor(r, domainOf(*dataset), dataset.get());
+        return seedsFor(r, domainOf(cellsOf(*dataset)), &cellsOf(*dataset));
       },
-      py::arg("dataset").none(false), py::arg("field"), py::arg("count") = 256, py::kw_only(),
-      py::arg("percentile") = 90.0, py::arg("weighted") = false, py::arg("seed") = 1,
+      py::arg("dataset").none(false), py::arg("field"), py::arg("count") = SeedRequest{}.count,
+      py::kw_only(), py::arg("percentile") = SeedRequest{}.percentile, py::arg("weighted") = false,
+      py::arg("seed") = SeedRequest{}.seed,
       "count random points in random cells whose field is at or above its percentile "
       "(weighted: cells picked in proportion to the field).");
 }

@@ -1,7 +1,7 @@
 #include "render_kernel.hpp"
 
-#include <array>
 #include <stdexcept>
+#include <vector>
 
 #include "render_compute_comp.h"
 #include "render_pipeline_rgen.h"
@@ -14,6 +14,22 @@
 namespace amrstream::render {
 
 using vk::spirv;
+
+namespace {
+
+vk::UniqueHandle<VkDescriptorSetLayout> createSetLayout(const vk::Context& ctx,
+                                                        gpu::Backend backend,
+                                                        VkShaderStageFlags stages) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings =
+      vk::storageBufferBindings(AMRSTREAM_RENDER_BINDING_COUNT, stages);
+  bindings[AMRSTREAM_BINDING_RENDER_PARAMS].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  if (backend != gpu::Backend::Compute)
+    bindings[AMRSTREAM_BINDING_RENDER_TUBES].descriptorType =
+        VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  return vk::createDescriptorSetLayout(ctx, bindings);
+}
+
+}  // namespace
 
 RenderKernel createRenderKernel(const vk::Context& ctx, gpu::Backend backend) {
   if (backend == gpu::Backend::Cpu)
@@ -28,13 +44,7 @@ RenderKernel createRenderKernel(const vk::Context& ctx, gpu::Backend backend) {
                      VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR
                : VK_SHADER_STAGE_COMPUTE_BIT;
 
-  std::array<VkDescriptorSetLayoutBinding, kRenderBindingCount> bindings{};
-  for (std::uint32_t i = 0; i < kRenderBindingCount; ++i)
-    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr};
-  bindings[kRenderParamsBinding].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  if (backend != gpu::Backend::Compute)
-    bindings[kTubeStructureBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-  kernel.setLayout = vk::createDescriptorSetLayout(ctx, bindings);
+  kernel.setLayout = createSetLayout(ctx, backend, stages);
   kernel.pipelineLayout = vk::createPipelineLayout(ctx, kernel.setLayout.get());
 
   switch (backend) {

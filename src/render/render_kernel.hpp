@@ -1,12 +1,14 @@
 #pragma once
 // The rendering kernel of one backend: the descriptor set layout of
-// shaders/glsl/include/render_buffers.glsl plus binding 10 (the tubes' BVH for `compute`, their
-// acceleration structure otherwise), the pipeline, and for `pipeline` its binding table.
+// shaders/glsl/shared/render_bindings.h (the tubes' BVH for `compute` at
+// AMRSTREAM_BINDING_RENDER_TUBES, their acceleration structure otherwise), the pipeline, and for
+// `pipeline` its binding table.
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 
+#include "../../shaders/glsl/shared/render_bindings.h"
 #include "gpu/backend.hpp"
 #include "vk/pipelines.hpp"
 #include "vk/unique_handle.hpp"
@@ -17,9 +19,6 @@ class Context;
 
 namespace amrstream::render {
 
-inline constexpr std::uint32_t kRenderBindingCount = 12;
-inline constexpr std::uint32_t kRenderParamsBinding = 0;
-inline constexpr std::uint32_t kTubeStructureBinding = 10;
 // Compute kernels run 8x8 pixel workgroups (render_*.comp).
 inline constexpr std::uint32_t kRenderTileSize = 8;
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <limits>
 
+#include "amrstream/error.hpp"
 #include "flow/cell_gradients.hpp"
 #include "flow/sampler.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::render {
 
@@ -28,8 +28,8 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
   }
   if (!field.findChannel(name)) {
     std::string choices = "speed, time";
-    for (const bricks::Channel& c : field.channels()) choices += ", " + c.name;
-    throw InputError("--colour-by", fmt::format("no field '{}'; choose one of: {}", name, choices));
+    for (const Channel& c : field.channels()) choices += ", " + c.name;
+    throw settingError("colour_by", fmt::format("no field '{}'; choose one of: {}", name, choices));
   }
   const auto traced = std::find(traces.channelNames.begin(), traces.channelNames.end(), name);
   if (traced != traces.channelNames.end()) {
@@ -69,7 +69,7 @@ ValueRange rangeOf(std::span<const float> values) {
 
 std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
                                                    const ColourField& colour,
-                                                   const bricks::WorldTransform& transform) {
+                                                   const WorldTransform& transform) {
   std::vector<shared::TubeSegment> segments;
   const auto cell = [&](std::uint64_t i) {
     return glm::vec3(transform.toCellUnits(glm::dvec3(traces.positions[i])));

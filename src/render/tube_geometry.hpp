@@ -50,7 +50,7 @@ ValueRange rangeOf(std::span<const float> values);
 // steps where a periodic line wraps.
 std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
                                                    const ColourField& colour,
-                                                   const bricks::WorldTransform& transform);
+                                                   const WorldTransform& transform);
 
 // A segment's radius when radii follow the colour field (capsule.glsl's segmentRadius):
 // `leastFraction` of `radius` at range.min, all of it at range.max, in proportion to the mean of

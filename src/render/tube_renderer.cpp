@@ -17,7 +17,6 @@
 #include "vk/buffer_transfer.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
-#include "vk/vk_error.hpp"
 
 namespace amrstream::render {
 
@@ -26,10 +25,6 @@ namespace {
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Segments that appendTubes may move into a larger buffer.
 constexpr VkBufferUsageFlags kAppendable = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-
-VkDescriptorBufferInfo whole(const vk::Buffer& buffer) {
-  return {buffer.handle(), 0, VK_WHOLE_SIZE};
-}
 
 std::vector<VkAabbPositionsKHR> segmentBoxes(std::span<const shared::TubeSegment> segments,
                                              float radius) {
@@ -141,21 +136,10 @@ TubeRenderer::TubeRenderer(const vk::Context& ctx, gpu::Backend backend,
 
   const std::array<VkDescriptorPoolSize, 3> sizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRenderBindingCount - 1},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, AMRSTREAM_RENDER_BINDING_COUNT - 1},
        {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1}}};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = backend == gpu::Backend::Compute ? 2 : 3;
-  poolInfo.pPoolSizes = sizes.data();
-  VkDescriptorPool pool;
-  AMRSTREAM_VK_CHECK(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &pool));
-  pool_ = {ctx.device(), pool};
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = pool;
-  allocInfo.descriptorSetCount = 1;
-  const VkDescriptorSetLayout layout = kernel_.setLayout.get();
-  allocInfo.pSetLayouts = &layout;
-  AMRSTREAM_VK_CHECK(vkAllocateDescriptorSets(ctx.device(), &allocInfo, &set_));
+  pool_.emplace(ctx, 1, std::span(sizes).first(backend == gpu::Backend::Compute ? 2 : 3));
+  set_ = pool_->allocate(kernel_.setLayout.get());
 
   setTubes({}, 0.0f);
   const std::array<glm::vec3, 2> grey{glm::vec3(0.5f), glm::vec3(0.5f)};
@@ -422,34 +406,27 @@ void TubeRenderer::resize(std::uint32_t width, std::uint32_t height) {
   descriptorsStale_ = true;
 }
 
+vk::DescriptorTarget TubeRenderer::tubeStructure() const {
+  if (scene_)
+    return vk::structureTarget(appended_ ? appendedTlas_->tlas().handle() : scene_->tlas.handle());
+  return vk::storageTarget(bvhNodes_.handle() != VK_NULL_HANDLE ? bvhNodes_ : tree_);
+}
+
 void TubeRenderer::writeDescriptors() {
-  const vk::Buffer& structure = bvhNodes_.handle() != VK_NULL_HANDLE ? bvhNodes_ : tree_;
-  const std::array<VkDescriptorBufferInfo, kRenderBindingCount> buffers{
-      whole(params_),       whole(bricks_), whole(scalars_),  whole(regions_),
-      whole(regionBricks_), whole(tree_),   whole(segments_), whole(colourMap_),
-      whole(accumulation_), whole(pixels_), whole(structure), whole(scalarGradients_)};
-  std::array<VkWriteDescriptorSet, kRenderBindingCount> writes{};
-  for (std::uint32_t i = 0; i < kRenderBindingCount; ++i) {
-    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstSet = set_;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = i == kRenderParamsBinding ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                         : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &buffers[i];
-  }
-  VkWriteDescriptorSetAccelerationStructureKHR sceneWrite{
-      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-  VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
-  if (scene_) {
-    tlas = appended_ ? appendedTlas_->tlas().handle() : scene_->tlas.handle();
-    sceneWrite.accelerationStructureCount = 1;
-    sceneWrite.pAccelerationStructures = &tlas;
-    writes[kTubeStructureBinding].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-    writes[kTubeStructureBinding].pBufferInfo = nullptr;
-    writes[kTubeStructureBinding].pNext = &sceneWrite;
-  }
-  vkUpdateDescriptorSets(ctx_->device(), kRenderBindingCount, writes.data(), 0, nullptr);
+  vk::DescriptorWrites("render", AMRSTREAM_RENDER_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_RENDER_PARAMS, vk::uniformTarget(params_))
+      .set(AMRSTREAM_BINDING_RENDER_BRICKS, bricks_)
+      .set(AMRSTREAM_BINDING_RENDER_SCALARS, scalars_)
+      .set(AMRSTREAM_BINDING_RENDER_REGIONS, regions_)
+      .set(AMRSTREAM_BINDING_RENDER_REGION_BRICKS, regionBricks_)
+      .set(AMRSTREAM_BINDING_RENDER_REGION_TREE, tree_)
+      .set(AMRSTREAM_BINDING_RENDER_SEGMENTS, segments_)
+      .set(AMRSTREAM_BINDING_RENDER_COLOUR_MAP, colourMap_)
+      .set(AMRSTREAM_BINDING_RENDER_ACCUMULATION, accumulation_)
+      .set(AMRSTREAM_BINDING_RENDER_PIXELS, pixels_)
+      .set(AMRSTREAM_BINDING_RENDER_TUBES, tubeStructure())
+      .set(AMRSTREAM_BINDING_RENDER_SCALAR_GRADIENTS, scalarGradients_)
+      .write(*ctx_, set_);
   descriptorsStale_ = false;
 }
 

@@ -30,6 +30,8 @@
 #include "tube_geometry.hpp"
 #include "vk/aabb_scene.hpp"
 #include "vk/buffer.hpp"
+#include "vk/descriptor_pool.hpp"
+#include "vk/descriptor_writes.hpp"
 #include "vk/gpu_timer.hpp"
 #include "vk/submission.hpp"
 #include "vk/tlas_builder.hpp"
@@ -106,7 +108,6 @@ class TubeRenderer {
   float tubeRadius() const { return radius_; }
   void setColourMap(std::span<const glm::vec3> table);  // at least 2 entries
   void resize(std::uint32_t width, std::uint32_t height);
-  void restartAccumulation() { frames_ = 0; }
 
   // Adds one frame; waits for it. Throws std::invalid_argument when settings.tubeRadius differs
   // from the tubes' or the volume is asked for without context scalars.
@@ -131,6 +132,9 @@ class TubeRenderer {
  private:
   // Points the descriptor set at the current buffers; after any of them was replaced.
   void writeDescriptors();
+  // The tubes' acceleration structure, or compute's BVH (the region tree stands in while there
+  // is no BVH buffer).
+  vk::DescriptorTarget tubeStructure() const;
   // Puts the background consolidation's BVH in place once it is done; with `wait`, waits for it.
   void adoptConsolidated(bool wait);
   // Ends a background consolidation before the tubes change, dropping its result.
@@ -173,7 +177,7 @@ class TubeRenderer {
   vk::Buffer accumulation_, pixels_;
   std::uint32_t width_ = 0, height_ = 0;
   vk::Buffer params_;  // host-visible, rewritten each frame
-  vk::UniqueHandle<VkDescriptorPool> pool_;
+  std::optional<vk::DescriptorPool> pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   bool descriptorsStale_ = true;
   vk::GpuTimer timer_;

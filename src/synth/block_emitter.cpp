@@ -6,14 +6,13 @@
 
 namespace amrstream::synth {
 
-bricks::AmrField emitCells(const std::vector<Block>& leaves,
-                           const bricks::WorldTransform& transform,
+bricks::AmrField emitCells(const std::vector<Block>& leaves, const WorldTransform& transform,
                            const std::vector<std::string>& channelNames,
                            const BlockSampler& sampler, std::string source) {
   const std::size_t cellCount = leaves.size() * kBlockCells;
   std::vector<glm::ivec3> lowers(cellCount);
   std::vector<std::uint8_t> levels(cellCount);
-  std::vector<bricks::Channel> channels;
+  std::vector<Channel> channels;
   for (const std::string& name : channelNames)
     channels.push_back({name, std::vector<float>(cellCount)});
 
@@ -32,7 +31,7 @@ bricks::AmrField emitCells(const std::vector<Block>& leaves,
     }
     std::vector<float*> values;
     values.reserve(channels.size());
-    for (bricks::Channel& channel : channels) values.push_back(channel.values.data() + first);
+    for (Channel& channel : channels) values.push_back(channel.values.data() + first);
     sampler(blockBox(block, transform), centres, values);
   });
 

@@ -17,8 +17,7 @@ using BlockSampler = std::function<void(const BlockBox& box, std::span<const glm
                                         std::span<float* const> values)>;
 
 // Cell centres are transform.toPhysical(lower + width / 2) from integer cell corners.
-bricks::AmrField emitCells(const std::vector<Block>& leaves,
-                           const bricks::WorldTransform& transform,
+bricks::AmrField emitCells(const std::vector<Block>& leaves, const WorldTransform& transform,
                            const std::vector<std::string>& channelNames,
                            const BlockSampler& sampler, std::string source);
 

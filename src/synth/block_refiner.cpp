@@ -9,7 +9,7 @@
 #include <limits>
 #include <queue>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 #include "util/morton.hpp"
 
 namespace amrstream::synth {
@@ -31,26 +31,26 @@ struct PopsLater {
   }
 };
 
-std::int64_t finestCellsPerAxis(const GeneratorOptions& options) {
+std::int64_t finestCellsPerAxis(const BuiltinOptions& options) {
   return std::int64_t(options.rootBlocks) * kBlockSide * (std::int64_t(1) << (options.levels - 1));
 }
 
 }  // namespace
 
-bricks::WorldTransform generatorTransform(const GeneratorOptions& options) {
+WorldTransform generatorTransform(const BuiltinOptions& options) {
   return {glm::dvec3(0.0), glm::dvec3(1.0 / double(finestCellsPerAxis(options)))};
 }
 
-BlockBox blockBox(const Block& block, const bricks::WorldTransform& transform) {
+BlockBox blockBox(const Block& block, const WorldTransform& transform) {
   const glm::dvec3 lower = transform.toPhysical(glm::dvec3(block.lower));
   const glm::dvec3 upper = transform.toPhysical(glm::dvec3(block.lower + block.span()));
   return {lower, upper, (upper.x - lower.x) / kBlockSide};
 }
 
-void validateGeneratorOptions(const GeneratorOptions& options, const std::string& source) {
-  if (options.levels < 1 || options.levels > kMaxGeneratorLevels)
+void validateGeneratorOptions(const BuiltinOptions& options, const std::string& source) {
+  if (options.levels < 1 || options.levels > kMaxBuiltinLevels)
     throw InputError(source, fmt::format("option levels is {}; it must be between 1 and {}",
-                                         options.levels, kMaxGeneratorLevels));
+                                         options.levels, kMaxBuiltinLevels));
   if (options.rootBlocks < 1)
     throw InputError(
         source, fmt::format("option rootBlocks is {}; it must be at least 1", options.rootBlocks));
@@ -72,10 +72,10 @@ void validateGeneratorOptions(const GeneratorOptions& options, const std::string
                                          options.targetCells, options.rootBlocks, rootCells));
 }
 
-std::vector<Block> refineBlocks(const GeneratorOptions& options, const std::string& source,
+std::vector<Block> refineBlocks(const BuiltinOptions& options, const std::string& source,
                                 const RefinementPriority& priority) {
   validateGeneratorOptions(options, source);
-  const bricks::WorldTransform transform = generatorTransform(options);
+  const WorldTransform transform = generatorTransform(options);
   const auto candidate = [&](const Block& block) {
     const double p = priority(blockBox(block, transform));
     return Candidate{std::isnan(p) ? -std::numeric_limits<double>::infinity() : p,

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "../bricks/amr_field.hpp"
+#include "amrstream/builtin.hpp"
+#include "bricks/amr_field.hpp"
 #include "generators.hpp"
 
 namespace amrstream::synth {
 
 inline constexpr int kBlockSide = 8;             // cells per block and axis
 inline constexpr std::size_t kBlockCells = 512;  // kBlockSide^3
-inline constexpr int kMaxGeneratorLevels = 8;
 
 struct Block {
   glm::ivec3 lower{0};  // finest-cell units
@@ -34,23 +34,21 @@ struct BlockBox {
   glm::dvec3 lower{0.0};
   glm::dvec3 upper{0.0};
   double cellWidth = 0.0;
-
-  glm::dvec3 centre() const { return 0.5 * (lower + upper); }
 };
 
 // Maps finest-cell units onto the unit cube: spacing 1 / (rootBlocks * 8 * 2^(levels-1)).
-bricks::WorldTransform generatorTransform(const GeneratorOptions& options);
-BlockBox blockBox(const Block& block, const bricks::WorldTransform& transform);
+WorldTransform generatorTransform(const BuiltinOptions& options);
+BlockBox blockBox(const Block& block, const WorldTransform& transform);
 
 // Throws InputError naming `source` and the offending option: levels outside 1..8, rootBlocks
 // below 1 or too many for the cell-unit range, targetCells below the root grid's cell count.
-void validateGeneratorOptions(const GeneratorOptions& options, const std::string& source);
+void validateGeneratorOptions(const BuiltinOptions& options, const std::string& source);
 
 // How much a block wants to be split; higher first. Deterministic; called concurrently.
 using RefinementPriority = std::function<double(const BlockBox& box)>;
 
 // The leaf blocks, in Morton order of their lower corners. Validates the options first.
-std::vector<Block> refineBlocks(const GeneratorOptions& options, const std::string& source,
+std::vector<Block> refineBlocks(const BuiltinOptions& options, const std::string& source,
                                 const RefinementPriority& priority);
 
 }  // namespace amrstream::synth

@@ -3,12 +3,12 @@
 // unknown (dimensionless), its periodic axes, and levels numbered from the coarsest (0) to the
 // finest possible one (levels - 1).
 
-#include "../bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 
 namespace amrstream::synth {
 
-inline bricks::DatasetInfo builtinInfo(int levels, double time, bool periodic) {
-  bricks::DatasetInfo info;
+inline DatasetInfo builtinInfo(int levels, double time, bool periodic) {
+  DatasetInfo info;
   info.format = "builtin";
   info.time = time;
   info.periodic = {periodic, periodic, periodic};

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "abc_field.hpp"
+#include "amrstream/error.hpp"
 #include "block_emitter.hpp"
 #include "block_refiner.hpp"
 #include "builtin_info.hpp"
@@ -11,7 +12,6 @@
 #include "nest_generator.hpp"
 #include "rotation_field.hpp"
 #include "swirl_field.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::synth {
 
@@ -29,7 +29,7 @@ BlockSampler velocitySampler(Velocity velocity) {
   };
 }
 
-bricks::AmrField build(const GeneratorOptions& options, const std::string& source,
+bricks::AmrField build(const BuiltinOptions& options, const std::string& source,
                        const RefinementPriority& priority, const std::vector<std::string>& channels,
                        const BlockSampler& sampler, bool periodic) {
   const std::vector<Block> leaves = refineBlocks(options, source, priority);
@@ -43,7 +43,7 @@ bricks::AmrField build(const GeneratorOptions& options, const std::string& sourc
 
 std::vector<std::string> generatorKinds() { return {"rotation", "abc", "cloud", "swirl", "nest"}; }
 
-bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options) {
+bricks::AmrField generate(std::string_view kind, const BuiltinOptions& options) {
   const std::string source = fmt::format("builtin:{}", kind);
   const std::vector<std::string> velocity{"velx", "vely", "velz"};
   if (kind == "rotation")
@@ -80,7 +80,7 @@ bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options
     NestOptions nest;
     nest.levels = options.levels;
     nest.time = options.time;
-    return generateNest(nest);
+    return synth::generateNest(nest);
   }
   throw InputError(source, fmt::format("unknown generator kind '{}' (kinds: {})", kind,
                                        fmt::join(generatorKinds(), ", ")));

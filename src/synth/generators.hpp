@@ -10,17 +10,10 @@
 #include <string_view>
 #include <vector>
 
-#include "../bricks/amr_field.hpp"
+#include "amrstream/builtin.hpp"
+#include "bricks/amr_field.hpp"
 
 namespace amrstream::synth {
-
-struct GeneratorOptions {
-  int levels = 5;                       // AMR levels (1 = uniform grid), at most 8 (nest 30)
-  int rootBlocks = 4;                   // root blocks per axis (each 8^3 coarsest cells)
-  std::size_t targetCells = 1'000'000;  // refinement stops before the cell count passes this
-  std::uint64_t seed = 1;               // random choices (filament placement, ...)
-  double time = 0.0;                    // the snapshot's time (unsteady kinds: swirl)
-};
 
 // Kinds: "rotation" (solid-body rotation about the z axis through the domain centre, channels
 // velx vely velz), "abc" (Arnold-Beltrami-Childress flow, velx vely velz), "cloud" (magnetised
@@ -33,7 +26,7 @@ struct GeneratorOptions {
 // options.time (0 for the steady kinds), units unknown (dimensionless), periodic on every axis for
 // abc (one full period over the unit cube) and on none for the others, levels numbered 0 = the
 // root blocks' (coarsest) level up to levels - 1.
-bricks::AmrField generate(std::string_view kind, const GeneratorOptions& options);
+bricks::AmrField generate(std::string_view kind, const BuiltinOptions& options);
 std::vector<std::string> generatorKinds();
 
 }  // namespace amrstream::synth

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::synth {
 
@@ -43,11 +43,12 @@ void validateNestOptions(const NestOptions& o, const std::string& source) {
                                  "span {} finest cells per axis, at most {} are supported",
                                  o.rootCells, o.levels, nestFinestCellsPerAxis(o), axisLimit));
   const double cellLimit = std::numeric_limits<std::int32_t>::max();
-  if (nestCellCount(o) > cellLimit)
-    throw InputError(source, fmt::format("options rootCells {} and blockCells {} make {:.0f} "
-                                         "cells; at most {:.0f} are supported (cells are "
-                                         "numbered in 32 bits)",
-                                         o.rootCells, o.blockCells, nestCellCount(o), cellLimit));
+  if (synth::nestCellCount(o) > cellLimit)
+    throw InputError(source,
+                     fmt::format("options rootCells {} and blockCells {} make {:.0f} "
+                                 "cells; at most {:.0f} are supported (cells are "
+                                 "numbered in 32 bits)",
+                                 o.rootCells, o.blockCells, synth::nestCellCount(o), cellLimit));
   const glm::dvec3 c = o.centre;
   if (!glm::all(glm::greaterThanEqual(c, glm::dvec3(0.0))) ||
       !glm::all(glm::lessThanEqual(c, glm::dvec3(1.0))))

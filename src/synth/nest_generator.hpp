@@ -17,28 +17,10 @@
 #include <limits>
 #include <numbers>
 
-#include "../bricks/amr_field.hpp"
+#include "amrstream/builtin.hpp"
+#include "bricks/amr_field.hpp"
 
 namespace amrstream::synth {
-
-inline constexpr int kMaxNestLevels = 30;
-
-struct NestOptions {
-  int levels = 5;      // 1 to kMaxNestLevels
-  int rootCells = 6;   // coarsest cells per axis; at least blockCells / 2 + 2 when levels > 1
-                       // (2 for an octree)
-  int blockCells = 8;  // cells per axis of each finer level's cube: even, at least 2
-  // The nest's centre and the spiral's, as a fraction of the unit domain: off the domain's
-  // middle, so the finest cells lie far from the coordinate origin and on no coarser cell face.
-  // A cube must nest with its margin: with the default sizes each coordinate lies in about
-  // [0.42, 0.58]; more root cells widen the range.
-  glm::dvec3 centre{0.45, 0.55, 0.47};
-  double rotationRate = 2.0 * std::numbers::pi;    // one turn per unit time
-  double expansionRate = 0.5 * std::numbers::ln2;  // the offset from the centre doubles in 2 turns
-  // Unit-domain lengths per unit time; the spiral's velocity is scaled down to it where faster.
-  double maxSpeed = std::numeric_limits<double>::infinity();
-  double time = 0.0;  // the snapshot's time in the DatasetInfo (the field is steady)
-};
 
 // Source "builtin:nest", DatasetInfo as every generator's (builtin_info.hpp). Throws InputError
 // naming the option: levels outside 1..kMaxNestLevels, blockCells odd or below 2, rootCells too

@@ -1,6 +1,6 @@
 #pragma once
 // The threads the host's parallel loops use: every core, or fewer where a limit is in force
-// (the ranks of one host under mpirun share its cores: mpi::MpiWorld::threadsPerRank).
+// (the ranks of one host under mpirun share its cores: MpiWorld::threadsPerRank).
 
 #include <tbb/global_control.h>
 

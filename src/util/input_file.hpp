@@ -13,7 +13,7 @@
 #include <limits>
 #include <string>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream {
 

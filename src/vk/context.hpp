@@ -67,7 +67,6 @@ class Context {
   // The requested capabilities plus those they imply (see Capability::AccelerationStructure).
   CapabilitySet capabilities() const { return capabilities_; }
   bool has(Capability capability) const { return capabilities_.contains(capability); }
-  bool shaderInt64Enabled() const { return shaderInt64_; }
   bool bufferDeviceAddressEnabled() const { return bufferDeviceAddress_; }
   bool debugUtilsEnabled() const { return debugUtils_; }
   bool validationEnabled() const { return validationLog_ != nullptr; }

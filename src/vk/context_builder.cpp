@@ -101,80 +101,65 @@ Candidate chooseDevice(VkInstance instance, VkSurfaceKHR surface, CapabilitySet 
   return *chosen;
 }
 
-}  // namespace
-
-Context ContextBuilder::build() const {
-  Context ctx;
-  const bool validation = validation_ || synchronizationValidation_;
-  if (validation) ctx.validationLog_ = std::make_shared<ValidationLog>();
-  ctx.memoryLedger_ = std::make_shared<MemoryLedger>(MemoryLedger::limitFromEnvironment());
-
-  Instance instance = createInstance(
-      {validation, synchronizationValidation_, validation || debugNames_, ctx.validationLog_.get(),
-       presentation_ ? presentation_->instanceExtensions : std::vector<std::string>{}});
-  ctx.instance_ = std::move(instance.handle);
-  ctx.debugUtils_ = instance.debugUtilsEnabled;
-  ctx.instanceFunctions_ = InstanceFunctions::load(ctx.instance(), ctx.debugUtils_);
-  if (validation) {
-    if (!ctx.debugUtils_) {
-      throw ContextError(
-          "the validation layer offers no VK_EXT_debug_utils, so its errors "
-          "could not be counted");
-    }
-    const VkDebugUtilsMessengerCreateInfoEXT info = ctx.validationLog_->messengerCreateInfo();
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    AMRSTREAM_VK_CHECK(ctx.instanceFunctions_.vkCreateDebugUtilsMessengerEXT(ctx.instance(), &info,
-                                                                             nullptr, &messenger));
-    ctx.messenger_ = UniqueHandle<VkDebugUtilsMessengerEXT>(
-        {ctx.instance(), ctx.instanceFunctions_.vkDestroyDebugUtilsMessengerEXT.get()}, messenger);
+// The debug messenger that counts the validation layer's errors into `log`.
+UniqueHandle<VkDebugUtilsMessengerEXT> createMessenger(VkInstance instance,
+                                                       const InstanceFunctions& functions,
+                                                       bool debugUtils, ValidationLog& log) {
+  if (!debugUtils) {
+    throw ContextError(
+        "the validation layer offers no VK_EXT_debug_utils, so its errors "
+        "could not be counted");
   }
+  const VkDebugUtilsMessengerCreateInfoEXT info = log.messengerCreateInfo();
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  AMRSTREAM_VK_CHECK(
+      functions.vkCreateDebugUtilsMessengerEXT(instance, &info, nullptr, &messenger));
+  return UniqueHandle<VkDebugUtilsMessengerEXT>(
+      {instance, functions.vkDestroyDebugUtilsMessengerEXT.get()}, messenger);
+}
 
-  if (presentation_) {
-    const VkSurfaceKHR surface = presentation_->createSurface(ctx.instance());
-    if (surface == VK_NULL_HANDLE) throw ContextError("the window system gave no Vulkan surface");
-    ctx.surface_ = UniqueHandle<VkSurfaceKHR>(ctx.instance(), surface);
-  }
+UniqueHandle<VkSurfaceKHR> createSurface(const PresentationRequest& presentation,
+                                         VkInstance instance) {
+  const VkSurfaceKHR surface = presentation.createSurface(instance);
+  if (surface == VK_NULL_HANDLE) throw ContextError("the window system gave no Vulkan surface");
+  return UniqueHandle<VkSurfaceKHR>(instance, surface);
+}
 
-  CapabilitySet capabilities = required_.withImplied();
-  Candidate chosen = chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_,
-                                  deviceName_, deviceSlot_);
-  // Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
-  // enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
-  // request for them alone enables whichever of the two the device has.
+// Acceleration structures cannot even be sized unless rayQuery or rayTracingPipeline is
+// enabled (VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617), so a
+// request for them alone enables whichever of the two the device has.
+void addAccelerationStructureSizing(CapabilitySet& capabilities, const DeviceReport& report) {
   if (capabilities.contains(Capability::AccelerationStructure) &&
       !capabilities.contains(Capability::RayQuery) &&
       !capabilities.contains(Capability::RayTracingPipeline)) {
-    capabilities.insert(chosen.report.status(Capability::RayQuery).supported()
+    capabilities.insert(report.status(Capability::RayQuery).supported()
                             ? Capability::RayQuery
                             : Capability::RayTracingPipeline);
   }
-  ctx.physicalDevice_ = chosen.physicalDevice;
-  ctx.report_ = std::move(chosen.report);
-  ctx.properties_ = chosen.properties;
-  ctx.capabilities_ = capabilities;
-  ctx.shaderInt64_ = chosen.support.shaderInt64;
-  ctx.bufferDeviceAddress_ = chosen.support.bufferDeviceAddress;
-  ctx.queueFamilyIndex_ =
-      presentation_ ? *chosen.presentation.queueFamily : *chosen.support.computeQueueFamily;
-  if (!capabilities.contains(Capability::AccelerationStructure)) {
-    ctx.properties_.accelerationStructure = {};
-  }
-  if (!capabilities.contains(Capability::RayTracingPipeline)) {
-    ctx.properties_.rayTracingPipeline = {};
-  }
+}
 
+// The device extensions of `capabilities`, plus VK_KHR_swapchain when presenting.
+std::vector<const char*> deviceExtensions(CapabilitySet capabilities, bool presenting) {
   std::vector<const char*> extensions;
   for (Capability c : kAllCapabilities) {
     if (!capabilities.contains(c)) continue;
     for (const char* extension : requirementsOf(c).extensions) extensions.push_back(extension);
   }
-  if (presentation_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  if (presenting) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  return extensions;
+}
+
+// The logical device with the features of `capabilities` and one queue of `queueFamilyIndex`.
+UniqueHandle<VkDevice> createDevice(VkPhysicalDevice physicalDevice, uint32_t queueFamilyIndex,
+                                    CapabilitySet capabilities, bool presenting, bool shaderInt64,
+                                    bool bufferDeviceAddress) {
+  const std::vector<const char*> extensions = deviceExtensions(capabilities, presenting);
 
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  features.features.shaderInt64 = ctx.shaderInt64_ ? VK_TRUE : VK_FALSE;
+  features.features.shaderInt64 = shaderInt64 ? VK_TRUE : VK_FALSE;
   VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   vulkan12.scalarBlockLayout = VK_TRUE;
-  vulkan12.bufferDeviceAddress = ctx.bufferDeviceAddress_ ? VK_TRUE : VK_FALSE;
+  vulkan12.bufferDeviceAddress = bufferDeviceAddress ? VK_TRUE : VK_FALSE;
   VkPhysicalDeviceAccelerationStructureFeaturesKHR accel{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   accel.accelerationStructure = VK_TRUE;
@@ -197,7 +182,7 @@ Context ContextBuilder::build() const {
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queueInfo.queueFamilyIndex = ctx.queueFamilyIndex_;
+  queueInfo.queueFamilyIndex = queueFamilyIndex;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
 
@@ -208,20 +193,68 @@ Context ContextBuilder::build() const {
   deviceInfo.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   deviceInfo.ppEnabledExtensionNames = extensions.data();
   VkDevice device = VK_NULL_HANDLE;
-  AMRSTREAM_VK_CHECK(vkCreateDevice(ctx.physicalDevice_, &deviceInfo, nullptr, &device));
-  ctx.device_ = UniqueHandle<VkDevice>(NoOwner{}, device);
-  ctx.functions_ =
-      DeviceFunctions::load(device, capabilities.contains(Capability::AccelerationStructure),
-                            capabilities.contains(Capability::RayTracingPipeline));
-  vkGetDeviceQueue(device, ctx.queueFamilyIndex_, 0, &ctx.queue_);
+  AMRSTREAM_VK_CHECK(vkCreateDevice(physicalDevice, &deviceInfo, nullptr, &device));
+  return UniqueHandle<VkDevice>(NoOwner{}, device);
+}
 
+UniqueHandle<VkCommandPool> createCommandPool(VkDevice device, uint32_t queueFamilyIndex) {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags =
       VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = ctx.queueFamilyIndex_;
+  poolInfo.queueFamilyIndex = queueFamilyIndex;
   VkCommandPool pool = VK_NULL_HANDLE;
   AMRSTREAM_VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-  ctx.commandPool_ = UniqueHandle<VkCommandPool>(device, pool);
+  return UniqueHandle<VkCommandPool>(device, pool);
+}
+
+}  // namespace
+
+Context ContextBuilder::build() const {
+  Context ctx;
+  const bool validation = validation_ || synchronizationValidation_;
+  if (validation) ctx.validationLog_ = std::make_shared<ValidationLog>();
+  ctx.memoryLedger_ = std::make_shared<MemoryLedger>(MemoryLedger::limitFromEnvironment());
+
+  Instance instance = createInstance(
+      {validation, synchronizationValidation_, validation || debugNames_, ctx.validationLog_.get(),
+       presentation_ ? presentation_->instanceExtensions : std::vector<std::string>{}});
+  ctx.instance_ = std::move(instance.handle);
+  ctx.debugUtils_ = instance.debugUtilsEnabled;
+  ctx.instanceFunctions_ = InstanceFunctions::load(ctx.instance(), ctx.debugUtils_);
+  if (validation) {
+    ctx.messenger_ = createMessenger(ctx.instance(), ctx.instanceFunctions_, ctx.debugUtils_,
+                                     *ctx.validationLog_);
+  }
+
+  if (presentation_) ctx.surface_ = createSurface(*presentation_, ctx.instance());
+
+  CapabilitySet capabilities = required_.withImplied();
+  Candidate chosen = chooseDevice(ctx.instance(), ctx.surface(), capabilities, deviceIndex_,
+                                  deviceName_, deviceSlot_);
+  addAccelerationStructureSizing(capabilities, chosen.report);
+  ctx.physicalDevice_ = chosen.physicalDevice;
+  ctx.report_ = std::move(chosen.report);
+  ctx.properties_ = chosen.properties;
+  ctx.capabilities_ = capabilities;
+  ctx.shaderInt64_ = chosen.support.shaderInt64;
+  ctx.bufferDeviceAddress_ = chosen.support.bufferDeviceAddress;
+  ctx.queueFamilyIndex_ =
+      presentation_ ? *chosen.presentation.queueFamily : *chosen.support.computeQueueFamily;
+  if (!capabilities.contains(Capability::AccelerationStructure)) {
+    ctx.properties_.accelerationStructure = {};
+  }
+  if (!capabilities.contains(Capability::RayTracingPipeline)) {
+    ctx.properties_.rayTracingPipeline = {};
+  }
+
+  ctx.device_ = createDevice(ctx.physicalDevice_, ctx.queueFamilyIndex_, capabilities,
+                             presentation_.has_value(), ctx.shaderInt64_, ctx.bufferDeviceAddress_);
+  ctx.functions_ =
+      DeviceFunctions::load(ctx.device(), capabilities.contains(Capability::AccelerationStructure),
+                            capabilities.contains(Capability::RayTracingPipeline));
+  vkGetDeviceQueue(ctx.device(), ctx.queueFamilyIndex_, 0, &ctx.queue_);
+
+  ctx.commandPool_ = createCommandPool(ctx.device(), ctx.queueFamilyIndex_);
   return ctx;
 }
 

@@ -33,30 +33,4 @@ VkDescriptorSet DescriptorPool::allocate(VkDescriptorSetLayout layout) {
 
 void DescriptorPool::reset() { AMRSTREAM_VK_CHECK(vkResetDescriptorPool(device_, pool_.get(), 0)); }
 
-void writeDescriptors(const Context& ctx, VkDescriptorSet set,
-                      std::span<const DescriptorTarget> targets) {
-  std::vector<VkDescriptorBufferInfo> buffers(targets.size());
-  std::vector<VkWriteDescriptorSetAccelerationStructureKHR> structures(targets.size());
-  std::vector<VkWriteDescriptorSet> writes(targets.size());
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    VkWriteDescriptorSet& write = writes[i];
-    write = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
-    write.dstBinding = static_cast<std::uint32_t>(i);
-    write.descriptorCount = 1;
-    write.descriptorType = targets[i].type;
-    if (targets[i].type == VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR) {
-      structures[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-      structures[i].accelerationStructureCount = 1;
-      structures[i].pAccelerationStructures = &targets[i].structure;
-      write.pNext = &structures[i];
-    } else {
-      buffers[i] = {targets[i].buffer, 0, VK_WHOLE_SIZE};
-      write.pBufferInfo = &buffers[i];
-    }
-  }
-  vkUpdateDescriptorSets(ctx.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0,
-                         nullptr);
-}
-
 }  // namespace amrstream::vk

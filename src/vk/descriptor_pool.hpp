@@ -1,14 +1,12 @@
 #pragma once
-// DescriptorPool: a pool that hands out descriptor sets and frees them all at once (reset()), plus
-// writeDescriptors(), which points binding i of a set at targets[i]. For kernels whose bindings
-// are all buffers or acceleration structures, each binding one descriptor.
+// DescriptorPool: a pool that hands out descriptor sets and frees them all at once (reset()). Their
+// bindings are written through DescriptorWrites (vk/descriptor_writes.hpp).
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <span>
 
-#include "vk/buffer.hpp"
 #include "vk/unique_handle.hpp"
 
 namespace amrstream::vk {
@@ -29,21 +27,5 @@ class DescriptorPool {
   VkDevice device_ = VK_NULL_HANDLE;
   UniqueHandle<VkDescriptorPool> pool_;
 };
-
-// What one binding points at: a whole buffer, or an acceleration structure.
-struct DescriptorTarget {
-  VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkAccelerationStructureKHR structure = VK_NULL_HANDLE;
-};
-
-// A storage buffer binding's target: the whole of `buffer`.
-inline DescriptorTarget storageTarget(const Buffer& buffer) {
-  return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer.handle()};
-}
-
-// Binding i of `set` := targets[i].
-void writeDescriptors(const Context& ctx, VkDescriptorSet set,
-                      std::span<const DescriptorTarget> targets);
 
 }  // namespace amrstream::vk

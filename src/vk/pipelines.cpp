@@ -28,6 +28,14 @@ VkPipelineShaderStageCreateInfo stageInfo(VkShaderStageFlagBits stage, VkShaderM
 
 }  // namespace
 
+std::vector<VkDescriptorSetLayoutBinding> storageBufferBindings(std::uint32_t count,
+                                                                VkShaderStageFlags stages) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings(count);
+  for (std::uint32_t i = 0; i < count; ++i)
+    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr};
+  return bindings;
+}
+
 UniqueHandle<VkDescriptorSetLayout> createDescriptorSetLayout(
     const Context& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings) {
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};

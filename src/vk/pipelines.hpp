@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "vk/buffer.hpp"
 #include "vk/unique_handle.hpp"
@@ -23,6 +24,11 @@ template <std::size_t N>
 std::span<const std::uint32_t> spirv(const std::uint32_t (&words)[N]) {
   return {words, N};
 }
+
+// Bindings 0 to count - 1 (an AMRSTREAM_*_BINDING_COUNT), each one storage buffer seen by
+// `stages`; a kernel retypes the others by index.
+std::vector<VkDescriptorSetLayoutBinding> storageBufferBindings(std::uint32_t count,
+                                                                VkShaderStageFlags stages);
 
 UniqueHandle<VkDescriptorSetLayout> createDescriptorSetLayout(
     const Context& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings);

@@ -47,7 +47,6 @@ void ValidationLog::record(VkDebugUtilsMessageSeverityFlagBitsEXT severity, cons
     if (errors_.size() < kMaxKeptErrors) errors_.emplace_back(text);
     fmt::print(stderr, "[vulkan error] {}\n", text);
   } else if ((severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) != 0) {
-    ++warningCount_;
     if (printWarnings_) {
       std::lock_guard lock(mutex_);
       fmt::print(stderr, "[vulkan warning] {}\n", text);

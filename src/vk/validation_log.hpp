@@ -22,7 +22,6 @@ class ValidationLog {
   ValidationLog& operator=(const ValidationLog&) = delete;
 
   uint32_t errorCount() const { return errorCount_.load(); }
-  uint32_t warningCount() const { return warningCount_.load(); }
   // The first kMaxKeptErrors error messages.
   std::vector<std::string> errors() const;
 
@@ -41,7 +40,6 @@ class ValidationLog {
 
   bool printWarnings_;
   std::atomic<uint32_t> errorCount_{0};
-  std::atomic<uint32_t> warningCount_{0};
   mutable std::mutex mutex_;
   std::vector<std::string> errors_;
 };

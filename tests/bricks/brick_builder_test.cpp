@@ -72,7 +72,7 @@ TEST(BuildBricks, SingleCellIsOneBrick) {
 
 TEST(BrickDomainDoubled, PadsByHalfACellOfTheBrickLevel) {
   const shared::Brick brick{{-4, 8, 12}, 2, {3, 1, 2}, 0};
-  const bricks::CellBox d = bricks::brickDomainDoubled(brick);
+  const CellBox d = bricks::brickDomainDoubled(brick);
   // Cells 4 wide: bounds [-4, 8) x [8, 12) x [12, 20), padded by 2, doubled.
   EXPECT_EQ(d.lower, glm::ivec3(-12, 12, 20));
   EXPECT_EQ(d.upper, glm::ivec3(20, 28, 44));
@@ -157,7 +157,7 @@ TEST(BuildBricks, GatherFollowsCellIds) {
   ASSERT_EQ(values.size(), field.cellCount());
   for (std::size_t slot = 0; slot < values.size(); ++slot)
     EXPECT_EQ(values[slot], channel.values[set.cellIds[slot]]);
-  EXPECT_THROW(set.gather(bricks::Channel{"short", {1.0f}}), std::invalid_argument);
+  EXPECT_THROW(set.gather(Channel{"short", {1.0f}}), std::invalid_argument);
 }
 
 TEST(BuildBricks, OutputIsDeterministic) {

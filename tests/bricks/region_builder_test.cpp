@@ -169,7 +169,7 @@ TEST(BuildRegions, LatticeFitsThirtyTwoBitsOrIsRefused) {
   EXPECT_THROW(buildRegions({farBelow}), std::invalid_argument);
   // Clipped to a domain, a periodic image a period away keeps the part that reaches in.
   const shared::Brick image{{1 << 29, 0, 0}, 28, {2, 1, 1}, 0};
-  const bricks::CellBox domain{{-(1 << 29), 0, 0}, {1 << 29, 1 << 28, 1 << 28}};
+  const CellBox domain{{-(1 << 29), 0, 0}, {1 << 29, 1 << 28, 1 << 28}};
   const RegionSet clipped = buildRegions({image}, domain);
   EXPECT_EQ(clipped.lower.x, 2 * (1 << 29) - (1 << 28));
   EXPECT_EQ(clipped.upper.x, 2 * (1 << 29) + (1 << 28));

@@ -10,7 +10,7 @@ namespace amrstream::testing {
 
 namespace {
 
-using bricks::CellBox;
+using amrstream::CellBox;
 using ::testing::AssertionFailure;
 using ::testing::AssertionSuccess;
 

@@ -1,7 +1,7 @@
 // DatasetInfo: the file's level numbers from internal ones (counting down, up, or per level), the
 // field's default numbering, and the one-line texts of time, units and periodic axes.
 
-#include "bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "amrstream/trace_settings.hpp"
+#include "api/stepping.hpp"
 #include "flow/value_range.hpp"
 #include "flow_test_support.hpp"
 #include "input_error_of.hpp"
@@ -22,7 +22,7 @@ using ::testing::HasSubstr;
 bricks::AmrField constantField(float s, float r = 1.0f, double spacing = 1.0) {
   const bricks::AmrField grid =
       testing::uniformGrid(4, [s](glm::dvec3) { return glm::vec3(s, 0.0f, 0.0f); });
-  std::vector<bricks::Channel> channels = grid.channels();
+  std::vector<Channel> channels = grid.channels();
   channels.push_back({"rho", std::vector<float>(grid.cellCount(), r)});
   return bricks::AmrField({grid.lowers().begin(), grid.lowers().end()},
                           {grid.levels().begin(), grid.levels().end()}, channels,

@@ -63,7 +63,7 @@ Agreement compareWithDouble(const bricks::AmrField& field, const std::vector<glm
   const TraceSet cpu = traceStreamlines(buildVectorVolume(field, vector), seeds, options);
 
   const testing::DoubleTracer oracle(field, vector.channels);
-  const bricks::WorldTransform& transform = field.transform();
+  const WorldTransform& transform = field.transform();
   Agreement agreement;
   for (std::size_t line = 0; line < seeds.size(); ++line) {
     SCOPED_TRACE(::testing::Message() << "seed " << line);
@@ -120,7 +120,7 @@ TEST(CpuTracerVsDouble, ReconstructionMatchesTheSampler) {
 // Seeds about the centre of a six-level nest: at 5 finest cells in and out of the finest cube at
 // its corners, then out across the levels as the spiral widens; the last one leaves the domain.
 TEST(CpuTracerVsDouble, AgreeAcrossTheLevelsOfANest) {
-  synth::NestOptions nest;
+  NestOptions nest;
   nest.levels = 6;
   const bricks::AmrField field = synth::generateNest(nest);
   const glm::dvec3 centre = nest.centre / field.transform().spacing;
@@ -165,7 +165,7 @@ TEST(CpuTracerVsDouble, AgreeAcrossTheThirtyLevelsOfAnOctreeNest) {
 // The cloud's refinement follows its filaments: field lines from its finest cells run out through
 // coarser blocks, most of them out of the domain. Steps move at most one finest cell.
 TEST(CpuTracerVsDouble, AgreeInTheCloud) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 4;
   g.rootBlocks = 2;
   g.targetCells = 40'000;

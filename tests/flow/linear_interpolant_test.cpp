@@ -259,7 +259,7 @@ TEST(LinearInterpolant, PointDataAndVorticityAreExactForLinearFields) {
   bricks::AmrField field = testing::randomAmr(3, layout, asFunction(linearField));
   VolumeOptions options;
   options.interpolant = Interpolant::Linear;
-  std::vector<bricks::Channel> channels = field.channels();
+  std::vector<Channel> channels = field.channels();
   channels.push_back({"copy", channels[0].values});
   const bricks::AmrField withCopy(
       std::vector<glm::ivec3>(field.lowers().begin(), field.lowers().end()),

@@ -33,7 +33,7 @@ VolumeOptions options(Interpolant interpolant, std::vector<std::string> pointDat
 }
 
 bricks::AmrField swirlAt(double t) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 4;
   g.rootBlocks = 2;
   g.targetCells = 60000;
@@ -147,7 +147,7 @@ TEST(Pathlines, FollowTheClosedFormWithTheTentToo) {
 }
 
 TEST(Pathlines, ThroughIdenticalSnapshotsEqualTimeModeStreamlines) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 3;
   g.rootBlocks = 2;
   g.targetCells = 30000;
@@ -180,7 +180,7 @@ TEST(Pathlines, ThroughIdenticalSnapshotsEqualTimeModeStreamlines) {
 }
 
 TEST(Pathlines, StreaklinesOfASteadyRotationLieOnCircles) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 3;
   g.rootBlocks = 2;
   g.targetCells = 30000;

@@ -21,7 +21,7 @@ namespace {
 // nearest periodic image along the periodic axes, in double precision.
 glm::dvec3 periodicBruteForce(const bricks::AmrField& field, const PeriodicAxes& periodic,
                               glm::dvec3 p) {
-  const bricks::CellBox box = field.bounds();
+  const CellBox box = field.bounds();
   const glm::dvec3 period(box.upper - box.lower);
   glm::dvec3 sum(0.0);
   double weightSum = 0.0;

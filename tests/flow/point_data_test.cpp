@@ -16,8 +16,8 @@ namespace {
 
 // The vector (vx, vy, vz) plus the scalars "lin" = 2x - y + 3z + 1 and "ones" = 1 on a layout.
 bricks::AmrField withScalars(const bricks::AmrField& cells) {
-  std::vector<bricks::Channel> channels = cells.channels();
-  bricks::Channel lin{"lin", {}}, ones{"ones", {}};
+  std::vector<Channel> channels = cells.channels();
+  Channel lin{"lin", {}}, ones{"ones", {}};
   for (std::size_t i = 0; i < cells.cellCount(); ++i) {
     const double w = bricks::AmrField::cellWidth(cells.levels()[i]);
     const glm::dvec3 c = glm::dvec3(cells.lowers()[i]) + 0.5 * w;

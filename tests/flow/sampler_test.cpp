@@ -39,7 +39,7 @@ BruteForce bruteForceSample(const bricks::AmrField& field, glm::dvec3 p) {
   return r;
 }
 
-glm::vec3 randomPointIn(const bricks::CellBox& box, std::mt19937_64& rng) {
+glm::vec3 randomPointIn(const CellBox& box, std::mt19937_64& rng) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const glm::vec3 lo(box.lower), hi(box.upper);
   glm::vec3 p = lo + glm::vec3(u(rng), u(rng), u(rng)) * (hi - lo);
@@ -133,7 +133,7 @@ TEST(Sampler, ReportsRegionCellWidthAndOutOfDomain) {
   options.levels = 3;
   const bricks::AmrField field = testing::randomAmr(2, options);
   const VectorVolume volume = testing::volumeOf(field);
-  const bricks::CellBox box = field.bounds();
+  const CellBox box = field.bounds();
   EXPECT_FALSE(sampleVector(volume, glm::vec3(box.upper)).located);
   EXPECT_FALSE(sampleVector(volume, glm::vec3(box.lower) - glm::vec3(0.25f, 0, 0)).located);
   EXPECT_FALSE(sampleVector(volume, glm::vec3(box.upper.x, 0.5f, 0.5f)).located);

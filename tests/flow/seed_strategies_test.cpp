@@ -90,7 +90,7 @@ bricks::AmrField fieldWithDensity() {
   std::vector<float> dens;  // the x coordinate of the cell centre: highest on the +x side
   for (std::size_t i = 0; i < random.cellCount(); ++i)
     dens.push_back(float(random.lowers()[i].x) + 0.5f * float(1 << random.levels()[i]));
-  std::vector<bricks::Channel> channels = random.channels();
+  std::vector<Channel> channels = random.channels();
   channels.push_back({"dens", dens});
   return bricks::AmrField({random.lowers().begin(), random.lowers().end()},
                           {random.levels().begin(), random.levels().end()}, channels,

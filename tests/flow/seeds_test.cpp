@@ -130,7 +130,7 @@ TEST(SeedCheck, RefusesASeedWhereNoTentReachesSoNoSampleIsNaN) {
 
 TEST(VectorSelection, PrefersVelocityThenMagneticFieldAndNamesTheVector) {
   const auto field = [](std::vector<std::string> names) {
-    std::vector<bricks::Channel> channels;
+    std::vector<Channel> channels;
     for (auto& n : names) channels.push_back({n, {0.0f}});
     return bricks::AmrField({{0, 0, 0}}, {0}, channels, {}, "f");
   };

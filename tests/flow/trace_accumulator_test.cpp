@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::flow {
 namespace {

@@ -15,11 +15,11 @@
 #include <map>
 #include <sstream>
 
+#include "amrstream/error.hpp"
 #include "formats/amrex/amrex_info.hpp"
 #include "input_error_of.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -337,7 +337,7 @@ TEST_F(AmrexReader, DirectoriesFifosAndEscapingPathsAreRefusedByName) {
 
 TEST_F(AmrexReader, TimeFromTheHeaderLevelsCountFromTheCoarsestPeriodicityUnknown) {
   const bricks::AmrField field = readAmrexPlotfile(dir_);
-  const bricks::DatasetInfo& info = field.info();
+  const DatasetInfo& info = field.info();
   EXPECT_EQ(info.format, "AMReX");
   EXPECT_EQ(info.time, 0.5);  // the synthetic Header's time line
   EXPECT_FALSE(info.periodicKnown);
@@ -356,14 +356,14 @@ TEST_F(AmrexReader, PeriodicAxesFromJobInfo) {
             "amr.n_cell = 8 8 8\n"
             "geometry.is_periodic = 1 0 1\n"
             "geometry.coord_sys = 0\n");
-  const bricks::DatasetInfo info = readAmrexPlotfile(dir_).info();
+  const DatasetInfo info = readAmrexPlotfile(dir_).info();
   EXPECT_TRUE(info.periodicKnown);
   EXPECT_THAT(info.periodic, ::testing::ElementsAre(true, false, true));
 }
 
 TEST_F(AmrexReader, PeriodicAxesFromACodesOwnJobInfo) {
   writeFile(dir_ / "PeleLMeX_job_info", "  geometry.is_periodic = 0 1 1\n");
-  const bricks::DatasetInfo info = readAmrexPlotfile(dir_).info();
+  const DatasetInfo info = readAmrexPlotfile(dir_).info();
   EXPECT_TRUE(info.periodicKnown);
   EXPECT_THAT(info.periodic, ::testing::ElementsAre(false, true, true));
 }
@@ -378,7 +378,7 @@ TEST_F(AmrexReader, RejectsAMalformedPeriodicLineNamingJobInfoAndTheLine) {
 
 TEST(AmrexInfo, RatiosOtherThanTwoNumberEachLevel) {
   // Three levels with ratios 4 and 4: cell widths 16, 4 and 1 finest cells.
-  const bricks::DatasetInfo info =
+  const DatasetInfo info =
       readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile", 0.0, {4, 2, 0});
   EXPECT_EQ(info.fileLevel(0), 2);
   EXPECT_EQ(info.fileLevel(2), 1);
@@ -404,7 +404,7 @@ TEST(AmrexRealData, TimeFromTheHeaderAndNoJobInfo) {
   for (const auto& entry : fs::directory_iterator(kRealPlotfile))
     jobInfo |= entry.path().filename().string().ends_with("job_info");
 
-  const bricks::DatasetInfo info = readAmrexPlotfile(kRealPlotfile).info();
+  const DatasetInfo info = readAmrexPlotfile(kRealPlotfile).info();
   EXPECT_EQ(info.time, time);
   EXPECT_EQ(info.periodicKnown, jobInfo);
   EXPECT_FALSE(jobInfo) << "the shared plotfile gained a job_info: check its is_periodic here";

@@ -60,7 +60,7 @@ class EnzoInfoReal : public ::testing::Test {
 TEST_F(EnzoInfoReal, TimePeriodicityAndLevelsAsTheParameterFileSays) {
   const auto text = parameterText(kRealParameters);
   const bricks::AmrField field = readEnzo(kRealParameters);
-  const bricks::DatasetInfo& info = field.info();
+  const DatasetInfo& info = field.info();
   EXPECT_EQ(info.format, "Enzo");
   EXPECT_EQ(info.time, number(text, "InitialTime"));
   EXPECT_NEAR(*info.time, 0.81751317119117, 1e-14);
@@ -79,7 +79,7 @@ TEST_F(EnzoInfoReal, CodeUnitsSizedByTheCosmology) {
   ASSERT_EQ(number(text, "ComovingCoordinates"), 1.0);
   ASSERT_EQ(number(text, "CosmologyOmegaMatterNow"), 1.0);
   ASSERT_EQ(number(text, "CosmologyOmegaLambdaNow"), 0.0);
-  const bricks::DatasetInfo info = readEnzo(kRealParameters).info();
+  const DatasetInfo info = readEnzo(kRealParameters).info();
   ASSERT_TRUE(info.timeUnitSeconds.has_value());
   ASSERT_TRUE(info.lengthUnitCentimetres.has_value());
   EXPECT_THAT(info.timeUnit, HasSubstr("code units (1 = "));
@@ -115,7 +115,7 @@ TEST_F(EnzoInfoWritten, NonCosmologicalUnitsFromLengthUnitsAndTimeUnits) {
             "LengthUnits = 3.0857e+21\nTimeUnits = 3.15e+13\n"
             "LeftFaceBoundaryCondition  = 3 0 3\n"
             "RightFaceBoundaryCondition = 3 3 1\n"));
-  const bricks::DatasetInfo info = readEnzoInfo(&parameters, 4);
+  const DatasetInfo info = readEnzoInfo(&parameters, 4);
   EXPECT_EQ(info.time, 2.5);
   EXPECT_EQ(info.lengthUnitCentimetres, 3.0857e21);
   EXPECT_EQ(info.timeUnitSeconds, 3.15e13);
@@ -128,12 +128,12 @@ TEST_F(EnzoInfoWritten, NonCosmologicalUnitsFromLengthUnitsAndTimeUnits) {
 
 TEST_F(EnzoInfoWritten, UnstatedValuesStayUnknown) {
   const EnzoParameters parameters(write("TopGridRank = 3\n"));
-  const bricks::DatasetInfo info = readEnzoInfo(&parameters, 2);
+  const DatasetInfo info = readEnzoInfo(&parameters, 2);
   EXPECT_FALSE(info.time.has_value());
   EXPECT_FALSE(info.periodicKnown);
   EXPECT_EQ(info.lengthUnit, "code units");
   EXPECT_FALSE(info.lengthUnitCentimetres.has_value());
-  const bricks::DatasetInfo withoutFile = readEnzoInfo(nullptr, 2);
+  const DatasetInfo withoutFile = readEnzoInfo(nullptr, 2);
   EXPECT_EQ(withoutFile.format, "Enzo");
   EXPECT_EQ(withoutFile.lengthUnit, "");
   EXPECT_EQ(withoutFile.fileLevel(2), 0);

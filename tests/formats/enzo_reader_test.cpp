@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "hdf5_read.hpp"
 #include "special_files.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {

@@ -15,12 +15,12 @@
 #include <limits>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "formats/load_input.hpp"
 #include "input_error_of.hpp"
 #include "random_amr.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -189,7 +189,7 @@ TEST_F(ExaFormat, RejectsMalformedConfigWithLineNumbers) {
 
 TEST_F(ExaFormat, RoundTripsTimeUnitsAndPeriodicity) {
   bricks::AmrField field = testing::randomAmr(5);
-  bricks::DatasetInfo info;
+  DatasetInfo info;
   info.format = "Enzo";
   info.time = 0.81751317119117;
   info.timeUnit = "code units (1 = 1.381e+16 s)";
@@ -200,7 +200,7 @@ TEST_F(ExaFormat, RoundTripsTimeUnitsAndPeriodicity) {
   field.setInfo(info);
   const fs::path config = writeExa(field, dir_ / "described");
 
-  const bricks::DatasetInfo read = readExa(config).info();
+  const DatasetInfo read = readExa(config).info();
   EXPECT_EQ(read.format, "ExaBricks");
   EXPECT_EQ(read.time, info.time);
   EXPECT_EQ(read.timeUnit, info.timeUnit);
@@ -212,7 +212,7 @@ TEST_F(ExaFormat, RoundTripsTimeUnitsAndPeriodicity) {
 }
 
 TEST_F(ExaFormat, WithoutTheOptionalLinesNothingIsKnown) {
-  const bricks::DatasetInfo info = readExa(writeSample()).info();
+  const DatasetInfo info = readExa(writeSample()).info();
   EXPECT_FALSE(info.time.has_value());
   EXPECT_FALSE(info.periodicKnown);
   EXPECT_EQ(info.timeUnit, "");
@@ -229,7 +229,7 @@ TEST_F(ExaFormat, ReadsHandWrittenLines) {
   writeText(config,
             "cells sample.cells\ntime -2.5e-3   # before the event\nperiodic 0 1 0\n"
             "length-unit   Mpc / h   \ntime-unit Gyr\n");
-  const bricks::DatasetInfo info = readExa(config).info();
+  const DatasetInfo info = readExa(config).info();
   EXPECT_EQ(info.time, -2.5e-3);
   EXPECT_EQ(info.periodic, (std::array<bool, 3>{false, true, false}));
   EXPECT_EQ(info.lengthUnit, "Mpc / h");
@@ -259,7 +259,7 @@ TEST_F(ExaFormat, RejectsMalformedInfoLinesWithLineNumbers) {
 
 TEST_F(ExaFormat, RefusesToWriteAUnitThatALineCannotHold) {
   bricks::AmrField field = testing::randomAmr(5);
-  bricks::DatasetInfo info;
+  DatasetInfo info;
   info.lengthUnit = "furlongs # per fortnight";
   field.setInfo(info);
   const std::string error = testing::inputErrorOf([&] { writeExa(field, dir_ / "unit"); });

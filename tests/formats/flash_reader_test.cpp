@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "hdf5_read.hpp"
 #include "input_error_of.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -342,7 +342,7 @@ TEST_F(FlashReader, BlockSizeInconsistentWithBoundingBoxIsRejected) {
 TEST_F(FlashReader, WithoutParametersOnlyLevelsAreKnownAndUnitsAreFlashsDefaultCgs) {
   const fs::path path = dir_ / "bare";
   writeFlash(path, 3, makeTree(3, kLo, kHi));
-  const bricks::DatasetInfo info = readFlash(path).info();
+  const DatasetInfo info = readFlash(path).info();
   EXPECT_EQ(info.format, "FLASH");
   EXPECT_FALSE(info.time.has_value());
   EXPECT_FALSE(info.periodicKnown);
@@ -365,7 +365,7 @@ TEST_F(FlashReader, TimeUnitsAndPeriodicAxesComeFromScalarsAndRuntimeParameters)
                {"zl_boundary_type", "periodic"},
                {"zr_boundary_type", "periodic"},
                {"pc_unitsbase", "MKS"}});
-  const bricks::DatasetInfo info = readFlash(path).info();
+  const DatasetInfo info = readFlash(path).info();
   EXPECT_EQ(info.time, 2.5);
   EXPECT_EQ(info.timeUnit, "s");
   EXPECT_EQ(info.lengthUnit, "m");
@@ -385,7 +385,7 @@ TEST_F(FlashReader, TwoDimensionalFilesIgnoreTheZBoundary) {
                {"yr_boundary_type", "periodic"},
                {"zl_boundary_type", "periodic"},
                {"zr_boundary_type", "periodic"}});
-  const bricks::DatasetInfo info = readFlash(path).info();
+  const DatasetInfo info = readFlash(path).info();
   EXPECT_TRUE(info.periodicKnown);
   EXPECT_THAT(info.periodic, ElementsAre(false, true, false));
 }
@@ -449,7 +449,7 @@ TEST_F(FlashReader, VariableLengthRuntimeParametersAreRead) {
   H5Tclose(type);
   H5Tclose(text);
   H5Fclose(file);
-  const bricks::DatasetInfo info = readFlash(path).info();
+  const DatasetInfo info = readFlash(path).info();
   EXPECT_THAT(info.periodic, ElementsAre(false, true, false));
   EXPECT_EQ(info.lengthUnit, "m");
 }
@@ -628,7 +628,7 @@ TEST_F(FlashReader, RealNanowirePlotfile) {
 TEST_F(FlashReader, RealNanowirePlotfileDescribesItself) {
   if (!fs::exists(kRealFile)) GTEST_SKIP() << "real FLASH file absent: " << kRealFile;
   const bricks::AmrField field = readFlash(kRealFile);
-  const bricks::DatasetInfo& info = field.info();
+  const DatasetInfo& info = field.info();
   EXPECT_EQ(info.format, "FLASH");
   EXPECT_EQ(info.time, 1.0000117238534479e-09);
   EXPECT_EQ(info.timeUnit, "s");

@@ -13,10 +13,10 @@
 #include <map>
 #include <sstream>
 
+#include "amrstream/error.hpp"
 #include "input_error_of.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -187,8 +187,7 @@ TEST_F(GerrisReader, DirectoriesAndFifosAreRefusedByNameBeforeOpening) {
 TEST_F(GerrisReader, TimeIsTheHeadersLastNumberAndLevelsAreGerrisLevels) {
   std::vector<glm::dvec3> centres;
   std::vector<int> levels;
-  const bricks::DatasetInfo info =
-      readGerris(write("two.txt", twoLevelDump(&centres, &levels))).info();
+  const DatasetInfo info = readGerris(write("two.txt", twoLevelDump(&centres, &levels))).info();
   EXPECT_EQ(info.format, "Gerris");
   EXPECT_EQ(info.time, 0.25);       // the header ends with 0.25
   EXPECT_EQ(info.fileLevel(0), 2);  // the dump's Lev 2 cells are the finest

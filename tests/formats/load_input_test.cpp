@@ -111,17 +111,17 @@ TEST_F(DetectFormat, AFifoIsRefusedByNameBeforeItIsOpened) {
 
 // ABC is sin/cos of 2 pi x, y, z over the unit cube: one full period on every axis.
 TEST(BuiltinInfo, AbcIsPeriodicTheOthersAreNot) {
-  synth::GeneratorOptions small;
+  BuiltinOptions small;
   small.levels = 3;
   small.rootBlocks = 1;
   small.targetCells = 5000;
-  const bricks::DatasetInfo abc = loadInput("builtin:abc", small).info();
+  const DatasetInfo abc = loadInput("builtin:abc", small).info();
   EXPECT_EQ(abc.format, "builtin");
   EXPECT_EQ(abc.time, 0.0);
   EXPECT_TRUE(abc.periodicKnown);
   EXPECT_EQ(abc.periodic, (std::array<bool, 3>{true, true, true}));
   for (const char* kind : {"builtin:rotation", "builtin:cloud"}) {
-    const bricks::DatasetInfo info = loadInput(kind, small).info();
+    const DatasetInfo info = loadInput(kind, small).info();
     EXPECT_TRUE(info.periodicKnown) << kind;
     EXPECT_EQ(info.periodic, (std::array<bool, 3>{false, false, false})) << kind;
   }

@@ -128,7 +128,7 @@ class SnapshotTime : public testing::TempDirTest {
   static bricks::AmrField smallField(std::optional<double> time) {
     bricks::AmrField field =
         synth::generate("rotation", {.levels = 2, .rootBlocks = 1, .targetCells = 600});
-    bricks::DatasetInfo info = field.info();
+    DatasetInfo info = field.info();
     info.time = time;
     field.setInfo(info);
     return field;

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "amrstream/error.hpp"
 #include "formats/load_input.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -20,7 +20,7 @@ const fs::path kReal(AMRSTREAM_REAL_DATA_DIR);
 // Whether the cell [lower, lower + width) grown by `around` cell widths meets a box.
 bool near(const ValueWindow& window, glm::ivec3 lower, int width) {
   const glm::ivec3 grow(int(window.cellsAround * width));
-  for (const bricks::CellBox& box : window.boxes)
+  for (const CellBox& box : window.boxes)
     if (glm::all(glm::lessThan(lower - grow, box.upper)) &&
         glm::all(glm::lessThan(box.lower, lower + width + grow)))
       return true;
@@ -28,7 +28,7 @@ bool near(const ValueWindow& window, glm::ivec3 lower, int width) {
 }
 
 // A box of a quarter of the bounds along each axis, at the lower corner, and one in the middle.
-std::vector<ValueWindow> windowsIn(const bricks::CellBox& bounds) {
+std::vector<ValueWindow> windowsIn(const CellBox& bounds) {
   const glm::ivec3 extent = bounds.upper - bounds.lower;
   const glm::ivec3 quarter = glm::max(extent / 4, glm::ivec3(1));
   const glm::ivec3 middle = bounds.lower + extent / 2;
@@ -115,7 +115,7 @@ void expectWindowedReads(const fs::path& input) {
   const bricks::AmrField layout = loadInput(input.string(), {}, &nothing, &read);
   EXPECT_EQ(read.piecesRead, 0u);
   EXPECT_EQ(layout.cellCount(), whole.cellCount());
-  for (const bricks::Channel& channel : layout.channels())
+  for (const Channel& channel : layout.channels())
     for (const float v : channel.values) ASSERT_EQ(v, 0.0f) << channel.name;
 }
 
@@ -144,7 +144,7 @@ TEST(ValueWindow, FormatsThatReadWhole) {
   const bricks::AmrField field = loadInput("builtin:rotation", {}, &nothing, &read);
   EXPECT_EQ(read.pieces, 0u);
   bool nonZero = false;
-  for (const bricks::Channel& channel : field.channels())
+  for (const Channel& channel : field.channels())
     for (const float v : channel.values) nonZero = nonZero || v != 0.0f;
   EXPECT_TRUE(nonZero);
 }

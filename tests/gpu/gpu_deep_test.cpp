@@ -7,13 +7,13 @@
 
 #include <algorithm>
 
+#include "amrstream/error.hpp"
 #include "deep_nest.hpp"
 #include "double_tracer.hpp"
 #include "flow/trace_options.hpp"
 #include "flow/vector_selection.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "gpu_test.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::gpu {
 namespace {
@@ -58,7 +58,7 @@ double worstDifference(vk::Context& ctx, Backend backend, const testing::DeepNes
   if (!gpu.precisePositions) return -1.0;
 
   const testing::DoubleTracer oracle(field, vector.channels);
-  const bricks::WorldTransform& transform = field.transform();
+  const WorldTransform& transform = field.transform();
   double worst = 0.0;
   for (std::size_t line = 0; line < seeds.size(); ++line) {
     const testing::DoubleTrace exact = oracle.trace(seeds[line], double(options.stepSize), 400);

@@ -19,7 +19,7 @@ namespace {
 const flow::VectorChannels kVelocity{{"velx", "vely", "velz"}, "vel"};
 
 flow::VectorVolume swirlVolume(double t, flow::Interpolant interpolant) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 3;
   g.rootBlocks = 2;
   g.targetCells = 12000;

@@ -285,9 +285,9 @@ bricks::AmrField layoutWithChannels(int extra) {
   const bricks::AmrField cells = testing::randomAmr(12, layout, [](glm::dvec3 p) {
     return glm::vec3(0.2 + 0.01 * p.y, 0.1 * std::cos(0.2 * p.x), 0.05 + 0.01 * p.z);
   });
-  std::vector<bricks::Channel> channels = cells.channels();
+  std::vector<Channel> channels = cells.channels();
   for (int c = 0; c < extra; ++c) {
-    bricks::Channel channel{"s" + std::to_string(c), {}};
+    Channel channel{"s" + std::to_string(c), {}};
     for (std::size_t i = 0; i < cells.cellCount(); ++i)
       channel.values.push_back(float(std::sin(0.1 * double(i) + c)));
     channels.push_back(channel);

@@ -35,7 +35,7 @@ std::size_t cellsHeld(const bricks::AmrField& f, glm::ivec3 lower, glm::ivec3 up
 
 // A cloud of about 200,000 cells in 4 levels.
 bricks::AmrField smallCloud() {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 4;
   g.targetCells = 200'000;
   return synth::generate("cloud", g);
@@ -121,7 +121,7 @@ TEST(DataPartition, SeedsWeighTheCutAsMuchAsCells) {
 // is still the one a plain count of every centre's plane gives (the cost as partitionCells
 // states it: the larger side's cells per part, each side with the cells within the halo).
 TEST(DataPartition, ParallelPlaneCountsGiveTheSequentialCut) {
-  synth::GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 4;
   g.targetCells = 1'500'000;
   const bricks::AmrField f = synth::generate("cloud", g);

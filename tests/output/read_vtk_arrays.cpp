@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "output/vtk_xml_file.hpp"
-#include "util/input_error.hpp"
 
 namespace {
 

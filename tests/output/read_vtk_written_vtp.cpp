@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "output/vtp_reader.hpp"
 #include "sample_traces.hpp"
-#include "util/input_error.hpp"
 
 namespace {
 

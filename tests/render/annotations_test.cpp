@@ -85,7 +85,7 @@ float longestEdgeOnTheOutline(const std::vector<glm::vec2>& corners, int axis) {
 struct RandomScene {
   OrbitCamera camera;
   std::uint32_t width, height;
-  bricks::WorldTransform transform;
+  WorldTransform transform;
   glm::dvec3 lower, upper;  // physical
 };
 
@@ -208,7 +208,7 @@ TEST(Axes, TicksSitOnTheOutermostEdgesAtRoundValuesWhereGlmProjectsThem) {
 }
 
 TEST(Axes, AnAxisSeenEndOnGetsNoTicks) {
-  bricks::WorldTransform transform{{-5.0, 0.0, 10.0}, {0.5, 0.5, 0.25}};
+  WorldTransform transform{{-5.0, 0.0, 10.0}, {0.5, 0.5, 0.25}};
   const glm::dvec3 lower(-5.0, 0.0, 10.0), upper(5.0, 8.0, 12.0);
   OrbitCamera camera;
   camera.projection = Projection::Orthographic;
@@ -286,7 +286,7 @@ TEST(ScaleBar, InAnOrthographicViewOfAKnownHeightTheBarIsARoundLength) {
   camera.projection = Projection::Orthographic;
   camera.distance = 50.0f;
   camera.fovYDegrees = 90.0f;  // the view is 2 * 50 * tan(45 degrees) = 100 cells tall
-  const bricks::WorldTransform transform{{3.0, -7.0, 1.0}, glm::dvec3(0.01)};  // 1 kpc tall
+  const WorldTransform transform{{3.0, -7.0, 1.0}, glm::dvec3(0.01)};  // 1 kpc tall
   const ScaleBarLayout layout = layoutScaleBar(camera, 1000, 1000, transform, "kpc", 16);
   EXPECT_DOUBLE_EQ(layout.length, 0.2);  // of 0.1 to 0.25 kpc (10 to 25 % of the width)
   EXPECT_NEAR(layout.end.x - layout.start.x, 200.0f, 1e-2f);

@@ -8,6 +8,8 @@
 #include <limits>
 
 #include "amrstream/rendering.hpp"
+#include "api/handles.hpp"
+#include "api/render_scene.hpp"
 #include "input_error_of.hpp"
 #include "synth/generators.hpp"
 
@@ -26,13 +28,17 @@ class RenderOptionChecks : public ::testing::Test {
     return inputErrorOf([&] { prepareScene(options, cells_, volume_, traces_); });
   }
   std::string errorOfFrames(std::uint32_t frames) {
-    return inputErrorOf(
-        [&] { renderImage({"auto"}, RenderOptions{}, cells_, volume_, traces_, frames, false); });
+    return inputErrorOf([&] {
+      RenderOptions o;
+      o.frames = frames;
+      renderImage({"auto"}, o, field_, Traces());
+    });
   }
 
-  Dataset cells_ = synth::generate("rotation", {1, 1, 512, 1, 0.0});
+  bricks::AmrField cells_ = synth::generate("rotation", {1, 1, 512, 1, 0.0});
   flow::VectorVolume volume_;
   flow::TraceSet traces_;
+  Field field_ = fieldOf({}, {}, "rotation", {}, {}, datasetOf(cells_));
 };
 
 TEST_F(RenderOptionChecks, RefusesSizesAndCountsBeyondTheirBounds) {
@@ -126,13 +132,13 @@ TEST_F(RenderOptionChecks, TheDefaultTubeRadiusIsAFractionOfTheView) {
 // IntegrationTime is an arc length in `arc` mode and a time otherwise: the colour bar of
 // --colour-by time shows the input's length or time unit, and nothing the input does not give.
 TEST_F(RenderOptionChecks, ColouringByTimeShowsIntegrationTimesUnit) {
-  bricks::DatasetInfo info;
+  DatasetInfo info;
   info.lengthUnit = "cm (code length 3.1e24 cm)";
   info.timeUnit = "s";
   EXPECT_EQ(integrationTimeUnit(flow::StepMode::Arc, info), "cm");
   EXPECT_EQ(integrationTimeUnit(flow::StepMode::Cell, info), "s");
   EXPECT_EQ(integrationTimeUnit(flow::StepMode::Time, info), "s");
-  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Time, bricks::DatasetInfo{}), "");
+  EXPECT_EQ(integrationTimeUnit(flow::StepMode::Time, DatasetInfo{}), "");
   RenderOptions o;
   o.timeUnit = "s";
   o.colourBy = "time";

@@ -61,7 +61,7 @@ TEST(TubeGeometry, NoTubeCrossesTheBoxWherePeriodicLinesWrap) {
   }
   const ColourField colour{"speed", std::vector<float>(4, 1.0f)};
   const std::vector<shared::TubeSegment> segments =
-      buildTubeSegments(traces, colour, bricks::WorldTransform{});
+      buildTubeSegments(traces, colour, WorldTransform{});
   ASSERT_EQ(segments.size(), 2u);  // 0.8-0.95 and 0.05-0.2, not 0.95-0.05
   EXPECT_EQ(segments[0].b.x, 0.95f);
   EXPECT_EQ(segments[1].a.x, 0.05f);

@@ -18,7 +18,7 @@ std::vector<glm::dvec3> seedsAbout(const bricks::AmrField& nest, glm::dvec3 cent
   return seeds;
 }
 
-DeepNest build(const synth::NestOptions& options) {
+DeepNest build(const NestOptions& options) {
   bricks::AmrField field = synth::generateNest(options);
   std::vector<glm::dvec3> seeds = seedsAbout(field, options.centre);
   return {std::move(field), std::move(seeds)};
@@ -27,7 +27,7 @@ DeepNest build(const synth::NestOptions& options) {
 }  // namespace
 
 DeepNest deepNest() {
-  synth::NestOptions nest;
+  NestOptions nest;
   nest.levels = 28;
   nest.rootCells = 8;
   nest.blockCells = 4;
@@ -39,7 +39,7 @@ DeepNest deepNest() {
 }
 
 DeepNest deepOctreeNest() {
-  synth::NestOptions nest;
+  NestOptions nest;
   nest.levels = 30;
   nest.rootCells = 2;
   nest.blockCells = 2;

@@ -35,11 +35,11 @@ class DoubleTracer {
   DoubleTrace trace(glm::dvec3 seed, double h, std::uint32_t steps) const;
 
   const TentField& field() const { return field_; }
-  const bricks::WorldTransform& transform() const { return transform_; }
+  const WorldTransform& transform() const { return transform_; }
 
  private:
   TentField field_;
-  bricks::WorldTransform transform_;
+  WorldTransform transform_;
 };
 
 }  // namespace amrstream::testing

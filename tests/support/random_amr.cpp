@@ -40,7 +40,7 @@ bricks::AmrField randomAmr(std::uint64_t seed, const RandomAmrOptions& options,
         refine(options.origin + width * glm::ivec3(x, y, z), top, options.refineProbability, rng,
                layout);
 
-  std::vector<bricks::Channel> channels{{"vx", {}}, {"vy", {}}, {"vz", {}}};
+  std::vector<Channel> channels{{"vx", {}}, {"vy", {}}, {"vz", {}}};
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
   for (std::size_t i = 0; i < layout.lowers.size(); ++i) {
     const double w = double(1 << layout.levels[i]);

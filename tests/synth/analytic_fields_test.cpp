@@ -39,7 +39,7 @@ std::optional<std::size_t> cellContaining(const bricks::AmrField& f, glm::dvec3 
 constexpr double kFloatTolerance = 1e-6;
 
 TEST(RotationGenerator, EveryCellHoldsOmegaCrossR) {
-  const bricks::AmrField f = generate("rotation", GeneratorOptions{4, 2, 60'000});
+  const bricks::AmrField f = generate("rotation", BuiltinOptions{4, 2, 60'000});
   for (std::size_t i = 0; i < f.cellCount(); ++i) {
     const glm::dvec3 c = centreOf(f, i);
     const glm::dvec3 expected(-2.0 * kPi * (c.y - 0.5), 2.0 * kPi * (c.x - 0.5), 0.0);
@@ -51,7 +51,7 @@ TEST(RotationGenerator, EveryCellHoldsOmegaCrossR) {
 }
 
 TEST(RotationGenerator, TheRingIsOnTheFinestLevel) {
-  const bricks::AmrField f = generate("rotation", GeneratorOptions{3, 2, 130'000});
+  const bricks::AmrField f = generate("rotation", BuiltinOptions{3, 2, 130'000});
   ASSERT_EQ(f.finestLevel(), 0);
   ASSERT_GT(f.coarsestLevel(), 0);
   for (int k = 0; k < 64; ++k) {
@@ -66,7 +66,7 @@ TEST(RotationGenerator, TheRingIsOnTheFinestLevel) {
 
 TEST(AbcGenerator, EveryCellHoldsTheAbcFormula) {
   const double a = std::sqrt(3.0), b = std::sqrt(2.0), c = 1.0;
-  const bricks::AmrField f = generate("abc", GeneratorOptions{4, 2, 60'000});
+  const bricks::AmrField f = generate("abc", BuiltinOptions{4, 2, 60'000});
   for (std::size_t i = 0; i < f.cellCount(); ++i) {
     const glm::dvec3 x = 2.0 * kPi * centreOf(f, i);
     const glm::dvec3 expected(a * std::sin(x.z) + c * std::cos(x.y),
@@ -80,7 +80,7 @@ TEST(AbcGenerator, EveryCellHoldsTheAbcFormula) {
 TEST(AbcGenerator, AStagnationPointIsOnTheFinestLevel) {
   const glm::dvec3 stagnation(0.25, 0.5, (kPi - std::asin(1.0 / std::sqrt(3.0))) / (2.0 * kPi));
   ASSERT_LT(glm::length(AbcField::velocity(stagnation)), 1e-12);
-  const bricks::AmrField f = generate("abc", GeneratorOptions{5, 2, 250'000});
+  const bricks::AmrField f = generate("abc", BuiltinOptions{5, 2, 250'000});
   ASSERT_EQ(f.finestLevel(), 0);
   const std::optional<std::size_t> cell = cellContaining(f, stagnation);
   ASSERT_TRUE(cell);

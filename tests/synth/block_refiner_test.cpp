@@ -7,15 +7,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "amrstream/error.hpp"
 #include "synth/block_emitter.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::synth {
 namespace {
 
 constexpr std::size_t kSplitCost = 7 * kBlockCells;
 
-std::size_t rootCells(const GeneratorOptions& o) {
+std::size_t rootCells(const BuiltinOptions& o) {
   return std::size_t(o.rootBlocks) * o.rootBlocks * o.rootBlocks * kBlockCells;
 }
 
@@ -30,7 +30,7 @@ double hashedPriority(const BlockBox& box) {
 }
 
 TEST(BlockRefiner, BudgetOfTheRootGridGivesTheRootGrid) {
-  const GeneratorOptions o = GeneratorOptions{3, 2, 8 * kBlockCells};
+  const BuiltinOptions o = BuiltinOptions{3, 2, 8 * kBlockCells};
   const std::vector<Block> leaves = refineBlocks(o, "test", hashedPriority);
   ASSERT_EQ(leaves.size(), 8u);
   for (const Block& b : leaves) {
@@ -43,7 +43,7 @@ TEST(BlockRefiner, BudgetOfTheRootGridGivesTheRootGrid) {
 TEST(BlockRefiner, TiesGoToTheCoarserBlockThenToTheLowerMortonKey) {
   // A constant priority: the 8 roots are split first (one level everywhere), then the level-1
   // block at the origin (lowest Morton key).
-  const GeneratorOptions o = GeneratorOptions{3, 2, 8 * kBlockCells + 9 * kSplitCost};
+  const BuiltinOptions o = BuiltinOptions{3, 2, 8 * kBlockCells + 9 * kSplitCost};
   const std::vector<Block> leaves = refineBlocks(o, "test", [](const BlockBox&) { return 1.0; });
   ASSERT_EQ(cellCount(leaves), o.targetCells);
   int fine = 0;
@@ -61,13 +61,13 @@ TEST(BlockRefiner, TiesGoToTheCoarserBlockThenToTheLowerMortonKey) {
 TEST(BlockRefiner, HighestPriorityIsSplitFirst) {
   // Priority falls with the distance to q, so only the blocks containing q are split.
   const glm::dvec3 q(0.3, 0.7, 0.2);
-  const GeneratorOptions o = GeneratorOptions{4, 2, 8 * kBlockCells + 3 * kSplitCost};
+  const BuiltinOptions o = BuiltinOptions{4, 2, 8 * kBlockCells + 3 * kSplitCost};
   const std::vector<Block> leaves = refineBlocks(o, "test", [&](const BlockBox& box) {
     const glm::dvec3 d = glm::max(glm::max(box.lower - q, q - box.upper), glm::dvec3(0.0));
     return -glm::length(d);
   });
   ASSERT_EQ(cellCount(leaves), o.targetCells);
-  const bricks::WorldTransform transform = generatorTransform(o);
+  const WorldTransform transform = generatorTransform(o);
   int containing = 0;
   for (const Block& b : leaves) {
     const BlockBox box = blockBox(b, transform);
@@ -80,20 +80,20 @@ TEST(BlockRefiner, HighestPriorityIsSplitFirst) {
 }
 
 TEST(BlockRefiner, LevelZeroBlocksAreNeverSplit) {
-  const GeneratorOptions uniform = GeneratorOptions{1, 3, 1'000'000};
+  const BuiltinOptions uniform = BuiltinOptions{1, 3, 1'000'000};
   std::vector<Block> leaves = refineBlocks(uniform, "test", hashedPriority);
   EXPECT_EQ(cellCount(leaves), rootCells(uniform));
 
-  const GeneratorOptions twoLevels = GeneratorOptions{2, 2, 1'000'000};
+  const BuiltinOptions twoLevels = BuiltinOptions{2, 2, 1'000'000};
   leaves = refineBlocks(twoLevels, "test", hashedPriority);
   EXPECT_EQ(cellCount(leaves), 8 * rootCells(twoLevels));
   for (const Block& b : leaves) EXPECT_EQ(b.level, 0);
 }
 
 TEST(BlockRefiner, StaysWithinTheBudgetUsesItAndTilesTheDomain) {
-  for (const GeneratorOptions& o : {GeneratorOptions{4, 2, 20'000}, GeneratorOptions{5, 1, 30'000},
-                                    GeneratorOptions{3, 3, 50'000}, GeneratorOptions{6, 1, 100'000},
-                                    GeneratorOptions{2, 2, 7'000}}) {
+  for (const BuiltinOptions& o :
+       {BuiltinOptions{4, 2, 20'000}, BuiltinOptions{5, 1, 30'000}, BuiltinOptions{3, 3, 50'000},
+        BuiltinOptions{6, 1, 100'000}, BuiltinOptions{2, 2, 7'000}}) {
     const std::vector<Block> leaves = refineBlocks(o, "test", hashedPriority);
     const std::size_t cells = cellCount(leaves);
     EXPECT_LE(cells, o.targetCells);
@@ -121,7 +121,7 @@ TEST(BlockRefiner, StaysWithinTheBudgetUsesItAndTilesTheDomain) {
 }
 
 TEST(BlockRefiner, ValidatesTheOptions) {
-  const auto rejects = [](const GeneratorOptions& o, const std::string& word) {
+  const auto rejects = [](const BuiltinOptions& o, const std::string& word) {
     try {
       refineBlocks(o, "builtin:test", hashedPriority);
       ADD_FAILURE() << "accepted options naming " << word;
@@ -130,17 +130,17 @@ TEST(BlockRefiner, ValidatesTheOptions) {
       EXPECT_EQ(e.source(), "builtin:test");
     }
   };
-  rejects(GeneratorOptions{0, 2, 100'000}, "levels");
-  rejects(GeneratorOptions{9, 2, 100'000}, "levels");
-  rejects(GeneratorOptions{-1, 2, 100'000}, "levels");
-  rejects(GeneratorOptions{3, 0, 100'000}, "rootBlocks");
-  rejects(GeneratorOptions{3, -2, 100'000}, "rootBlocks");
-  rejects(GeneratorOptions{8, (1 << 20) + 1, std::size_t(1) << 60},
+  rejects(BuiltinOptions{0, 2, 100'000}, "levels");
+  rejects(BuiltinOptions{9, 2, 100'000}, "levels");
+  rejects(BuiltinOptions{-1, 2, 100'000}, "levels");
+  rejects(BuiltinOptions{3, 0, 100'000}, "rootBlocks");
+  rejects(BuiltinOptions{3, -2, 100'000}, "rootBlocks");
+  rejects(BuiltinOptions{8, (1 << 20) + 1, std::size_t(1) << 60},
           "rootBlocks");  // over 2^30 finest cells per axis
-  rejects(GeneratorOptions{3, 2048, std::size_t(1) << 60}, "rootBlocks");  // 4.4e12 root cells
-  rejects(GeneratorOptions{3, 2, 8 * kBlockCells - 1}, "targetCells");
-  EXPECT_NO_THROW(refineBlocks(GeneratorOptions{8, 1, kBlockCells}, "test", hashedPriority));
-  EXPECT_NO_THROW(refineBlocks(GeneratorOptions{1, 1, kBlockCells}, "test", hashedPriority));
+  rejects(BuiltinOptions{3, 2048, std::size_t(1) << 60}, "rootBlocks");  // 4.4e12 root cells
+  rejects(BuiltinOptions{3, 2, 8 * kBlockCells - 1}, "targetCells");
+  EXPECT_NO_THROW(refineBlocks(BuiltinOptions{8, 1, kBlockCells}, "test", hashedPriority));
+  EXPECT_NO_THROW(refineBlocks(BuiltinOptions{1, 1, kBlockCells}, "test", hashedPriority));
 }
 
 }  // namespace

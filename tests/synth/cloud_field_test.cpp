@@ -242,7 +242,7 @@ TEST(CloudField, DeterministicPerSeed) {
 }
 
 TEST(CloudGenerator, CellsHoldTheFieldAtTheirCentres) {
-  GeneratorOptions o;
+  BuiltinOptions o;
   o.levels = 4;
   o.rootBlocks = 2;
   o.targetCells = 60'000;
@@ -269,7 +269,7 @@ TEST(CloudGenerator, FinestCellsHoldTheDensestGas) {
   // At this small size the finest blocks (8 cells) are wider than the filament cores, so their
   // mean density is only a few times the background; what must hold is the order.
   for (std::uint64_t seed : {1, 2, 3}) {
-    GeneratorOptions o;
+    BuiltinOptions o;
     o.levels = 5;
     o.rootBlocks = 2;
     o.targetCells = 150'000;

@@ -6,15 +6,15 @@
 
 #include <algorithm>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::synth {
 namespace {
 
 constexpr std::size_t kSplitCost = 7 * 512;
 
-GeneratorOptions small(std::uint64_t seed = 1) {
-  GeneratorOptions o;
+BuiltinOptions small(std::uint64_t seed = 1) {
+  BuiltinOptions o;
   o.levels = 4;
   o.rootBlocks = 2;
   o.targetCells = 60'000;
@@ -22,7 +22,7 @@ GeneratorOptions small(std::uint64_t seed = 1) {
   return o;
 }
 
-// The kinds that refine blocks within GeneratorOptions' budget; nest takes only the levels
+// The kinds that refine blocks within BuiltinOptions' budget; nest takes only the levels
 // (nest_generator_test.cpp).
 std::vector<std::string> blockKinds() {
   std::vector<std::string> kinds = generatorKinds();
@@ -61,7 +61,7 @@ TEST(Generators, UnknownKindNamesItAndListsTheKinds) {
 
 TEST(Generators, BadOptionsNameTheOption) {
   for (const std::string& kind : blockKinds()) {
-    const auto rejects = [&](GeneratorOptions o, const std::string& word) {
+    const auto rejects = [&](BuiltinOptions o, const std::string& word) {
       try {
         generate(kind, o);
         ADD_FAILURE() << kind << " accepted a bad " << word;
@@ -70,7 +70,7 @@ TEST(Generators, BadOptionsNameTheOption) {
         EXPECT_EQ(e.source(), "builtin:" + kind);
       }
     };
-    GeneratorOptions o = small();
+    BuiltinOptions o = small();
     o.levels = 0;
     rejects(o, "levels");
     o.levels = 9;
@@ -103,8 +103,8 @@ TEST(Generators, AnotherSeedGivesAnotherCloud) {
 
 TEST(Generators, KeepTheBudgetUseSeveralLevelsAndTileTheDomain) {
   for (const std::string& kind : blockKinds()) {
-    for (const GeneratorOptions& o :
-         {small(), GeneratorOptions{5, 1, 40'000, 3}, GeneratorOptions{3, 3, 100'000, 4}}) {
+    for (const BuiltinOptions& o :
+         {small(), BuiltinOptions{5, 1, 40'000, 3}, BuiltinOptions{3, 3, 100'000, 4}}) {
       SCOPED_TRACE(kind + " levels " + std::to_string(o.levels));
       const bricks::AmrField f = generate(kind, o);
       EXPECT_EQ(f.source(), "builtin:" + kind);
@@ -132,7 +132,7 @@ TEST(Generators, KeepTheBudgetUseSeveralLevelsAndTileTheDomain) {
 TEST(Generators, ChannelNames) {
   const auto names = [](const bricks::AmrField& f) {
     std::vector<std::string> out;
-    for (const bricks::Channel& c : f.channels()) out.push_back(c.name);
+    for (const Channel& c : f.channels()) out.push_back(c.name);
     return out;
   };
   const std::vector<std::string> velocity{"velx", "vely", "velz"};

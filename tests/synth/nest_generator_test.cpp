@@ -84,10 +84,10 @@ TEST(NestGenerator, CellsPerLevelTileTheUnitDomain) {
   for (const NestOptions& o :
        {nest(1), nest(2), nest(6), nest(18), nest(9, 11, 10), nest(30, 2, 2), nest(12, 3, 2)}) {
     SCOPED_TRACE("levels " + std::to_string(o.levels));
-    const bricks::AmrField f = generateNest(o);
+    const bricks::AmrField f = synth::generateNest(o);
     EXPECT_EQ(f.source(), "builtin:nest");
     EXPECT_EQ(f.cellsPerLevel(), expectedCellsPerLevel(o));
-    EXPECT_EQ(nestCellCount(o), double(f.cellCount()));
+    EXPECT_EQ(synth::nestCellCount(o), double(f.cellCount()));
     const std::int64_t extent = finestCellsPerAxis(o);
     Volume volume = 0;
     for (std::uint8_t level : f.levels()) volume += cubed(std::int64_t(1) << level);
@@ -105,7 +105,7 @@ TEST(NestGenerator, EveryLevelsCubeSurroundsTheCentre) {
   for (const NestOptions& o :
        {nest(6), nest(18), nest(9, 11, 10), nest(5, 8, 12), nest(30, 2, 2), nest(12, 3, 2)}) {
     SCOPED_TRACE("levels " + std::to_string(o.levels));
-    expectCubesAboutTheCentre(generateNest(o), o);
+    expectCubesAboutTheCentre(synth::generateNest(o), o);
   }
 }
 
@@ -120,7 +120,7 @@ TEST(NestGenerator, CubesNestOrAreRefusedForAnyCentre) {
         o.centre = {x, y, 0.47};
         SCOPED_TRACE(::testing::Message() << "blockCells " << blockCells << " centre " << x);
         const std::string error = testing::inputErrorOf([&] {
-          expectCubesAboutTheCentre(generateNest(o), o);
+          expectCubesAboutTheCentre(synth::generateNest(o), o);
           ++built;
         });
         if (error == "no error") continue;
@@ -135,9 +135,9 @@ TEST(NestGenerator, CubesNestOrAreRefusedForAnyCentre) {
 TEST(NestGenerator, VelocityIsTheSpiralAtCellCentres) {
   for (const NestOptions& o : {nest(6), nest(18)}) {
     SCOPED_TRACE("levels " + std::to_string(o.levels));
-    const bricks::AmrField f = generateNest(o);
-    const std::array<const bricks::Channel*, 3> v{&f.channel("velx"), &f.channel("vely"),
-                                                  &f.channel("velz")};
+    const bricks::AmrField f = synth::generateNest(o);
+    const std::array<const Channel*, 3> v{&f.channel("velx"), &f.channel("vely"),
+                                          &f.channel("velz")};
     double worst = 0.0;
     for (std::size_t i = 0; i < f.cellCount(); ++i) {
       const double width = std::ldexp(1.0, f.levels()[i]);
@@ -168,7 +168,7 @@ TEST(NestGenerator, TracesOfTheSpiralTurnAboutTheCentreAndMoveOut) {
 
 TEST(NestGenerator, BadOptionsNameTheOption) {
   const auto rejects = [](NestOptions o, const std::string& words) {
-    const std::string error = testing::inputErrorOf([&] { generateNest(o); });
+    const std::string error = testing::inputErrorOf([&] { synth::generateNest(o); });
     EXPECT_THAT(error, HasSubstr("builtin:nest"));
     EXPECT_THAT(error, HasSubstr(words));
   };
@@ -208,9 +208,9 @@ TEST(NestGenerator, BadOptionsNameTheOption) {
 // maxSpeed scales the faster cells' vectors down to it and leaves the slower ones as they were.
 TEST(NestGenerator, MaxSpeedCapsTheSpiral) {
   NestOptions o = nest(8);
-  const bricks::AmrField free = generateNest(o);
+  const bricks::AmrField free = synth::generateNest(o);
   o.maxSpeed = 0.05;
-  const bricks::AmrField capped = generateNest(o);
+  const bricks::AmrField capped = synth::generateNest(o);
   std::size_t scaled = 0, kept = 0;
   for (std::size_t i = 0; i < free.cellCount(); ++i) {
     glm::dvec3 a, b;
@@ -233,13 +233,13 @@ TEST(NestGenerator, MaxSpeedCapsTheSpiral) {
 }
 
 TEST(NestGenerator, BuiltinNestIsTheDefaultNestWithTheGeneratorsLevelsAndTime) {
-  GeneratorOptions g;
+  BuiltinOptions g;
   g.levels = 7;
   g.time = 0.5;
   const bricks::AmrField builtin = generate("nest", g);
   NestOptions o = nest(7);
   o.time = 0.5;
-  const bricks::AmrField direct = generateNest(o);
+  const bricks::AmrField direct = synth::generateNest(o);
   EXPECT_TRUE(std::ranges::equal(builtin.lowers(), direct.lowers()));
   EXPECT_TRUE(std::ranges::equal(builtin.levels(), direct.levels()));
   EXPECT_EQ(builtin.channel("velx").values, direct.channel("velx").values);

@@ -7,24 +7,39 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "../shared/line_state.h"
+#include "../shared/round_bindings.h"
 #include "../shared/round_params.h"
 #include "../shared/trace_codes.h"
 
 layout(push_constant, scalar) uniform CompactionBlock { CompactionParams pc; };
-layout(scalar, set = 0, binding = 0) readonly buffer LineRoundBuffer { LineRound lineRounds[]; };
-layout(scalar, set = 0, binding = 1) buffer PrefixBuffer { uvec2 prefix[]; };
-layout(scalar, set = 0, binding = 2) buffer BlockSumBuffer { uvec2 blockSums[]; };
-layout(scalar, set = 0, binding = 3) buffer SummaryBuffer { RoundSummary summary; };
-layout(scalar, set = 0, binding = 4) readonly buffer StatesBuffer { LineState states[]; };
-layout(scalar, set = 0, binding = 5) writeonly buffer NextStatesBuffer { LineState nextStates[]; };
-layout(scalar, set = 0, binding = 6) readonly buffer PositionBuffer { vec3 positions[]; };
-layout(scalar, set = 0, binding = 7) readonly buffer TimeBuffer { float times[]; };
-layout(scalar, set = 0, binding = 8) readonly buffer VectorBuffer { vec3 vectors[]; };
-layout(scalar, set = 0, binding = 9) readonly buffer RegionIdBuffer { int regionIds[]; };
-layout(scalar, set = 0, binding = 10) writeonly buffer DensePositionBuffer { vec3 densePositions[]; };
-layout(scalar, set = 0, binding = 11) writeonly buffer DenseTimeBuffer { float denseTimes[]; };
-layout(scalar, set = 0, binding = 12) writeonly buffer DenseVectorBuffer { vec3 denseVectors[]; };
-layout(scalar, set = 0, binding = 13) writeonly buffer DenseRegionIdBuffer { int denseRegionIds[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_LINE_ROUNDS)
+readonly buffer LineRoundBuffer { LineRound lineRounds[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_PREFIX)
+buffer PrefixBuffer { uvec2 prefix[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_BLOCK_SUMS)
+buffer BlockSumBuffer { uvec2 blockSums[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_SUMMARY)
+buffer SummaryBuffer { RoundSummary summary; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_STATES)
+readonly buffer StatesBuffer { LineState states[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_NEXT_STATES)
+writeonly buffer NextStatesBuffer { LineState nextStates[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_POSITIONS)
+readonly buffer PositionBuffer { vec3 positions[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_TIMES)
+readonly buffer TimeBuffer { float times[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_VECTORS)
+readonly buffer VectorBuffer { vec3 vectors[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_REGION_IDS)
+readonly buffer RegionIdBuffer { int regionIds[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_DENSE_POSITIONS)
+writeonly buffer DensePositionBuffer { vec3 densePositions[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_DENSE_TIMES)
+writeonly buffer DenseTimeBuffer { float denseTimes[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_DENSE_VECTORS)
+writeonly buffer DenseVectorBuffer { vec3 denseVectors[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_COMPACTION_DENSE_REGION_IDS)
+writeonly buffer DenseRegionIdBuffer { int denseRegionIds[]; };
 
 const uint kGroup = AMRSTREAM_COMPACTION_GROUP;
 shared uvec2 partial[kGroup];

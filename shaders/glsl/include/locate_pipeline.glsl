@@ -4,14 +4,15 @@
 #extension GL_EXT_ray_tracing : require
 #include "region_containment.glsl"
 
-layout(set = 0, binding = AMRSTREAM_LOCATE_BINDING) uniform accelerationStructureEXT regionScene;
+layout(set = 0, binding = AMRSTREAM_BINDING_TRACE_LOCATE)
+uniform accelerationStructureEXT regionScene;
 layout(location = 0) rayPayloadEXT int locatedRegion;
 
 // With the region hint (sampler.glsl), the ray is traced at every sample, with an empty cull
-// mask when the hint already gives the region: NVIDIA's driver 580 returned wrong traces when
-// traceRayEXT sat behind the hint's branch (traces ended early on an H200, where lavapipe and the
-// CPU agreed), and is right with the call in uniform control flow. An empty mask meets no
-// geometry, so such a ray costs a launch and a miss.
+// mask when the hint already gives the region: NVIDIA's driver 580 returns wrong traces with
+// traceRayEXT behind the hint's branch and right ones with the call in uniform control flow
+// (docs/performance-notes.md, "The pipeline's ray behind the hint's branch"). An empty mask
+// meets no geometry, so such a ray costs a launch and a miss.
 #define AMRSTREAM_LOCATE_EVERY_SAMPLE
 
 // The intersection shader recovers k from the ray's origin (latticeOfProbe), which is exact

@@ -1,9 +1,9 @@
 // The probe: one sample of the vector per point, for tests that compare every backend's point
 // location with brute force and for pathlines, whose host-side RK4 samples two snapshots per
-// stage. It reuses the tracing bindings, binding 5 holding the points (probePoints, cell
-// units, already wrapped; AMRSTREAM_PROBE_POINTS defined before amr_buffers.glsl); the region
-// found (-1 for none) goes to outRegions and the vector to outVectors, NaN where the sample is
-// located but invalid.
+// stage. It reuses the tracing bindings, AMRSTREAM_BINDING_TRACE_PROBE_POINTS holding the points
+// (probePoints, cell units, already wrapped; AMRSTREAM_PROBE_POINTS defined before
+// amr_buffers.glsl); the region found (-1 for none) goes to outRegions and the vector to
+// outVectors, NaN where the sample is located but invalid.
 void probeLocation(uint pointIndex) {
   const VectorSample s = sampleVector(ivec3(0), probePoints[pointIndex]);
   outRegions[pointIndex] = s.located ? s.region : -1;

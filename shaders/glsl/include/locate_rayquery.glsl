@@ -2,7 +2,8 @@
 #extension GL_EXT_ray_query : require
 #include "region_containment.glsl"
 
-layout(set = 0, binding = AMRSTREAM_LOCATE_BINDING) uniform accelerationStructureEXT regionScene;
+layout(set = 0, binding = AMRSTREAM_BINDING_TRACE_LOCATE)
+uniform accelerationStructureEXT regionScene;
 
 int locateInRegions(ivec3 k) {
   rayQueryEXT query;

@@ -2,10 +2,10 @@
 // (src/bricks/region_builder.hpp), from the start node of the point's cell in the grid at the
 // buffer's head (src/bricks/descent_tree.hpp). Stackless: every point takes exactly one path.
 
-// The tracer binds the tree at AMRSTREAM_LOCATE_BINDING; other kernels may define
+// The tracer binds the tree at AMRSTREAM_BINDING_TRACE_LOCATE; other kernels may define
 // AMRSTREAM_TREE_BINDING first.
 #ifndef AMRSTREAM_TREE_BINDING
-#define AMRSTREAM_TREE_BINDING AMRSTREAM_LOCATE_BINDING
+#define AMRSTREAM_TREE_BINDING AMRSTREAM_BINDING_TRACE_LOCATE
 #endif
 layout(scalar, set = 0, binding = AMRSTREAM_TREE_BINDING) readonly buffer RegionTreeBuffer {
   RegionTreeGrid treeGrid;

@@ -8,7 +8,8 @@ const float kMinWeightSum = AMRSTREAM_MIN_WEIGHT_SUM;
 
 // Specialization constant 4: the tracing kernels read the vector from dual cells
 // (VolumeBuffers::dualValues) through their address, with the dual region brick records at
-// binding 4; the tent interpolant only, in kernels built with AMRSTREAM_DUAL_ADDRESS.
+// AMRSTREAM_BINDING_TRACE_REGION_BRICKS; the tent interpolant only, in kernels built with
+// AMRSTREAM_DUAL_ADDRESS.
 layout(constant_id = 4) const bool kDualValues = false;
 
 #ifdef AMRSTREAM_DUAL_ADDRESS

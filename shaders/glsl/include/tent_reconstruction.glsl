@@ -43,7 +43,7 @@ float TENT_FUNCTION(Region region, ivec3 anchor, vec3 p, out TENT_TYPE weighted)
       const uint dual = brick.valueOffset + uint((lo.x + 1) + (brick.size.x + 1) *
                                                               ((lo.y + 1) + (brick.size.y + 1) * (lo.z + 1)));
       // Unrolled, the corners' weights and loads need not wait for each other (NVIDIA's compiler
-      // kept the loop otherwise); the sums keep their order.
+      // does not unroll the loop unasked); the sums keep their order.
       [[unroll]] for (int corner = 0; corner < 8; ++corner) {
         const vec3 offset = vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
         precise const vec3 axisWeight = mix(1.0 - frac, frac, offset);

@@ -2,7 +2,8 @@
 // volume hierarchy (src/render/tube_bvh.hpp), nearer child first.
 #include "capsule.glsl"
 
-layout(scalar, set = 0, binding = 10) readonly buffer TubeBvhBuffer { TubeBvhNode nodes[]; };
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_RENDER_TUBES)
+readonly buffer TubeBvhBuffer { TubeBvhNode nodes[]; };
 
 const uint kBvhStackSize = 64;
 

@@ -4,7 +4,8 @@
 #extension GL_EXT_ray_tracing : require
 #include "capsule.glsl"
 
-layout(set = 0, binding = 10) uniform accelerationStructureEXT tubeScene;
+layout(set = 0, binding = AMRSTREAM_BINDING_RENDER_TUBES)
+uniform accelerationStructureEXT tubeScene;
 layout(location = 0) rayPayloadEXT TubeHit tubePayload;
 
 TubeHit closestTube(vec3 o, vec3 d, float tMax) {

@@ -3,7 +3,8 @@
 #extension GL_EXT_ray_query : require
 #include "capsule.glsl"
 
-layout(set = 0, binding = 10) uniform accelerationStructureEXT tubeScene;
+layout(set = 0, binding = AMRSTREAM_BINDING_RENDER_TUBES)
+uniform accelerationStructureEXT tubeScene;
 
 TubeHit queryTubes(vec3 o, vec3 d, float tMax, bool anyHit) {
   TubeHit hit = TubeHit(tMax, kNoSegment);

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "amrstream/error.hpp"
 #include "formats/input_bytes.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats::amrex {

@@ -6,9 +6,9 @@
 #include <sstream>
 #include <string>
 
+#include "amrstream/error.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 
@@ -28,7 +28,7 @@ fs::path findJobInfo(const fs::path& directory) {
   return candidates.empty() ? fs::path() : candidates.front();
 }
 
-void readPeriodicity(const fs::path& jobInfo, bricks::DatasetInfo& info) {
+void readPeriodicity(const fs::path& jobInfo, DatasetInfo& info) {
   std::istringstream in(readWholeFile(jobInfo, "the job_info file"));
   const std::string key = "geometry.is_periodic";
   std::string line;
@@ -50,9 +50,9 @@ void readPeriodicity(const fs::path& jobInfo, bricks::DatasetInfo& info) {
 
 }  // namespace
 
-bricks::DatasetInfo readAmrexInfo(const fs::path& directory, double time,
-                                  const std::vector<int>& internalLevels) {
-  bricks::DatasetInfo info;
+DatasetInfo readAmrexInfo(const fs::path& directory, double time,
+                          const std::vector<int>& internalLevels) {
+  DatasetInfo info;
   info.format = "AMReX";
   info.time = time;
   const int finest = static_cast<int>(internalLevels.size()) - 1;

@@ -1,5 +1,5 @@
 #pragma once
-// What an AMReX plotfile says about itself (bricks::DatasetInfo):
+// What an AMReX plotfile says about itself (DatasetInfo):
 //   time         the Header's time
 //   periodicity  `geometry.is_periodic = X Y Z` (0 or 1 each) in the plotfile folder's `job_info`
 //                (else a file named `*_job_info`, as PeleLMeX writes), where there is one;
@@ -11,13 +11,13 @@
 #include <filesystem>
 #include <vector>
 
-#include "bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 
 namespace amrstream::formats {
 
 // `internalLevels[l]`: our level of plotfile level l (log2 of its cell width in finest cells).
 // Throws InputError naming the job_info file and line when its is_periodic line is malformed.
-bricks::DatasetInfo readAmrexInfo(const std::filesystem::path& directory, double time,
-                                  const std::vector<int>& internalLevels);
+DatasetInfo readAmrexInfo(const std::filesystem::path& directory, double time,
+                          const std::vector<int>& internalLevels);
 
 }  // namespace amrstream::formats

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "formats/amrex/amrex_fab.hpp"
 #include "formats/amrex/amrex_info.hpp"
 #include "formats/amrex/amrex_text.hpp"
@@ -19,7 +20,6 @@
 #include "formats/cell_sink.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats {
@@ -251,7 +251,7 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
                        fmt::format("finest dx {} differs from (prob_hi - prob_lo) / cells = {}",
                                    h.dx[h.finestLevel][axis], spacing[axis]));
   }
-  const bricks::WorldTransform transform{h.probLo, spacing};
+  const WorldTransform transform{h.probLo, spacing};
   const glm::ivec3 domainCorners[] = {glm::ivec3(0), glm::ivec3(finestDomain.size()) - 1};
   const std::uint8_t finestLevels[] = {0, 0};
   if (const auto problem = unrepresentablePositions(transform, domainCorners, finestLevels))

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats::amrex {

@@ -30,7 +30,6 @@ class Cursor {
   int smallInt(const char* what, long long low, long long high);
   double real(const char* what);           // finite
   glm::ivec3 intVector(const char* what);  // (a,b,c), each within +-kMaxBoxCoordinate
-  const std::string& source() const { return source_; }
 
  private:
   std::string text_;

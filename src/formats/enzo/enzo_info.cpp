@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 
 namespace amrstream::formats {
 
@@ -14,7 +14,7 @@ constexpr int kEnzoPeriodicBoundary = 3;
 constexpr double kMegaparsecCm = 3.0856775814913673e24;
 constexpr double kHubble100PerSecond = 1e7 / kMegaparsecCm;  // 100 km/s/Mpc in 1/s
 
-void readPeriodicity(const EnzoParameters& p, bricks::DatasetInfo& info) {
+void readPeriodicity(const EnzoParameters& p, DatasetInfo& info) {
   const auto left = p.threeNumbers("LeftFaceBoundaryCondition");
   const auto right = p.threeNumbers("RightFaceBoundaryCondition");
   if (!left || !right) return;
@@ -23,7 +23,7 @@ void readPeriodicity(const EnzoParameters& p, bricks::DatasetInfo& info) {
     info.periodic[a] = (*left)[a] == kEnzoPeriodicBoundary && (*right)[a] == kEnzoPeriodicBoundary;
 }
 
-void readUnits(const EnzoParameters& p, bricks::DatasetInfo& info) {
+void readUnits(const EnzoParameters& p, DatasetInfo& info) {
   info.lengthUnit = "code units";
   info.timeUnit = "code units";
   if (p.number("ComovingCoordinates").value_or(0.0) == 1.0) {
@@ -62,8 +62,8 @@ void readUnits(const EnzoParameters& p, bricks::DatasetInfo& info) {
 
 }  // namespace
 
-bricks::DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
-  bricks::DatasetInfo info;
+DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
+  DatasetInfo info;
   info.format = "Enzo";
   info.finestFileLevel = finestLevel;
   info.levelsCountDown = true;

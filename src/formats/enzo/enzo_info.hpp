@@ -1,5 +1,5 @@
 #pragma once
-// What an Enzo parameter file says about its snapshot (bricks::DatasetInfo):
+// What an Enzo parameter file says about its snapshot (DatasetInfo):
 //   time         InitialTime (the time of the snapshot, in code units)
 //   periodicity  LeftFaceBoundaryCondition / RightFaceBoundaryCondition, one value per axis: an
 //                axis is periodic when both faces are 3 (Enzo's `periodic` boundary type)
@@ -14,13 +14,13 @@
 
 #include <optional>
 
-#include "bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 #include "formats/enzo/enzo_parameters.hpp"
 
 namespace amrstream::formats {
 
 // `parameters` may be null (no parameter file); `finestLevel` is the finest Enzo level present.
-bricks::DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel);
+DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel);
 
 // The snapshot's time alone (InitialTime; nullopt when absent).
 std::optional<double> readEnzoTime(const EnzoParameters& parameters);

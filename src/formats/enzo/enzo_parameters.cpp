@@ -5,9 +5,9 @@
 #include <charconv>
 #include <cmath>
 
+#include "amrstream/error.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 

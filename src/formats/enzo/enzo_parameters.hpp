@@ -17,7 +17,6 @@ class EnzoParameters {
 
   const std::filesystem::path& file() const { return file_; }
   const std::map<std::string, std::string>& values() const { return values_; }
-  bool has(const std::string& key) const { return values_.contains(key); }
 
   // Absent keys give nullopt; a value that is not exactly one finite number (or three) throws,
   // naming the file, the key and the text.

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
 #include "formats/cell_sink.hpp"
 #include "formats/enzo/enzo_info.hpp"
@@ -22,7 +23,6 @@
 #include "formats/hdf5_handle.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
-#include "util/input_error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats {
@@ -50,7 +50,6 @@ struct Grid {
 struct Domain {
   glm::dvec3 left{0.0}, right{1.0};
   glm::ivec3 topDims{0};
-  bool known = false;
 };
 
 std::string trim(std::string s) {
@@ -107,7 +106,6 @@ Domain readParameters(const EnzoParameters& parameters) {
   }
   if (kv.contains("TopGridRank") && need("TopGridRank") != "3")
     throw InputError(file, "only 3D data (TopGridRank 3) is supported");
-  d.known = true;
   return d;
 }
 
@@ -418,11 +416,14 @@ Siblings findSiblings(const fs::path& file) {
   return s;
 }
 
-}  // namespace
+// The grid table, from `.harrays` when present (with the field files the hierarchy names, if
+// any), else from `.hierarchy`.
+struct GridTable {
+  std::vector<Grid> grids;
+  fs::path table;
+};
 
-bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, WindowedRead* read) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const auto sib = findSiblings(file);
+GridTable readGridTable(const fs::path& file, const Siblings& sib) {
   const bool hasHierarchy = present(sib.hierarchy);
   const bool hasHarrays = present(sib.harrays);
   if (!hasHierarchy && !hasHarrays)
@@ -447,9 +448,13 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
     table = sib.hierarchy;
     grids = std::move(text);
   }
+  return {std::move(grids), std::move(table)};
+}
 
+// The domain from the parameter file, read into `parameters`, when there is one.
+Domain readDomain(const Siblings& sib, const std::vector<Grid>& grids,
+                  std::optional<EnzoParameters>& parameters) {
   Domain domain;
-  std::optional<EnzoParameters> parameters;
   std::error_code ec;
   if (present(sib.parameter) && !fs::is_directory(sib.parameter, ec)) {
     parameters.emplace(sib.parameter);
@@ -460,12 +465,94 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
     domain.right = grids[0].right;
     domain.topDims = grids[0].dims;
   }
+  return domain;
+}
+
+// Reading the grids' cells into a sink: the field files, each opened once, and the channels,
+// named by the first grid read.
+struct GridReading {
+  const std::vector<Grid>& grids;
+  const fs::path& table;
+  const fs::path& dir;
+  int finest;
+  CellSink& sink;
+  std::vector<std::string> channels;
+  std::map<std::string, Handle> files;
+};
+
+// The channels: every dataset of the first grid read but the particles' (particle_*).
+void listChannels(GridReading& r, hid_t group, const fs::path& path, const std::string& groupName) {
+  std::vector<std::string> names;
+  if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) < 0)
+    throw InputError(path.string(), fmt::format("HDF5 could not list group {}", groupName));
+  for (auto& name : names)
+    if (!name.starts_with("particle_")) r.channels.push_back(name);
+  if (r.channels.empty())
+    throw InputError(path.string(), fmt::format("group {} has no field datasets", groupName));
+  for (const std::string& name : r.channels) r.sink.addChannel(name);
+}
+
+// The cells of `g` that no finer grid covers, with their values from `fields` when `wanted`.
+void addCells(GridReading& r, const Grid& g, bool wanted,
+              const std::vector<std::vector<double>>& fields, const std::vector<bool>& covered,
+              const fs::path& path, const std::string& groupName) {
+  const auto level = static_cast<std::uint8_t>(r.finest - g.level);
+  std::size_t index = 0;
+  for (int k = 0; k < g.dims.z; ++k)
+    for (int j = 0; j < g.dims.y; ++j)
+      for (int i = 0; i < g.dims.x; ++i, ++index) {
+        if (covered[index]) continue;
+        const std::size_t at = r.sink.cell(g.lower + glm::ivec3(i, j, k) * g.width, level);
+        for (std::size_t c = 0; wanted && c < r.channels.size(); ++c) {
+          const double value = fields[c][index];
+          if (const auto problem = unusableFieldValue(value))
+            throw InputError(path.string(),
+                             fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
+                                         "{}) is {}",
+                                         groupName, r.channels[c], value, i, j, k, *problem));
+          r.sink.set(c, at, static_cast<float>(value));
+        }
+      }
+}
+
+// One grid a window does not skip: its field file and group, the channels if not yet known, its
+// fields when `wanted`, its cells.
+void readGrid(GridReading& r, const Grid& g, bool wanted) {
+  const fs::path path = r.dir / g.file;
+  auto it = r.files.find(g.file);
+  if (it == r.files.end()) {
+    if (!present(path))
+      throw InputError(path.string(), fmt::format("grid {}'s field file is missing", g.id));
+    it = r.files.emplace(g.file, openHdf5(path)).first;
+  }
+  const auto groupName = fmt::format("/Grid{:08d}", g.id);
+  const auto group = checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose,
+                             path, fmt::format("open group {}", groupName));
+  if (r.channels.empty()) listChannels(r, group.get(), path, groupName);
+  // The fields first: their storage bounds the grid's size before anything else is allocated.
+  std::vector<std::vector<double>> fields;
+  if (wanted)
+    for (const std::string& name : r.channels)
+      fields.push_back(readField(group.get(), path, groupName, name, g.dims));
+  const auto covered = coveredCells(g, r.grids, r.table);
+
+  addCells(r, g, wanted, fields, covered, path, groupName);
+}
+
+}  // namespace
+
+bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, WindowedRead* read) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const auto sib = findSiblings(file);
+  auto [grids, table] = readGridTable(file, sib);
+
+  std::optional<EnzoParameters> parameters;
+  const Domain domain = readDomain(sib, grids, parameters);
   const glm::dvec3 finestDx = placeGrids(grids, domain, table);
 
   CellSink sink(window, file.string(), read);
-  std::vector<std::string> channels;
-  std::map<std::string, Handle> files;
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;
+  GridReading reading{grids, table, sib.dir, finest, sink, {}, {}};
 
   for (const auto& g : grids) {
     const bool wanted = !window || window->meets(g.lower, g.lower + g.dims * g.width, g.width);
@@ -473,57 +560,14 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
       ++read->pieces;
       read->piecesRead += wanted;
     }
-    if (!wanted && sink.skipsPieces() && !channels.empty()) {
+    if (!wanted && sink.skipsPieces() && !reading.channels.empty()) {
       const auto covered = coveredCells(g, grids, table);
       sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)));
       continue;
     }
-    const fs::path path = sib.dir / g.file;
-    auto it = files.find(g.file);
-    if (it == files.end()) {
-      if (!present(path))
-        throw InputError(path.string(), fmt::format("grid {}'s field file is missing", g.id));
-      it = files.emplace(g.file, openHdf5(path)).first;
-    }
-    const auto groupName = fmt::format("/Grid{:08d}", g.id);
-    const auto group = checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose,
-                               path, fmt::format("open group {}", groupName));
-    if (channels.empty()) {
-      std::vector<std::string> names;
-      if (H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) < 0)
-        throw InputError(path.string(), fmt::format("HDF5 could not list group {}", groupName));
-      for (auto& name : names)
-        if (!name.starts_with("particle_")) channels.push_back(name);
-      if (channels.empty())
-        throw InputError(path.string(), fmt::format("group {} has no field datasets", groupName));
-      for (const std::string& name : channels) sink.addChannel(name);
-    }
-    // The fields first: their storage bounds the grid's size before anything else is allocated.
-    std::vector<std::vector<double>> fields;
-    if (wanted)
-      for (const std::string& name : channels)
-        fields.push_back(readField(group.get(), path, groupName, name, g.dims));
-    const auto covered = coveredCells(g, grids, table);
-
-    const auto level = static_cast<std::uint8_t>(finest - g.level);
-    std::size_t index = 0;
-    for (int k = 0; k < g.dims.z; ++k)
-      for (int j = 0; j < g.dims.y; ++j)
-        for (int i = 0; i < g.dims.x; ++i, ++index) {
-          if (covered[index]) continue;
-          const std::size_t at = sink.cell(g.lower + glm::ivec3(i, j, k) * g.width, level);
-          for (std::size_t c = 0; wanted && c < channels.size(); ++c) {
-            const double value = fields[c][index];
-            if (const auto problem = unusableFieldValue(value))
-              throw InputError(path.string(),
-                               fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
-                                           "{}) is {}",
-                                           groupName, channels[c], value, i, j, k, *problem));
-            sink.set(c, at, static_cast<float>(value));
-          }
-        }
+    readGrid(reading, g, wanted);
   }
-  const bricks::WorldTransform transform{domain.left, finestDx};
+  const WorldTransform transform{domain.left, finestDx};
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     throw InputError(table.string(), "the grids cannot be placed: " + *problem);
   bricks::AmrField field = sink.finish(transform);

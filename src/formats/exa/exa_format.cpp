@@ -14,12 +14,12 @@
 #include <span>
 #include <sstream>
 
+#include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
 #include "formats/file_set_writer.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
 #include "util/first_failing.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 
@@ -34,9 +34,9 @@ constexpr std::uint64_t kMaxCells = std::uint64_t{1} << 31;
 struct ExaConfig {
   std::filesystem::path cells;
   std::vector<std::pair<std::string, std::filesystem::path>> scalars;
-  bricks::WorldTransform transform;
+  WorldTransform transform;
   int originLine = 0, spacingLine = 0;  // 0: not in the file, the default
-  bricks::DatasetInfo info;
+  DatasetInfo info;
 };
 
 constexpr const char* kDirectives =
@@ -253,7 +253,7 @@ ExaCells readExaCells(const std::filesystem::path& config) {
     openScalars(in, path, lowers.size(), exa.cells);  // a missing or short file fails first
   }
   bricks::AmrField field(std::move(lowers), std::move(levels), {}, exa.transform, config.string());
-  bricks::DatasetInfo info = exa.info;
+  DatasetInfo info = exa.info;
   info.format = "ExaBricks";
   info.finestFileLevel = 0;
   info.levelsCountDown = false;
@@ -295,7 +295,7 @@ void requireWritableName(const std::string& name, const std::string& what,
 }
 
 // The `time`, `time-unit`, `length-unit` and `periodic` lines for what the field's info knows.
-std::string infoLines(const bricks::DatasetInfo& info, const std::filesystem::path& exaPath) {
+std::string infoLines(const DatasetInfo& info, const std::filesystem::path& exaPath) {
   std::string lines;
   if (info.time) lines += fmt::format("time {:.17g}\n", *info.time);
   for (const auto& [keyword, text] :
@@ -324,7 +324,7 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
   // Everything a line must hold is checked before any file is written.
   const std::string info = infoLines(field.info(), exaPath);
   requireWritableName(base, "file name prefix", exaPath);
-  for (const bricks::Channel& channel : field.channels())
+  for (const Channel& channel : field.channels())
     requireWritableName(channel.name, "channel name", exaPath);
 
   std::vector<std::int32_t> cells(4 * field.cellCount());
@@ -341,12 +341,12 @@ std::filesystem::path writeExa(const bricks::AmrField& field, const std::filesys
   std::ostringstream config;
   config << "# amrstream ExaBricks export of " << field.source() << "\n";
   config << "cells " << file(".cells") << "\n";
-  for (const bricks::Channel& channel : field.channels()) {
+  for (const Channel& channel : field.channels()) {
     const std::string name = file("." + channel.name + ".scalars");
     files.add(dir / name, bytesOf(channel.values.data(), channel.values.size() * sizeof(float)));
     config << "scalar " << channel.name << " " << name << "\n";
   }
-  const bricks::WorldTransform& t = field.transform();
+  const WorldTransform& t = field.transform();
   config << fmt::format("origin {:.17g} {:.17g} {:.17g}\n", t.origin.x, t.origin.y, t.origin.z);
   config << fmt::format("spacing {:.17g} {:.17g} {:.17g}\n", t.spacing.x, t.spacing.y, t.spacing.z);
   config << info;

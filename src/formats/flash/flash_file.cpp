@@ -1,6 +1,6 @@
 #include "formats/flash/flash_file.hpp"
 
-#include "util/input_error.hpp"
+#include "amrstream/error.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream::formats::flash {

@@ -31,9 +31,8 @@ std::optional<double> readFlashTime(const FlashFile& file) {
   return time;
 }
 
-bricks::DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel,
-                                  int dimensionality) {
-  bricks::DatasetInfo info;
+DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int dimensionality) {
+  DatasetInfo info;
   info.format = "FLASH";
   info.time = readFlashTime(file);
 

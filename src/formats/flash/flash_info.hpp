@@ -1,5 +1,5 @@
 #pragma once
-// What a FLASH file says about itself (bricks::DatasetInfo):
+// What a FLASH file says about itself (DatasetInfo):
 //   time         `real scalars` "time"
 //   units        `string runtime parameters` "pc_unitsbase": "CGS" (cm, s) or "MKS" (m, s); FLASH
 //                works in CGS unless that parameter says otherwise, so without it CGS is assumed
@@ -12,13 +12,12 @@
 
 #include <optional>
 
-#include "bricks/dataset_info.hpp"
+#include "amrstream/dataset_info.hpp"
 #include "formats/flash/flash_file.hpp"
 
 namespace amrstream::formats::flash {
 
-bricks::DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel,
-                                  int dimensionality);
+DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int dimensionality);
 
 // The time alone (`real scalars` "time"; nullopt when absent or not finite).
 std::optional<double> readFlashTime(const FlashFile& file);

@@ -12,12 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
 #include "formats/cell_sink.hpp"
 #include "formats/flash/flash_file.hpp"
 #include "formats/flash/flash_info.hpp"
 #include "formats/hdf5_checks.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -252,7 +252,7 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
         }
   }
 
-  const bricks::WorldTransform transform{domainLo, dxf};
+  const WorldTransform transform{domainLo, dxf};
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     file.fail("bounding box", "the leaves cannot be placed: " + *problem);
 

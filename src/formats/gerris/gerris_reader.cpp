@@ -14,10 +14,10 @@
 #include <utility>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
 #include "formats/input_bytes.hpp"
 #include "formats/text_numbers.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::formats {
 namespace {
@@ -101,23 +101,30 @@ struct Leaf {
   int line;
 };
 
-}  // namespace
+// The value columns: every column but x, y, z and Lev, each a channel without values yet.
+struct ValueColumns {
+  std::vector<Channel> channels;
+  std::vector<int> columns;  // the column of each channel
+};
 
-bricks::AmrField readGerris(const std::filesystem::path& file) {
-  const std::string source = file.string();
-  std::ifstream in;
-  std::uint64_t size = 0, consumed = 0;
-  const Columns columns = readHeader(in, file, size, consumed);
-  std::string line;
-
-  std::vector<bricks::Channel> channels;
-  std::vector<int> channelColumns;
+ValueColumns valueColumns(const Columns& columns) {
+  ValueColumns values;
   for (int c = 0; c < static_cast<int>(columns.names.size()); ++c) {
     if (c == columns.x || c == columns.y || c == columns.z || c == columns.level) continue;
-    channels.push_back({columns.names[c], {}});
-    channelColumns.push_back(c);
+    values.channels.push_back({columns.names[c], {}});
+    values.columns.push_back(c);
   }
+  return values;
+}
 
+// The rows after the header, from `in`: their leaves, and their values appended to the channels.
+// `consumed` counts on from the header's bytes; `fileSize` is the file's size when opened.
+std::vector<Leaf> readLeaves(std::ifstream& in, const std::string& source, const Columns& columns,
+                             ValueColumns& values, std::uint64_t fileSize,
+                             std::uint64_t& consumed) {
+  std::vector<Channel>& channels = values.channels;
+  const std::vector<int>& channelColumns = values.columns;
+  std::string line;
   std::vector<Leaf> leaves;
   std::vector<double> row(columns.names.size());
   for (int number = 2; std::getline(in, line); ++number) {
@@ -158,12 +165,21 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
     }
   }
   // `consumed` counts a line break after the last line too, which the file may lack.
-  if (in.bad() || consumed < size)
+  if (in.bad() || consumed < fileSize)
     throw InputError(source, fmt::format("read {} of its {} bytes; the file is shorter than it "
                                          "was a moment ago (changed while being read?)",
-                                         std::min(consumed, size), size));
-  if (leaves.empty()) throw InputError(source, "the file has a header but no cells");
+                                         std::min(consumed, fileSize), fileSize));
+  return leaves;
+}
 
+// The finest lattice of the leaves: its level, its cell size and the domain corner on it.
+struct Lattice {
+  int finest = 0;
+  double finestSize = 1.0;
+  glm::dvec3 origin{0.0};
+};
+
+Lattice finestLattice(const std::vector<Leaf>& leaves, const std::string& source) {
   int finest = 0, coarsest = kMaxGerrisLevel;
   glm::dvec3 lowest(std::numeric_limits<double>::max());
   for (const Leaf& leaf : leaves) {
@@ -177,32 +193,53 @@ bricks::AmrField readGerris(const std::filesystem::path& file) {
   const double finestSize = std::ldexp(1.0, -finest);
   // Snap the domain corner onto the finest lattice -1/2 + k * finestSize.
   const glm::dvec3 origin = glm::round((lowest + 0.5) / finestSize) * finestSize - 0.5;
+  return {finest, finestSize, origin};
+}
 
-  std::vector<glm::ivec3> lowers;
-  std::vector<std::uint8_t> levels;
+// The leaves' lower corners and levels in finest cells from the lattice's origin.
+void placeLeaves(const std::vector<Leaf>& leaves, const Lattice& lattice, const std::string& source,
+                 std::vector<glm::ivec3>& lowers, std::vector<std::uint8_t>& levels) {
   lowers.reserve(leaves.size());
   levels.reserve(leaves.size());
   const double maxExtent = std::ldexp(1.0, bricks::kMaxExtentBits);
   for (const Leaf& leaf : leaves) {
-    const glm::dvec3 corner =
-        glm::round((leaf.centre - 0.5 * std::ldexp(1.0, -leaf.level) - origin) / finestSize);
+    const glm::dvec3 corner = glm::round(
+        (leaf.centre - 0.5 * std::ldexp(1.0, -leaf.level) - lattice.origin) / lattice.finestSize);
     if (glm::any(glm::greaterThanEqual(corner, glm::dvec3(maxExtent))))
       throw InputError(fmt::format("{}:{}", source, leaf.line),
                        fmt::format("the cell lies more than 2^{} finest cells from the domain "
                                    "corner",
                                    bricks::kMaxExtentBits));
     lowers.emplace_back(corner);
-    levels.push_back(static_cast<std::uint8_t>(finest - leaf.level));
+    levels.push_back(static_cast<std::uint8_t>(lattice.finest - leaf.level));
   }
-  const bricks::WorldTransform transform{origin, glm::dvec3(finestSize)};
+}
+
+}  // namespace
+
+bricks::AmrField readGerris(const std::filesystem::path& file) {
+  const std::string source = file.string();
+  std::ifstream in;
+  std::uint64_t size = 0, consumed = 0;
+  const Columns columns = readHeader(in, file, size, consumed);
+
+  ValueColumns values = valueColumns(columns);
+  const std::vector<Leaf> leaves = readLeaves(in, source, columns, values, size, consumed);
+  if (leaves.empty()) throw InputError(source, "the file has a header but no cells");
+  const Lattice lattice = finestLattice(leaves, source);
+
+  std::vector<glm::ivec3> lowers;
+  std::vector<std::uint8_t> levels;
+  placeLeaves(leaves, lattice, source, lowers, levels);
+  const WorldTransform transform{lattice.origin, glm::dvec3(lattice.finestSize)};
   if (const auto problem = unrepresentablePositions(transform, lowers, levels))
     throw InputError(source, "the cells cannot be placed: " + *problem);
-  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(channels), transform,
-                         source);
-  bricks::DatasetInfo info;
+  bricks::AmrField field(std::move(lowers), std::move(levels), std::move(values.channels),
+                         transform, source);
+  DatasetInfo info;
   info.format = "Gerris";
   info.time = columns.time;
-  info.finestFileLevel = finest;
+  info.finestFileLevel = lattice.finest;
   info.levelsCountDown = true;
   info.levelName = "Gerris level (cell size 2^-level of the root box)";
   field.setInfo(std::move(info));

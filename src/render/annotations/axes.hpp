@@ -63,7 +63,7 @@ struct AxesLayout {
 // Nothing is shown when the box's centre lies behind a perspective eye.
 AxesLayout layoutAxes(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
                       glm::dvec3 lowerPhysical, glm::dvec3 upperPhysical,
-                      const bricks::WorldTransform& transform, int labelPixelSize);
+                      const WorldTransform& transform, int labelPixelSize);
 
 // The edges, marks and labels of every shown axis in `colour`, clipped to the image.
 void drawAxes(Image& image, const AxesLayout& layout, Rgba8 colour);

@@ -133,8 +133,7 @@ struct Box {
 };
 
 AxisLayout layoutAxis(int axis, const Box& box, const Projector& project,
-                      const bricks::WorldTransform& transform, int labelPixelSize,
-                      const Spacing& space) {
+                      const WorldTransform& transform, int labelPixelSize, const Spacing& space) {
   AxisLayout layout;
   layout.axis = axis;
   const std::optional<Edge> edge = outermostEdge(axis, box.projected, box.centre);
@@ -196,7 +195,7 @@ void leaveOutOverlappingLabels(AxesLayout& layout, int spacing) {
 
 AxesLayout layoutAxes(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
                       glm::dvec3 lowerPhysical, glm::dvec3 upperPhysical,
-                      const bricks::WorldTransform& transform, int labelPixelSize) {
+                      const WorldTransform& transform, int labelPixelSize) {
   const Spacing space = spacingFor(labelPixelSize);
   AxesLayout layout;
   layout.labelPixelSize = labelPixelSize;

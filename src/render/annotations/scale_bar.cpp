@@ -25,7 +25,7 @@ double roundLengthAtMost(double most) {
 // The view's height in cell units is 2 distance tan(fovY / 2) at the target, in either
 // projection (camera.hpp).
 double pixelsPerPhysicalUnit(const OrbitCamera& camera, std::uint32_t height,
-                             const bricks::WorldTransform& transform) {
+                             const WorldTransform& transform) {
   const double viewHeight = 2.0 * camera.distance * halfHeightAtUnitDistance(camera);
   const glm::dvec3 spacing = glm::abs(transform.spacing);
   const double cellSide = (spacing.x + spacing.y + spacing.z) / 3.0;
@@ -36,7 +36,7 @@ double pixelsPerPhysicalUnit(const OrbitCamera& camera, std::uint32_t height,
 }  // namespace
 
 ScaleBarLayout layoutScaleBar(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
-                              const bricks::WorldTransform& transform, std::string unit,
+                              const WorldTransform& transform, std::string unit,
                               int labelPixelSize) {
   ScaleBarLayout layout;
   layout.labelPixelSize = labelPixelSize;

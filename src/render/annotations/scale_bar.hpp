@@ -33,7 +33,7 @@ struct ScaleBarLayout {
 // cell counts as the mean of its three sides. labelPixelSize: overlayLabelPixelSize suits; the
 // bar sits above the triad laid out with the same size.
 ScaleBarLayout layoutScaleBar(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
-                              const bricks::WorldTransform& transform, std::string unit,
+                              const WorldTransform& transform, std::string unit,
                               int labelPixelSize);
 
 // The bar and its label in `colour`; nothing when the layout's length is 0.

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/error.hpp"
 #include "render/image/png_error_trap.hpp"
 #include "render/image/png_io.hpp"
-#include "util/input_error.hpp"
 
 namespace amrstream::render {
 namespace {

@@ -1,0 +1,46 @@
+#pragma once
+// What an input file says about itself beyond its cells: the snapshot's time, the units of time
+// and of the physical coordinates, the periodic axes, and how the file numbers its levels. The
+// readers fill it from the file alone; nothing here is guessed from the data.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace amrstream {
+
+// What an input file says about itself beyond its cells; every member may be unknown.
+struct DatasetInfo {
+  std::string format;          // "FLASH", "Enzo", "AMReX", "Gerris", "ExaBricks", "builtin"
+  std::optional<double> time;  // simulation time of the snapshot, in timeUnit
+  std::string timeUnit;        // e.g. "s", or "code units (1 = 2.5e15 s)"; empty: unknown
+  std::string lengthUnit;      // unit of the physical coordinates, e.g. "cm", "m", "code units (1
+                               // = 3.1e24 cm)"; empty: unknown
+  std::array<bool, 3> periodic{};  // axes the file declares periodic
+  bool periodicKnown = false;      // whether the file says anything about periodicity
+  // The file's own level numbers: internal level L (0 = finest, see Dataset::levels) is the file's
+  // level finestFileLevel - L when levelsCountDown, else finestFileLevel + L (ExaBricks: 0 + L).
+  int finestFileLevel = 0;
+  bool levelsCountDown = true;
+  std::string levelName;  // how the file names levels, e.g. "FLASH refine level (1 = root)", "Enzo
+                          // level (0 = root grid)"
+  int fileLevel(int internalLevel) const;
+
+  // Where the file states them: the time unit in seconds and the length unit in centimetres.
+  std::optional<double> timeUnitSeconds;
+  std::optional<double> lengthUnitCentimetres;
+  // Only for files whose levels are not one refinement by 2 apart (AMReX refinement ratio 4):
+  // the file level of each internal level, -1 where no file level has that cell width. When not
+  // empty, fileLevel() reads it instead of the formula above.
+  std::vector<int> fileLevelOfInternal;
+};
+
+// ", t = 0.82 code units (1 = 1.4e+16 s), lengths in cm": the time and the units the file
+// states, for a one-line summary; empty when it states none of them.
+std::string timeAndUnitsClause(const DatasetInfo& info);
+
+// "x y z", "x" or "none" for the declared periodic axes; "unknown" when the file says nothing.
+std::string periodicAxesText(const DatasetInfo& info);
+
+}  // namespace amrstream

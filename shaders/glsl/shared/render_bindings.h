@@ -1,0 +1,21 @@
+// The descriptor bindings of the rendering kernels (set 0, include/render_buffers.glsl), shared
+// with the host that writes them (src/render/tube_renderer.cpp).
+#ifndef AMRSTREAM_SHARED_RENDER_BINDINGS_H
+#define AMRSTREAM_SHARED_RENDER_BINDINGS_H
+
+#define AMRSTREAM_BINDING_RENDER_PARAMS 0  // the uniform RenderParams
+#define AMRSTREAM_BINDING_RENDER_BRICKS 1
+#define AMRSTREAM_BINDING_RENDER_SCALARS 2
+#define AMRSTREAM_BINDING_RENDER_REGIONS 3
+#define AMRSTREAM_BINDING_RENDER_REGION_BRICKS 4
+#define AMRSTREAM_BINDING_RENDER_REGION_TREE 5
+#define AMRSTREAM_BINDING_RENDER_SEGMENTS 6
+#define AMRSTREAM_BINDING_RENDER_COLOUR_MAP 7
+#define AMRSTREAM_BINDING_RENDER_ACCUMULATION 8
+#define AMRSTREAM_BINDING_RENDER_PIXELS 9
+// The backend's tube structure: the BVH (compute), or an acceleration structure.
+#define AMRSTREAM_BINDING_RENDER_TUBES 10
+#define AMRSTREAM_BINDING_RENDER_SCALAR_GRADIENTS 11
+#define AMRSTREAM_RENDER_BINDING_COUNT 12
+
+#endif

@@ -1,0 +1,32 @@
+#pragma once
+// Where the command line reports: the library's lines on stdout, each taking a progress line off
+// the terminal first, and the progress of each stage on stderr (progress.hpp).
+
+#include <memory>
+
+#include "amrstream/log.hpp"
+
+namespace amrstream::cli {
+
+// A Reporter printing to the console; its progress lines end when it is destroyed.
+class Console {
+ public:
+  Console();
+  ~Console();
+  Console(const Console&) = delete;
+  Console& operator=(const Console&) = delete;
+  const Reporter& reporter() const { return reporter_; }
+  operator const Reporter&() const { return reporter_; }
+  // Prints a line of the command's own, taking a progress line off the terminal first.
+  void say(const std::string& line) const { reporter_.say(line); }
+
+ private:
+  struct Stages;
+  std::shared_ptr<Stages> stages_;
+  Reporter reporter_;
+};
+
+// Prints a line on stdout.
+void printLine(const std::string& line);
+
+}  // namespace amrstream::cli

@@ -1,0 +1,26 @@
+#pragma once
+// The options of the trace job that `trace`, `render` and `view` share: the dataset, the vector,
+// the point data, the seeding, the stepping and the backend.
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <string>
+
+#include "amrstream/field.hpp"
+#include "amrstream/seeding.hpp"
+#include "amrstream/trace_job.hpp"
+
+namespace amrstream::cli {
+
+// The seeding options (--seeds, --seed-box, --seed-line, --seed-grid, --seed-density, --count,
+// ..., and --seeds-out unless `seedsOut` is null) and the field options (--vector, --point-data,
+// --periodic, --interpolant).
+void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string* seedsOut);
+void addFieldOptions(CLI::App& command, FieldOptions& field);
+// --backend and --device.
+void addBackendOptions(CLI::App& command, BackendRequest& backend);
+
+// Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
+void addTraceJobOptions(CLI::App& command, TraceJob& options, std::size_t defaultCount = 256);
+
+}  // namespace amrstream::cli

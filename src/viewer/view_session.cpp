@@ -1,0 +1,135 @@
+#include "viewer/view_session.hpp"
+
+#include <fmt/format.h>
+
+#include "amrstream/error.hpp"
+#include "api/seed_choice.hpp"
+#include "flow/line_plan.hpp"
+#include "util/stopwatch.hpp"
+#include "vk/context.hpp"
+
+namespace amrstream::viewer {
+
+ViewSession::ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Backend backend,
+                         PreparedJob job)
+    : options_(options),
+      ctx_(&ctx),
+      backend_(backend),
+      job_(std::move(job)),
+      input_(job_.impl()),
+      tracer_(ctx, backend, input_.volume()) {
+  startTraces();
+  options_.look.timeUnit = integrationTimeUnit(input_.options.stepMode, input_.field.info());
+  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces());
+  renderer_ =
+      std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume(), scene_.contextScalars);
+  setColourMap(scene_.colourMap);
+  rebuildTubes();
+}
+
+void ViewSession::startTraces() {
+  flow::LinePlan plan =
+      flow::planLines(input_.volume(), input_.seeds.points, input_.options.direction);
+  traces_.reset();
+  vkQueueWaitIdle(ctx_->queue());
+  traces_.emplace(tracer_.startRounds(plan.states, input_.options), std::move(plan.layout),
+                  flow::traceShape(input_.volume(), input_.options));
+}
+
+void ViewSession::rebuildTubes() {
+  updateTubes(scene_, options_.look, input_.cells(), input_.volume(), traces_->traces());
+  vkQueueWaitIdle(ctx_->queue());
+  renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
+}
+
+bool ViewSession::growTubes() {
+  vkQueueWaitIdle(ctx_->queue());
+  // compute makes the new segments and grows its BVH on the host: meanwhile the device renders
+  // the tubes (and their colour range) as they were before this round, which therefore show one
+  // frame later.
+  const bool renderMeanwhile = backend_ == gpu::Backend::Compute && renderer_->segmentCount() > 0 &&
+                               renderer_->tubeRadius() == scene_.settings.tubeRadius;
+  Stopwatch clock;
+  if (renderMeanwhile) {
+    renderer_->submitFrame(scene_.camera, scene_.settings);
+    times_.renderSeconds = times_.renderSubmitSeconds = clock.seconds();
+    clock.restart();
+  }
+  const std::optional<std::vector<shared::TubeSegment>> added =
+      appendTubes(scene_, options_.look, input_.cells(), input_.volume(), traces_->recent());
+  times_.segmentsSeconds = clock.seconds();
+  if (!added) {
+    clock.restart();
+    renderer_->waitForFrame();
+    times_.renderSeconds += clock.seconds();
+    rebuildTubes();
+    times_.rebuilt = true;
+    return renderMeanwhile;
+  }
+  renderer_->appendTubes(*added, scene_.segments, scene_.settings.tubeRadius);
+  times_.append = renderer_->lastAppendTimes();
+  times_.renderSeconds += times_.append.frameWait;
+  return renderMeanwhile;
+}
+
+void ViewSession::setColourMap(render::ColourMap map) {
+  scene_.colourMap = map;
+  renderer_->setColourMap(render::colourMapTable(map));
+}
+
+void ViewSession::restartTraces() {
+  std::string description;
+  input_.seeds =
+      chooseSeeds(options_.job.seeds, domainOf(input_.volume()), &input_.cells(), description);
+  placeSeeds(input_.volume(), input_.seeds);
+  startTraces();
+  rebuildTubes();
+}
+
+void ViewSession::reloadVolume() {
+  const render::OrbitCamera camera = scene_.camera;
+  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces());
+  scene_.camera = camera;
+  vkQueueWaitIdle(ctx_->queue());
+  renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume(),
+                                                     scene_.contextScalars);
+  setColourMap(scene_.colourMap);
+  rebuildTubes();
+}
+
+void ViewSession::frameAll() {
+  frameTubes(scene_, input_.volume(),
+             float(std::max(1u, renderer_->width())) / float(std::max(1u, renderer_->height())));
+}
+
+std::size_t ViewSession::step(std::uint32_t width, std::uint32_t height) {
+  times_ = {};
+  std::size_t taken = 0;
+  if (width != renderer_->width() || height != renderer_->height()) {
+    vkQueueWaitIdle(ctx_->queue());
+    renderer_->resize(width, height);
+  }
+  bool rendered = false;
+  Stopwatch clock;
+  if (!paused && !traces_->finished()) {
+    taken = traces_->advance(options_.stepsPerFrame);
+    times_.traceSeconds = clock.seconds();
+    clock.restart();
+    rendered = growTubes();
+    if (traces_->finished()) {
+      vkQueueWaitIdle(ctx_->queue());
+      renderer_->consolidateTubes(true);
+    }
+    times_.tubesSeconds = clock.seconds() - times_.renderSeconds;
+  }
+  if (!rendered) {
+    clock.restart();
+    renderer_->renderFrame(scene_.camera, scene_.settings);
+    times_.renderSeconds = clock.seconds();
+  }
+  times_.renderDeviceSeconds = renderer_->lastFrameSeconds().value_or(0.0);
+  times_.segments = renderer_->segmentCount();
+  return taken;
+}
+
+}  // namespace amrstream::viewer

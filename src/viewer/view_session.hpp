@@ -1,0 +1,81 @@
+#pragma once
+// The state of `amrstream view`: the prepared input, traces growing a few steps per frame on the
+// GPU tracer, and the tube renderer; the viewer's controls change it between frames.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "amrstream/viewer.hpp"
+#include "api/job_state.hpp"
+#include "api/render_scene.hpp"
+#include "flow/progressive_traces.hpp"
+#include "gpu/gpu_tracer.hpp"
+#include "render/tube_renderer.hpp"
+
+namespace amrstream::viewer {
+
+// Where one frame's time went (ViewSession::step), wall clock on the host.
+struct ViewFrameTimes {
+  double traceSeconds = 0;     // advancing the traces on the GPU and collecting their new points
+  double tubesSeconds = 0;     // tube segments, their upload and the tubes' structure
+  double segmentsSeconds = 0;  // of which making and colouring the new segments on the host
+  render::TubeRenderer::AppendTimes append;  // and the renderer's parts
+  double renderSeconds = 0;        // rendering the frame, to its completion (with compute while the
+                                   // traces grow, beside building the tubes' BVH on the host)
+  double renderSubmitSeconds = 0;  // of which recording and submitting it, when not waited for
+  double renderDeviceSeconds = 0;  // the frame's own time on the device (timestamps)
+  bool rebuilt = false;            // every tube was made again (a symmetric-log scale widened)
+  std::size_t segments = 0;        // tube segments after the frame
+};
+
+class ViewSession {
+ public:
+  ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Backend backend,
+              PreparedJob job);
+
+  // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; renders one frame
+  // at this size (with compute, of the tubes before this round, while their BVH grows on the
+  // host), complete on return. Returns the particle-steps taken.
+  std::size_t step(std::uint32_t width, std::uint32_t height);
+  const ViewFrameTimes& lastFrameTimes() const { return times_; }
+
+  // Seeds again with the current seeding options and restarts the traces.
+  void restartTraces();
+  // Starts the traces of the current seeds and options.
+  void startTraces();
+  // Rebuilds the tubes from the traces as they are (after a colour or radius change).
+  void rebuildTubes();
+  // Adds the tubes of what the last round of tracing added (rebuilds them all when the colours
+  // of the old ones would change).
+  // Returns whether it rendered the frame (compute, before the new tubes are in place).
+  bool growTubes();
+  void setColourMap(render::ColourMap map);
+  // Reloads the context volume for options().look.volume (empty: none).
+  void reloadVolume();
+  // Frames the traces as they are, keeping the camera's direction (the "frame all" key).
+  void frameAll();
+
+  ViewJob& options() { return options_; }
+  PreparedJob::Impl& input() { return job_.impl(); }
+  RenderScene& scene() { return scene_; }
+  render::OrbitCamera& camera() { return scene_.camera; }
+  bool paused = false;
+  const flow::ProgressiveTraces& traces() const { return *traces_; }
+  const render::TubeRenderer& renderer() const { return *renderer_; }
+  gpu::Backend backend() const { return backend_; }
+
+ private:
+  ViewJob options_;
+  const vk::Context* ctx_;
+  gpu::Backend backend_;
+  PreparedJob job_;
+  PreparedJob::Impl& input_;
+  gpu::GpuTracer tracer_;
+  std::optional<flow::ProgressiveTraces> traces_;
+  RenderScene scene_;
+  std::unique_ptr<render::TubeRenderer> renderer_;
+  ViewFrameTimes times_;
+};
+
+}  // namespace amrstream::viewer
