@@ -25,8 +25,10 @@ std::optional<CLI::Validator> settingCheck(const Setting& s) {
   if constexpr (std::is_same_v<T, bool>) {
     return std::nullopt;
   } else if constexpr (std::is_integral_v<T>) {
-    const double most = std::min(s.most, double(std::numeric_limits<T>::max()));
-    return countIn(std::uint64_t(std::max(0.0, s.least)), std::uint64_t(most));
+    // double(max) of a 64-bit type rounds up past max, so compare before converting.
+    const auto typeMost = std::uint64_t(std::numeric_limits<T>::max());
+    const std::uint64_t most = s.most >= double(typeMost) ? typeMost : std::uint64_t(s.most);
+    return countIn(std::uint64_t(std::max(0.0, s.least)), most);
   } else if constexpr (std::is_floating_point_v<T>) {
     constexpr bool single = std::is_same_v<T, float>;
     const double limit = double(std::numeric_limits<T>::max());
