@@ -446,21 +446,68 @@ std::uint64_t VtkXmlFile::headerValue(const std::byte* header) const {
                            : loadElement<std::uint32_t>(header, swapBytes_);
 }
 
+namespace {
+
+// Calls `token` with each whitespace-separated token of an ascii array's text.
+template <class F>
+void forEachToken(std::string_view text, F&& token) {
+  for (std::size_t i = 0; i < text.size();) {
+    while (i < text.size() && isXmlSpace(text[i])) ++i;
+    const std::size_t begin = i;
+    while (i < text.size() && !isXmlSpace(text[i])) ++i;
+    if (begin == i) break;
+    token(text.substr(begin, i - begin));
+  }
+}
+
+// Calls `convert(first, bytes)` with the uncompressed bytes as whole elements, `first` counting
+// elements. A value may straddle two batches when blocks are not a whole number of values long.
+template <class F>
+void forEachWholeElements(const BlockReader& reader, std::size_t elementBytes, F&& convert) {
+  std::vector<std::byte> straddling;
+  std::size_t converted = 0;
+  reader.forEachBatch([&](std::span<const std::byte> batch) {
+    if (!straddling.empty()) {
+      const std::size_t missing = elementBytes - straddling.size();
+      const std::size_t take = std::min(missing, batch.size());
+      straddling.insert(straddling.end(), batch.begin(), batch.begin() + take);
+      batch = batch.subspan(take);
+      if (straddling.size() < elementBytes) return;
+      convert(converted++, std::span<const std::byte>(straddling));
+      straddling.clear();
+    }
+    const std::size_t whole = batch.size() / elementBytes * elementBytes;
+    convert(converted, batch.first(whole));
+    converted += whole / elementBytes;
+    straddling.assign(batch.begin() + whole, batch.end());
+  });
+}
+
+// The array's value type, checked to be numeric, with the expected number of components.
+std::optional<Scalar> numericScalar(const VtkXmlFile& file, const XmlElement& array,
+                                    int expectedComponents, const std::string& what) {
+  const int arrayComponents = file.components(array);
+  if (arrayComponents != expectedComponents) {
+    file.fail(fmt::format("array {} has {} components, expected {}", what, arrayComponents,
+                          expectedComponents));
+  }
+  const std::string* typeName = array.attribute("type");
+  if (typeName == nullptr) file.fail(fmt::format("array {} has no type", what));
+  const std::optional<Scalar> scalar = scalarNamed(*typeName);
+  if (!scalar) {
+    file.fail(fmt::format("array {} has type \"{}\"; only numeric types are read", what,
+                          excerpt(*typeName)));
+  }
+  return scalar;
+}
+
+}  // namespace
+
 template <class T>
 std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::uint64_t> tuples,
                                   int expectedComponents, const std::string& what) const {
-  const int arrayComponents = components(array);
-  if (arrayComponents != expectedComponents) {
-    fail(fmt::format("array {} has {} components, expected {}", what, arrayComponents,
-                     expectedComponents));
-  }
+  const std::optional<Scalar> scalar = numericScalar(*this, array, expectedComponents, what);
   const std::string* typeName = array.attribute("type");
-  if (typeName == nullptr) fail(fmt::format("array {} has no type", what));
-  const std::optional<Scalar> scalar = scalarNamed(*typeName);
-  if (!scalar) {
-    fail(fmt::format("array {} has type \"{}\"; only numeric types are read", what,
-                     excerpt(*typeName)));
-  }
   const std::string* format = array.attribute("format");
   if (format == nullptr) fail(fmt::format("array {} has no format attribute", what));
 
@@ -484,13 +531,7 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
       }
       out.push_back(convertOne(value, out.size()));
     };
-    const std::string_view text = array.text;
-    for (std::size_t i = 0; i < text.size();) {
-      while (i < text.size() && isXmlSpace(text[i])) ++i;
-      const std::size_t begin = i;
-      while (i < text.size() && !isXmlSpace(text[i])) ++i;
-      if (begin == i) break;
-      const std::string_view token = text.substr(begin, i - begin);
+    forEachToken(array.text, [&](std::string_view token) {
       if (*scalar == Scalar::Float32 || *scalar == Scalar::Float64) {
         parse(token, double{});
       } else if (*scalar == Scalar::UInt64) {
@@ -498,7 +539,7 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
       } else {
         parse(token, std::int64_t{});
       }
-    }
+    });
     checkCount(out.size(), tuples, expectedComponents, what);
     return out;
   }
@@ -546,24 +587,10 @@ std::vector<T> VtkXmlFile::values(const XmlElement& array, std::optional<std::ui
     checkBytes(reader.uncompressedBytes());
     checkFitsInMemory(reader.uncompressedBytes() / elementBytes, sizeof(T), what);
     std::vector<T> out(static_cast<std::size_t>(reader.uncompressedBytes() / elementBytes));
-    // A value may straddle two batches when blocks are not a whole number of values long.
-    std::vector<std::byte> straddling;
-    std::size_t converted = 0;
-    reader.forEachBatch([&](std::span<const std::byte> batch) {
-      if (!straddling.empty()) {
-        const std::size_t missing = elementBytes - straddling.size();
-        const std::size_t take = std::min(missing, batch.size());
-        straddling.insert(straddling.end(), batch.begin(), batch.begin() + take);
-        batch = batch.subspan(take);
-        if (straddling.size() < elementBytes) return;
-        convertInto(out, converted++, straddling);
-        straddling.clear();
-      }
-      const std::size_t whole = batch.size() / elementBytes * elementBytes;
-      convertInto(out, converted, batch.first(whole));
-      converted += whole / elementBytes;
-      straddling.assign(batch.begin() + whole, batch.end());
-    });
+    forEachWholeElements(reader, elementBytes,
+                         [&](std::size_t first, std::span<const std::byte> bytes) {
+                           convertInto(out, first, bytes);
+                         });
     return out;
   } catch (const CompressedDataError& error) {
     fail(fmt::format("array {}: {}", what, error.what()));

@@ -283,6 +283,52 @@ std::string distinctName(std::string name, const std::vector<std::string>& taken
   return name;
 }
 
+// The point data: the vectors, the channels, the integration time, the vorticity's arrays when
+// traced, and the speed; `vectorName` is the vectors' name, distinct from the others.
+std::vector<AppendedArray> pointDataArrays(const flow::TraceView& traces, const PieceTable& table,
+                                           std::string& vectorName) {
+  const flow::TraceSet& lines = traces.lines();
+  std::vector<std::string> ours{"IntegrationTime", "Speed", "Vorticity", "Rotation",
+                                "AngularVelocity"};
+  std::vector<AppendedArray> arrays;
+  vectorName =
+      distinctName(lines.vectorName.empty() ? "Vectors" : lines.vectorName, ours, "_vector");
+  ours.push_back(vectorName);
+  arrays.push_back(pointArray(vectorName, 3, table, storedColumn(traces, PointColumn::Vectors)));
+  for (std::size_t c = 0; c < lines.channelCount(); ++c) {
+    const std::string name = distinctName(lines.channelNames[c], ours, "_channel");
+    ours.push_back(name);
+    arrays.push_back(pointArray(name, 1, table, channelColumn(traces, c)));
+  }
+  arrays.push_back(
+      pointArray("IntegrationTime", 1, table, storedColumn(traces, PointColumn::Times)));
+  if (lines.withVorticity) {
+    arrays.push_back(
+        pointArray("Vorticity", 3, table, storedColumn(traces, PointColumn::Vorticity)));
+    arrays.push_back(pointArray("Rotation", 1, table, rotationColumn(traces)));
+    arrays.push_back(pointArray("AngularVelocity", 1, table, angularVelocityColumn(traces)));
+  }
+  arrays.push_back(pointArray("Speed", 1, table, speedColumn(traces)));
+  return arrays;
+}
+
+// The point ids of all lines in a row: 0, 1, 2, ...
+AppendedArray connectivityArray(std::uint64_t pointCount) {
+  return {"connectivity",
+          "Int64",
+          1,
+          pointCount * sizeof(std::int64_t),
+          {},
+          [](std::uint64_t first, std::span<std::byte> out) {
+            // The ids whose bytes the range covers, then the range.
+            const std::uint64_t begin = first / sizeof(std::int64_t);
+            std::vector<std::int64_t> ids((first + out.size() + 7) / 8 - begin);
+            std::iota(ids.begin(), ids.end(), static_cast<std::int64_t>(begin));
+            std::memcpy(out.data(), reinterpret_cast<const std::byte*>(ids.data()) + first % 8,
+                        out.size());
+          }};
+}
+
 }  // namespace
 
 VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceSet& traces,
@@ -305,29 +351,8 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   const bool unwrap = options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
 
   using Out = BufferedWriter&;
-  std::vector<std::string> ours{"IntegrationTime", "Speed", "Vorticity", "Rotation",
-                                "AngularVelocity"};
-  std::vector<AppendedArray> pointArrays;
-  const std::string vectorName =
-      distinctName(lines.vectorName.empty() ? "Vectors" : lines.vectorName, ours, "_vector");
-  ours.push_back(vectorName);
-  pointArrays.push_back(
-      pointArray(vectorName, 3, table, storedColumn(traces, PointColumn::Vectors)));
-  for (std::size_t c = 0; c < lines.channelCount(); ++c) {
-    const std::string name = distinctName(lines.channelNames[c], ours, "_channel");
-    ours.push_back(name);
-    pointArrays.push_back(pointArray(name, 1, table, channelColumn(traces, c)));
-  }
-  pointArrays.push_back(
-      pointArray("IntegrationTime", 1, table, storedColumn(traces, PointColumn::Times)));
-  if (lines.withVorticity) {
-    pointArrays.push_back(
-        pointArray("Vorticity", 3, table, storedColumn(traces, PointColumn::Vorticity)));
-    pointArrays.push_back(pointArray("Rotation", 1, table, rotationColumn(traces)));
-    pointArrays.push_back(pointArray("AngularVelocity", 1, table, angularVelocityColumn(traces)));
-  }
-  pointArrays.push_back(pointArray("Speed", 1, table, speedColumn(traces)));
-
+  std::string vectorName;
+  const std::vector<AppendedArray> pointArrays = pointDataArrays(traces, table, vectorName);
   const AppendedArray reasons{
       "ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t), [&](Out out) {
         for (const Piece& piece : pieces)
@@ -342,20 +367,7 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   const AppendedArray points = pointsArray(traces, table, unwrap);
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
-  const AppendedArray connectivity{
-      "connectivity",
-      "Int64",
-      1,
-      pointCount * sizeof(std::int64_t),
-      {},
-      [](std::uint64_t first, std::span<std::byte> out) {
-        // Point ids 0, 1, 2, ...: the ids whose bytes the range covers, then the range.
-        const std::uint64_t begin = first / sizeof(std::int64_t);
-        std::vector<std::int64_t> ids((first + out.size() + 7) / 8 - begin);
-        std::iota(ids.begin(), ids.end(), static_cast<std::int64_t>(begin));
-        std::memcpy(out.data(), reinterpret_cast<const std::byte*>(ids.data()) + first % 8,
-                    out.size());
-      }};
+  const AppendedArray connectivity = connectivityArray(pointCount);
   const AppendedArray offsets{"offsets", "Int64", 1, lineCount * sizeof(std::int64_t),
                               [&](Out out) {
                                 std::int64_t end = 0;

@@ -220,23 +220,20 @@ void requireFile(const fs::path& path, const std::string& problem) {
   if (!fs::exists(path, ec)) throw InputError(path.string(), problem);
 }
 
-}  // namespace
-
-bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow* window,
-                                   WindowedRead* read) {
-  const fs::path headerPath = plotfileHeader(directory);
-  const PlotHeader h = parseHeader(headerPath);
-  const int levels = h.finestLevel + 1;
-  const int ncomp = static_cast<int>(h.names.size());
-
-  // widths[L] = finest cells per level-L cell.
-  std::vector<int> widths(levels, 1);
+// widths[L] = finest cells per level-L cell.
+std::vector<int> levelWidths(const PlotHeader& h, const fs::path& headerPath) {
+  std::vector<int> widths(std::size_t(h.finestLevel + 1), 1);
   for (int l = h.finestLevel - 1; l >= 0; --l) {
     const long long width = static_cast<long long>(widths[l + 1]) * h.ratios[l];
     if (width > (1LL << bricks::kMaxLevel))
       throw InputError(headerPath.string(), "the refinement ratios exceed 2^20 in total");
     widths[l] = static_cast<int>(width);
   }
+  return widths;
+}
+
+// World positions of the finest cells, checked against the finest level's dx.
+WorldTransform finestTransform(const PlotHeader& h, const fs::path& headerPath) {
   const Box& finestDomain = h.domains[h.finestLevel];
   const glm::dvec3 spacing = (h.probHi - h.probLo) / glm::dvec3(finestDomain.size());
   for (int axis = 0; axis < 3; ++axis) {
@@ -257,127 +254,191 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
   if (const auto problem = unrepresentablePositions(transform, domainCorners, finestLevels))
     throw InputError(headerPath.string(),
                      "prob_lo and prob_hi cannot place the cells: " + *problem);
+  return transform;
+}
 
-  std::vector<LevelLayout> layouts;
-  for (int l = 0; l < levels; ++l) {
-    const fs::path cellH = directory / (h.levelPaths[l] + "_H");
-    requireFile(cellH, fmt::format("missing level-{} header", l));
-    layouts.push_back(parseCellHeader(cellH, ncomp, h.gridCounts[l], h.domains[l], l));
+// The plotfile's levels as the boxes' cells need them.
+struct Plotfile {
+  fs::path directory;
+  PlotHeader header;
+  std::vector<int> widths = {};
+  std::vector<LevelLayout> layouts = {};
+  std::vector<std::map<std::string, std::vector<long long>>> offsets = {};  // per level and file
+  std::vector<std::vector<Box>> coverings = {};  // per level: the finer level's boxes, coarsened
+
+  int components() const { return static_cast<int>(header.names.size()); }
+  const Box& finestDomain() const { return header.domains[header.finestLevel]; }
+  fs::path fabFile(int l, const FabEntry& fab) const {
+    return (directory / header.levelPaths[l]).parent_path() / fab.file;
   }
+  Box stored(int l, const FabEntry& fab) const {
+    return {fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+  }
+};
 
-  CellSink sink(window, directory.string(), read);
-  for (const std::string& name : h.names) sink.addChannel(name);
-  // Which boxes have leaves and are read, and where their cells go, box after box (the cells'
-  // order); then the boxes in parallel.
-  struct FabPlan {
-    int level = 0;
-    const FabEntry* fab = nullptr;
-    std::size_t at = 0;  // its first cell
-    bool wanted = false;
-  };
-  std::vector<FabPlan> plans;
-  std::vector<std::vector<Box>> coverings(static_cast<std::size_t>(levels));  // finer, coarsened
-  std::vector<std::map<std::string, std::vector<long long>>> levelOffsets;
-  std::size_t total = 0;
-  for (int l = 0; l < levels; ++l) {
-    const fs::path levelDir = (directory / h.levelPaths[l]).parent_path();
-    std::vector<Box>& covering = coverings[std::size_t(l)];
-    if (l < h.finestLevel) {
-      const int ratio = h.ratios[l];
-      for (const FabEntry& fine : layouts[l + 1].fabs) {
-        if (glm::any(glm::notEqual(fine.box.lo % ratio, glm::ivec3(0))) ||
-            glm::any(glm::notEqual((fine.box.hi + 1) % ratio, glm::ivec3(0))))
-          throw InputError((directory / (h.levelPaths[l + 1] + "_H")).string(),
-                           fmt::format("box {} does not cover whole level-{} cells (ratio {})",
-                                       boxText(fine.box), l, ratio));
-        covering.push_back(coarsen(fine.box, ratio));
-      }
+// The finer level's boxes coarsened to level l; each must cover whole level-l cells.
+std::vector<Box> coveringBoxes(const Plotfile& plot, int l) {
+  std::vector<Box> covering;
+  if (l == plot.header.finestLevel) return covering;
+  const int ratio = plot.header.ratios[l];
+  for (const FabEntry& fine : plot.layouts[l + 1].fabs) {
+    if (glm::any(glm::notEqual(fine.box.lo % ratio, glm::ivec3(0))) ||
+        glm::any(glm::notEqual((fine.box.hi + 1) % ratio, glm::ivec3(0))))
+      throw InputError((plot.directory / (plot.header.levelPaths[l + 1] + "_H")).string(),
+                       fmt::format("box {} does not cover whole level-{} cells (ratio {})",
+                                   boxText(fine.box), l, ratio));
+    covering.push_back(coarsen(fine.box, ratio));
+  }
+  return covering;
+}
+
+// The level headers (each level's boxes and their FABs).
+void readLevelHeaders(Plotfile& plot) {
+  const PlotHeader& h = plot.header;
+  for (int l = 0; l <= h.finestLevel; ++l) {
+    const fs::path cellH = plot.directory / (h.levelPaths[l] + "_H");
+    requireFile(cellH, fmt::format("missing level-{} header", l));
+    plot.layouts.push_back(
+        parseCellHeader(cellH, plot.components(), h.gridCounts[l], h.domains[l], l));
+  }
+}
+
+// A box with leaves, where its cells go (box after box: the cells' order) and whether its data
+// is read.
+struct FabPlan {
+  int level = 0;
+  const FabEntry* fab = nullptr;
+  std::size_t at = 0;  // its first cell
+  bool wanted = false;
+};
+
+std::uint64_t coveredCells(const std::vector<Box>& covering, const Box& box) {
+  std::uint64_t covered = 0;
+  for (const Box& cover : covering) {
+    const glm::i64vec3 lo = glm::max(cover.lo, box.lo), hi = glm::min(cover.hi, box.hi);
+    if (glm::all(glm::lessThanEqual(lo, hi))) {
+      const glm::i64vec3 n = hi - lo + std::int64_t(1);
+      covered += std::uint64_t(n.x * n.y * n.z);
     }
-    levelOffsets.push_back(fabOffsets(layouts[l]));
-    for (const FabEntry& fab : layouts[l].fabs) {
-      const fs::path file = levelDir / fab.file;
+  }
+  return covered;
+}
+
+// The boxes that have leaves (a box that finer boxes cover, as they are disjoint, has none: its
+// data is not read), in the cells' order; `total` is their cell count. Fills the plotfile's
+// coverings and FAB offsets, level after level.
+std::vector<FabPlan> planFabs(Plotfile& plot, const ValueWindow* window, WindowedRead* read,
+                              bool skipsPieces, std::size_t& total) {
+  const PlotHeader& h = plot.header;
+  std::vector<FabPlan> plans;
+  total = 0;
+  for (int l = 0; l <= h.finestLevel; ++l) {
+    plot.coverings.push_back(coveringBoxes(plot, l));
+    plot.offsets.push_back(fabOffsets(plot.layouts[l]));
+    const int width = plot.widths[l];
+    for (const FabEntry& fab : plot.layouts[l].fabs) {
+      const fs::path file = plot.fabFile(l, fab);
       requireFile(file, fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
-      // A box that finer boxes cover (they are disjoint) has no leaves: its data is not read.
-      std::uint64_t coveredCells = 0;
-      for (const Box& cover : covering) {
-        const glm::i64vec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
-        if (glm::all(glm::lessThanEqual(lo, hi))) {
-          const glm::i64vec3 n = hi - lo + std::int64_t(1);
-          coveredCells += std::uint64_t(n.x * n.y * n.z);
-        }
-      }
+      const std::uint64_t covered = coveredCells(plot.coverings[std::size_t(l)], fab.box);
       const glm::i64vec3 boxCells =
           glm::i64vec3(fab.box.hi) - glm::i64vec3(fab.box.lo) + std::int64_t(1);
       const std::uint64_t cells = std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
-      const bool wanted =
-          coveredCells < cells &&
-          (!window || window->meets(fab.box.lo * widths[l] - finestDomain.lo,
-                                    (fab.box.hi + 1) * widths[l] - finestDomain.lo, widths[l]));
+      const glm::ivec3 lower = fab.box.lo * width - plot.finestDomain().lo;
+      const glm::ivec3 upper = (fab.box.hi + 1) * width - plot.finestDomain().lo;
+      const bool wanted = covered < cells && (!window || window->meets(lower, upper, width));
       if (read) {
         ++read->pieces;
         read->piecesRead += wanted;
       }
-      if (coveredCells == cells) continue;
+      if (covered == cells) continue;
       // The box's cells are laid out before any FAB is read: its FAB must hold them.
-      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
-      requireFabBytes(file, fab, levelOffsets.back().at(fab.file), stored, ncomp);
-      if (wanted || !sink.skipsPieces()) plans.push_back({l, &fab, total, wanted});
-      total += cells - coveredCells;
+      requireFabBytes(file, fab, plot.offsets[std::size_t(l)].at(fab.file), plot.stored(l, fab),
+                      plot.components());
+      if (wanted || !skipsPieces) plans.push_back({l, &fab, total, wanted});
+      total += cells - covered;
     }
   }
-  sink.presize(total);
+  return plans;
+}
 
+// Which of the box's cells (x fastest) the finer level covers.
+std::vector<bool> coveredMask(const Plotfile& plot, int l, const Box& box,
+                              const std::string& file) {
+  const glm::ivec3 size(box.size());
+  std::vector<bool> covered(amrex::cellCount(box, file), false);
+  for (const Box& cover : plot.coverings[std::size_t(l)]) {
+    const glm::ivec3 lo = glm::max(cover.lo, box.lo), hi = glm::min(cover.hi, box.hi);
+    for (int k = lo.z; k <= hi.z; ++k)
+      for (int j = lo.y; j <= hi.y; ++j)
+        for (int i = lo.x; i <= hi.x; ++i) {
+          const glm::ivec3 local = glm::ivec3(i, j, k) - box.lo;
+          covered[(static_cast<std::size_t>(local.z) * size.y + local.y) * size.x + local.x] = true;
+        }
+  }
+  return covered;
+}
+
+// Places the box's leaf cells and, when it is wanted, sets their values from its FAB.
+void readFabCells(const Plotfile& plot, const FabPlan& plan, CellSink& sink) {
+  const int l = plan.level;
+  const FabEntry& fab = *plan.fab;
+  const fs::path file = plot.fabFile(l, fab);
+  const Box stored = plot.stored(l, fab);
+  const int ncomp = plot.components();
+  const std::vector<double> values =
+      plan.wanted
+          ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
+                           nextFabOffset(plot.offsets[std::size_t(l)].at(fab.file), fab.offset),
+                           stored, ncomp)
+          : std::vector<double>();
+  const std::vector<bool> covered = coveredMask(plot, l, fab.box, file.string());
+  const int width = plot.widths[l];
+  const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(width)));
+  const glm::ivec3 size(fab.box.size()), storedSize(stored.size());
+  const std::size_t points = amrex::cellCount(stored, file.string());
+  std::size_t index = 0, at = plan.at;
+  for (int k = 0; k < size.z; ++k)
+    for (int j = 0; j < size.y; ++j)
+      for (int i = 0; i < size.x; ++i, ++index) {
+        if (covered[index]) continue;
+        const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
+        sink.place(at, cell * width - plot.finestDomain().lo, ourLevel);
+        const glm::ivec3 s = glm::ivec3(i, j, k) + plot.layouts[l].nghost;
+        const std::size_t point =
+            (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
+        for (int c = 0; plan.wanted && c < ncomp; ++c) {
+          const double value = values[c * points + point];
+          if (const auto problem = unusableFieldValue(value))
+            throw InputError(file.string(),
+                             fmt::format("FAB at byte {}: variable '{}' at level-{} cell "
+                                         "({}, {}, {}) is {} ({})",
+                                         fab.offset, plot.header.names[c], l, cell.x, cell.y,
+                                         cell.z, *problem, value));
+          sink.set(std::size_t(c), at, static_cast<float>(value));
+        }
+        ++at;
+      }
+}
+
+}  // namespace
+
+bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow* window,
+                                   WindowedRead* read) {
+  const fs::path headerPath = plotfileHeader(directory);
+  Plotfile plot{directory, parseHeader(headerPath)};
+  plot.widths = levelWidths(plot.header, headerPath);
+  const WorldTransform transform = finestTransform(plot.header, headerPath);
+  readLevelHeaders(plot);
+
+  CellSink sink(window, directory.string(), read);
+  for (const std::string& name : plot.header.names) sink.addChannel(name);
+  std::size_t total = 0;
+  const std::vector<FabPlan> plans = planFabs(plot, window, read, sink.skipsPieces(), total);
+  sink.presize(total);
   std::vector<std::exception_ptr> failures(plans.size());
   tbb::parallel_for(std::size_t(0), plans.size(), [&](std::size_t p) {
     try {
-      const FabPlan& plan = plans[p];
-      const int l = plan.level;
-      const FabEntry& fab = *plan.fab;
-      const fs::path file = (directory / h.levelPaths[l]).parent_path() / fab.file;
-      const Box stored{fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
-      const std::vector<double> values =
-          plan.wanted
-              ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
-                               nextFabOffset(levelOffsets[std::size_t(l)].at(fab.file), fab.offset),
-                               stored, ncomp)
-              : std::vector<double>();
-      const glm::ivec3 size(fab.box.size());
-      std::vector<bool> covered(amrex::cellCount(fab.box, file.string()), false);
-      for (const Box& cover : coverings[std::size_t(l)]) {
-        const glm::ivec3 lo = glm::max(cover.lo, fab.box.lo), hi = glm::min(cover.hi, fab.box.hi);
-        for (int k = lo.z; k <= hi.z; ++k)
-          for (int j = lo.y; j <= hi.y; ++j)
-            for (int i = lo.x; i <= hi.x; ++i) {
-              const glm::ivec3 local = glm::ivec3(i, j, k) - fab.box.lo;
-              covered[(static_cast<std::size_t>(local.z) * size.y + local.y) * size.x + local.x] =
-                  true;
-            }
-      }
-      const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(widths[l])));
-      const glm::ivec3 storedSize(stored.size());
-      const std::size_t points = amrex::cellCount(stored, file.string());
-      std::size_t index = 0, at = plan.at;
-      for (int k = 0; k < size.z; ++k)
-        for (int j = 0; j < size.y; ++j)
-          for (int i = 0; i < size.x; ++i, ++index) {
-            if (covered[index]) continue;
-            const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
-            sink.place(at, cell * widths[l] - finestDomain.lo, ourLevel);
-            const glm::ivec3 s = glm::ivec3(i, j, k) + layouts[l].nghost;
-            const std::size_t point =
-                (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
-            for (int c = 0; plan.wanted && c < ncomp; ++c) {
-              const double value = values[c * points + point];
-              if (const auto problem = unusableFieldValue(value))
-                throw InputError(file.string(),
-                                 fmt::format("FAB at byte {}: variable '{}' at level-{} cell "
-                                             "({}, {}, {}) is {} ({})",
-                                             fab.offset, h.names[c], l, cell.x, cell.y, cell.z,
-                                             *problem, value));
-              sink.set(std::size_t(c), at, static_cast<float>(value));
-            }
-            ++at;
-          }
+      readFabCells(plot, plans[p], sink);
     } catch (...) {
       failures[p] = std::current_exception();
     }
@@ -385,10 +446,12 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
   // The first box's failure in the cells' order, as one box after another would meet it.
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
+
   bricks::AmrField field = sink.finish(transform);
   std::vector<int> internalLevels;
-  for (int width : widths) internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
-  field.setInfo(readAmrexInfo(directory, h.time, internalLevels));
+  for (int width : plot.widths)
+    internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
+  field.setInfo(readAmrexInfo(directory, plot.header.time, internalLevels));
   return field;
 }
 

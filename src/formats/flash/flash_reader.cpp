@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,29 +63,40 @@ struct Leaf {
   glm::ivec3 lower;
 };
 
-}  // namespace
+// The per-block arrays, each checked against the block count.
+struct BlockArrays {
+  Array<int> refine, nodeType;
+  Array<double> bbox, blockSize;
+  std::size_t count = 0;
 
-bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow* window,
-                           WindowedRead* read) {
-  const FlashFile file(path);
-  const auto names = file.readStrings("unknown names");
-  if (names.empty()) file.fail("unknown names", "lists no variables");
+  double lo(std::size_t b, int a) const { return bbox.values[b * 6 + a * 2]; }
+  double hi(std::size_t b, int a) const { return bbox.values[b * 6 + a * 2 + 1]; }
+};
 
-  const auto refine = file.read<int>("refine level");
-  const auto nodeType = file.read<int>("node type");
-  const auto bbox = file.read<double>("bounding box");
-  const auto blockSize = file.read<double>("block size");
+BlockArrays readBlockArrays(const FlashFile& file) {
+  BlockArrays blocks{file.read<int>("refine level"), file.read<int>("node type"),
+                     file.read<double>("bounding box"), file.read<double>("block size")};
+  const auto& refine = blocks.refine;
   const std::size_t nb = refine.dims.empty() ? 0 : refine.dims[0];
   if (refine.dims.size() != 1 || nb == 0)
     file.fail("refine level", fmt::format("shape {} is not [nblocks]", shapeText(refine.dims)));
-  if (nodeType.dims != std::vector<hsize_t>{nb})
-    file.fail("node type", fmt::format("shape {} is not [{}]", shapeText(nodeType.dims), nb));
-  if (bbox.dims != std::vector<hsize_t>{nb, 3, 2})
-    file.fail("bounding box", fmt::format("shape {} is not [{}, 3, 2]", shapeText(bbox.dims), nb));
-  if (blockSize.dims != std::vector<hsize_t>{nb, 3})
-    file.fail("block size", fmt::format("shape {} is not [{}, 3]", shapeText(blockSize.dims), nb));
+  if (blocks.nodeType.dims != std::vector<hsize_t>{nb})
+    file.fail("node type",
+              fmt::format("shape {} is not [{}]", shapeText(blocks.nodeType.dims), nb));
+  if (blocks.bbox.dims != std::vector<hsize_t>{nb, 3, 2})
+    file.fail("bounding box",
+              fmt::format("shape {} is not [{}, 3, 2]", shapeText(blocks.bbox.dims), nb));
+  if (blocks.blockSize.dims != std::vector<hsize_t>{nb, 3})
+    file.fail("block size",
+              fmt::format("shape {} is not [{}, 3]", shapeText(blocks.blockSize.dims), nb));
+  blocks.count = nb;
+  return blocks;
+}
 
-  // Cells per block: the parameters when present, else the first variable's shape.
+// Cells per block: the parameters when present, else the first variable's shape; then every
+// variable's shape, before anything is allocated for the cells.
+BlockShape checkedBlockShape(const FlashFile& file, const std::vector<std::string>& names,
+                             std::size_t nb) {
   BlockShape shape = readBlockShape(file);
   {
     const std::string& first = names.front();
@@ -105,11 +117,9 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
     file.fail(fmt::format("dimensionality {} is not 2 or 3", shape.dimensionality));
   if (shape.dimensionality == 2 && shape.n[2] != 1)
     file.fail(fmt::format("2D file with nzb = {} (expected 1)", shape.n[2]));
-  const int axes = shape.dimensionality;
   const std::vector<hsize_t> expected{nb, static_cast<hsize_t>(shape.n[2]),
                                       static_cast<hsize_t>(shape.n[1]),
                                       static_cast<hsize_t>(shape.n[0])};
-  // Every variable's shape before anything is allocated for the cells.
   for (const std::string& name : names) {
     const Handle set = file.open(name, " (listed in 'unknown names')");
     const auto d = file.dims(name, set);
@@ -118,64 +128,75 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
                                   shapeText(expected)));
     requireStoredValues(set.get(), file.path(), name);
   }
+  return shape;
+}
 
-  // Leaves, finest refine level, finest cell size and domain lower corner.
+// The leaf blocks, the finest refine level, the finest cell size and the domain's lower corner.
+struct FinestGrid {
   std::vector<std::size_t> leafBlocks;
   int rmax = 0;
-  glm::dvec3 dxf(std::numeric_limits<double>::infinity());
-  glm::dvec3 domainLo(std::numeric_limits<double>::infinity());
-  const auto lo = [&](std::size_t b, int a) { return bbox.values[b * 6 + a * 2]; };
-  const auto hi = [&](std::size_t b, int a) { return bbox.values[b * 6 + a * 2 + 1]; };
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (nodeType.values[b] != 1) continue;
-    leafBlocks.push_back(b);
-    if (refine.values[b] < 1 || refine.values[b] > bricks::kMaxLevel + 1)
+  glm::dvec3 dxf{std::numeric_limits<double>::infinity()};
+  glm::dvec3 domainLo{std::numeric_limits<double>::infinity()};
+};
+
+FinestGrid finestGrid(const FlashFile& file, const BlockArrays& blocks, const BlockShape& shape) {
+  const int axes = shape.dimensionality;
+  FinestGrid grid;
+  for (std::size_t b = 0; b < blocks.count; ++b) {
+    if (blocks.nodeType.values[b] != 1) continue;
+    grid.leafBlocks.push_back(b);
+    const int refine = blocks.refine.values[b];
+    if (refine < 1 || refine > bricks::kMaxLevel + 1)
       file.fail("refine level", fmt::format("block {} has refine level {} (expected 1 to {})", b,
-                                            refine.values[b], bricks::kMaxLevel + 1));
-    rmax = std::max(rmax, refine.values[b]);
+                                            refine, bricks::kMaxLevel + 1));
+    grid.rmax = std::max(grid.rmax, refine);
     for (int a = 0; a < 3; ++a) {
-      const double extent = hi(b, a) - lo(b, a);
-      if (!std::isfinite(lo(b, a)) || !std::isfinite(hi(b, a)) || !std::isfinite(extent) ||
+      const double lo = blocks.lo(b, a), hi = blocks.hi(b, a), extent = hi - lo;
+      if (!std::isfinite(lo) || !std::isfinite(hi) || !std::isfinite(extent) ||
           (a < axes && !(extent > 0)))
-        file.fail("bounding box",
-                  fmt::format("block {} axis {} spans [{}, {}]", b, a, lo(b, a), hi(b, a)));
-      const double size = blockSize.values[b * 3 + a];
+        file.fail("bounding box", fmt::format("block {} axis {} spans [{}, {}]", b, a, lo, hi));
+      const double size = blocks.blockSize.values[b * 3 + a];
       if (a < axes && !(std::abs(size - extent) <= 1e-4 * std::abs(extent)))
         file.fail("block size", fmt::format("block {} axis {}: size {} but bounding box extent {}",
                                             b, a, size, extent));
-      domainLo[a] = std::min(domainLo[a], lo(b, a));
-      if (a < axes) dxf[a] = std::min(dxf[a], extent / shape.n[a]);
+      grid.domainLo[a] = std::min(grid.domainLo[a], lo);
+      if (a < axes) grid.dxf[a] = std::min(grid.dxf[a], extent / shape.n[a]);
     }
   }
-  if (leafBlocks.empty()) file.fail("node type", "no leaf blocks (node type 1)");
+  if (grid.leafBlocks.empty()) file.fail("node type", "no leaf blocks (node type 1)");
   // The bounding boxes carry rounding noise: spread the domain evenly over its finest cells.
   for (int a = 0; a < axes; ++a) {
     double domainHi = -std::numeric_limits<double>::infinity();
-    for (std::size_t b : leafBlocks) domainHi = std::max(domainHi, hi(b, a));
-    const double cells = std::round((domainHi - domainLo[a]) / dxf[a]);
-    if (!std::isnormal(dxf[a]) || !std::isfinite(domainHi - domainLo[a]) || !(cells >= 1))
+    for (std::size_t b : grid.leafBlocks) domainHi = std::max(domainHi, blocks.hi(b, a));
+    const double span = domainHi - grid.domainLo[a];
+    const double cells = std::round(span / grid.dxf[a]);
+    if (!std::isnormal(grid.dxf[a]) || !std::isfinite(span) || !(cells >= 1))
       file.fail("bounding box",
                 fmt::format("the leaves span [{}, {}] along axis {} with finest cells {} wide, "
                             "which positions cannot resolve",
-                            domainLo[a], domainHi, a, dxf[a]));
-    if (cells <= std::ldexp(1.0, bricks::kMaxExtentBits)) dxf[a] = (domainHi - domainLo[a]) / cells;
+                            grid.domainLo[a], domainHi, a, grid.dxf[a]));
+    if (cells <= std::ldexp(1.0, bricks::kMaxExtentBits)) grid.dxf[a] = span / cells;
   }
-  if (axes == 2) dxf.z = dxf.x;
+  if (axes == 2) grid.dxf.z = grid.dxf.x;
+  return grid;
+}
 
-  // Block placement in finest-cell units; checks that every block's cells are 2^L cubes.
+// Block placement in finest-cell units; checks that every block's cells are 2^L cubes.
+std::vector<Leaf> placeLeaves(const FlashFile& file, const BlockArrays& blocks,
+                              const BlockShape& shape, const FinestGrid& grid) {
   std::vector<Leaf> leaves;
-  int coarsest = 0;
-  for (std::size_t b : leafBlocks) {
-    Leaf leaf{b, rmax - refine.values[b], glm::ivec3(0)};
+  for (std::size_t b : grid.leafBlocks) {
+    Leaf leaf{b, grid.rmax - blocks.refine.values[b], glm::ivec3(0)};
     const double width = std::ldexp(1.0, leaf.level);
-    for (int a = 0; a < axes; ++a) {
-      const double cellWidth = (hi(b, a) - lo(b, a)) / shape.n[a] / dxf[a];
+    for (int a = 0; a < shape.dimensionality; ++a) {
+      const double lo = blocks.lo(b, a);
+      const double cellWidth = (blocks.hi(b, a) - lo) / shape.n[a] / grid.dxf[a];
       if (!(std::abs(cellWidth - width) <= 1e-3 * width))
         file.fail("bounding box",
                   fmt::format("block {} at refine level {} has cells {} finest cells wide along "
                               "axis {}, expected {}",
-                              b, refine.values[b], cellWidth, a, width));
-      const double corner = (lo(b, a) - domainLo[a]) / dxf[a];
+                              b, blocks.refine.values[b], cellWidth, a, width));
+      const double corner = (lo - grid.domainLo[a]) / grid.dxf[a];
       if (!(corner + shape.n[a] * width <= std::ldexp(1.0, bricks::kMaxExtentBits)))
         file.fail("bounding box", fmt::format("block {} ends beyond 2^{} finest cells along "
                                               "axis {}",
@@ -183,99 +204,161 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
       if (!(std::abs(corner - std::round(corner)) <= 1e-3))
         file.fail("bounding box", fmt::format("block {} lower corner {} along axis {} is not on "
                                               "the finest grid",
-                                              b, lo(b, a), a));
+                                              b, lo, a));
       leaf.lower[a] = static_cast<int>(std::lround(corner));
     }
-    coarsest = std::max(coarsest, leaf.level);
     leaves.push_back(leaf);
   }
+  return leaves;
+}
 
-  // Cells in block order, z-y-x within a block (the datasets' [nb][nzb][nyb][nxb] order). A 2D
-  // slab copies fine cells, so its cell count is bounded by the file's leaf cells too.
-  const std::size_t perBlock = static_cast<std::size_t>(shape.n[0]) * shape.n[1] * shape.n[2];
-  const std::size_t leafCells = leaves.size() * perBlock;
+// How the leaves become cells: a 2D slab repeats each cell along z up to the coarsest leaf's
+// width, so its cell count is bounded by the file's leaf cells too.
+struct CellLayout {
+  BlockShape shape;
+  int coarsest = 0;
+  std::size_t perBlock = 0;
   std::size_t total = 0;
+
+  int axes() const { return shape.dimensionality; }
+  int copies(const Leaf& leaf) const { return axes() == 2 ? 1 << (coarsest - leaf.level) : 1; }
+};
+
+CellLayout cellLayout(const FlashFile& file, const BlockShape& shape,
+                      const std::vector<Leaf>& leaves) {
+  CellLayout layout{shape};
+  for (const Leaf& leaf : leaves) layout.coarsest = std::max(layout.coarsest, leaf.level);
+  layout.perBlock = static_cast<std::size_t>(shape.n[0]) * shape.n[1] * shape.n[2];
+  const std::size_t leafCells = leaves.size() * layout.perBlock;
   for (const Leaf& leaf : leaves) {
-    total += perBlock << (axes == 2 ? coarsest - leaf.level : 0);
-    if (total > kMaxCells || total > kMaxSlabGrowth * leafCells)
+    layout.total += layout.perBlock * std::size_t(layout.copies(leaf));
+    if (layout.total > kMaxCells || layout.total > kMaxSlabGrowth * leafCells)
       file.fail(
           fmt::format("{} leaf cells become more than {} cells after stacking 2D cells "
                       "into a uniform slab: too many",
                       leafCells, std::min(kMaxCells, kMaxSlabGrowth * leafCells)));
   }
-  // With a window, the leaves meeting it, each at its place in the values read.
-  constexpr std::size_t kNotRead = std::numeric_limits<std::size_t>::max();
-  std::vector<std::size_t> blocksRead, readSlot(window ? nb : 0, kNotRead);
-  if (window)
-    for (const Leaf& leaf : leaves) {
-      const int w = 1 << leaf.level;
-      glm::ivec3 upper = leaf.lower + glm::ivec3(shape.n[0], shape.n[1], shape.n[2]) * w;
-      if (axes == 2) upper.z = 1 << coarsest;
-      if (!window->meets(leaf.lower, upper, w)) continue;
-      readSlot[leaf.block] = blocksRead.size();
-      blocksRead.push_back(leaf.block);
-    }
-  if (read) {
-    read->pieces += leaves.size();
-    read->piecesRead += window ? blocksRead.size() : leaves.size();
-  }
+  return layout;
+}
 
-  CellSink sink(window, path.string(), read);
-  for (const std::string& name : names) sink.addChannel(name);
-  sink.reserve(total);
-  // The cells whose values are read: their indices into a variable's data and, with a window
-  // (else they are all the cells, in order), their own.
-  std::vector<std::size_t> froms, ats;
-  froms.reserve(window ? 0 : total);
+constexpr std::size_t kNotRead = std::numeric_limits<std::size_t>::max();
+
+// With a window, the leaves meeting it, each at its place (readSlot) in the values read.
+struct BlocksRead {
+  std::vector<std::size_t> blocks, readSlot;
+};
+
+BlocksRead blocksInWindow(const ValueWindow& window, const CellLayout& layout,
+                          const std::vector<Leaf>& leaves, std::size_t nb) {
+  BlocksRead read;
+  read.readSlot.assign(nb, kNotRead);
+  const glm::ivec3 n(layout.shape.n[0], layout.shape.n[1], layout.shape.n[2]);
   for (const Leaf& leaf : leaves) {
     const int w = 1 << leaf.level;
-    const int copies = axes == 2 ? 1 << (coarsest - leaf.level) : 1;
-    const bool wanted = !window || readSlot[leaf.block] != kNotRead;
+    glm::ivec3 upper = leaf.lower + n * w;
+    if (layout.axes() == 2) upper.z = 1 << layout.coarsest;
+    if (!window.meets(leaf.lower, upper, w)) continue;
+    read.readSlot[leaf.block] = read.blocks.size();
+    read.blocks.push_back(leaf.block);
+  }
+  return read;
+}
+
+// The cells whose values are read: their indices into a variable's data and, with a window
+// (else they are all the cells, in order), their own.
+struct CellsRead {
+  std::vector<std::size_t> froms, ats;
+};
+
+// Adds the cells in block order, z-y-x within a block (the datasets' [nb][nzb][nyb][nxb] order).
+CellsRead addCells(CellSink& sink, const CellLayout& layout, const std::vector<Leaf>& leaves,
+                   const BlocksRead* window) {
+  const int* n = layout.shape.n;
+  CellsRead cells;
+  cells.froms.reserve(window ? 0 : layout.total);
+  for (const Leaf& leaf : leaves) {
+    const int w = 1 << leaf.level;
+    const int copies = layout.copies(leaf);
+    const bool wanted = !window || window->readSlot[leaf.block] != kNotRead;
     if (!wanted && sink.skipsPieces()) {
-      sink.skip(perBlock * std::size_t(copies));
+      sink.skip(layout.perBlock * std::size_t(copies));
       continue;
     }
-    for (int k = 0; k < shape.n[2]; ++k)
-      for (int j = 0; j < shape.n[1]; ++j)
-        for (int i = 0; i < shape.n[0]; ++i) {
-          const std::size_t from = leaf.block * perBlock +
-                                   (static_cast<std::size_t>(k) * shape.n[1] + j) * shape.n[0] + i;
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          const std::size_t from =
+              leaf.block * layout.perBlock + (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i;
           for (int c = 0; c < copies; ++c) {
-            const int z = axes == 2 ? c * w : leaf.lower.z + k * w;
+            const int z = layout.axes() == 2 ? c * w : leaf.lower.z + k * w;
             const std::size_t at =
                 sink.cell(glm::ivec3(leaf.lower.x + i * w, leaf.lower.y + j * w, z),
                           static_cast<std::uint8_t>(leaf.level));
             if (!wanted) continue;
-            froms.push_back(from);
-            if (window) ats.push_back(at);
+            cells.froms.push_back(from);
+            if (window) cells.ats.push_back(at);
           }
         }
   }
+  return cells;
+}
 
-  const WorldTransform transform{domainLo, dxf};
-  if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
-    file.fail("bounding box", "the leaves cannot be placed: " + *problem);
-
+void setValues(const FlashFile& file, CellSink& sink, const std::vector<std::string>& names,
+               const CellLayout& layout, const CellsRead& cells, const BlocksRead* window) {
+  const std::size_t perBlock = layout.perBlock;
+  const int* n = layout.shape.n;
   for (std::size_t channel = 0; channel < names.size(); ++channel) {
     const std::string& name = names[channel];
     const std::vector<double> data =
-        window ? file.readBlocks(name, blocksRead)
+        window ? file.readBlocks(name, window->blocks)
                : file.read<double>(name, " (listed in 'unknown names')").values;
-    for (std::size_t i = 0; i < froms.size(); ++i) {
-      const std::size_t from = froms[i], at = window ? ats[i] : i;
-      const double v = data[window ? readSlot[from / perBlock] * perBlock + from % perBlock : from];
+    for (std::size_t i = 0; i < cells.froms.size(); ++i) {
+      const std::size_t from = cells.froms[i], at = window ? cells.ats[i] : i;
+      const double v =
+          data[window ? window->readSlot[from / perBlock] * perBlock + from % perBlock : from];
       if (const auto problem = unusableFieldValue(v)) {
         const std::size_t block = from / perBlock, inBlock = from % perBlock;
         file.fail(name, fmt::format("value {} of block {} cell (i, j, k) = ({}, {}, {}) is {}", v,
-                                    block, inBlock % shape.n[0], inBlock / shape.n[0] % shape.n[1],
-                                    inBlock / shape.n[0] / shape.n[1], *problem));
+                                    block, inBlock % n[0], inBlock / n[0] % n[1],
+                                    inBlock / n[0] / n[1], *problem));
       }
       sink.set(channel, at, static_cast<float>(v));
     }
   }
+}
+
+}  // namespace
+
+bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow* window,
+                           WindowedRead* read) {
+  const FlashFile file(path);
+  const auto names = file.readStrings("unknown names");
+  if (names.empty()) file.fail("unknown names", "lists no variables");
+  const BlockArrays blocks = readBlockArrays(file);
+  const BlockShape shape = checkedBlockShape(file, names, blocks.count);
+  const FinestGrid grid = finestGrid(file, blocks, shape);
+  const std::vector<Leaf> leaves = placeLeaves(file, blocks, shape, grid);
+  const CellLayout layout = cellLayout(file, shape, leaves);
+
+  std::optional<BlocksRead> inWindow;
+  if (window) inWindow = blocksInWindow(*window, layout, leaves, blocks.count);
+  const BlocksRead* windowed = inWindow ? &*inWindow : nullptr;
+  if (read) {
+    read->pieces += leaves.size();
+    read->piecesRead += window ? inWindow->blocks.size() : leaves.size();
+  }
+
+  CellSink sink(window, path.string(), read);
+  for (const std::string& name : names) sink.addChannel(name);
+  sink.reserve(layout.total);
+  const CellsRead cells = addCells(sink, layout, leaves, windowed);
+  const WorldTransform transform{grid.domainLo, grid.dxf};
+  if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
+    file.fail("bounding box", "the leaves cannot be placed: " + *problem);
+  setValues(file, sink, names, layout, cells, windowed);
 
   bricks::AmrField field = sink.finish(transform);
-  field.setInfo(flash::readFlashInfo(file, rmax, axes));
+  field.setInfo(flash::readFlashInfo(file, grid.rmax, shape.dimensionality));
   return field;
 }
 
