@@ -110,81 +110,172 @@ void emitPoint(uint thread, uint k, vec3 x, float time, VectorSample s) {
   outRegions[slot] = s.region;
 }
 
+// A line between two steps of its round: the offset x from lineAnchor, its IntegrationTime and
+// arc length, its steps and the points this round emitted, rk45's next step and the sample at x.
+// Not `precise` (a struct's members take no such qualifier): every value computed into it is
+// computed into a precise variable first.
+struct LineProgress {
+  vec3 x;
+  float time;
+  float traceLength;
+  uint steps;
+  uint emitted;
+  float nextStep;
+  VectorSample s;
+};
+
+void emitLinePoint(uint thread, inout LineProgress line) {
+  emitPoint(thread, line.emitted++, line.x, line.time, line.s);
+}
+
+// The line where the last round left it, sampled, its first point emitted if it has no step yet.
+LineProgress resumeLine(uint thread, LineState state) {
+  lineAnchor = kDeepPositions ? state.anchor : ivec3(0);
+  // rk45's next step; the fixed-step kernels keep none, so it holds no register there.
+  const float nextStep = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 ? state.stepSize : 0.0;
+  LineProgress line = LineProgress(state.offset, state.time, state.arcLength, state.steps, 0u,
+                                   nextStep, sampleStage(state.offset));
+  if (line.steps == 0 && params.keepHistory != 0) emitLinePoint(thread, line);
+  return line;
+}
+
+// Why the line ends before its next step: its termination code, or running if it does not.
+int terminationBeforeStep(LineProgress line) {
+  int reason = AMRSTREAM_REASON_RUNNING;
+  if (length(line.s.value) < params.terminalSpeed)
+    reason = AMRSTREAM_REASON_STAGNATION;
+  else if (line.steps == params.maxSteps)
+    reason = AMRSTREAM_REASON_MAX_STEPS;
+  else if (params.maxTime > 0.0 && abs(line.time) >= params.maxTime)
+    reason = AMRSTREAM_REASON_MAX_TIME;
+  return reason;
+}
+
+// Whether the line pauses before its next step, still running: the round's steps are taken (the
+// next round goes on from here), or the line left the pause box (it is handed on).
+bool pausesBeforeStep(LineProgress line, uint taken) {
+  return taken == params.roundSteps ||
+         (taken > 0 && params.pauseOutside != 0u && outsidePauseBox(line.x));
+}
+
+// The step to try from the line's point.
+struct StepPlan {
+  float h;             // the step
+  float scale;         // the factor of the stage vectors: the line's direction, or less (below)
+  bool endsOnMaxTime;  // whether the step is shortened to end on --max-time
+};
+
+// The last step before --max-time is shortened to end on it: the fixed-step integrators
+// scale their stage vectors, rk45 starts from the shortened step.
+StepPlan planStep(LineProgress line, float sign) {
+  precise float h = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 && line.nextStep > 0.0
+                        ? line.nextStep
+                        : params.stepSize;
+  precise const float advance = parameterStep(line.s, h);
+  precise float scale = sign;
+  // `precise`: the sum that decides it rounds as the CPU's does.
+  precise const bool endsOnMaxTime =
+      params.maxTime > 0.0 && abs(line.time) + advance > params.maxTime;
+  if (endsOnMaxTime) {
+    precise const float remaining = (params.maxTime - abs(line.time)) / advance;
+    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK45)
+      h *= remaining;
+    else
+      scale = sign * remaining;
+  }
+  return StepPlan(h, scale, endsOnMaxTime);
+}
+
+#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
+// Classic fourth-order Runge-Kutta as one loop over its samples, so that the sampling code
+// (and its traceRayEXT) appears once; the same sums as the written-out form, in its order.
+StepOutcome rk4Step(vec3 x, VectorSample s, float h, float scale) {
+  StepOutcome result = StepOutcome(AMRSTREAM_REASON_RUNNING, x, s, h, h);
+  precise const vec3 k1 = scale * direction(s, h);
+  precise vec3 sum = k1;
+  precise vec3 k = k1;
+  [[dont_unroll]] for (int stage = 0; stage < 4; ++stage) {
+    precise vec3 point;
+    if (stage < 3)
+      point = x + (stage == 2 ? 1.0 : 0.5) * k;
+    else
+      point = x + sum / 6.0;
+    const VectorSample sampled = samplePoint(point, stage == 3);
+    if ((result.reason = sampleFailure(sampled)) != AMRSTREAM_REASON_RUNNING) break;
+    if (stage < 3) {
+      k = scale * direction(sampled, h);
+      sum = sum + (stage == 2 ? 1.0 : 2.0) * k;
+    } else {
+      result.unwrapped = point;
+      result.next = sampled;
+    }
+  }
+  return result;
+}
+#endif
+
+// One step of the kernel's integrator from x (the compute kernels' rk4 is in advanceLine).
+StepOutcome integratorStep(vec3 x, VectorSample s, StepPlan plan) {
+#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
+  if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) return rk4Step(x, s, plan.h, plan.scale);
+#endif
+  return kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, plan.h, plan.scale)
+         : kIntegrator == AMRSTREAM_INTEGRATOR_RK2 ? rk2Step(x, s, plan.h, plan.scale)
+                                                  : dormandPrinceStep(x, s, plan.h, plan.scale);
+}
+
+// --max-length: whether the step keeps the line within it, its length then added to the line's.
+bool withinMaxLength(inout LineProgress line, vec3 unwrapped) {
+  bool within = true;
+  if (params.maxLength > 0.0) {
+    precise const float stepLength = length(params.spacing * (unwrapped - line.x));
+    precise const float traceLength = line.traceLength + stepLength;
+    within = !(traceLength > params.maxLength);
+    if (within) line.traceLength = traceLength;
+  }
+  return within;
+}
+
+// Moves the line to the step's end point, with its time advanced by the step taken (or set on
+// --max-time), and the end point's whole cells moved into the anchor with deep positions.
+void moveToStepEnd(inout LineProgress line, StepOutcome step, bool endsOnMaxTime, float sign) {
+  precise const float time = endsOnMaxTime ? sign * params.maxTime
+                                           : line.time + sign * parameterStep(line.s, step.step);
+  line.time = time;
+  if (kDeepPositions) {
+    lineAnchor = wrapPeriodic(lineAnchor, step.unwrapped);
+    const vec3 whole = floor(step.unwrapped);
+    lineAnchor += ivec3(whole);
+    precise const vec3 x = step.unwrapped - whole;
+    line.x = x;
+  } else {
+    line.x = wrapCellUnits(step.unwrapped);
+  }
+  line.s = step.next;
+  ++line.steps;
+}
+
 void advanceLine(uint thread) {
   const LineState state = statesIn[thread];
   const float sign = state.direction;
-  lineAnchor = kDeepPositions ? state.anchor : ivec3(0);
-  precise vec3 x = state.offset;
-  precise float time = state.time, traceLength = state.arcLength;
-  uint steps = state.steps, emitted = 0;
-  // rk45's next step; the fixed-step kernels keep none, so it holds no register there.
-  float nextStep = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 ? state.stepSize : 0.0;
-  VectorSample s = sampleStage(x);
-  if (steps == 0 && params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
-
-  int reason = sampleFailure(s);
+  LineProgress line = resumeLine(thread, state);
+  int reason = sampleFailure(line.s);
   for (uint taken = 0; reason == AMRSTREAM_REASON_RUNNING; ++taken) {
-    if (length(s.value) < params.terminalSpeed) {
-      reason = AMRSTREAM_REASON_STAGNATION;
-      break;
-    }
-    if (steps == params.maxSteps) {
-      reason = AMRSTREAM_REASON_MAX_STEPS;
-      break;
-    }
-    if (params.maxTime > 0.0 && abs(time) >= params.maxTime) {
-      reason = AMRSTREAM_REASON_MAX_TIME;
-      break;
-    }
-    if (taken == params.roundSteps) break;  // paused; the next round goes on from here
-    if (taken > 0 && params.pauseOutside != 0u && outsidePauseBox(x)) break;  // handed on
-
-    // The last step before --max-time is shortened to end on it: the fixed-step integrators
-    // scale their stage vectors, rk45 starts from the shortened step.
-    precise float h = kIntegrator == AMRSTREAM_INTEGRATOR_RK45 && nextStep > 0.0
-                          ? nextStep
-                          : params.stepSize;
-    precise const float advance = parameterStep(s, h);
-    precise float scale = sign;
-    bool endsOnMaxTime = params.maxTime > 0.0 && abs(time) + advance > params.maxTime;
-    if (endsOnMaxTime) {
-      precise const float remaining = (params.maxTime - abs(time)) / advance;
-      if (kIntegrator == AMRSTREAM_INTEGRATOR_RK45)
-        h *= remaining;
-      else
-        scale = sign * remaining;
-    }
-
-    precise vec3 unwrapped;
-    VectorSample sNext;
-    precise float stepTaken = h;
-    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) {
+    if ((reason = terminationBeforeStep(line)) != AMRSTREAM_REASON_RUNNING) break;
+    if (pausesBeforeStep(line, taken)) break;
+    StepPlan plan = planStep(line, sign);
+    StepOutcome step;
 #ifdef AMRSTREAM_RK4_SAMPLE_LOOP
-      // Classic fourth-order Runge-Kutta as one loop over its samples, so that the sampling code
-      // (and its traceRayEXT) appears once; the same sums as the written-out form, in its order.
-      precise const vec3 k1 = scale * direction(s, h);
-      precise vec3 sum = k1;
-      precise vec3 k = k1;
-      [[dont_unroll]] for (int stage = 0; stage < 4; ++stage) {
-        precise vec3 point;
-        if (stage < 3)
-          point = x + (stage == 2 ? 1.0 : 0.5) * k;
-        else
-          point = x + sum / 6.0;
-        const VectorSample sampled = samplePoint(point, stage == 3);
-        if ((reason = sampleFailure(sampled)) != AMRSTREAM_REASON_RUNNING) break;
-        if (stage < 3) {
-          k = scale * direction(sampled, h);
-          sum = sum + (stage == 2 ? 1.0 : 2.0) * k;
-        } else {
-          unwrapped = point;
-          sNext = sampled;
-        }
-      }
-      if (reason != AMRSTREAM_REASON_RUNNING) break;
+    step = integratorStep(line.x, line.s, plan);
+    if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
 #else
-      // Classic fourth-order Runge-Kutta, the paper's: written out here, as the hot path.
-      precise const vec3 k1 = scale * direction(s, h);
+    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) {
+      // Classic fourth-order Runge-Kutta, the paper's: written out here, as the hot path. As a
+      // step function like the others it costs the compute kernels speed
+      // (docs/performance-notes.md, "Integrators beside rk4").
+      const vec3 x = line.x;
+      const float h = plan.h, scale = plan.scale;
+      precise const vec3 k1 = scale * direction(line.s, h);
       precise const vec3 p2 = x + 0.5 * k1;
       const VectorSample s2 = sampleStage(p2);
       if ((reason = sampleFailure(s2)) != AMRSTREAM_REASON_RUNNING) break;
@@ -197,47 +288,31 @@ void advanceLine(uint thread) {
       const VectorSample s4 = sampleStage(p4);
       if ((reason = sampleFailure(s4)) != AMRSTREAM_REASON_RUNNING) break;
       precise const vec3 k4 = scale * direction(s4, h);
-      unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
-      sNext = sampleEnd(unwrapped);
+      precise const vec3 unwrapped = x + (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+      const VectorSample sNext = sampleEnd(unwrapped);
       if ((reason = sampleFailure(sNext)) != AMRSTREAM_REASON_RUNNING) break;
-#endif
+      step = StepOutcome(reason, unwrapped, sNext, h, h);
     } else {
-      const StepOutcome step = kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, h, scale)
-                               : kIntegrator == AMRSTREAM_INTEGRATOR_RK2 ? rk2Step(x, s, h, scale)
-                                                                        : dormandPrinceStep(x, s, h, scale);
+      step = integratorStep(line.x, line.s, plan);
       if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
-      unwrapped = step.unwrapped;
-      sNext = step.next;
-      stepTaken = step.step;
-      nextStep = step.nextStep;
-      endsOnMaxTime = endsOnMaxTime && step.step == h;
     }
-
-    if (params.maxLength > 0.0) {
-      precise const float stepLength = length(params.spacing * (unwrapped - x));
-      if (traceLength + stepLength > params.maxLength) {
-        reason = AMRSTREAM_REASON_MAX_LENGTH;
-        break;
-      }
-      traceLength += stepLength;
+#endif
+    if (kIntegrator != AMRSTREAM_INTEGRATOR_RK4) {  // rk4 takes h whole and keeps no next step
+      line.nextStep = step.nextStep;
+      plan.endsOnMaxTime = plan.endsOnMaxTime && step.step == plan.h;
     }
-    time = endsOnMaxTime ? sign * params.maxTime : time + sign * parameterStep(s, stepTaken);
-    if (kDeepPositions) {
-      lineAnchor = wrapPeriodic(lineAnchor, unwrapped);
-      const vec3 whole = floor(unwrapped);
-      lineAnchor += ivec3(whole);
-      x = unwrapped - whole;
-    } else {
-      x = wrapCellUnits(unwrapped);
+    if (!withinMaxLength(line, step.unwrapped)) {
+      reason = AMRSTREAM_REASON_MAX_LENGTH;
+      break;
     }
-    s = sNext;
-    ++steps;
-    if (params.keepHistory != 0) emitPoint(thread, emitted++, x, time, s);
+    moveToStepEnd(line, step, plan.endsOnMaxTime, sign);
+    if (params.keepHistory != 0) emitLinePoint(thread, line);
   }
   if (params.keepHistory == 0 && reason != AMRSTREAM_REASON_RUNNING)
-    emitPoint(thread, emitted++, x, time, s);  // endpoints only: the last point, written once
-  statesOut[thread] = LineState(x, time, traceLength, steps, state.line, sign, nextStep, lineAnchor);
-  lineRounds[thread] = LineRound(state.line, emitted, steps, reason);
+    emitLinePoint(thread, line);  // endpoints only: the last point, written once
+  statesOut[thread] = LineState(line.x, line.time, line.traceLength, line.steps, state.line, sign,
+                                line.nextStep, lineAnchor);
+  lineRounds[thread] = LineRound(state.line, line.emitted, line.steps, reason);
 }
 
 // 2^params.laneShift invocations a line, the first of them tracing it: rounds of few lines
