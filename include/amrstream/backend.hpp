@@ -11,7 +11,7 @@ namespace amrstream {
 
 struct BackendRequest {
   std::string backend{settings::kBackend.shown};  // backend: auto, rayquery, pipeline, compute, cpu
-  std::string device;       // device: a substring of the device name; empty: the default device
+  std::string device{};     // device: a substring of the device name; empty: the default device
   bool validation = false;  // Vulkan validation layers (see validationRequested)
   // Which of the qualifying devices: an MPI rank's local rank, so each takes its host's GPU.
   unsigned deviceSlot = 0;

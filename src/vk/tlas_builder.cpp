@@ -85,8 +85,9 @@ void TlasBuilder::record(VkCommandBuffer cmd, std::span<const AabbBlas> blases) 
     instances.push_back(tlasInstanceOf(blas));
   }
   // Coherent memory, written before the submission: visible to the build.
-  std::memcpy(instances_.mapped().data(), instances.data(),
-              instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
+  if (!instances.empty())
+    std::memcpy(instances_.mapped().data(), instances.data(),
+                instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
   const VkAccelerationStructureGeometryKHR geometry = instanceGeometry(instances_.deviceAddress());
   VkAccelerationStructureBuildGeometryInfoKHR build = buildInfo(geometry);
   build.dstAccelerationStructure = tlas_.handle();
