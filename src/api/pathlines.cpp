@@ -11,6 +11,7 @@
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "amrstream/dataset.hpp"
 #include "amrstream/error.hpp"
+#include "amrstream/settings.hpp"
 #include "amrstream/version.hpp"
 #include "api/device.hpp"
 #include "api/field_plan.hpp"
@@ -142,6 +143,71 @@ std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
 
 namespace {
 
+// Whether a time step of h can be taken at time t: t + h must move by h (to a part in 1000).
+bool resolvableAt(double t, double h) { return std::abs(((t + h) - t) - h) <= 1e-3 * h; }
+
+// A particle steps from the start to the end time: refuses a step it can never finish with, or
+// that the times cannot resolve. `given`: the user set it; else it is a tenth of the shortest
+// interval between the snapshots `closest` (their paths) apart.
+void checkStepCount(const flow::PathlineOptions& options, bool given,
+                    const std::pair<std::string, std::string>& closest) {
+  const double h = options.stepSize;
+  const double steps = std::ceil((options.endTime - options.startTime) / h);
+  const char* const why = given ? "" : " (the default, a tenth of the shortest interval used)";
+  const std::string snapshots =
+      given ? std::string()
+            : fmt::format("; snapshots {} and {} are closest; give {{step_size}}", closest.first,
+                          closest.second);
+  if (!(steps <= settings::kSteps.most))
+    throw settingError("step_size",
+                       fmt::format("{:g}{} needs {:.3g} steps from t = {:g} to {:g}, more than "
+                                   "the {:.0f} a particle may take{}",
+                                   h, why, steps, options.startTime, options.endTime,
+                                   settings::kSteps.most, snapshots));
+  for (const double t : {options.startTime, options.endTime})
+    if (!resolvableAt(t, h))
+      throw settingError("step_size", fmt::format("{:g}{} is too small to step by at t = {:g}, "
+                                                  "whose double precision cannot resolve it{}",
+                                                  h, why, t, snapshots));
+}
+
+// Streaklines release every seed again every `releaseEvery`: refuses more particles than a
+// trace may hold or its memory holds, or an interval the times cannot resolve. `seedCount` 0:
+// the seeds are not chosen yet, and only the releases are checked.
+void checkReleases(const flow::PathlineOptions& options, std::size_t seedCount,
+                   std::size_t channelCount) {
+  if (!(options.releaseEvery > 0.0)) return;
+  const double span = options.endTime - options.startTime;
+  const double releases = std::ceil(span / options.releaseEvery);
+  const double particles = releases * double(std::max<std::size_t>(seedCount, 1));
+  const std::string ofSeeds =
+      seedCount > 0 ? fmt::format(", {:.3g} particles of {} seeds", particles, seedCount) : "";
+  if (!(particles <= settings::kCount.most))
+    throw settingError("release_every",
+                       fmt::format("{:g} releases the seeds {:.3g} times from t = {:g} to {:g}{}, "
+                                   "more than the {:.0f} particles a run may hold",
+                                   options.releaseEvery, releases, options.startTime,
+                                   options.endTime, ofSeeds, settings::kCount.most));
+  if (!resolvableAt(options.startTime, options.releaseEvery) ||
+      !resolvableAt(options.endTime, options.releaseEvery))
+    throw settingError("release_every",
+                       fmt::format("{:g} is too small to release by between t = {:g} and {:g}, "
+                                   "whose double precision cannot resolve it",
+                                   options.releaseEvery, options.startTime, options.endTime));
+  if (seedCount == 0 || options.maxResultBytes == 0) return;
+  // On average a particle lives half the span: its state and a point per step.
+  const double points = particles * (1.0 + 0.5 * std::ceil(span / options.stepSize));
+  const double bytes = particles * double(flow::PathlineTracer::kBytesPerParticle) +
+                       points * double(flow::PathlineTracer::bytesPerPoint(channelCount));
+  if (bytes > double(options.maxResultBytes))
+    throw settingError("release_every",
+                       fmt::format("{:g} makes {:.3g} particles of {} seeds with about {:.3g} "
+                                   "points, which need {:.1f} GB, more than the {:.1f} GB the "
+                                   "result may take",
+                                   options.releaseEvery, particles, seedCount, points, bytes / 1e9,
+                                   double(options.maxResultBytes) / 1e9));
+}
+
 // The tracer's options from the settings and the series, checked.
 flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
                                       const PathlineSettings& settings) {
@@ -162,11 +228,16 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
   }
   const auto [first, last] = snapshotsUsed(series, options.startTime, options.endTime);
   double shortest = seriesEnd - seriesStart;
+  std::pair<std::string, std::string> closest{series.front().path, series.back().path};
   for (std::size_t i = first; i < last; ++i)
-    shortest = std::min(shortest, series[i + 1].time - series[i].time);
+    if (series[i + 1].time - series[i].time < shortest) {
+      shortest = series[i + 1].time - series[i].time;
+      closest = {series[i].path, series[i + 1].path};
+    }
   options.stepSize = settings.stepSize.value_or(shortest / 10);
   if (!(options.stepSize > 0.0) || !std::isfinite(options.stepSize))
     throw settingError("step_size", fmt::format("{:g} is not a positive time", options.stepSize));
+  checkStepCount(options, settings.stepSize.has_value(), closest);
   if (settings.releaseEvery < 0.0 || !std::isfinite(settings.releaseEvery))
     throw settingError("release_every",
                        fmt::format("{:g} is not a positive time", settings.releaseEvery));
@@ -175,6 +246,7 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
       settings.maxResultBytes > 0
           ? settings.maxResultBytes
           : static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
+  checkReleases(options, 0, 0);
   return options;
 }
 
@@ -330,6 +402,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   a->cells.reset();
   report.seedCount = seeds.points.size();
   say(log, fmt::format("seeds      {} from {}", seeds.points.size(), report.seedDescription));
+  checkReleases(options, seeds.points.size(), report.channelNames.size());
   flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
   say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
   traceIntervals(job, first, last, std::move(a), gpu, tracer, report, reporter);

@@ -43,7 +43,7 @@ using VectorBatchSampler =
 struct Snapshot {
   double time = 0.0;
   const VectorVolume* volume = nullptr;
-  VectorBatchSampler sampler;
+  VectorBatchSampler sampler = {};
 };
 
 class PathlineTracer {
@@ -91,6 +91,16 @@ class PathlineTracer {
     std::uint32_t lastBlock = 0, lastSlot = 0;  // where the last of them is
   };
 
+ public:
+  // A particle's state, besides its points: what each released particle costs up front.
+  static constexpr std::size_t kBytesPerParticle = sizeof(Particle);
+  // A stored point's bytes with `channels` point-data channels.
+  static constexpr std::size_t bytesPerPoint(std::size_t channels) {
+    return sizeof(std::uint32_t) + 2 * sizeof(glm::vec3) + sizeof(double) +
+           channels * sizeof(float);
+  }
+
+ private:
   // The points of one release or one step of many particles, slot by slot: each step's points go
   // to consecutive memory instead of one growing array per particle (scattered writes).
   static constexpr std::uint32_t kNoParticle = ~0u;  // a slot whose particle made no point

@@ -85,6 +85,59 @@ TEST_F(PathlinesCli, AnEnzoOutputsFilesAreOneSnapshot) {
   EXPECT_THAT(r.output, HasSubstr("a series needs two snapshots or more; 1 given"));
 }
 
+// A step or a release interval that the run could never finish (more steps than a particle may
+// take, more particles than a run may hold, times that double precision cannot tell apart) is
+// refused before any snapshot is traced, naming the setting and the figure.
+TEST_F(PathlinesCli, RefusesStepsAndReleasesItCouldNeverFinish) {
+  generateSwirl(2);
+  const std::string series = "pathlines '" + path("swirl_*.exa") + "' --out " + path("x.vtp") + " ";
+  const struct {
+    std::string options, error;
+  } cases[] = {
+      {"--count 4 --step-size 1e-12",
+       "--step-size: 1e-12 needs 5e+10 steps from t = 0 to 0.05, more than "
+       "the 1000000000 a particle may take"},
+      {"--count 4 --step-size 1e-30", "--step-size: 1e-30 needs 5e+28 steps"},
+      {"--count 4 --release-every 1e-9",
+       "--release-every: 1e-09 makes 2e+08 particles of 4 seeds with "
+       "about 1.2e+09 points, which need"},
+      {"--count 100000 --release-every 1e-6",
+       "--release-every: 1e-06 releases the seeds 5e+04 times from t = 0 to 0.05, 5e+09 "
+       "particles of 100000 seeds, more than the 2147483647 particles a run may hold"},
+      {"--count 4 --release-every 1e-12", "--release-every: 1e-12 releases the seeds 5e+10 times"},
+      {"--count 4 --release-every 1e-20", "--release-every: 1e-20 releases the seeds 5e+18 times"},
+      {"--count 4 --release-every 1e-30", "--release-every: 1e-30 releases the seeds 5e+28 times"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.options);
+    const Outcome r = run(series + c.options);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.error));
+    EXPECT_FALSE(fs::exists(path("x.vtp")));
+  }
+  // Snapshots 1e-10 apart in a series of 1: the default step (a tenth of that) would take 1e10
+  // steps, and at t = 1e6 it is below what the times resolve; both name the closest snapshots.
+  const std::string gen = "gen swirl --levels 2 --root-blocks 1 --target-cells 600 --out ";
+  for (const auto& [name, time] : {std::pair{"near/a", "0"},
+                                   {"near/b", "1e-10"},
+                                   {"near/c", "1"},
+                                   {"far/a", "1e6"},
+                                   {"far/b", "1000000.0000000001"}}) {
+    fs::create_directories(fs::path(path(name)).parent_path());
+    ASSERT_EQ(run(gen + path(name) + " --time " + time).status, 0);
+  }
+  Outcome r = run("pathlines '" + path("near/*.exa") + "' --count 4 --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--step-size: 1e-11 (the default, a tenth of the shortest "
+                                  "interval used) needs 1e+11 steps from t = 0 to 1"));
+  EXPECT_THAT(r.output, HasSubstr("near/a.exa and " + path("near/b.exa") + " are closest"));
+  r = run("pathlines '" + path("far/*.exa") + "' --count 4 --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("is too small to step by at t = 1e+06, whose double precision "
+                                  "cannot resolve it"));
+  EXPECT_FALSE(fs::exists(path("x.vtp")));
+}
+
 TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
   generateSwirl(2);
   Outcome r = run("pathlines " + path("swirl_0000.exa") + " --out " + path("x.vtp"));
