@@ -14,6 +14,11 @@
 
 namespace amrstream {
 
+// For a program (the command line): SIGINT, SIGTERM and SIGHUP remove the temporary files of the
+// outputs being written before the process ends as the signal would end it, so an interrupted
+// write leaves neither a partial output nor a temporary (the previous output, if any, stays).
+void removeTemporariesOnSignals();
+
 // Throws InputError naming the path unless it names an existing regular file (symbolic links
 // followed): a directory, FIFO, socket or device is refused by name before anything opens it.
 void checkRegularFile(const std::filesystem::path& path);

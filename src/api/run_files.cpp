@@ -7,11 +7,14 @@
 #include <utility>
 
 #include "amrstream/error.hpp"
+#include "output/atomic_file.hpp"
 #include "util/input_file.hpp"
 
 namespace amrstream {
 
 namespace fs = std::filesystem;
+
+void removeTemporariesOnSignals() { output::removeTemporariesOnSignals(); }
 
 void checkRegularFile(const fs::path& path) { regularFileSize(path); }
 

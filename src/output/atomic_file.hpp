@@ -4,7 +4,8 @@
 // renames it over the target. Destroying an uncommitted AtomicFile removes the temporary, so a
 // failed or interrupted write never leaves a partial file under the target name. Parts already
 // written can be overwritten in place (writeAt) until the commit, for headers whose contents are
-// known only once the rest is written.
+// known only once the rest is written. The file replaced keeps its permissions; a symbolic link
+// at the target stays, and the file it names is replaced.
 
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +15,10 @@
 #include "output/byte_sink.hpp"
 
 namespace amrstream::output {
+
+// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporaries of every AtomicFile
+// being written, then end the process as the signal would have.
+void removeTemporariesOnSignals();
 
 class AtomicFile final : public ByteSink {
  public:
@@ -38,6 +43,7 @@ class AtomicFile final : public ByteSink {
   [[noreturn]] void fail(int error) const;
 
   std::filesystem::path target_;
+  std::filesystem::path destination_;  // the target, or the file its symbolic link names
   std::filesystem::path temporary_;
   int fd_ = -1;
   std::uint64_t size_ = 0;  // bytes written so far
