@@ -10,10 +10,12 @@
 
 #include "amrstream/error.hpp"
 #include "amrstream/mpi_world.hpp"
+#include "amrstream/run_files.hpp"
 #include "amrstream/settings.hpp"
 #include "amrstream/version.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rank_start.hpp"
 
 namespace {
 
@@ -29,11 +31,17 @@ void quietUnlessRoot(const amrstream::MpiWorld& world) {
   amrstream::cli::Progress::silenceAll();
 }
 
+// The ranks did not all start the same command (rank_start.hpp): every rank ends with this.
+struct NotStarted {
+  amrstream::cli::StartProblem problem;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const amrstream::MpiWorld world;
   quietUnlessRoot(world);
+  amrstream::removeTemporariesOnSignals();
   std::optional<tbb::global_control> threads;
   if (world.size() > 1)
     threads.emplace(tbb::global_control::max_allowed_parallelism, world.threadsPerRank());
@@ -54,13 +62,30 @@ int main(int argc, char** argv) {
   std::string commandLine = "amrstream";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
   amrstream::cli::addCommands(app, world, commandLine);
+  // Under MPI every rank says, once its command line parsed or failed to, whether it starts.
+  const auto startProblem = [&](const amrstream::cli::RankStart& mine) {
+    return world.size() > 1 ? amrstream::cli::startProblem(world, mine) : std::nullopt;
+  };
+  app.parse_complete_callback([&] {
+    const auto parsed = app.get_subcommands();
+    if (auto problem = startProblem({0, parsed.empty() ? "" : parsed.front()->get_name(), ""}))
+      throw NotStarted{*problem};
+  });
   try {
     app.parse(argc, argv);
+  } catch (const NotStarted& e) {
+    return fail(e.problem.message.c_str(), e.problem.code, true);
   } catch (const CLI::ValidationError& e) {
     // A bad option value ("--count: ..."): bad input, reported as the other input errors are.
+    if (auto problem = startProblem({2, "", e.what()}))
+      return fail(problem->message.c_str(), problem->code, true);
     return fail(e.what(), 2, true);
   } catch (const CLI::ParseError& e) {
+    const int code = e.get_exit_code();
+    const auto problem = startProblem({code, "", code == 0 ? "" : e.what()});
     if (!world.isRoot()) return e.get_exit_code();
+    if (problem && code != 0 && problem->message != e.what())
+      return fail(problem->message.c_str(), problem->code, true);
     return app.exit(e);
   } catch (const amrstream::RankFailure& e) {
     const std::string message = e.cause() ? e.rank() + spelled(*e.cause()) : e.what();

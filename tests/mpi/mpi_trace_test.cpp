@@ -357,6 +357,42 @@ TEST_F(MpiTraceTest, ARankThatFailsEndsEveryRank) {
   }
 }
 
+// A rank that cannot start its command (an MPMD launch whose second rank has a bad option, a
+// seeds file missing on its node, an option it does not know, or another command) ends every rank
+// with that rank's error, said once, instead of leaving rank 0 waiting at its first collective.
+TEST_F(MpiTraceTest, ARankThatCannotStartEndsEveryRank) {
+  const std::string trace =
+      "trace builtin:rotation --levels 2 --root-blocks 1 --target-cells "
+      "600 --backend cpu --count 4 --steps 10 --out " +
+      path("out.vtp");
+  const struct {
+    std::string second, error;
+  } cases[] = {
+      {trace + " --count 0", "rank 1 of 2: --count: 0 is outside the range 1 to 2147483647"},
+      {trace + " --seeds " + path("absent.txt"), "rank 1 of 2: --seeds: "},
+      {trace + " --no-such-option", "rank 1 of 2: The following argument was not expected"},
+      {"info builtin:rotation",
+       "the ranks run different commands: rank 0 of 2 `trace`, "
+       "rank 1 of 2 `info`"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.second);
+    const testing::Outcome run = testing::runAmrstream(
+        trace + " : -np 1 " + AMRSTREAM_BINARY + " " + c.second, "timeout 120 env " + launcher(1));
+    EXPECT_NE(run.status, 0) << run.output;
+    EXPECT_NE(run.status, 124) << "the ranks waited until the timeout:\n" << run.output;
+    EXPECT_THAT(run.output, HasSubstr("amrstream: error: " + c.error));
+    EXPECT_EQ(run.output.find("amrstream: error"), run.output.rfind("amrstream: error"));
+    EXPECT_FALSE(std::filesystem::exists(path("out.vtp")));
+  }
+  // The same bad option on every rank is said once, without a rank's name, as in one process.
+  const testing::Outcome same =
+      testing::runAmrstream(trace + " --count 0", "timeout 120 env " + launcher(2));
+  EXPECT_EQ(same.status, 2) << same.output;
+  EXPECT_THAT(same.output, HasSubstr("amrstream: error: --count: 0 is outside the range"));
+  EXPECT_EQ(same.output.find("amrstream: error"), same.output.rfind("amrstream: error"));
+}
+
 TEST_F(MpiTraceTest, BenchRowsOverRanksTakeTheStepsOfOneProcess) {
   // A row of 2 particles leaves a rank of 3 with none (and no kernel time to take part with).
   const std::string arguments =
