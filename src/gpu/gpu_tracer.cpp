@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "amrstream/error.hpp"
 #include "flow/cpu_tracer.hpp"
 #include "flow/morton_order.hpp"
 #include "gpu_rounds.hpp"
@@ -323,11 +324,22 @@ std::unique_ptr<DeviceTraces> GpuTracer::traceOnDevice(std::span<const glm::dvec
 }
 
 std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared::LineState> lines,
-                                                          const flow::TraceOptions& options) {
+                                                          const flow::TraceOptions& options,
+                                                          std::uint32_t mostRoundSteps) {
   const flow::Column<shared::LineState> ordered = threadOrder(lines, spatialOrder_);
+  const std::uint64_t needed =
+      std::uint64_t(lines.size()) * flow::pointsPerLine(options, std::max(mostRoundSteps, 1u));
+  const std::uint64_t widest =
+      std::max<std::uint64_t>(sizeof(glm::vec3), volume_->channelCount() * sizeof(float));
+  const std::uint64_t fits = ctx_->limits().maxStorageBufferRange / widest;
+  if (needed > fits)
+    throw settingError("steps_per_frame",
+                       fmt::format("rounds of {} steps of {} lines make {} points, more than the "
+                                   "{} one device buffer holds; take fewer steps per frame",
+                                   mostRoundSteps, lines.size(), needed, fits));
   auto buffers = std::make_unique<RoundBuffers>(
-      *ctx_, lines.size(), pointSlots(options, lines.size()), volume_->channelCount(),
-      options.vorticity, volume_->deepPositions());
+      *ctx_, lines.size(), std::max(pointSlots(options, lines.size()), needed),
+      volume_->channelCount(), options.vorticity, volume_->deepPositions());
   auto rounds =
       std::make_unique<GpuRounds>(*ctx_, kernelFor(options), roundKernels_, device_, *volume_,
                                   ordered, options, std::move(buffers), *staging_, timeKernels_);

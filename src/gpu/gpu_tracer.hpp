@@ -88,9 +88,12 @@ class GpuTracer {
   bool fitsOnDevice(const flow::TraceOptions& options, std::size_t lines) const;
 
   // Lines (flow::planLines) that advance one round per call, for progressive tracing; all in
-  // one batch. The tracer must outlive the result.
+  // one batch, with room for rounds of up to `mostRoundSteps` steps (at least what the memory
+  // budget gives). Throws InputError naming steps_per_frame when such a round's points cannot
+  // fit one device buffer. The tracer must outlive the result.
   std::unique_ptr<flow::RoundTracer> startRounds(std::span<const shared::LineState> lines,
-                                                 const flow::TraceOptions& options);
+                                                 const flow::TraceOptions& options,
+                                                 std::uint32_t mostRoundSteps);
 
   // One round of at most `steps` steps for `lines` (states of any earlier rounds, in any order),
   // in the tracer's kept buffers: the round's block, and `lines` left holding the live lines'

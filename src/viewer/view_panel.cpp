@@ -83,7 +83,8 @@ void drawSeedingAndStepping(ViewSession& session) {
   if (ImGui::SliderInt("seeds", &count, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic))
     o.job.seeds.count = std::size_t(std::max(1, count));
   int steps = int(o.stepsPerFrame);
-  if (ImGui::SliderInt("steps per frame", &steps, 1, 200)) o.stepsPerFrame = std::uint32_t(steps);
+  if (ImGui::SliderInt("steps per frame", &steps, 1, int(kPanelMostStepsPerFrame)))
+    o.stepsPerFrame = std::uint32_t(steps);
   bool retrace = drawStepping(session);
   ImGui::Checkbox("pause tracing", &session.paused);
   if (ImGui::Button("reseed and trace again")) {

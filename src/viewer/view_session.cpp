@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "amrstream/error.hpp"
 #include "api/seed_choice.hpp"
 #include "flow/line_plan.hpp"
@@ -32,8 +34,9 @@ void ViewSession::startTraces() {
       flow::planLines(input_.volume(), input_.seeds.points, input_.options.direction);
   traces_.reset();
   vkQueueWaitIdle(ctx_->queue());
-  traces_.emplace(tracer_.startRounds(plan.states, input_.options), std::move(plan.layout),
-                  flow::traceShape(input_.volume(), input_.options));
+  traces_.emplace(tracer_.startRounds(plan.states, input_.options,
+                                      std::max(options_.stepsPerFrame, kPanelMostStepsPerFrame)),
+                  std::move(plan.layout), flow::traceShape(input_.volume(), input_.options));
 }
 
 void ViewSession::rebuildTubes() {

@@ -2,6 +2,7 @@
 // The state of `amrstream view`: the prepared input, traces growing a few steps per frame on the
 // GPU tracer, and the tube renderer; the viewer's controls change it between frames.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,9 @@
 #include "render/tube_renderer.hpp"
 
 namespace amrstream::viewer {
+
+// The control panel's steps-per-frame slider goes up to this; the rounds have room for it.
+inline constexpr std::uint32_t kPanelMostStepsPerFrame = 200;
 
 // Where one frame's time went (ViewSession::step), wall clock on the host.
 struct ViewFrameTimes {

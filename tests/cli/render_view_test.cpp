@@ -145,6 +145,19 @@ TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
 
 // The viewer under Xvfb: progressive tracing until every trace ends, a scripted orbit, and a
 // screenshot of the last frame.
+// Rounds have room for the steps a frame asks for, beyond what the memory budget alone gives
+// them (2000 steps a frame once failed with an internal error about the rounds' point slots).
+TEST(ViewCommand, ManyStepsPerFrameFitTheRounds) {
+  const auto run = testing::runAmrstream(
+      "view builtin:rotation --levels 3 --root-blocks 2 --target-cells 20000 --benchmark --count "
+      "64 --steps 4000 --steps-per-frame 2000 --frames 3 --width 32 --height 32",
+      "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("frames     3 in "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("growing    2 frames while traces ran"), std::string::npos)
+      << run.output;
+}
+
 // `view --benchmark` needs no window: it renders the frames offscreen and prints their times, one
 // line per stage; it refuses a run without frames and a screenshot it could not take.
 TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {

@@ -497,7 +497,7 @@ TEST_P(GpuTracerTest, ProgressiveRoundsMatchOneCpuRun) {
   const flow::TraceSet cpu = flow::traceStreamlines(volume, seeds.points, options);
   GpuTracer tracer(ctx(), GetParam(), volume, settings_);
   flow::LinePlan plan = flow::planLines(volume, seeds.points, options.direction);
-  flow::ProgressiveTraces grown(tracer.startRounds(plan.states, options), plan.layout,
+  flow::ProgressiveTraces grown(tracer.startRounds(plan.states, options, 13), plan.layout,
                                 flow::traceShape(volume, options));
   std::size_t rounds = 0;
   while (!grown.finished()) {
