@@ -6,13 +6,17 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <limits>
 #include <mutex>
 
+#include "amrstream/error.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/pathlines.hpp"
 #include "amrstream/rendering.hpp"
+#include "amrstream/seeding.hpp"
 #include "amrstream/settings.hpp"
 #include "amrstream/trace_job.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "amrstream/tracing.hpp"
 #include "api/handles.hpp"
 #include "api/traces_impl.hpp"
@@ -26,8 +30,11 @@ namespace amrstream::python {
 
 namespace {
 
-std::size_t lineIndex(const Traces& t, py::ssize_t i) {
+std::size_t lineIndex(const Traces& t, py::handle index) {
   const py::ssize_t n = py::ssize_t(t.lineCount());
+  py::ssize_t i =
+      wholeNumberIn<py::ssize_t>("index", index, std::numeric_limits<py::ssize_t>::min(),
+                                 std::numeric_limits<py::ssize_t>::max());
   if (i < 0) i += n;
   if (i < 0 || i >= n) throw py::index_error(fmt::format("line {} of {}", i, n));
   return std::size_t(i);
@@ -46,8 +53,12 @@ py::array pointsOf(const flow::TraceSet& lines, std::uint64_t first, std::uint64
   return readOnly(joined);
 }
 
+// The seeds, refused before any is converted when there are more than a run may trace (a
+// broadcast array of many rows takes no memory until it is copied).
 std::vector<glm::dvec3> seedPointsOf(py::handle seeds) {
-  const auto points = points3(seeds, "seeds");
+  const py::array given = pointsArray(seeds, "seeds");
+  checkSeedCount(double(given.shape(0)), "seeds");
+  const auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
   std::vector<glm::dvec3> list(std::size_t(points.shape(0)));
   std::memcpy(list.data(), points.data(), list.size() * sizeof(glm::dvec3));
   return list;
@@ -104,12 +115,12 @@ void bindLineArrays(py::class_<Traces>& traces) {
   traces.def("__len__", [](const Traces& t) { return linesOf(t).lineCount(); })
       .def(
           "__getitem__",
-          [](py::object self, py::ssize_t i) {
+          [](py::object self, Given<py::ssize_t> index) {
             const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
-            const std::size_t line = lineIndex(self.cast<const Traces&>(), i);
+            const std::size_t line = lineIndex(self.cast<const Traces&>(), index.value);
             return pointsOf(lines, lines.firstPoint(line), lines.pointCount(line), self);
           },
-          "(n_i, 3) points of line i: float32, float64 for precise positions")
+          py::arg("index"), "(n_i, 3) points of line i: float32, float64 for precise positions")
       .def_property_readonly(
           "points",
           [](py::object self) {
@@ -210,27 +221,30 @@ void bindTracing(py::module_& m) {
       "trace",
       [](py::object target, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::optional<std::string> interpolant, std::uint32_t steps, std::optional<float> stepSize,
-         std::string stepMode, std::string integrator, float tolerance,
-         std::optional<float> minStep, std::optional<float> maxStep, std::string direction,
-         bool vorticity, float maxLength, float maxTime, float terminalSpeed,
-         std::uint64_t memoryBudget, std::uint32_t cpuTail, std::string backend, std::string device,
-         bool validation, py::object progress, bool verbose) {
+         std::optional<std::string> interpolant, Given<std::uint32_t> steps,
+         Given<std::optional<float>> stepSize, std::string stepMode, std::string integrator,
+         Given<float> tolerance, Given<std::optional<float>> minStep,
+         Given<std::optional<float>> maxStep, std::string direction, bool vorticity,
+         Given<float> maxLength, Given<float> maxTime, Given<float> terminalSpeed,
+         Given<std::uint64_t> memoryBudget, Given<std::uint32_t> cpuTail, std::string backend,
+         std::string device, bool validation, py::object progress, bool verbose) {
         TraceSettings settings;
-        settings.steps = steps;
-        settings.stepSize = stepSize;
+        settings.steps = settingValue(s::kSteps, steps);
+        settings.stepSize = settingValue(s::kStepSize, stepSize);
         settings.stepMode = std::move(stepMode);
         settings.integrator = std::move(integrator);
-        settings.tolerance = tolerance;
-        settings.minStep = minStep;
-        settings.maxStep = maxStep;
+        settings.tolerance = settingValue(s::kTolerance, tolerance);
+        settings.minStep = settingValue(s::kMinStep, minStep);
+        settings.maxStep = settingValue(s::kMaxStep, maxStep);
         settings.direction = std::move(direction);
         settings.vorticity = vorticity;
-        settings.maxLength = maxLength;
-        settings.maxTime = maxTime;
-        settings.terminalSpeed = terminalSpeed;
-        settings.memoryBudget = memoryBudget;
-        settings.cpuTail = cpuTail;
+        settings.maxLength = settingValue(s::kMaxLength, maxLength);
+        settings.maxTime = settingValue(s::kMaxTime, maxTime);
+        settings.terminalSpeed = settingValue(s::kTerminalSpeed, terminalSpeed);
+        // As --memory-budget: up to the machine's memory.
+        settings.memoryBudget = wholeNumberIn<std::uint64_t>(
+            s::kMemoryBudget.name, memoryBudget.value, 0, maxMemoryBudget());
+        settings.cpuTail = settingValue(s::kCpuTail, cpuTail);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
         return runTrace(target, seeds, vector, pointData, periodic, interpolant, settings, request,
@@ -256,19 +270,23 @@ void bindTracing(py::module_& m) {
       "pathlines",
       [](std::vector<std::string> snapshots, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::optional<std::string> interpolant, std::optional<double> startTime,
-         std::optional<double> endTime, std::optional<double> stepSize, double releaseEvery,
-         std::string backend, std::string device, bool validation, py::object progress,
-         bool verbose) {
+         std::optional<std::string> interpolant, Given<std::optional<double>> startTime,
+         Given<std::optional<double>> endTime, Given<std::optional<double>> stepSize,
+         Given<double> releaseEvery, std::string backend, std::string device, bool validation,
+         py::object progress, bool verbose) {
         const FieldOptions defaults;
         const FieldOptions field{vector.value_or(""), pointData.value_or(defaults.pointData),
                                  periodic.value_or(defaults.periodic),
                                  interpolant.value_or(defaults.interpolant)};
         PathlineSettings settings;
-        settings.startTime = startTime;
-        settings.endTime = endTime;
-        settings.stepSize = stepSize;
-        settings.releaseEvery = releaseEvery;
+        settings.startTime = settingValue(s::kStartTime, startTime);
+        settings.endTime = settingValue(s::kEndTime, endTime);
+        settings.stepSize = settingValue(s::kTimeStep, stepSize);
+        // 0, the default, releases no more particles: streaklines need a positive interval.
+        Setting releases = s::kReleaseEvery;
+        releases.least = 0.0;
+        releases.positive = false;
+        settings.releaseEvery = settingValue(releases, releaseEvery);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
         return runPathlines(snapshots, seeds, field, settings, request, progress, verbose);
@@ -287,8 +305,13 @@ void bindTracing(py::module_& m) {
        "intervals.\n\n" +
        settingsDoc(keywords::kPathlines))
           .c_str());
-  m.def("reason_name", &reasonName, py::arg("code"),
-        "The name of a ReasonForTermination code, e.g. 'out of domain'.");
+  m.def(
+      "reason_name",
+      [](Given<int> code) {
+        return reasonName(wholeNumberIn<int>("code", code.value, std::numeric_limits<int>::min(),
+                                             std::numeric_limits<int>::max()));
+      },
+      py::arg("code"), "The name of a ReasonForTermination code, e.g. 'out of domain'.");
 }
 
 }  // namespace amrstream::python
