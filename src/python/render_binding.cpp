@@ -125,7 +125,7 @@ RenderRequest requestOf(const py::kwargs& look) {
   return request;
 }
 
-py::array renderTraces(const Traces& t, const py::kwargs& look) {
+py::array renderTraces(const TracesOfFiles& t, const py::kwargs& look) {
   if (!t.field())
     throw py::value_error(
         "paths through a series have no one field to render with: write them with to_vtp() and "
@@ -146,7 +146,7 @@ py::array renderTraces(const Traces& t, const py::kwargs& look) {
 
 }  // namespace
 
-void bindRendering(py::class_<Traces>& traces) {
+void bindRendering(py::class_<TracesOfFiles>& traces) {
   namespace s = settings;
   traces.def("render", &renderTraces,
              ("render(**look): renders the lines as shaded tubes on a Vulkan device, as "

@@ -681,8 +681,8 @@ def test_to_vtp_refuses_unknown_options_and_unwritable_paths(cloud, tmp_path):
             "zlib, lz4 or none")
     _raises(ValueError, lambda: t.to_vtp(str(tmp_path / "a.vtp"), periodic_lines="wrap"),
             "split or unwrapped")
-    _raises(RuntimeError, lambda: t.to_vtp(str(tmp_path / "no" / "such" / "a.vtp")),
-            str(tmp_path / "no" / "such" / "a.vtp"))
+    _raises(amrstream.InputError, lambda: t.to_vtp(str(tmp_path / "no" / "such" / "a.vtp")),
+            str(tmp_path / "no" / "such" / "a.vtp"), "does not exist")
     assert not (tmp_path / "a.vtp").exists()
     _raises(IndexError, lambda: t[2], "line 2 of 2")
 
