@@ -304,6 +304,11 @@ inline constexpr Setting kCamera{
     .shown = "35,25,1",
     .least = -kFloatMax,
     .most = kFloatMax};
+// The bounds of camera's angles, in degrees: an azimuth within a turn either way reaches every
+// direction about the up axis (larger ones only lose precision in float), and an elevation from
+// straight below the framed centre to straight above it.
+inline constexpr double kMaxCameraAzimuth = 360;
+inline constexpr double kMaxCameraElevation = 90;
 inline constexpr Setting kView{
     .name = "view",
     .help =

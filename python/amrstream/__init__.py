@@ -11,6 +11,8 @@ Vulkan GPU, with the data along them.
 docs/python.md in the amrstream sources is the reference.
 """
 
+import os
+
 from ._amrstream import (
     BackendError,
     Dataset,
@@ -81,18 +83,32 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
     writes. The settings, as `amrstream pathlines` names them, with their defaults, are those of
     amrstream._amrstream.pathlines (below).
     """
-    if isinstance(snapshots, str):
-        snapshots = [snapshots]
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
-    return _amrstream.pathlines([str(s) for s in snapshots], seeds, vector=_vector_text(vector),
+    return _amrstream.pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
                                 point_data=point_data, **settings)
+
+
+def _snapshot_paths(snapshots):
+    """A file, folder or pattern (str or os.PathLike), or a list of them -> a list of str."""
+    if isinstance(snapshots, (str, os.PathLike)):
+        snapshots = [snapshots]
+    try:
+        paths = [os.fspath(s) for s in snapshots]
+    except TypeError:
+        paths = None
+    if paths is None or not all(isinstance(path, str) for path in paths):
+        raise TypeError("snapshots must be a file, folder or glob pattern (str or os.PathLike) "
+                        f"or a list of them, not {snapshots!r}")
+    return paths
 
 
 def render(traces, **look):
     """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
     RGBA image. The options, as `amrstream render` names them, with their defaults, are those of
     Traces.render (below)."""
+    if not isinstance(traces, Traces):
+        raise TypeError(f"traces must be amrstream.Traces, not {type(traces).__name__}")
     return traces.render(**look)
 
 
@@ -110,6 +126,8 @@ def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):
     velocity_x/y/z."""
     from .yt_cells import leaf_cells_from_yt
 
+    if not hasattr(ds, "index") or not hasattr(ds, "dimensionality"):
+        raise TypeError(f"ds must be a yt dataset (yt.load's), not {type(ds).__name__}")
     cells = leaf_cells_from_yt(ds, vector=vector, fields=fields)
     cells.pop("field_units", None)
     return from_arrays(**cells)

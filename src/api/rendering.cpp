@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <span>
 #include <utility>
+#include <vector>
 
 #include "amrstream/error.hpp"
 #include "api/device.hpp"
@@ -63,6 +65,18 @@ void requireFinite(const std::vector<T>& values, const char* option) {
       throw settingError(option, fmt::format("{} is not a finite number", value));
 }
 
+// camera's azimuth and elevation (its zoom is checked where it frames the view).
+void checkCameraAngles(const std::vector<float>& camera) {
+  const std::pair<const char*, double> angles[] = {{"azimuth", settings::kMaxCameraAzimuth},
+                                                   {"elevation", settings::kMaxCameraElevation}};
+  for (std::size_t i = 0; i < std::min(camera.size(), std::size(angles)); ++i) {
+    const auto [angle, most] = angles[i];
+    if (!(std::abs(camera[i]) <= most))
+      throw settingError("camera", fmt::format("{} {} is outside the range {} to {} degrees", angle,
+                                               camera[i], -most, most));
+  }
+}
+
 void checkImageOptions(const RenderOptions& o) {
   for (const auto& [side, option] : {std::pair{o.width, "width"}, std::pair{o.height, "height"}})
     if (side < kMinImageSide || side > kMaxImageSide)
@@ -72,6 +86,7 @@ void checkImageOptions(const RenderOptions& o) {
     throw settingError("ao_samples", fmt::format("{} rays per pixel and frame are more than {}",
                                                  o.aoSamples, kMaxAoSamples));
   requireFinite(o.camera, "camera");
+  checkCameraAngles(o.camera);
   requireFinite(o.viewBox, "view_box");
   requireFinite(o.lookAt, "look_at");
   if (!(o.volumeOpacity >= 0.0f) || !std::isfinite(o.volumeOpacity))

@@ -1,6 +1,7 @@
 #include "render_options.hpp"
 
 #include "amrstream/settings.hpp"
+#include "option_checks.hpp"
 #include "setting_options.hpp"
 
 namespace amrstream::cli {
@@ -10,7 +11,12 @@ namespace s = settings;
 void addRenderOptions(CLI::App& command, RenderOptions& o) {
   addSetting(command, s::kWidth, o.width);
   addSetting(command, s::kHeight, o.height);
-  auto* camera = addSetting(command, s::kCamera, o.camera)->delimiter(',')->expected(2, 3);
+  auto* camera =
+      addSetting(command, s::kCamera, o.camera)
+          ->delimiter(',')
+          ->expected(2, 3)
+          ->check(numberIn(-s::kMaxCameraAzimuth, s::kMaxCameraAzimuth).application_index(0))
+          ->check(numberIn(-s::kMaxCameraElevation, s::kMaxCameraElevation).application_index(1));
   addSetting(command, s::kView, o.view)->excludes(camera);
   addSetting(command, s::kZoom, o.zoom);
   addSetting(command, s::kUp, o.up);

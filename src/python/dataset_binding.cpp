@@ -4,8 +4,11 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 
+#include "amrstream/builtin.hpp"
 #include "amrstream/dataset.hpp"
+#include "amrstream/error.hpp"
 #include "amrstream/field.hpp"
 #include "api/handles.hpp"
 #include "bindings.hpp"
@@ -25,17 +28,32 @@ py::object periodicOf(const DatasetInfo& info) {
   return py::make_tuple(info.periodic[0], info.periodic[1], info.periodic[2]);
 }
 
+// Field.resample's dims: one count or three, whole numbers (the library checks their range).
+std::vector<std::uint64_t> gridCounts(py::handle dims) {
+  constexpr std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
+  if (!PySequence_Check(dims.ptr()) || PyUnicode_Check(dims.ptr()))
+    return {wholeNumberIn<std::uint64_t>("dims", dims, 0, most)};
+  std::vector<std::uint64_t> counts;
+  for (const py::object& count : detail::items("dims", dims, 0))
+    counts.push_back(wholeNumberIn<std::uint64_t>("dims", count, 0, most));
+  return counts;
+}
+
+// Field.resample's box, as the command line's --box: finite numbers a float holds.
+std::vector<double> resampleBox(py::handle box) {
+  std::vector<double> bounds;
+  if (box.is_none()) return bounds;
+  for (const py::object& bound : detail::items("box", box, 6))
+    bounds.push_back(realIn("box", bound, -settings::kFloatMax, settings::kFloatMax));
+  return bounds;
+}
+
 // Field.resample: the grid's arrays indexed [i, j, k] (x first, as yt's covering grids), views
 // over one grid that the returned arrays keep alive.
-py::dict resampled(const Field& p, py::object dims, std::optional<std::vector<double>> box) {
-  std::vector<std::uint64_t> counts;
-  if (py::isinstance<py::int_>(dims))
-    counts.push_back(dims.cast<std::uint64_t>());
-  else
-    counts = dims.cast<std::vector<std::uint64_t>>();
+py::dict resampled(const Field& p, py::object dims, Given<std::optional<std::vector<double>>> box) {
   const flow::VectorVolume& volume = volumeOf(p);
   const flow::UniformGridSpec spec =
-      flow::uniformGridSpec(volume, counts, box.value_or(std::vector<double>{}));
+      flow::uniformGridSpec(volume, gridCounts(dims), resampleBox(box.value));
   auto grid = std::make_shared<flow::UniformGrid>();
   {
     py::gil_scoped_release unlocked;
@@ -77,71 +95,160 @@ py::array fileLevels(const Dataset& d) {
   return levels;
 }
 
+// origin or finest_width: 3 finite numbers (fromCells checks what else they must be).
 glm::dvec3 vec3Of(py::handle value, const char* what) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
-  if (!a || a.size() != 3) throw py::value_error(std::string(what) + " must be 3 numbers");
-  return {a.data()[0], a.data()[1], a.data()[2]};
+  const std::vector<py::object> given = detail::items(what, value, 3);
+  constexpr double most = std::numeric_limits<double>::max();
+  glm::dvec3 v;
+  for (int a = 0; a < 3; ++a) v[a] = realIn(what, given[std::size_t(a)], -most, most);
+  return v;
+}
+
+// `value` as a numpy array (an array as it is, without a copy) of `rank` dimensions whose items
+// are real numbers, checked before anything is converted: ValueError "`what` must be `shape`".
+py::array realArray(py::handle value, const std::string& what, const std::string& shape, int rank) {
+  const py::array array = py::array::ensure(value);
+  if (!array || array.ndim() != rank)
+    throw py::value_error(fmt::format("{} must be {}", what, shape));
+  if (!holdsRealNumbers(array))
+    throw py::value_error(fmt::format("{} must hold real numbers, not {}", what, itemsOf(array)));
+  return array;
+}
+
+// Corners and levels given as floats must be whole numbers.
+void requireWholeNumbers(const py::array& array, const std::string& what) {
+  if (array.dtype().kind() != 'f') return;
+  const auto real = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  for (py::ssize_t i = 0; i < real.size(); ++i)
+    if (real.data()[i] != std::floor(real.data()[i]))
+      throw py::value_error(
+          fmt::format("{} must be whole numbers; element {} is {}", what, i, real.data()[i]));
+}
+
+// More cells than a dataset may number, or than this machine can hold, are refused before any is
+// converted: a broadcast array of many rows takes no memory until it is copied.
+void checkCellCount(std::size_t cells) {
+  if (cells > kMaxBuiltinCells)
+    throw settingError("corners", fmt::format("{} cells are more than the {} a dataset may hold "
+                                              "(cells are numbered in 32 bits)",
+                                              cells, kMaxBuiltinCells));
+  checkGeneratedCells(double(cells), "corners");
+}
+
+std::vector<glm::ivec3> cornersOf(const py::array& given) {
+  requireWholeNumbers(given, "corners (in finest cells)");
+  const auto c =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(given);
+  const std::int64_t limit = std::int64_t(1) << bricks::kMaxExtentBits;
+  std::vector<glm::ivec3> corners(std::size_t(c.shape(0)));
+  const std::int64_t* values = c.data();
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const std::int64_t v = values[3 * i + std::size_t(a)];
+      if (v < -limit || v > limit)
+        throw settingError("corners", fmt::format("corner {} of cell {} is {}, outside the range "
+                                                  "{} to {}",
+                                                  "xyz"[a], i, v, -limit, limit));
+      corners[i][a] = int(v);
+    }
+  return corners;
+}
+
+// Levels count up from the coarsest, 0: none may be finer than the library resolves.
+std::vector<int> levelsOf(const py::array& given) {
+  requireWholeNumbers(given, "levels");
+  const auto l =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(given);
+  std::vector<int> levels(std::size_t(l.shape(0)));
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const std::int64_t level = l.data()[i];
+    if (level < 0 || level > bricks::kMaxLevel)
+      throw settingError("levels", fmt::format("level {} of cell {} is outside the range 0 to {}",
+                                               level, i, bricks::kMaxLevel));
+    levels[i] = int(level);
+  }
+  return levels;
+}
+
+Channel channelOf(py::handle key, py::handle values, std::size_t cells) {
+  const std::string name = py::str(key);
+  const std::string shape = fmt::format("an (N,) array of {} values", cells);
+  const py::array given = realArray(values, fmt::format("field '{}'", name), shape, 1);
+  if (std::size_t(given.shape(0)) != cells)
+    throw py::value_error(fmt::format("field '{}' must be {}", name, shape));
+  const auto v = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(given);
+  return {name, std::vector<float>(v.data(), v.data() + cells)};
 }
 
 std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::dict fields,
                                     py::handle origin, py::handle finestWidth,
                                     std::optional<std::array<bool, 3>> periodic,
-                                    std::optional<double> time, std::string timeUnit,
+                                    Given<std::optional<double>> time, std::string timeUnit,
                                     std::string lengthUnit, std::string source,
                                     std::string format) {
-  CellArrays cells;
-  const py::array given = py::array::ensure(corners);
-  if (given && given.dtype().kind() == 'f') {
-    const auto real = given.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
-    for (py::ssize_t i = 0; i < real.size(); ++i)
-      if (real.data()[i] != std::floor(real.data()[i]))
-        throw py::value_error(fmt::format(
-            "corners must be whole numbers of finest cells; element {} is {}", i, real.data()[i]));
-  }
-  const auto c =
-      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(corners);
-  if (!c || c.ndim() != 2 || c.shape(1) != 3)
+  const py::array givenCorners =
+      realArray(corners, "corners", "an (N, 3) array of integer cell indices", 2);
+  if (givenCorners.shape(1) != 3)
     throw py::value_error("corners must be an (N, 3) array of integer cell indices");
-  const auto l =
-      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(levels);
-  if (!l || l.ndim() != 1 || l.shape(0) != c.shape(0))
+  const std::size_t n = std::size_t(givenCorners.shape(0));
+  const py::array givenLevels = realArray(
+      levels, "levels", fmt::format("an (N,) array with one level per corner ({} corners)", n), 1);
+  if (std::size_t(givenLevels.shape(0)) != n)
     throw py::value_error(
-        fmt::format("levels must be an (N,) array with one level per corner "
-                    "({} corners)",
-                    c.shape(0)));
-  const std::size_t n = std::size_t(c.shape(0));
-  cells.corners.resize(n);
-  cells.levels.resize(n);
-  const std::int64_t* cd = c.data();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int a = 0; a < 3; ++a) {
-      const std::int64_t v = cd[3 * i + a];
-      if (v < -(std::int64_t(1) << 30) || v > (std::int64_t(1) << 30))
-        throw py::value_error(fmt::format("corner {} is out of range: {}", i, v));
-      cells.corners[i][a] = int(v);
-    }
-    const std::int64_t level = l.data()[i];
-    if (level < 0 || level > 64)
-      throw py::value_error(fmt::format("level {} of cell {} is out of range", level, i));
-    cells.levels[i] = int(level);
-  }
-  for (const auto& [key, value] : fields) {
-    const std::string name = py::str(key);
-    const auto v = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(value);
-    if (!v || v.ndim() != 1 || std::size_t(v.shape(0)) != n)
-      throw py::value_error(fmt::format("field '{}' must be an (N,) array of {} values", name, n));
-    cells.channels.push_back({name, std::vector<float>(v.data(), v.data() + n)});
-  }
+        fmt::format("levels must be an (N,) array with one level per corner ({} corners)", n));
+  checkCellCount(n);
+  CellArrays cells;
+  cells.corners = cornersOf(givenCorners);
+  cells.levels = levelsOf(givenLevels);
+  for (const auto& [key, values] : fields) cells.channels.push_back(channelOf(key, values, n));
   cells.origin = vec3Of(origin, "origin");
   cells.finestWidth = vec3Of(finestWidth, "finest_width");
   cells.periodic = periodic;
-  cells.time = time;
+  cells.time = settingValue(settings::kTime, time);
   cells.timeUnit = std::move(timeUnit);
   cells.lengthUnit = std::move(lengthUnit);
   cells.source = std::move(source);
   cells.format = std::move(format);
   py::gil_scoped_release unlocked;
   return std::make_shared<Dataset>(fromCells(std::move(cells)));
+}
+
+// load's sizes of a builtin dataset, read as the command line reads --levels, --root-blocks,
+// --target-cells and --gen-seed; nest takes more levels, as `amrstream gen` does.
+BuiltinOptions builtinOptions(const std::string& path, const Given<std::optional<int>>& levels,
+                              const Given<std::optional<int>>& rootBlocks,
+                              const Given<std::optional<std::size_t>>& targetCells,
+                              const Given<std::optional<std::uint64_t>>& genSeed) {
+  Setting levelRange = settings::kLevels;
+  if (path == "builtin:nest") levelRange.most = kMaxNestLevels;
+  BuiltinOptions builtin;
+  builtin.levels = settingValue(levelRange, levels).value_or(builtin.levels);
+  builtin.rootBlocks = settingValue(settings::kRootBlocks, rootBlocks).value_or(builtin.rootBlocks);
+  builtin.targetCells =
+      settingValue(settings::kTargetCells, targetCells).value_or(builtin.targetCells);
+  builtin.seed = settingValue(settings::kGenSeed, genSeed).value_or(builtin.seed);
+  return builtin;
+}
+
+// Refuses a builtin dataset this machine cannot hold before generating it.
+void checkBuiltinCells(const std::string& path, const BuiltinOptions& builtin) {
+  if (path == "builtin:nest") {
+    NestOptions nest;
+    nest.levels = builtin.levels;
+    checkGeneratedCells(nestCellCount(nest), "levels");
+  } else if (path.starts_with("builtin:")) {
+    checkBuiltinSize(builtin);
+  }
+}
+
+std::shared_ptr<Dataset> loadDataset(const std::string& path, Given<std::optional<int>> levels,
+                                     Given<std::optional<int>> rootBlocks,
+                                     Given<std::optional<std::size_t>> targetCells,
+                                     Given<std::optional<std::uint64_t>> genSeed) {
+  const BuiltinOptions builtin = builtinOptions(path, levels, rootBlocks, targetCells, genSeed);
+  checkBuiltinCells(path, builtin);
+  py::gil_scoped_release unlocked;
+  return std::make_shared<Dataset>(load(path, builtin));
 }
 
 void bindDatasetClass(py::module_& m) {
@@ -177,9 +284,9 @@ void bindDatasetClass(py::module_& m) {
       .def_property_readonly("level_name", [](const Dataset& d) { return d.info().levelName; })
       .def(
           "field",
-          [](py::object self, const std::string& name) {
+          [](py::object self, Given<std::string> name) {
             const Dataset& d = self.cast<const Dataset&>();
-            const std::span<const float> values = d.channel(name);
+            const std::span<const float> values = d.channel(text("name", name.value));
             return view(values.data(), values.size(), self);
           },
           py::arg("name"), "(N,) float32 values of one field, in cell order (no copy)")
@@ -225,24 +332,12 @@ void bindFieldClass(py::module_& m) {
 void bindDataset(py::module_& m) {
   bindDatasetClass(m);
   bindFieldClass(m);
-  m.def(
-      "load",
-      [](const std::string& path, std::optional<int> levels, std::optional<int> rootBlocks,
-         std::optional<std::size_t> targetCells, std::optional<std::uint64_t> genSeed) {
-        BuiltinOptions builtin;
-        if (levels) builtin.levels = *levels;
-        if (rootBlocks) builtin.rootBlocks = *rootBlocks;
-        if (targetCells) builtin.targetCells = *targetCells;
-        if (genSeed) builtin.seed = *genSeed;
-        py::gil_scoped_release unlocked;
-        return std::make_shared<Dataset>(load(path, builtin));
-      },
-      py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
-      py::arg("root_blocks") = py::none(), py::arg("target_cells") = py::none(),
-      py::arg("gen_seed") = py::none(),
-      "Loads a FLASH, Enzo, AMReX, Gerris or ExaBricks file, or builtin:NAME (rotation, abc, "
-      "cloud, swirl; sized by levels, root_blocks, target_cells; or nest, sized by levels "
-      "alone).");
+  m.def("load", &loadDataset, py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
+        py::arg("root_blocks") = py::none(), py::arg("target_cells") = py::none(),
+        py::arg("gen_seed") = py::none(),
+        "Loads a FLASH, Enzo, AMReX, Gerris or ExaBricks file, or builtin:NAME (rotation, abc, "
+        "cloud, swirl; sized by levels, root_blocks, target_cells; or nest, sized by levels "
+        "alone).");
 
   m.def("from_arrays", &fromArrays, py::arg("corners"), py::arg("levels"), py::arg("fields"),
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),

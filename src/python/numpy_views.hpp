@@ -3,9 +3,11 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 namespace amrstream::python {
@@ -35,17 +37,44 @@ py::array view3(const Vec* data, std::size_t n, py::handle owner) {
                                  reinterpret_cast<const T*>(data), owner));
 }
 
-// An (n, 3) float64 array of points, checked: ValueError naming `what` for any other shape.
-inline py::array_t<double, py::array::c_style | py::array::forcecast> points3(py::handle input,
-                                                                              const char* what) {
-  auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(input);
-  if (!array || array.ndim() != 2 || array.shape(1) != 3) {
-    const std::string shape = array
-                                  ? std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
-                                        array.shape(), array.shape() + array.ndim())))))
-                                  : std::string("not an array of numbers");
-    throw py::value_error(std::string(what) + " must be an (N, 3) array of x, y, z; got " + shape);
+// What an array holds, for messages about arrays whose items are no real numbers.
+inline std::string itemsOf(const py::array& array) {
+  switch (array.dtype().kind()) {
+    case 'U':
+    case 'S':
+      return "text";
+    case 'c':
+      return "complex numbers";
+    case 'b':
+      return "bools";
+    case 'O':
+      return "Python objects";
+    default:
+      return std::string(py::str(array.dtype()));
   }
+}
+
+// Whether an array's items are real numbers: integers or floats (not bools, complex numbers, text
+// or objects, which numpy would convert to numbers or refuse only while converting).
+inline bool holdsRealNumbers(const py::array& array) {
+  const char kind = array.dtype().kind();
+  return kind == 'i' || kind == 'u' || kind == 'f';
+}
+
+// `input` as an (N, 3) array of real numbers, as given: an array is not copied, so that its rows
+// can be counted before any is converted. ValueError naming `what` for anything else.
+inline py::array pointsArray(py::handle input, const char* what) {
+  const py::array array = py::array::ensure(input);
+  std::string got;
+  if (!array)
+    got = "not an array of numbers";
+  else if (array.ndim() != 2 || array.shape(1) != 3)
+    got = py::str(
+        py::tuple(py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()))));
+  else if (!holdsRealNumbers(array))
+    got = "an array of " + itemsOf(array) + ", not an array of numbers";
+  if (!got.empty())
+    throw py::value_error(std::string(what) + " must be an (N, 3) array of x, y, z; got " + got);
   return array;
 }
 

@@ -32,14 +32,18 @@ struct RenderRequest {
 
 using Setter = std::function<void(RenderRequest&, py::handle)>;
 
-// Writes a keyword's value into a member of the request (None into an optional or a list: unset).
+// Writes a keyword's value into a member of the request: a number read as its setting says
+// (settingValue), text and flags as they are (None into an optional or a list: unset).
 template <typename T>
-Setter into(T RenderOptions::*member) {
-  return [member](RenderRequest& r, py::handle value) {
-    if constexpr (std::is_same_v<T, std::vector<float>> || std::is_same_v<T, std::vector<double>>)
-      r.look.*member = value.is_none() ? T{} : value.cast<T>();
-    else
+Setter into(const Setting& setting, T RenderOptions::*member) {
+  return [&setting, member](RenderRequest& r, py::handle value) {
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, std::string>)
       r.look.*member = value.cast<T>();
+    else if constexpr (std::is_same_v<T, std::vector<float>> ||
+                       std::is_same_v<T, std::vector<double>>)
+      r.look.*member = value.is_none() ? T{} : settingValue<T>(setting, value);
+    else
+      r.look.*member = settingValue<T>(setting, value);
   };
 }
 
@@ -52,43 +56,43 @@ Setter intoRequest(T RenderRequest::*member) {
 const std::map<std::string, Setter>& setters() {
   namespace s = settings;
   static const std::map<std::string, Setter> table{
-      {"width", into(&RenderOptions::width)},
-      {"height", into(&RenderOptions::height)},
-      {"camera", into(&RenderOptions::camera)},
+      {"width", into(s::kWidth, &RenderOptions::width)},
+      {"height", into(s::kHeight, &RenderOptions::height)},
+      {"camera", into(s::kCamera, &RenderOptions::camera)},
       {"view", [](RenderRequest& r,
                   py::handle v) { r.look.view = v.is_none() ? "" : v.cast<std::string>(); }},
-      {"zoom", into(&RenderOptions::zoom)},
-      {"up", into(&RenderOptions::up)},
-      {"fov", into(&RenderOptions::fovDegrees)},
-      {"projection", into(&RenderOptions::projection)},
-      {"frame", into(&RenderOptions::frame)},
-      {"look_at", into(&RenderOptions::lookAt)},
-      {"view_box", into(&RenderOptions::viewBox)},
-      {"tube_radius", into(&RenderOptions::tubeRadius)},
-      {"tube_radius_physical", into(&RenderOptions::tubeRadiusPhysical)},
-      {"tube_radius_view", into(&RenderOptions::tubeRadiusOfView)},
-      {"radius_by_colour", into(&RenderOptions::radiusByColour)},
-      {"colour_by", into(&RenderOptions::colourBy)},
-      {"colour_map", into(&RenderOptions::colourMap)},
-      {"colour_scale", into(&RenderOptions::colourScale)},
-      {"symlog_width", into(&RenderOptions::symlogWidth)},
-      {"range", into(&RenderOptions::range)},
-      {"outline", into(&RenderOptions::outline)},
-      {"axes", into(&RenderOptions::axes)},
-      {"triad", into(&RenderOptions::triad)},
-      {"scale_bar", into(&RenderOptions::scaleBar)},
+      {"zoom", into(s::kZoom, &RenderOptions::zoom)},
+      {"up", into(s::kUp, &RenderOptions::up)},
+      {"fov", into(s::kFov, &RenderOptions::fovDegrees)},
+      {"projection", into(s::kProjection, &RenderOptions::projection)},
+      {"frame", into(s::kFrame, &RenderOptions::frame)},
+      {"look_at", into(s::kLookAt, &RenderOptions::lookAt)},
+      {"view_box", into(s::kViewBox, &RenderOptions::viewBox)},
+      {"tube_radius", into(s::kTubeRadius, &RenderOptions::tubeRadius)},
+      {"tube_radius_physical", into(s::kTubeRadiusPhysical, &RenderOptions::tubeRadiusPhysical)},
+      {"tube_radius_view", into(s::kTubeRadiusView, &RenderOptions::tubeRadiusOfView)},
+      {"radius_by_colour", into(s::kRadiusByColour, &RenderOptions::radiusByColour)},
+      {"colour_by", into(s::kColourBy, &RenderOptions::colourBy)},
+      {"colour_map", into(s::kColourMap, &RenderOptions::colourMap)},
+      {"colour_scale", into(s::kColourScale, &RenderOptions::colourScale)},
+      {"symlog_width", into(s::kSymlogWidth, &RenderOptions::symlogWidth)},
+      {"range", into(s::kRange, &RenderOptions::range)},
+      {"outline", into(s::kOutline, &RenderOptions::outline)},
+      {"axes", into(s::kAxes, &RenderOptions::axes)},
+      {"triad", into(s::kTriad, &RenderOptions::triad)},
+      {"scale_bar", into(s::kScaleBar, &RenderOptions::scaleBar)},
       {"background",
        [](RenderRequest& r, py::handle v) {
          r.look.background = v.is_none() ? "" : v.cast<std::string>();
        }},
-      {"ao_samples", into(&RenderOptions::aoSamples)},
+      {"ao_samples", into(s::kAoSamples, &RenderOptions::aoSamples)},
       {"volume", [](RenderRequest& r,
                     py::handle v) { r.look.volume = v.is_none() ? "" : v.cast<std::string>(); }},
-      {"volume_range", into(&RenderOptions::volumeRange)},
-      {"volume_opacity", into(&RenderOptions::volumeOpacity)},
-      {"linear_volume", into(&RenderOptions::linearVolume)},
-      {"frames", into(&RenderOptions::frames)},
-      {"colour_bar", into(&RenderOptions::colourBar)},
+      {"volume_range", into(s::kVolumeRange, &RenderOptions::volumeRange)},
+      {"volume_opacity", into(s::kVolumeOpacity, &RenderOptions::volumeOpacity)},
+      {"linear_volume", into(s::kLinearVolume, &RenderOptions::linearVolume)},
+      {"frames", into(s::kFrames, &RenderOptions::frames)},
+      {"colour_bar", into(s::kColourBar, &RenderOptions::colourBar)},
       {"backend",
        [](RenderRequest& r, py::handle v) { r.backend.backend = v.cast<std::string>(); }},
       {"device", [](RenderRequest& r, py::handle v) { r.backend.device = v.cast<std::string>(); }},
@@ -121,7 +125,7 @@ RenderRequest requestOf(const py::kwargs& look) {
   return request;
 }
 
-py::array renderTraces(const Traces& t, const py::kwargs& look) {
+py::array renderTraces(const TracesOfFiles& t, const py::kwargs& look) {
   if (!t.field())
     throw py::value_error(
         "paths through a series have no one field to render with: write them with to_vtp() and "
@@ -142,7 +146,7 @@ py::array renderTraces(const Traces& t, const py::kwargs& look) {
 
 }  // namespace
 
-void bindRendering(py::class_<Traces>& traces) {
+void bindRendering(py::class_<TracesOfFiles>& traces) {
   namespace s = settings;
   traces.def("render", &renderTraces,
              ("render(**look): renders the lines as shaded tubes on a Vulkan device, as "

@@ -6,13 +6,20 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <filesystem>
+#include <limits>
 #include <mutex>
 
+#include "amrstream/dataset.hpp"
+#include "amrstream/error.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/pathlines.hpp"
 #include "amrstream/rendering.hpp"
+#include "amrstream/run_files.hpp"
+#include "amrstream/seeding.hpp"
 #include "amrstream/settings.hpp"
 #include "amrstream/trace_job.hpp"
+#include "amrstream/trace_settings.hpp"
 #include "amrstream/tracing.hpp"
 #include "api/handles.hpp"
 #include "api/traces_impl.hpp"
@@ -24,10 +31,15 @@
 
 namespace amrstream::python {
 
+namespace fs = std::filesystem;
+
 namespace {
 
-std::size_t lineIndex(const Traces& t, py::ssize_t i) {
+std::size_t lineIndex(const Traces& t, py::handle index) {
   const py::ssize_t n = py::ssize_t(t.lineCount());
+  py::ssize_t i =
+      wholeNumberIn<py::ssize_t>("index", index, std::numeric_limits<py::ssize_t>::min(),
+                                 std::numeric_limits<py::ssize_t>::max());
   if (i < 0) i += n;
   if (i < 0 || i >= n) throw py::index_error(fmt::format("line {} of {}", i, n));
   return std::size_t(i);
@@ -46,17 +58,37 @@ py::array pointsOf(const flow::TraceSet& lines, std::uint64_t first, std::uint64
   return readOnly(joined);
 }
 
+// The seeds, refused before any is converted when there are more than a run may trace (a
+// broadcast array of many rows takes no memory until it is copied).
 std::vector<glm::dvec3> seedPointsOf(py::handle seeds) {
-  const auto points = points3(seeds, "seeds");
+  const py::array given = pointsArray(seeds, "seeds");
+  checkSeedCount(double(given.shape(0)), "seeds");
+  const auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
   std::vector<glm::dvec3> list(std::size_t(points.shape(0)));
   std::memcpy(list.data(), points.data(), list.size() * sizeof(glm::dvec3));
   return list;
 }
 
-Traces runTrace(py::object target, py::object seeds, std::optional<std::string> vector,
-                std::optional<std::string> pointData, std::optional<std::string> periodic,
-                std::optional<std::string> interpolant, const TraceSettings& settings,
-                const BackendRequest& backend, py::object progress, bool verbose) {
+// The files of the dataset named `source` (as load() names it), absolute: its reader's files
+// where it names an input on disk; none for builtin:KIND and arrays.
+std::vector<fs::path> inputFiles(const std::string& source) {
+  std::error_code error;
+  if (!fs::exists(source, error)) return {};
+  std::vector<fs::path> files;
+  try {
+    files = datasetFiles(source);
+  } catch (const InputError&) {  // not a dataset the library reads, but a file
+    files = {source};
+  }
+  for (fs::path& file : files)
+    if (fs::path absolute = fs::absolute(file, error); !error) file = std::move(absolute);
+  return files;
+}
+
+TracesOfFiles runTrace(py::object target, py::object seeds, std::optional<std::string> vector,
+                       std::optional<std::string> pointData, std::optional<std::string> periodic,
+                       std::optional<std::string> interpolant, const TraceSettings& settings,
+                       const BackendRequest& backend, py::object progress, bool verbose) {
   std::optional<Field> field;
   std::shared_ptr<Dataset> dataset;
   if (py::isinstance<Field>(target)) {
@@ -80,13 +112,14 @@ Traces runTrace(py::object target, py::object seeds, std::optional<std::string> 
                                   periodic.value_or(defaults.periodic),
                                   interpolant.value_or(defaults.interpolant)});
   }
+  std::vector<fs::path> inputs = inputFiles(field->source());
   PreparedJob job = prepare(*field, std::move(points), settings, backend, "Python");
-  return trace(job, {TraceStore::Host, HostValues::Keep}, reporter).assemble();
+  return {trace(job, {TraceStore::Host, HostValues::Keep}, reporter).assemble(), std::move(inputs)};
 }
 
-Traces runPathlines(const std::vector<std::string>& snapshots, py::object seeds,
-                    const FieldOptions& field, const PathlineSettings& settings,
-                    const BackendRequest& backend, py::object progress, bool verbose) {
+TracesOfFiles runPathlines(const std::vector<std::string>& snapshots, py::object seeds,
+                           const FieldOptions& field, const PathlineSettings& settings,
+                           const BackendRequest& backend, py::object progress, bool verbose) {
   PathlineJob job;
   job.seeds.points = seedPointsOf(seeds);
   if (job.seeds.points.empty()) throw py::value_error("pathlines() needs at least one seed");
@@ -96,30 +129,47 @@ Traces runPathlines(const std::vector<std::string>& snapshots, py::object seeds,
   const Reporter reporter{pythonLog(verbose), throttled(progress)};
   py::gil_scoped_release unlocked;
   job.series = listSnapshots(snapshots);
-  return tracePathlines(job, reporter).lines;
+  std::vector<fs::path> inputs;
+  for (const SnapshotFile& snapshot : job.series) {
+    const std::vector<fs::path> files = inputFiles(snapshot.path);
+    inputs.insert(inputs.end(), files.begin(), files.end());
+  }
+  return {tracePathlines(job, reporter).lines, std::move(inputs)};
+}
+
+// Writes the lines as the command line writes --out: refused before anything is written when
+// the file is one of the inputs they were traced from (or lies in an input directory), exists and
+// is not a regular file, or has no directory; written through a temporary renamed over it.
+WrittenLines writeVtp(const TracesOfFiles& t, const std::string& path, TraceOutput output) {
+  RunFiles files;
+  files.addInputs(t.inputs);
+  files.addOutput("path", path);
+  output.path = path;
+  py::gil_scoped_release unlocked;
+  return t.write(output);
 }
 
 // The lines as numpy views of the Traces' own memory, which each view keeps alive.
-void bindLineArrays(py::class_<Traces>& traces) {
-  traces.def("__len__", [](const Traces& t) { return linesOf(t).lineCount(); })
+void bindLineArrays(py::class_<TracesOfFiles>& traces) {
+  traces.def("__len__", [](const TracesOfFiles& t) { return linesOf(t).lineCount(); })
       .def(
           "__getitem__",
-          [](py::object self, py::ssize_t i) {
-            const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
-            const std::size_t line = lineIndex(self.cast<const Traces&>(), i);
+          [](py::object self, Given<py::ssize_t> index) {
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+            const std::size_t line = lineIndex(self.cast<const TracesOfFiles&>(), index.value);
             return pointsOf(lines, lines.firstPoint(line), lines.pointCount(line), self);
           },
-          "(n_i, 3) points of line i: float32, float64 for precise positions")
+          py::arg("index"), "(n_i, 3) points of line i: float32, float64 for precise positions")
       .def_property_readonly(
           "points",
           [](py::object self) {
-            const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
             return pointsOf(lines, 0, lines.pointCount(), self);
           },
           "(M, 3) points of all lines: float32, float64 for precise positions");
   const auto perLine = [&](const char* name, auto member) {
     traces.def_property_readonly(name, [member](py::object self) {
-      const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+      const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
       const auto& values = lines.*member;
       return view(values.data(), values.size(), self);
     });
@@ -132,19 +182,22 @@ void bindLineArrays(py::class_<Traces>& traces) {
   traces
       .def_property_readonly("integration_time",
                              [](py::object self) {
-                               const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+                               const flow::TraceSet& lines =
+                                   linesOf(self.cast<const TracesOfFiles&>());
                                return view(lines.times.data(), lines.pointCount(), self);
                              })
       .def_property_readonly("vectors",
                              [](py::object self) {
-                               const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+                               const flow::TraceSet& lines =
+                                   linesOf(self.cast<const TracesOfFiles&>());
                                return view3(lines.vectors.data(), lines.pointCount(), self);
                              })
-      .def_property_readonly("vector_name", [](const Traces& t) { return linesOf(t).vectorName; })
+      .def_property_readonly("vector_name",
+                             [](const TracesOfFiles& t) { return linesOf(t).vectorName; })
       .def_property_readonly(
           "point_data",
           [](py::object self) {
-            const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
             const std::size_t channels = lines.channelCount();
             py::dict arrays;
             for (std::size_t c = 0; c < channels; ++c)
@@ -154,43 +207,41 @@ void bindLineArrays(py::class_<Traces>& traces) {
           },
           "{name: (M,) float32} sampled at every point")
       .def_property_readonly("vorticity", [](py::object self) -> py::object {
-        const flow::TraceSet& lines = linesOf(self.cast<const Traces&>());
+        const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
         if (!lines.withVorticity) return py::none();
         return view3(lines.vorticity.data(), lines.pointCount(), self);
       });
 }
 
 // What ran them, and writing them.
-void bindReportAndOutput(py::class_<Traces>& traces) {
-  traces.def_property_readonly("backend", [](const Traces& t) { return t.report().backend; })
-      .def_property_readonly("device", [](const Traces& t) { return t.report().device; })
+void bindReportAndOutput(py::class_<TracesOfFiles>& traces) {
+  traces.def_property_readonly("backend", [](const TracesOfFiles& t) { return t.report().backend; })
+      .def_property_readonly("device", [](const TracesOfFiles& t) { return t.report().device; })
       .def_property_readonly("trace_seconds",
-                             [](const Traces& t) { return t.report().traceSeconds; })
+                             [](const TracesOfFiles& t) { return t.report().traceSeconds; })
       .def_property_readonly("setup_seconds",
-                             [](const Traces& t) { return t.report().setupSeconds; })
+                             [](const TracesOfFiles& t) { return t.report().setupSeconds; })
       .def(
           "to_vtp",
-          [](const Traces& t, const std::string& path, const std::string& compression,
+          [](const TracesOfFiles& t, Given<std::string> path, const std::string& compression,
              const std::string& periodicLines) {
-            WrittenLines written;
-            {
-              py::gil_scoped_release unlocked;
-              written = t.write({path, compression, periodicLines});
-            }
+            const WrittenLines written =
+                writeVtp(t, outputPath("path", path.value), {"", compression, periodicLines});
             return py::make_tuple(written.lines, written.points);
           },
           py::arg("path"), py::kw_only(), arg(settings::kCompression) = TraceOutput{}.compression,
           arg(settings::kPeriodicLines) = TraceOutput{}.periodicLines,
-          "Writes the lines as VTK XML PolyData, as the command line does; returns (polylines, "
-          "points) written.")
-      .def("__repr__", [](const Traces& t) {
+          "Writes the lines as VTK XML PolyData, as the command line does (through a temporary "
+          "file renamed over `path`); refuses a path that is one of the files they were traced "
+          "from, or exists and is not a regular file. Returns (polylines, points) written.")
+      .def("__repr__", [](const TracesOfFiles& t) {
         return fmt::format("<amrstream.Traces {} lines, {} points, {} on {}>", t.lineCount(),
                            t.pointCount(), t.report().backend, t.report().device);
       });
 }
 
 void bindTraces(py::module_& m) {
-  py::class_<Traces> traces(
+  py::class_<TracesOfFiles> traces(
       m, "Traces",
       "Traced lines (with both directions: the forward lines of all seeds, then the backward "
       "ones), as numpy views: line i's points are points[offsets[i]:offsets[i + 1]].");
@@ -210,27 +261,30 @@ void bindTracing(py::module_& m) {
       "trace",
       [](py::object target, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::optional<std::string> interpolant, std::uint32_t steps, std::optional<float> stepSize,
-         std::string stepMode, std::string integrator, float tolerance,
-         std::optional<float> minStep, std::optional<float> maxStep, std::string direction,
-         bool vorticity, float maxLength, float maxTime, float terminalSpeed,
-         std::uint64_t memoryBudget, std::uint32_t cpuTail, std::string backend, std::string device,
-         bool validation, py::object progress, bool verbose) {
+         std::optional<std::string> interpolant, Given<std::uint32_t> steps,
+         Given<std::optional<float>> stepSize, std::string stepMode, std::string integrator,
+         Given<float> tolerance, Given<std::optional<float>> minStep,
+         Given<std::optional<float>> maxStep, std::string direction, bool vorticity,
+         Given<float> maxLength, Given<float> maxTime, Given<float> terminalSpeed,
+         Given<std::uint64_t> memoryBudget, Given<std::uint32_t> cpuTail, std::string backend,
+         std::string device, bool validation, py::object progress, bool verbose) {
         TraceSettings settings;
-        settings.steps = steps;
-        settings.stepSize = stepSize;
+        settings.steps = settingValue(s::kSteps, steps);
+        settings.stepSize = settingValue(s::kStepSize, stepSize);
         settings.stepMode = std::move(stepMode);
         settings.integrator = std::move(integrator);
-        settings.tolerance = tolerance;
-        settings.minStep = minStep;
-        settings.maxStep = maxStep;
+        settings.tolerance = settingValue(s::kTolerance, tolerance);
+        settings.minStep = settingValue(s::kMinStep, minStep);
+        settings.maxStep = settingValue(s::kMaxStep, maxStep);
         settings.direction = std::move(direction);
         settings.vorticity = vorticity;
-        settings.maxLength = maxLength;
-        settings.maxTime = maxTime;
-        settings.terminalSpeed = terminalSpeed;
-        settings.memoryBudget = memoryBudget;
-        settings.cpuTail = cpuTail;
+        settings.maxLength = settingValue(s::kMaxLength, maxLength);
+        settings.maxTime = settingValue(s::kMaxTime, maxTime);
+        settings.terminalSpeed = settingValue(s::kTerminalSpeed, terminalSpeed);
+        // As --memory-budget: up to the machine's memory.
+        settings.memoryBudget = wholeNumberIn<std::uint64_t>(
+            s::kMemoryBudget.name, memoryBudget.value, 0, maxMemoryBudget());
+        settings.cpuTail = settingValue(s::kCpuTail, cpuTail);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
         return runTrace(target, seeds, vector, pointData, periodic, interpolant, settings, request,
@@ -256,19 +310,23 @@ void bindTracing(py::module_& m) {
       "pathlines",
       [](std::vector<std::string> snapshots, py::object seeds, std::optional<std::string> vector,
          std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::optional<std::string> interpolant, std::optional<double> startTime,
-         std::optional<double> endTime, std::optional<double> stepSize, double releaseEvery,
-         std::string backend, std::string device, bool validation, py::object progress,
-         bool verbose) {
+         std::optional<std::string> interpolant, Given<std::optional<double>> startTime,
+         Given<std::optional<double>> endTime, Given<std::optional<double>> stepSize,
+         Given<double> releaseEvery, std::string backend, std::string device, bool validation,
+         py::object progress, bool verbose) {
         const FieldOptions defaults;
         const FieldOptions field{vector.value_or(""), pointData.value_or(defaults.pointData),
                                  periodic.value_or(defaults.periodic),
                                  interpolant.value_or(defaults.interpolant)};
         PathlineSettings settings;
-        settings.startTime = startTime;
-        settings.endTime = endTime;
-        settings.stepSize = stepSize;
-        settings.releaseEvery = releaseEvery;
+        settings.startTime = settingValue(s::kStartTime, startTime);
+        settings.endTime = settingValue(s::kEndTime, endTime);
+        settings.stepSize = settingValue(s::kTimeStep, stepSize);
+        // 0, the default, releases no more particles: streaklines need a positive interval.
+        Setting releases = s::kReleaseEvery;
+        releases.least = 0.0;
+        releases.positive = false;
+        settings.releaseEvery = settingValue(releases, releaseEvery);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
         return runPathlines(snapshots, seeds, field, settings, request, progress, verbose);
@@ -287,8 +345,13 @@ void bindTracing(py::module_& m) {
        "intervals.\n\n" +
        settingsDoc(keywords::kPathlines))
           .c_str());
-  m.def("reason_name", &reasonName, py::arg("code"),
-        "The name of a ReasonForTermination code, e.g. 'out of domain'.");
+  m.def(
+      "reason_name",
+      [](Given<int> code) {
+        return reasonName(wholeNumberIn<int>("code", code.value, std::numeric_limits<int>::min(),
+                                             std::numeric_limits<int>::max()));
+      },
+      py::arg("code"), "The name of a ReasonForTermination code, e.g. 'out of domain'.");
 }
 
 }  // namespace amrstream::python

@@ -19,6 +19,7 @@
 #include "amrstream/distributed.hpp"
 #include "amrstream/error.hpp"
 #include "amrstream/field.hpp"
+#include "amrstream/rendering.hpp"
 #include "amrstream/run_files.hpp"
 #include "amrstream/trace_job.hpp"
 #include "amrstream/tracing.hpp"
@@ -162,6 +163,32 @@ TEST(FrontDoor, BadSettingsAndFilesAreInputErrors) {
   } catch (const amrstream::InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("--out"));
   }
+}
+
+// The renderer turns about the up axis and looks from straight below to straight above: a camera
+// past those angles is refused before a device is looked for (it used to be clamped to +-90).
+TEST(FrontDoor, CameraAnglesBeyondTheRenderersAreInputErrors) {
+  const amrstream::Field field = amrstream::buildField(uniformFlow(), {});
+  amrstream::BackendRequest cpu;
+  cpu.backend = "cpu";
+  amrstream::PreparedJob job = amrstream::prepare(field, {{0.2, 0.5, 0.5}}, {}, cpu);
+  const amrstream::Traces traces = amrstream::trace(job).assemble();
+  const auto refusal = [&](std::vector<float> camera) {
+    amrstream::RenderOptions look;
+    look.camera = std::move(camera);
+    try {
+      amrstream::renderImage(amrstream::BackendRequest{}, look, field, traces);  // auto
+    } catch (const amrstream::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal({30.0f, 200.0f}),
+            "camera: elevation 200 is outside the range -90 to 90 degrees");
+  EXPECT_EQ(refusal({30.0f, -90.5f}),
+            "camera: elevation -90.5 is outside the range -90 to 90 degrees");
+  EXPECT_EQ(refusal({1e30f, 20.0f}),
+            "camera: azimuth 1e+30 is outside the range -360 to 360 degrees");
 }
 
 TEST(FrontDoor, TheVersionIsStatedOnce) {

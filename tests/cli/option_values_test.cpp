@@ -138,6 +138,13 @@ TEST_F(OptionValues, RealNumbersMustBeFiniteAndInRange) {
 TEST_F(OptionValues, RenderOptionsAreBoundedAndFinite) {
   expectRefused(render("--camera nan,20"), "--camera: 'nan' is not a finite number");
   expectRefused(render("--camera 30,20,inf"), "--camera: 'inf' is not a finite number");
+  // Elevations past straight above or below the centre, and azimuths of many turns, were taken
+  // (elevation clamped to +-90, azimuth to float's precision).
+  expectRefused(render("--camera 30,200"), "--camera: 200 is outside the range -90 to 90");
+  expectRefused(render("--camera 30,-90.5"), "--camera: -90.5 is outside the range -90 to 90");
+  expectRefused(render("--camera 1e30,20"), "--camera: 1e30 is outside the range -360 to 360");
+  expectRefused("view builtin:rotation --camera 400,20",
+                "--camera: 400 is outside the range -360 to 360");
   expectRefused(render("--view-box 0,0,0,1,1,1e999"), "--view-box: '1e999' is not a finite");
   expectRefused(render("--tube-radius=-1"), "--tube-radius: -1 is not > 0");
   expectRefused(render("--range 0,inf"), "--range: 'inf' is not a finite number");
