@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "api/device.hpp"
+#include "api/trace_memory.hpp"
 #include "flow/cpu_tracer.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "util/host_threads.hpp"
@@ -126,6 +127,7 @@ flow::StoredTraces traceSeeds(const BackendRequest& request, flow::VectorVolume&
   TraceReport local;
   TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return traceOnTheCpu(volume, seeds, options, progress, t, log);
   const std::unique_ptr<GpuSession> session =
@@ -140,6 +142,8 @@ std::unique_ptr<HeldTraces> traceForWriting(
   TraceReport local;
   TraceReport& t = report ? *report : local;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  // Before the device may free the volume's host values, which the check's sample reads.
+  checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return std::make_unique<HostTraces>(traceOnTheCpu(volume, seeds, options, progress, t, log));
   std::unique_ptr<GpuSession> session =

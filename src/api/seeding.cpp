@@ -8,6 +8,7 @@
 #include "api/handles.hpp"
 #include "api/seed_choice.hpp"
 #include "flow/seed_strategies.hpp"
+#include "flow/trace_accumulator.hpp"
 #include "flow/trace_set.hpp"
 #include "util/host_memory.hpp"
 
@@ -43,10 +44,10 @@ std::pair<glm::dvec3, glm::dvec3> seedBox(const SeedRequest& request, const Doma
 }
 
 // The least host memory a seed takes through a run: its point and the text naming its origin in
-// the seed list, and one traced line (offset, seed id, direction, steps, reason) of one point.
+// the seed list, and one traced line of one point (trace_memory.hpp counts its lines).
 const double kLeastBytesPerSeed =
-    double(sizeof(glm::dvec3) + sizeof(std::string) + 32 + sizeof(std::uint64_t) +
-           4 * sizeof(std::uint32_t) + flow::TraceSet::bytesPerPoint(0, false));
+    double(sizeof(glm::dvec3) + sizeof(std::string) + 32 + flow::kHeldBytesPerLine +
+           flow::TraceSet::bytesPerPoint(0, false));
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "amrstream/error.hpp"
+#include "api/trace_memory.hpp"
 #include "util/host_memory.hpp"
 
 namespace amrstream {
@@ -150,7 +151,7 @@ flow::TraceOptions traceOptions(const TraceSettings& s, const flow::VectorVolume
   if (s.vorticity) checkVorticityRange(volume);
   options.memoryBudget = s.memoryBudget;
   options.cpuTailLines = s.cpuTail;
-  options.maxResultBytes = static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
+  options.maxResultBytes = hostTraceLimit();
   return options;
 }
 

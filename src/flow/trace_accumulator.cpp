@@ -40,6 +40,7 @@ void TraceAccumulator::add(RoundBlock&& round) {
     throw std::invalid_argument("TraceAccumulator: a round's arrays do not match its lines");
 
   const std::uint64_t bytes =
+      lineCount() * kHeldBytesPerLine +
       (points_ + points) * TraceSet::bytesPerPoint(channels, result_.withVorticity, precise);
   if (maxBytes_ > 0 && bytes > maxBytes_)
     throw InputError("traces", fmt::format("the traces grew past {:.1f} GiB, the limit for this "

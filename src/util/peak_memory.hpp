@@ -12,13 +12,21 @@
 
 namespace amrstream {
 
-// Peak since the last resetStagePeak(); bytes, 0 when the system does not say.
-inline std::uint64_t stagePeakResidentBytes() {
+namespace detail {
+// A size line of /proc/self/status ("VmHWM:", "VmRSS:") in bytes; 0 when the system does not say.
+inline std::uint64_t statusBytes(const std::string& key) {
   std::ifstream status("/proc/self/status");
   for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stoull(line.substr(6)) * 1024;
+    if (line.rfind(key, 0) == 0) return std::stoull(line.substr(key.size())) * 1024;
   return 0;
 }
+}  // namespace detail
+
+// Peak since the last resetStagePeak(); bytes, 0 when the system does not say.
+inline std::uint64_t stagePeakResidentBytes() { return detail::statusBytes("VmHWM:"); }
+
+// Resident now; bytes, 0 when the system does not say.
+inline std::uint64_t residentBytes() { return detail::statusBytes("VmRSS:"); }
 
 namespace detail {
 // The highest stage peak that a reset cleared (the reset clears getrusage's peak too).

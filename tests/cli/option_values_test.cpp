@@ -69,12 +69,12 @@ TEST_F(OptionValues, SeedCountsBeyondTheLimitAreRefusedBeforeAnySeedIsMade) {
                 "--particles: 4294967296 is outside the range 1 to 2147483647");
 }
 
-// Within the 32-bit limit, the memory a seed needs at the least (140 bytes: the seed and a line
-// of one point) decides.
+// Within the 32-bit limit, the memory a seed needs at the least (388 bytes: the seed, the text
+// naming it, and a line of one point with its bookkeeping) decides.
 TEST_F(OptionValues, SeedCountsBeyondMemoryAreRefusedWithTheNumbers) {
-  if (2e9 * 140.0 <= 0.75 * physicalMemory()) GTEST_SKIP() << "this machine could hold 2e9 seeds";
+  if (2e9 * 388.0 <= 0.75 * physicalMemory()) GTEST_SKIP() << "this machine could hold 2e9 seeds";
   expectRefused(trace("--count 2147483647"),
-                "--count: 2147483647 seeds need at least 280.0 GiB (140 bytes each for the seed "
+                "--count: 2147483647 seeds need at least 776.0 GiB (388 bytes each for the seed "
                 "and its traced line), more than the ");
   expectRefused(trace("--seed-line 0,0,0,1,1,1 --count 2147483647"), "seeds need at least");
   expectRefused(trace("--seed-density velx --count 2147483647"), "seeds need at least");

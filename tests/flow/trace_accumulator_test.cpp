@@ -192,12 +192,20 @@ TEST(TraceAccumulator, LowPartsCountAgainstTheMemoryLimit) {
   EXPECT_EQ(TraceSet::bytesPerPoint(2, true, true) - TraceSet::bytesPerPoint(2, true),
             sizeof(glm::vec3));
   std::vector<std::uint32_t> next(kLines, 0);
+  const std::uint64_t limit = kLines * kHeldBytesPerLine + 4 * TraceSet::bytesPerPoint(1, false);
   TraceAccumulator plain = accumulatorFor(byHand(false));
-  plain.setMemoryLimit(4 * TraceSet::bytesPerPoint(1, false));
+  plain.setMemoryLimit(limit);
   EXPECT_NO_THROW(plain.add(roundOf({{0, 4}}, next, false)));
   TraceAccumulator precise = accumulatorFor(byHand(false));
-  precise.setMemoryLimit(4 * TraceSet::bytesPerPoint(1, false));
+  precise.setMemoryLimit(limit);
   EXPECT_THROW(precise.add(roundOf({{0, 4}}, next, true)), InputError);
+}
+
+TEST(TraceAccumulator, TheLinesCountAgainstTheMemoryLimit) {
+  std::vector<std::uint32_t> next(kLines, 0);
+  TraceAccumulator accumulator = accumulatorFor(byHand(false));
+  accumulator.setMemoryLimit(kLines * kHeldBytesPerLine);
+  EXPECT_THROW(accumulator.add(roundOf({{0, 1}}, next, false)), InputError);
 }
 
 }  // namespace
