@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -324,6 +325,18 @@ TEST_F(ExaFormat, SizesAreCheckedBeforeAnythingIsAllocated) {
   EXPECT_THAT(errorOf(config), AllOf(HasSubstr((dir_ / "sample.cells").string()),
                                      HasSubstr("holds 68719476736 cells, more than the "
                                                "2147483648 accepted")));
+}
+
+TEST_F(ExaFormat, ACellsFileWithAHoleIsRefusedBeforeItsCellsAreHeld) {
+  const fs::path config = writeSample();
+  const fs::path cells = dir_ / "sample.cells";
+  std::ifstream in(cells, std::ios::binary);
+  const std::string head(std::istreambuf_iterator<char>(in), {});
+  // 5 GiB declared, 335 million cells, of which the file holds the sample's.
+  if (!testing::makeSparseFile(cells, head, std::uintmax_t(5) << 30))
+    GTEST_SKIP() << "the file system of " << dir_ << " does not report holes (SEEK_HOLE)";
+  EXPECT_THAT(errorOf(config), AllOf(HasSubstr(cells.string() + ": the cells file has a hole"),
+                                     HasSubstr("of 5368709120")));
 }
 
 TEST_F(ExaFormat, CellsNearIntMaxAreRefusedWithoutOverflow) {

@@ -155,6 +155,18 @@ TEST_F(GerrisReader, RejectsMalformedFiles) {
               HasSubstr("missing.txt"));
 }
 
+TEST_F(GerrisReader, SparseFilesAndEndlessLinesAreRefusedBeforeTheyAreHeld) {
+  const std::string header = "# 1:x 2:y 3:z 4:U 5:Lev 0\n";
+  const fs::path sparse = dir_ / "sparse.txt";
+  if (testing::makeSparseFile(sparse, header + "0.25 0.25 0.25 1 1\n", std::uintmax_t(3) << 30)) {
+    EXPECT_THAT(testing::inputErrorOf([&] { readGerris(sparse); }),
+                HasSubstr(sparse.string() + ": the Gerris file has a hole from byte"));
+  }
+  const fs::path endless = write("endless.txt", header + std::string(std::size_t(3) << 20, '1'));
+  EXPECT_THAT(testing::inputErrorOf([&] { readGerris(endless); }),
+              HasSubstr(endless.string() + ":2: the line is longer than 1048576 bytes"));
+}
+
 // ---- what the dump says about itself --------------------------------------------------------
 
 TEST_F(GerrisReader, ValuesThatAreNotFiniteFloatsNameTheLineAndTheColumn) {

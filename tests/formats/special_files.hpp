@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <future>
 #include <string>
@@ -44,6 +45,21 @@ inline std::string inputErrorWithoutHanging(
   }
   reader.join();
   return result.get();
+}
+
+// Makes `path` a sparse file of `size` bytes holding `data` first; false where the file system
+// does not report the hole after it (no SEEK_HOLE), so the caller skips.
+inline bool makeSparseFile(const std::filesystem::path& path, const std::string& data,
+                           std::uintmax_t size) {
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << data;
+  }
+  std::filesystem::resize_file(path, size);
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  const off_t hole = fd >= 0 ? ::lseek(fd, 0, SEEK_HOLE) : -1;
+  if (fd >= 0) ::close(fd);
+  return hole >= 0 && std::uintmax_t(hole) < size;
 }
 
 }  // namespace amrstream::testing

@@ -163,6 +163,7 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
   if (n > kMaxCells)
     throw InputError(path.string(),
                      fmt::format("holds {} cells, more than the {} accepted", n, kMaxCells));
+  refuseHoles(path, size, "the cells file");
   lowers.resize(n);
   levels.resize(n);
   constexpr std::size_t kPiece = std::size_t(1) << 20;  // cells

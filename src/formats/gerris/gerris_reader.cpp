@@ -23,6 +23,8 @@ namespace amrstream::formats {
 namespace {
 
 constexpr int kMaxGerrisLevel = 30;
+// A row holds a few numbers a column; no Gerris dump comes near this.
+constexpr std::size_t kMostLineBytes = std::size_t(1) << 20;
 constexpr double kLatticeTolerance = 0.01;  // of a cell size; the dump has 9 significant digits
 
 struct Columns {
@@ -89,8 +91,10 @@ Columns readHeader(std::ifstream& in, const std::filesystem::path& file, std::ui
                    std::uint64_t& consumed) {
   const std::string source = file.string();
   size = openRegularFile(in, file, "the Gerris file");
+  refuseHoles(file, size, "the Gerris file");
   std::string line;
-  if (!std::getline(in, line)) throw InputError(source, "the file is empty (no Gerris header)");
+  if (!readBoundedLine(in, line, kMostLineBytes, source, 1))
+    throw InputError(source, "the file is empty (no Gerris header)");
   consumed = line.size() + 1;
   return parseHeader(line, source + ":1");
 }
@@ -127,7 +131,7 @@ std::vector<Leaf> readLeaves(std::ifstream& in, const std::string& source, const
   std::string line;
   std::vector<Leaf> leaves;
   std::vector<double> row(columns.names.size());
-  for (int number = 2; std::getline(in, line); ++number) {
+  for (int number = 2; readBoundedLine(in, line, kMostLineBytes, source, number); ++number) {
     consumed += line.size() + 1;
     const std::vector<std::string_view> words = splitWords(line);
     if (words.empty()) continue;
