@@ -12,6 +12,7 @@
 #include "api/handles.hpp"
 #include "api/job_state.hpp"
 #include "api/render_scene.hpp"
+#include "api/trace_memory.hpp"
 #include "api/traces_impl.hpp"
 #include "flow/seeds.hpp"
 #include "render/image/font.hpp"
@@ -19,6 +20,7 @@
 #include "render/volume_range.hpp"
 #include "scene_overlays.hpp"
 #include "util/stopwatch.hpp"
+#include "vk/aabb_scene.hpp"
 
 namespace amrstream {
 
@@ -289,6 +291,33 @@ Image publicImage(render::Image image) {
   return {image.width, image.height, std::move(image.rgba)};
 }
 
+// Host bytes a tube segment takes while the tubes are built: the scene's segment, its box and
+// the renderer's copy in device order.
+constexpr double kHostBytesPerSegment =
+    2.0 * sizeof(shared::TubeSegment) + sizeof(VkAabbPositionsKHR);
+
+// Tubes that the device's acceleration structures or this machine's memory cannot hold are
+// refused before their segments are made. A line of n points is n - 1 segments, a lone point
+// one (a sphere); each is a box of the structures that the ray tracing backends build.
+void requireTubesFit(const vk::Context& ctx, gpu::Backend backend, const flow::TraceSet& lines) {
+  std::uint64_t segments = 0;
+  for (std::size_t line = 0; line < lines.lineCount(); ++line)
+    segments += std::max<std::uint64_t>(lines.pointCount(line), 2) - 1;
+  const std::uint64_t boxes = vk::maxBoxesPerScene(ctx);
+  if (backend != gpu::Backend::Compute && segments > boxes)
+    throw InputError("traces", fmt::format("{} tube segments are more than the {} that one "
+                                           "acceleration structure of {} holds; render fewer "
+                                           "lines or steps, or with {{backend}} compute",
+                                           segments, boxes, ctx.deviceName()));
+  const double bytes = double(segments) * kHostBytesPerSegment;
+  const double limit = double(hostTraceLimit());
+  if (limit > 0.0 && bytes > limit)
+    throw InputError("traces", fmt::format("{} tube segments need {:.1f} GiB to build, more than "
+                                           "the {:.1f} GiB this machine allows now; render fewer "
+                                           "lines or steps",
+                                           segments, bytes / 0x1p30, limit / 0x1p30));
+}
+
 // The dataset whose channels the tubes and the volume show.
 const bricks::AmrField& renderedCells(const Field& field) {
   if (!field.dataset())
@@ -311,7 +340,6 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
   RenderOptions o = options;
   if (o.timeUnit.empty() && traces.impl().stepMode)
     o.timeUnit = integrationTimeUnit(*traces.impl().stepMode, field.info());
-  const RenderScene scene = prepareScene(o, cells, volume, linesOf(traces));
   if (o.colourBar || o.axes || o.triad || o.scaleBar)
     render::defaultFont();  // a missing font is told before the work, not after
   const BackendChoice choice = chooseBackend(request, BackendUse::Render, log);
@@ -320,6 +348,8 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
         "rendering needs a Vulkan device with compute; none was found "
         "(see `amrstream devices`)");
   const vk::Context ctx = createContext(request, choice);
+  requireTubesFit(ctx, choice.backend, linesOf(traces));
+  const RenderScene scene = prepareScene(o, cells, volume, linesOf(traces));
   RenderedImage result;
   result.backend = gpu::backendName(choice.backend);
   result.device = ctx.deviceName();

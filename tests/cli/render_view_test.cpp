@@ -2,7 +2,9 @@
 // with the validation layer on: the PNGs they write must show tubes.
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -119,6 +121,65 @@ TEST(RenderCommand, RendersTracesReadFromAVtpLikeTracingThem) {
   EXPECT_GT(tubeLikePixels(a), 100u);
   const render::ImageDifference difference = render::compareImages(a, b, 24);
   EXPECT_LT(difference.fractionAbove, 0.002) << "mean " << difference.meanAbsolute;
+}
+
+std::string compressed(const std::string& bytes) {
+  uLongf size = compressBound(uLong(bytes.size()));
+  std::string out(size, '\0');
+  compress2(reinterpret_cast<Bytef*>(out.data()), &size,
+            reinterpret_cast<const Bytef*>(bytes.data()), uLong(bytes.size()), 9);
+  out.resize(size);
+  return out;
+}
+
+// A zlib-compressed VTK array, its UInt64 header first, of `bytes` bytes in blocks of 32 KiB:
+// zeros, or `value` when given.
+std::string compressedArray(std::uint64_t bytes, const std::string& value = "") {
+  constexpr std::uint64_t kBlock = 32768;
+  const std::uint64_t blocks = (bytes + kBlock - 1) / kBlock, last = bytes - (blocks - 1) * kBlock;
+  const std::string full = compressed(std::string(kBlock, '\0'));
+  const std::string tail = compressed(value.empty() ? std::string(last, '\0') : value);
+  std::vector<std::uint64_t> header = {blocks, kBlock, last};
+  header.insert(header.end(), blocks - 1, full.size());
+  header.push_back(tail.size());
+  std::string array(reinterpret_cast<const char*>(header.data()), header.size() * 8);
+  for (std::uint64_t b = 0; b + 1 < blocks; ++b) array += full;
+  return array + tail;
+}
+
+// One line of `points` points, all at the origin (the connectivity repeats point 0): a file of a
+// few MB that declares the tubes of gigabytes.
+void writeDeclaredPoints(const std::filesystem::path& path, std::uint64_t points) {
+  const std::string positions = compressedArray(points * 12);
+  const std::string connectivity = compressedArray(points * 8);
+  const std::string offsets =
+      compressedArray(8, std::string(reinterpret_cast<const char*>(&points), 8));
+  std::ofstream out(path, std::ios::binary);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+         "compressor=\"vtkZLibDataCompressor\"><PolyData><Piece NumberOfPoints=\""
+      << points << "\" NumberOfLines=\"1\"><Points><DataArray type=\"Float32\" "
+      << "NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/></Points><Lines>"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\""
+      << positions.size() << "\"/><DataArray type=\"Int64\" Name=\"offsets\" "
+      << "format=\"appended\" offset=\"" << positions.size() + connectivity.size()
+      << "\"/></Lines></Piece></PolyData><AppendedData encoding=\"raw\">_" << positions
+      << connectivity << offsets << "</AppendedData></VTKFile>\n";
+}
+
+// Tubes beyond what the device's acceleration structures hold are refused by name before their
+// segments are made (a 5 MB file declaring 40 million points once ended in an internal error
+// after building 6 GB of boxes).
+TEST(RenderCommand, TubesTheDeviceCannotHoldAreRefusedBeforeTheyAreBuilt) {
+  const auto vtp = outputPath("declared.vtp");
+  writeDeclaredPoints(vtp, 40'000'000);
+  const auto run =
+      testing::runAmrstream("render builtin:cloud --backend rayquery --traces " + vtp.string() +
+                            " --frames 1 --out " + outputPath("declared.png").string());
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("traces: 39999999 tube segments are more than the"), std::string::npos)
+      << run.output;
+  EXPECT_FALSE(std::filesystem::exists(outputPath("declared.png")));
 }
 
 TEST(RenderCommand, RefusesTheCpuBackendAndUnknownNames) {
