@@ -62,8 +62,9 @@ void unpackPiece(const StagedLayout& layout, const vk::Buffer& slot, std::size_t
     const std::size_t to = first + from;
     std::memcpy(block.times.data() + to, times + from, n * sizeof(float));
     std::memcpy(block.vectors.data() + to, vectors + from, n * sizeof(glm::vec3));
-    std::memcpy(block.channels.data() + to * channels, values + from * channels,
-                n * channels * sizeof(float));
+    if (channels > 0)
+      std::memcpy(block.channels.data() + to * channels, values + from * channels,
+                  n * channels * sizeof(float));
     if (vorticity)
       std::memcpy(block.vorticity.data() + to, vorticity + from, n * sizeof(glm::vec3));
     toPhysicalPositions(volume, cells + from, ids ? ids + from : nullptr, n,
