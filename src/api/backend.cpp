@@ -64,6 +64,16 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use, const
     }
     choice.backend = gpu::chooseBackend(device, why);
     if (device) choice.deviceFilter = device->name;
+    // autoDevice() gives only devices that run the compute backend.
+    if (use == BackendUse::Render && device && device->type == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+        choice.backend != gpu::Backend::Compute) {
+      choice.backend = gpu::Backend::Compute;
+      why = fmt::format(
+          "compute on {} (a software Vulkan device: its ray tracing is emulated, "
+          "and the compute backend's own tube hierarchy renders about 9 times "
+          "faster; name {{backend}} to choose another)",
+          device->name);
+    }
     say(log, "backend    auto: " + why);
   } else {
     const std::optional<gpu::Backend> named = gpu::parseBackend(request.backend);
@@ -107,7 +117,8 @@ std::vector<DeviceDescription> describeDevices() {
     std::string why;
     const gpu::Backend best = gpu::chooseBackend(&d, why);
     out.software = d.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    out.autoRender = gpu::backendName(best);
+    const bool compute = d.supports(gpu::requiredCapabilities(gpu::Backend::Compute));
+    out.autoRender = gpu::backendName(out.software && compute ? gpu::Backend::Compute : best);
     out.autoTrace = out.software ? "cpu" : out.autoRender;
     described.push_back(std::move(out));
   }
