@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "api/device.hpp"
 #include "api/handles.hpp"
@@ -253,9 +254,13 @@ RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
   if (!o.volume.empty()) {
     if (!cells.findChannel(o.volume)) {
       std::string choices;
-      for (const Channel& c : cells.channels()) choices += (choices.empty() ? "" : ", ") + c.name;
-      throw settingError("volume",
-                         fmt::format("no channel '{}'; the input has: {}", o.volume, choices));
+      std::vector<std::string> candidates;
+      for (const Channel& c : cells.channels()) {
+        choices += (choices.empty() ? "" : ", ") + c.name;
+        candidates.push_back(c.name);
+      }
+      throw settingError("volume", fmt::format("no channel '{}'{}; the input has: {}", o.volume,
+                                               didYouMean(o.volume, candidates), choices));
     }
     scene.contextScalars = flow::gatherScalar(cells, volume, o.volume);
     s.volume = true;

@@ -15,6 +15,7 @@
 #include <set>
 #include <unordered_set>
 
+#include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "util/first_failing.hpp"
 
@@ -219,9 +220,14 @@ std::optional<std::size_t> AmrField::findChannel(std::string_view name) const {
 const Channel& AmrField::channel(std::string_view name) const {
   if (auto i = findChannel(name)) return channels_[*i];
   std::string names;
-  for (const Channel& c : channels_) names += (names.empty() ? "" : ", ") + c.name;
-  throw InputError(source_, fmt::format("no channel named '{}' (channels: {})", name,
-                                        names.empty() ? "none" : names));
+  std::vector<std::string> candidates;
+  for (const Channel& c : channels_) {
+    names += (names.empty() ? "" : ", ") + c.name;
+    candidates.push_back(c.name);
+  }
+  throw InputError(source_,
+                   fmt::format("no channel named '{}'{}; the channels are: {}", name,
+                               didYouMean(name, candidates), names.empty() ? "none" : names));
 }
 
 int AmrField::coarsestLevel() const { return *std::max_element(levels_.begin(), levels_.end()); }

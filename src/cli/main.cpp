@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rank_start.hpp"
+#include "unknown_arguments.hpp"
 
 namespace {
 
@@ -80,6 +81,12 @@ int main(int argc, char** argv) {
     if (auto problem = startProblem({2, "", e.what()}))
       return fail(problem->message.c_str(), problem->code, true);
     return fail(e.what(), 2, true);
+  } catch (const CLI::ExtrasError& e) {
+    // An option the command does not know ("--cout"): named, with the closest one it has.
+    const std::string message = amrstream::cli::unknownArgumentsMessage(app, e.what());
+    if (auto problem = startProblem({2, "", message}))
+      return fail(problem->message.c_str(), problem->code, true);
+    return fail((message + "\nRun with --help for the options.").c_str(), 2, true);
   } catch (const CLI::ParseError& e) {
     const int code = e.get_exit_code();
     const auto problem = startProblem({code, "", code == 0 ? "" : e.what()});

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 
 namespace amrstream::flow {
@@ -59,7 +60,8 @@ bool ChannelCatalog::has(const std::string& name) const {
 
 void ChannelCatalog::require(const std::string& name) const {
   if (!has(name))
-    throw InputError(source, fmt::format("no channel named '{}' (channels: {})", name, list()));
+    throw InputError(source, fmt::format("no channel named '{}'{}; the channels are: {}", name,
+                                         didYouMean(name, names), list()));
 }
 
 std::string ChannelCatalog::list() const {

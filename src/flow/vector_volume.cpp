@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "cell_gradients.hpp"
 #include "util/stopwatch.hpp"
@@ -293,8 +294,10 @@ std::vector<std::string> choosePointData(const ChannelCatalog& channels,
   for (std::string name; std::getline(list, name, ',');) {
     if (name.empty()) continue;
     if (!channels.has(name))
-      throw settingError("point_data", fmt::format("no channel '{}' in {}; the channels are: {}",
-                                                   name, channels.source, channels.list()));
+      throw settingError(
+          "point_data",
+          fmt::format("no channel '{}' in {}{}; the channels are: {}", name, channels.source,
+                      didYouMean(name, channels.names), channels.list()));
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
   return names;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "flow/cell_gradients.hpp"
 #include "flow/sampler.hpp"
@@ -28,8 +29,13 @@ ColourField colourFieldOf(const flow::TraceSet& traces, const std::string& name,
   }
   if (!field.findChannel(name)) {
     std::string choices = "speed, time";
-    for (const Channel& c : field.channels()) choices += ", " + c.name;
-    throw settingError("colour_by", fmt::format("no field '{}'; choose one of: {}", name, choices));
+    std::vector<std::string> candidates = {"speed", "time"};
+    for (const Channel& c : field.channels()) {
+      choices += ", " + c.name;
+      candidates.push_back(c.name);
+    }
+    throw settingError("colour_by", fmt::format("no field '{}'{}; choose one of: {}", name,
+                                                didYouMean(name, candidates), choices));
   }
   const auto traced = std::find(traces.channelNames.begin(), traces.channelNames.end(), name);
   if (traced != traces.channelNames.end()) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "amrstream/builtin.hpp"
+#include "amrstream/closest_name.hpp"
 #include "amrstream/dataset.hpp"
 #include "amrstream/distributed.hpp"
 #include "amrstream/error.hpp"
@@ -189,6 +190,18 @@ TEST(FrontDoor, CameraAnglesBeyondTheRenderersAreInputErrors) {
             "camera: elevation -90.5 is outside the range -90 to 90 degrees");
   EXPECT_EQ(refusal({1e30f, 20.0f}),
             "camera: azimuth 1e+30 is outside the range -360 to 360 degrees");
+}
+
+TEST(FrontDoor, ClosestNamesIgnoreCaseAndAFewTypos) {
+  const std::vector<std::string> names = {"dens", "magx", "magy", "magz", "--count"};
+  EXPECT_EQ(amrstream::closestName("MAGX", names), "magx");
+  EXPECT_EQ(amrstream::closestName("Dens", names), "dens");
+  EXPECT_EQ(amrstream::closestName("--cout", names), "--count");
+  EXPECT_EQ(amrstream::closestName("density", names),
+            std::nullopt);  // 3 edits of 7 letters: 2 allowed
+  EXPECT_EQ(amrstream::closestName("x", names), std::nullopt);
+  EXPECT_EQ(amrstream::didYouMean("mag_x", names), " (did you mean 'magx'?)");
+  EXPECT_EQ(amrstream::didYouMean("pressure", names), "");
 }
 
 TEST(FrontDoor, TheVersionIsStatedOnce) {

@@ -117,6 +117,26 @@ TEST_F(Cli, SeedOutsideTheDomainFailsNamingTheLine) {
   EXPECT_THAT(r.output, HasSubstr(path("seeds.txt") + ":2: seed (2, 0.5, 0.5) is outside"));
 }
 
+// Typos get the closest name: an option of the command, or a channel whatever its case.
+TEST_F(Cli, TyposAreAnsweredWithTheClosestName) {
+  Outcome r = run("trace builtin:rotation" + kSmall + " --cout 5 --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("amrstream: error: unknown option --cout (did you mean "
+                                  "--count?); left over: 5"));
+  r = run("trace builtin:rotation" + kSmall + " --sedd-box 0,0,0,1,1,1 --out " + path("t.vtp"));
+  EXPECT_THAT(r.output, HasSubstr("unknown option --sedd-box (did you mean --seed-box?)"));
+  r = run("trace builtin:rotation" + kSmall + " --frobnicate --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("amrstream: error: unknown option --frobnicate\n"));
+  r = run("trace builtin:cloud" + kSmall + " --vector MAGX,magy,magz --out " + path("t.vtp"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("no channel named 'MAGX' (did you mean 'magx'?); the "
+                                  "channels are: dens, magx, magy, magz"));
+  r = run("trace builtin:cloud" + kSmall + " --point-data dense --out " + path("t.vtp"));
+  EXPECT_THAT(r.output, HasSubstr("no channel 'dense' in builtin:cloud (did you mean 'dens'?)"));
+  EXPECT_FALSE(fs::exists(path("t.vtp")));
+}
+
 TEST_F(Cli, BadOptionsFail) {
   Outcome r =
       run("trace builtin:rotation" + kSmall + " --seed-box 0,0,0,2,1,1 --out " + path("t.vtp"));

@@ -157,7 +157,7 @@ TEST(AmrField, ChannelLookupListsAvailableChannels) {
   EXPECT_EQ(&field.channel("rho"), &field.channels()[0]);
   EXPECT_FALSE(field.findChannel("velx").has_value());
   EXPECT_THAT(testing::inputErrorOf([&] { field.channel("velx"); }),
-              HasSubstr("no channel named 'velx' (channels: rho)"));
+              HasSubstr("no channel named 'velx'; the channels are: rho"));
 }
 
 TEST(WorldTransform, RoundTripsBetweenCellUnitsAndPhysical) {

@@ -370,7 +370,7 @@ TEST_F(MpiTraceTest, ARankThatCannotStartEndsEveryRank) {
   } cases[] = {
       {trace + " --count 0", "rank 1 of 2: --count: 0 is outside the range 1 to 2147483647"},
       {trace + " --seeds " + path("absent.txt"), "rank 1 of 2: --seeds: "},
-      {trace + " --no-such-option", "rank 1 of 2: The following argument was not expected"},
+      {trace + " --no-such-option", "rank 1 of 2: unknown option --no-such-option"},
       {"info builtin:rotation",
        "the ranks run different commands: rank 0 of 2 `trace`, "
        "rank 1 of 2 `info`"},
