@@ -23,6 +23,12 @@ void removeTemporariesOnSignals();
 // followed): a directory, FIFO, socket or device is refused by name before anything opens it.
 void checkRegularFile(const std::filesystem::path& path);
 
+// Throws InputError naming `option` unless `path`'s extension (any case) is one of `extensions`
+// (".vtp"): an output's name says what it holds, so "x.jpg" is refused where a PNG is written.
+// `format` names what is written ("a PNG image").
+void requireOutputExtension(const std::string& option, const std::filesystem::path& path,
+                            const std::vector<std::string>& extensions, const std::string& format);
+
 class RunFiles {
  public:
   // A file or directory the run reads. Paths that do not exist are skipped: their readers say so.

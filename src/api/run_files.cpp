@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <system_error>
 #include <utility>
 
@@ -41,6 +43,17 @@ void RunFiles::addInput(const fs::path& path) {
 
 void RunFiles::addInputs(const std::vector<fs::path>& paths) {
   for (const fs::path& path : paths) addInput(path);
+}
+
+void requireOutputExtension(const std::string& option, const fs::path& path,
+                            const std::vector<std::string>& extensions, const std::string& format) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (std::find(extensions.begin(), extensions.end(), extension) != extensions.end()) return;
+  std::string names;
+  for (const std::string& e : extensions) names += (names.empty() ? "" : " or ") + e;
+  throw InputError(option, fmt::format("'{}': the file written is {}; name it {}", path.string(),
+                                       format, names));
 }
 
 void RunFiles::addOutput(const std::string& option, const fs::path& path) {

@@ -160,6 +160,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine, const MpiWor
           files.addInputs(datasetFiles(o.dataset.input));
           if (!o.seedsFile.empty()) files.addInput(o.seedsFile);
           files.addOutput("--json", o.json);
+          requireOutputExtension("--json", o.json, {".json"}, "JSON");
         },
         console);
   });

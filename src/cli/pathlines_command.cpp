@@ -26,6 +26,7 @@ void runPathlines(PathlinesOptions o) {
   for (const SnapshotFile& snapshot : o.job.series) files.addInputs(datasetFiles(snapshot.path));
   if (!o.job.seeds.file.empty()) files.addInput(o.job.seeds.file);
   files.addOutput("--out", o.out.path);
+  requireOutputExtension("--out", o.out.path, {".vtp"}, "VTK XML PolyData");
   const Console console;
   runPathlineJob(o.job, o.out, console);
 }

@@ -29,6 +29,7 @@ void runRender(const RenderCommandOptions& o) {
   RunFiles files = jobFiles(o.job);
   if (!o.traces.empty()) files.addInput(o.traces);
   files.addOutput("--out", o.out);
+  requireOutputExtension("--out", o.out, {".png"}, "a PNG image");
   const Console console;
   const bool tracing = o.traces.empty();
   PreparedJob job = prepare(o.job, {tracing, KeepDataset::Yes}, console);

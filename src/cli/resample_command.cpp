@@ -18,6 +18,7 @@ void runResample(const ResampleJob& job) {
   RunFiles files;
   files.addInputs(datasetFiles(job.dataset.input));
   files.addOutput("--out", job.out);
+  requireOutputExtension("--out", job.out, {".vti"}, "VTK XML ImageData");
   const Console console;
   runResampleJob(job, console);
 }

@@ -35,7 +35,10 @@ TraceStore traceStoreNamed(const std::string& name) {
 // With --pieces, --out names the .pvtp; the pieces lie beside it.
 void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
   const std::filesystem::path out = o.out.path;
-  if (!o.distributed.pieces) return files.addOutput("--out", out);
+  if (!o.distributed.pieces) {
+    files.addOutput("--out", out);
+    return requireOutputExtension("--out", out, {".vtp"}, "VTK XML PolyData");
+  }
   if (out.extension() != ".pvtp")
     throw InputError("--out", fmt::format("'{}': with --pieces, name the .pvtp that lists the "
                                           "pieces (e.g. traces.pvtp)",
@@ -64,7 +67,8 @@ void addTraceCommand(CLI::App& app, const MpiWorld& world) {
   auto options = std::make_shared<TraceCommandOptions>();
   CLI::App* command = app.add_subcommand("trace", "trace streamlines and write them as .vtp");
   addTraceJobOptions(*command, options->job);
-  command->add_option("--out", options->out.path, "output .vtp file")->capture_default_str();
+  command->add_option("--out", options->out.path, "output .vtp file (with --pieces, .pvtp)")
+      ->capture_default_str();
   addSetting(*command, settings::kCompression, options->out.compression);
   command->add_flag("--endpoints-only", options->endpointsOnly,
                     "keep only each line's last point (no history)");

@@ -144,7 +144,10 @@ void runViewBenchmark(const ViewJob& o, const Reporter& reporter) {
     throw settingError("screenshot", "{benchmark} has no window to take a screenshot of");
   requireViewerBackend(o.job.backend);
   RunFiles files = jobFiles(o.job);
-  if (!o.frameTimes.empty()) files.addOutput("{frame_times}", o.frameTimes);
+  if (!o.frameTimes.empty()) {
+    files.addOutput("{frame_times}", o.frameTimes);
+    requireOutputExtension("{frame_times}", o.frameTimes, {".csv"}, "comma-separated values");
+  }
   PreparedJob job = prepare(o.job, {true, KeepDataset::Yes}, reporter);
   const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)

@@ -160,7 +160,10 @@ void runViewWindow(const ViewJob& o, const Reporter& reporter) {
   const Log& log = reporter.log;
   requireViewerBackend(o.job.backend);
   RunFiles files = jobFiles(o.job);
-  if (!o.screenshot.empty()) files.addOutput("{screenshot}", o.screenshot);
+  if (!o.screenshot.empty()) {
+    files.addOutput("{screenshot}", o.screenshot);
+    requireOutputExtension("{screenshot}", o.screenshot, {".png"}, "a PNG image");
+  }
   // The window first: without a display, say so before loading anything.
   app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
   PreparedJob job = prepare(o.job, {true, KeepDataset::Yes}, reporter);

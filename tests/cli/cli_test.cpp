@@ -137,6 +137,40 @@ TEST_F(Cli, TyposAreAnsweredWithTheClosestName) {
   EXPECT_FALSE(fs::exists(path("t.vtp")));
 }
 
+// An output's name says what it holds: a PNG is not written to x.jpg, nor a .vtp to x.png.
+TEST_F(Cli, OutputsNamedAsAnotherFormatAreRefused) {
+  ASSERT_EQ(
+      run("gen swirl --levels 2 --root-blocks 1 --target-cells 600 --series 2 --out " + path("sw"))
+          .status,
+      0);
+  const struct {
+    std::string command, error;
+  } cases[] = {
+      {"render builtin:rotation --out " + path("x.jpg"),
+       "--out: '" + path("x.jpg") + "': the file written is a PNG image; name it .png"},
+      {"trace builtin:rotation --out " + path("x.png"),
+       "the file written is VTK XML PolyData; name it .vtp"},
+      {"trace builtin:rotation --pieces --out " + path("x.vtp"), "name the .pvtp"},
+      {"pathlines '" + path("sw_*.exa") + "' --out " + path("x.pvtp"), "name it .vtp"},
+      {"resample builtin:rotation --out " + path("x.vtk"), "VTK XML ImageData; name it .vti"},
+      {"bench builtin:rotation --json " + path("x.txt"), "--json: '"},
+      {"view builtin:rotation --benchmark --frames 2 --frame-times " + path("x.json"),
+       "name it .csv"},
+      {"view builtin:rotation --frames 1 --screenshot " + path("x"), "name it .png"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.command);
+    const Outcome r = run(c.command);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.error));
+  }
+  const Outcome upper =
+      run("trace builtin:rotation" + kSmall + " --count 2 --steps 2 --out " + path("T.VTP"));
+  EXPECT_EQ(upper.status, 0) << upper.output;
+  for (const char* name : {"x.jpg", "x.png", "x.pvtp", "x.vtk", "x.txt", "x.json", "x"})
+    EXPECT_FALSE(fs::exists(path(name))) << name;
+}
+
 TEST_F(Cli, BadOptionsFail) {
   Outcome r =
       run("trace builtin:rotation" + kSmall + " --seed-box 0,0,0,2,1,1 --out " + path("t.vtp"));
