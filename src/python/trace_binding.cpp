@@ -139,11 +139,13 @@ TracesOfFiles runPathlines(const std::vector<std::string>& snapshots, py::object
 
 // Writes the lines as the command line writes --out: refused before anything is written when
 // the file is one of the inputs they were traced from (or lies in an input directory), exists and
-// is not a regular file, or has no directory; written through a temporary renamed over it.
+// is not a regular file, has no directory, or is not named .vtp; written through a temporary
+// renamed over it.
 WrittenLines writeVtp(const TracesOfFiles& t, const std::string& path, TraceOutput output) {
   RunFiles files;
   files.addInputs(t.inputs);
   files.addOutput("path", path);
+  requireOutputExtension("path", path, {".vtp"}, "VTK XML PolyData");
   output.path = path;
   py::gil_scoped_release unlocked;
   return t.write(output);

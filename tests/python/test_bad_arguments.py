@@ -403,6 +403,9 @@ def test_to_vtp_refuses_outputs_that_are_not_regular_files(lines, tmp_path):
     refused(amrstream.InputError, lambda: lines.to_vtp(str(tmp_path / "no" / "such.vtp")),
             "the directory", "does not exist")
     refused(TypeError, lambda: lines.to_vtp(3), "path must be a str or os.PathLike")
+    refused(amrstream.InputError, lambda: lines.to_vtp(str(tmp_path / "x.png")),
+            "the file written is VTK XML PolyData; name it .vtp")
+    assert not (tmp_path / "x.png").exists()
 
 
 def test_to_vtp_does_not_replace_a_character_device(lines, tmp_path):
