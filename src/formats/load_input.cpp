@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "amrstream/error.hpp"
 #include "formats/amrex/amrex_reader.hpp"
@@ -22,10 +23,8 @@ namespace {
 namespace fs = std::filesystem;
 constexpr std::string_view kBuiltinPrefix = "builtin:";
 constexpr std::string_view kFormatsTried =
-    "tried builtin:KIND, ExaBricks (a .exa config), AMReX (a plotfile directory with a HyperCLaw "
-    "Header), Enzo (a parameter file with a .hierarchy beside it, or its .hierarchy, .harrays or "
-    ".cpuNNNN), FLASH (HDF5 with an 'unknown names' dataset) and Gerris (a text dump starting "
-    "'# 1:')";
+    "amrstream reads builtin:KIND, a .exa, an AMReX plotfile folder, an Enzo parameter file (or "
+    "a file beside it), FLASH HDF5 and a Gerris text dump";
 
 [[noreturn]] void notRecognised(const std::string& input, const std::string& why) {
   throw InputError(input, fmt::format("format not recognised: {}; {}", why, kFormatsTried));
@@ -55,6 +54,7 @@ bool isFlash(const fs::path& path) {
 bool isEnzo(const fs::path& path) {
   const std::string ext = path.extension().string();
   if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) return true;
+  if (enzoCompanionOf(path)) return true;
   std::error_code error;
   return fs::exists(path.string() + ".hierarchy", error);
 }
@@ -63,6 +63,19 @@ bool isAmrexPlotfile(const fs::path& directory) {
   std::error_code error;
   const fs::path header = directory / "Header";
   return fs::is_regular_file(header, error) && firstBytes(header, 9) == "HyperCLaw";
+}
+
+// The Enzo parameter file in `directory` (the file beside a .hierarchy), if there is one.
+std::optional<fs::path> enzoParametersIn(const fs::path& directory) {
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+    const fs::path file = it->path();
+    if (file.extension() != ".hierarchy") continue;
+    fs::path parameters = file;
+    parameters.replace_extension();
+    if (fs::is_regular_file(parameters, error)) return parameters;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -91,11 +104,19 @@ Format detectFormat(const std::string& input) {
   std::error_code error;
   if (fs::is_directory(path, error)) {
     if (isAmrexPlotfile(path)) return Format::Amrex;
+    if (const auto parameters = enzoParametersIn(path))
+      throw InputError(input, fmt::format("an Enzo output folder: pass its parameter file, {}",
+                                          parameters->string()));
     throw InputError(input,
-                     "a directory, but not an AMReX plotfile (no Header starting with "
-                     "HyperCLaw)");
+                     "a folder, but not an AMReX plotfile (no Header starting with HyperCLaw); "
+                     "pass a dataset file in it");
   }
   regularFileSize(path);  // a missing path, a FIFO or a device is refused before it is opened
+  if (path.filename() == "Header" && firstBytes(path, 9) == "HyperCLaw")
+    throw InputError(input,
+                     fmt::format("an AMReX plotfile's Header: pass the plotfile's "
+                                 "folder, {}",
+                                 path.parent_path().empty() ? "." : path.parent_path().string()));
   if (path.extension() == ".exa") return Format::ExaBricks;
   if (isEnzo(path)) return Format::Enzo;
   if (isHdf5(path)) {

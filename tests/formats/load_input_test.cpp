@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/enzo/enzo_reader.hpp"
 #include "input_error_of.hpp"
 #include "special_files.hpp"
 #include "temp_dir_test.hpp"
@@ -72,12 +73,32 @@ TEST_F(DetectFormat, NamesTheInputWhenItIsNotRecognised) {
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "missing").string()); }),
               HasSubstr("missing: no such file"));
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(write("notes.txt", "hello\n")); }),
-              AllOf(HasSubstr("notes.txt: format not recognised: no known extension or "
-                              "signature; tried builtin:KIND, ExaBricks"),
-                    HasSubstr("FLASH (HDF5 with an 'unknown names' dataset) and Gerris")));
+              HasSubstr("notes.txt: format not recognised: no known extension or signature; "
+                        "amrstream reads builtin:KIND, a .exa, an AMReX plotfile folder, an Enzo "
+                        "parameter file (or a file beside it), FLASH HDF5 and a Gerris text "
+                        "dump"));
   fs::create_directories(dir_ / "empty");
   EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "empty").string()); }),
               HasSubstr("not an AMReX plotfile"));
+}
+
+// Paths that are not a dataset but lead to one say which to pass: an Enzo output folder its
+// parameter file, an AMReX Header its plotfile folder; the files Enzo writes beside its
+// .hierarchy (.boundary, .boundary.hdf, .procmap) stand for their dataset.
+TEST_F(DetectFormat, PathsBesideADatasetLeadToIt) {
+  const std::string enzo = write("DD0001/data0001", "InitialTime = 0\n");
+  write("DD0001/data0001.hierarchy", "Grid = 1\n");
+  EXPECT_THAT(testing::inputErrorOf([&] { detectFormat((dir_ / "DD0001").string()); }),
+              HasSubstr("DD0001: an Enzo output folder: pass its parameter file, " + enzo));
+  for (const std::string companion : {".boundary", ".boundary.hdf", ".procmap"}) {
+    const std::string file = write("DD0001/data0001" + companion, "x");
+    EXPECT_EQ(detectFormat(file), Format::Enzo) << companion;
+    EXPECT_EQ(enzoParameterFile(file), fs::path(enzo)) << companion;
+  }
+  const std::string header = write("plt/Header", "HyperCLaw-V1.1\n38\n");
+  EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(header); }),
+              HasSubstr(header + ": an AMReX plotfile's Header: pass the plotfile's folder, " +
+                        (dir_ / "plt").string()));
 }
 
 // Only FLASH files are HDF5 files with 'unknown names': any other HDF5 file is not taken for one.
@@ -88,7 +109,7 @@ TEST_F(DetectFormat, AnUnknownHdf5FileIsNotTakenForFlash) {
   for (const std::string& input : {chombo, boundary})
     EXPECT_THAT(testing::inputErrorOf([&] { detectFormat(input); }),
                 AllOf(HasSubstr(input + ": format not recognised: an HDF5 file without FLASH's "
-                                        "'unknown names' dataset; tried builtin:KIND"),
+                                        "'unknown names' dataset; amrstream reads builtin:KIND"),
                       HasSubstr("Enzo"), HasSubstr("AMReX"), HasSubstr("Gerris")))
         << input;
   const std::string corrupt =

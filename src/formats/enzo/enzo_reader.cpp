@@ -407,7 +407,11 @@ Siblings findSiblings(const fs::path& file) {
   regularFileSize(file);
   fs::path base = file;
   const auto ext = file.extension().string();
-  if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) base.replace_extension();
+  if (const auto companion = enzoCompanionOf(file)) {
+    base = *companion;  // .boundary, .boundary.hdf, .procmap, ...
+  } else if (ext == ".hierarchy" || ext == ".harrays" || ext.starts_with(".cpu")) {
+    base.replace_extension();
+  }
   Siblings s;
   s.dir = file.parent_path();
   s.parameter = base;
@@ -576,5 +580,15 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
 }
 
 fs::path enzoParameterFile(const fs::path& file) { return findSiblings(file).parameter; }
+
+std::optional<fs::path> enzoCompanionOf(const fs::path& file) {
+  const std::string name = file.filename().string();
+  const std::size_t dot = name.find('.');
+  if (dot == std::string::npos || dot == 0) return std::nullopt;
+  const fs::path prefix = file.parent_path() / name.substr(0, dot);
+  std::error_code error;
+  if (!fs::is_regular_file(prefix.string() + ".hierarchy", error)) return std::nullopt;
+  return prefix;
+}
 
 }  // namespace amrstream::formats

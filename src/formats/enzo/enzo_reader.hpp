@@ -10,6 +10,7 @@
 // (time, units, periodicity, Enzo level numbering) comes from the parameter file (enzo_info.hpp).
 
 #include <filesystem>
+#include <optional>
 
 #include "bricks/amr_field.hpp"
 #include "formats/value_window.hpp"
@@ -22,8 +23,12 @@ bricks::AmrField readEnzo(const std::filesystem::path& file, const ValueWindow* 
                           WindowedRead* read = nullptr);
 
 // The parameter file of the dataset `file` belongs to (`file` itself, or PREFIX for a `.hierarchy`,
-// `.harrays` or `.cpuNNNN` sibling), as readEnzo finds it; it need not exist. Throws InputError
-// when `file` does not exist.
+// `.harrays`, `.cpuNNNN` or any other PREFIX.* file beside PREFIX.hierarchy), as readEnzo finds
+// it; it need not exist. Throws InputError when `file` does not exist.
 std::filesystem::path enzoParameterFile(const std::filesystem::path& file);
+
+// PREFIX for a file named PREFIX.* (.boundary, .boundary.hdf, .procmap, ...) beside a
+// PREFIX.hierarchy; nothing for any other file.
+std::optional<std::filesystem::path> enzoCompanionOf(const std::filesystem::path& file);
 
 }  // namespace amrstream::formats
