@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "amrstream/field.hpp"
 #include "amrstream/seeding.hpp"
@@ -20,7 +21,13 @@ void addFieldOptions(CLI::App& command, FieldOptions& field);
 // --backend and --device.
 void addBackendOptions(CLI::App& command, BackendRequest& backend);
 
-// Adds the options above (INPUT included) to `command`; `defaultCount` is --count's default.
+// Adds the options above (INPUT included) and the stepping options to `command`; `defaultCount`
+// is --count's default. The seeding options are listed in --help under "Seeds", the stepping
+// options under "Tracing".
 void addTraceJobOptions(CLI::App& command, TraceJob& options, std::size_t defaultCount = 256);
+
+// The seeding and stepping options given on `command`'s line ("--count", "--steps"), which do
+// nothing where the lines are not traced (render --traces).
+std::vector<std::string> givenTracingOptions(const CLI::App& command);
 
 }  // namespace amrstream::cli

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "amrstream/error.hpp"
 #include "amrstream/rendering.hpp"
 #include "amrstream/run_files.hpp"
 #include "amrstream/trace_job.hpp"
@@ -61,11 +62,19 @@ void addRenderCommand(CLI::App& app) {
                    "tracing; INPUT gives the domain, the volume and the colour channels")
       ->check(regularFile());
   addSetting(*command, settings::kFrames, options->look.frames);
-  command->add_flag("!--no-colour-bar", options->look.colourBar,
-                    "leave out " + settingHelp(settings::kColourBar));
+  command->add_flag_callback(
+      "--no-colour-bar", [options] { options->look.colourBar = false; },
+      "leave out " + settingHelp(settings::kColourBar));
   command->add_option("--out", options->out, "output PNG file")->capture_default_str();
-  command->callback([options] {
+  command->callback([options, command] {
     options->job.backend.validation = validationRequested();
+    // The lines come from the file: options of seeding and stepping would be ignored.
+    const std::vector<std::string> tracing = givenTracingOptions(*command);
+    if (!options->traces.empty() && !tracing.empty())
+      throw InputError(tracing.front(),
+                       fmt::format("the lines come from --traces {}: its seeds and steps were "
+                                   "chosen when it was traced; trace again to change them",
+                                   options->traces));
     runRender(*options);
   });
 }

@@ -38,7 +38,8 @@ void addRenderOptions(CLI::App& command, RenderOptions& o) {
   addSetting(command, s::kRange, o.range)->delimiter(',')->expected(2);
   addSetting(command, s::kOutline, o.outline);
   addSetting(command, s::kAxes, o.axes);
-  command.add_flag("!--no-triad", o.triad, "leave out " + settingHelp(s::kTriad));
+  command.add_flag_callback(
+      "--no-triad", [&o] { o.triad = false; }, "leave out " + settingHelp(s::kTriad));
   addSetting(command, s::kScaleBar, o.scaleBar);
   addSetting(command, s::kBackground, o.background);
   addSetting(command, s::kAoSamples, o.aoSamples);

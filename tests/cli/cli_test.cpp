@@ -171,6 +171,21 @@ TEST_F(Cli, OutputsNamedAsAnotherFormatAreRefused) {
     EXPECT_FALSE(fs::exists(path(name))) << name;
 }
 
+// render --traces draws the lines of a file: seeding and stepping options would do nothing.
+TEST_F(Cli, RenderingTracesFromAFileRefusesSeedAndStepOptions) {
+  ASSERT_EQ(
+      run("trace builtin:rotation" + kSmall + " --count 2 --steps 4 --out " + path("t.vtp")).status,
+      0);
+  for (const std::string option : {"--count 100", "--steps 50", "--seed-box 0,0,0,1,1,1"}) {
+    const Outcome r = run("render builtin:rotation" + kSmall + " --traces " + path("t.vtp") + " " +
+                          option + " --out " + path("r.png"));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(option.substr(0, option.find(' ')) +
+                                    ": the lines come from --traces " + path("t.vtp")));
+  }
+  EXPECT_FALSE(fs::exists(path("r.png")));
+}
+
 TEST_F(Cli, BadOptionsFail) {
   Outcome r =
       run("trace builtin:rotation" + kSmall + " --seed-box 0,0,0,2,1,1 --out " + path("t.vtp"));
