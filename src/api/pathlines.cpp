@@ -222,10 +222,12 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
   if (!(options.endTime > options.startTime))
     throw settingError("end_time", fmt::format("{:g} is not after the start time {:g}",
                                                options.endTime, options.startTime));
-  if (options.endTime >= seriesEnd) {
-    options.endTime = seriesEnd;
-    options.endReason = AMRSTREAM_REASON_SERIES_END;
-  }
+  if (options.endTime > seriesEnd)
+    throw settingError("end_time",
+                       fmt::format("{:g} is after the series, which ends at {:g} ({}): the field "
+                                   "is not known after its last snapshot",
+                                   options.endTime, seriesEnd, series.back().path));
+  if (options.endTime == seriesEnd) options.endReason = AMRSTREAM_REASON_SERIES_END;
   const auto [first, last] = snapshotsUsed(series, options.startTime, options.endTime);
   double shortest = seriesEnd - seriesStart;
   std::pair<std::string, std::string> closest{series.front().path, series.back().path};

@@ -138,6 +138,17 @@ TEST_F(PathlinesCli, RefusesStepsAndReleasesItCouldNeverFinish) {
   EXPECT_FALSE(fs::exists(path("x.vtp")));
 }
 
+// The field is not known past the last snapshot: an end time after it is refused, not clipped.
+TEST_F(PathlinesCli, AnEndTimeAfterTheSeriesIsRefused) {
+  generateSwirl(2);
+  const Outcome r =
+      run("pathlines '" + path("swirl_*.exa") + "' --count 4 --end-time 5 --out " + path("x.vtp"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--end-time: 5 is after the series, which ends at 0.05 (" +
+                                  path("swirl_0001.exa") + ")"));
+  EXPECT_FALSE(fs::exists(path("x.vtp")));
+}
+
 TEST_F(PathlinesCli, BadSeriesFailNamingTheFile) {
   generateSwirl(2);
   Outcome r = run("pathlines " + path("swirl_0000.exa") + " --out " + path("x.vtp"));
