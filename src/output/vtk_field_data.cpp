@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -22,6 +23,11 @@ FieldDataArray textField(std::string name, std::string value) {
 
 FieldDataArray numberField(std::string name, double value) {
   return {std::move(name), std::vector<double>{value}};
+}
+
+FieldDataArray numberField(std::string name, float value) {
+  return {std::move(name),
+          std::vector<double>{std::strtod(fmt::format("{}", value).c_str(), nullptr)}};
 }
 
 FieldDataArray integerField(std::string name, std::int64_t value) {

@@ -24,6 +24,9 @@ struct FieldDataArray {
 // One-value arrays, the usual provenance record: textField("Input", "cloud.exa").
 FieldDataArray textField(std::string name, std::string value);
 FieldDataArray numberField(std::string name, double value);
+// A setting held as a float, written as the double of its shortest decimal (1e-12, not the
+// float's 9.99999996e-13).
+FieldDataArray numberField(std::string name, float value);
 FieldDataArray integerField(std::string name, std::int64_t value);
 
 // "String", "Float64" or "Int64".
