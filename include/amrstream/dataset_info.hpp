@@ -23,6 +23,9 @@ struct DatasetInfo {
   // level finestFileLevel - L when levelsCountDown, else finestFileLevel + L (ExaBricks: 0 + L).
   int finestFileLevel = 0;
   bool levelsCountDown = true;
+  // The file's number for its root level (AMReX 0, FLASH 1, Enzo 0), for formats that store every
+  // level, those wholly under finer cells too; nothing for formats that store leaves alone.
+  std::optional<int> rootFileLevel;
   std::string levelName;  // how the file names levels, e.g. "FLASH refine level (1 = root)", "Enzo
                           // level (0 = root grid)"
   int fileLevel(int internalLevel) const;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <string>
 
 #include "amrstream/dataset.hpp"
 #include "amrstream/log.hpp"
@@ -26,14 +27,42 @@ std::string timeText(const DatasetInfo& info) {
 void printLevels(const Dataset& dataset) {
   const std::vector<std::size_t> perLevel = dataset.cellsPerLevel();
   const DatasetInfo& info = dataset.info();
+  std::string covered;  // the file's levels wholly under finer cells
+  for (int level = int(perLevel.size()) - 1; level >= 0; --level) {
+    if (perLevel[level] == 0) continue;
+    const int coarsestLeaf = info.fileLevel(level);
+    if (info.rootFileLevel && info.levelsCountDown && coarsestLeaf > *info.rootFileLevel)
+      covered = fmt::format(" (the file's levels {} to {} lie wholly under finer cells)",
+                            *info.rootFileLevel, coarsestLeaf - 1);
+    break;
+  }
   printLine(fmt::format(
-      "levels     {} used, numbered as {}; coarsest first, widths in finest cells",
-      std::count_if(perLevel.begin(), perLevel.end(), [](std::size_t n) { return n > 0; }),
+      "levels     {} hold leaf cells{}, numbered as {}; coarsest first, widths in finest cells",
+      std::count_if(perLevel.begin(), perLevel.end(), [](std::size_t n) { return n > 0; }), covered,
       info.levelName));
   for (int level = int(perLevel.size()) - 1; level >= 0; --level)
     if (perLevel[level] > 0)
       printLine(fmt::format("  level {:<3} {:>14} cells  width {}", info.fileLevel(level),
                             withCommas(perLevel[level]), 1 << level));
+}
+
+// The finest cell's size, said anisotropic where its sides differ, and the axes one cell thick.
+void printShape(const CellBox& box, glm::dvec3 finest) {
+  const double shortest = std::min({finest.x, finest.y, finest.z});
+  const double longest = std::max({finest.x, finest.y, finest.z});
+  printLine(fmt::format("finest     cell {:g} x {:g} x {:g}{}", finest.x, finest.y, finest.z,
+                        longest > shortest * (1.0 + 1e-6)
+                            ? fmt::format(" (anisotropic: {:.3g} to 1)", longest / shortest)
+                            : ""));
+  std::string flat;
+  int dimensions = 3;
+  for (int axis = 0; axis < 3; ++axis)
+    if (box.upper[axis] - box.lower[axis] == 1) {
+      flat += (flat.empty() ? "" : ", ") + std::string(1, "xyz"[axis]);
+      --dimensions;
+    }
+  if (!flat.empty())
+    printLine(fmt::format("dimensions {}: one finest cell thick in {}", dimensions, flat));
 }
 
 void printStructure(const Dataset& dataset, const DatasetSummary& s) {
@@ -70,6 +99,7 @@ void runInfo(const DatasetRequest& request) {
                         box.upper.z));
   printLine(fmt::format("           physical [{:g}, {:g}] x [{:g}, {:g}] x [{:g}, {:g}]", lo.x,
                         hi.x, lo.y, hi.y, lo.z, hi.z));
+  printShape(box, (hi - lo) / glm::dvec3(box.upper - box.lower));
   const DatasetSummary summary = summarize(dataset);
   printLine(fmt::format("channels   {}", summary.channels.size()));
   for (const DatasetSummary::ChannelRange& c : summary.channels)

@@ -72,7 +72,7 @@ TEST_F(Cli, GenNestWritesDeepLevelsAndKindsRefuseEachOthersSizes) {
   EXPECT_THAT(r.output, HasSubstr("builtin:nest: 6,167 cells, levels 0..13"));
   r = run("info " + path("nest.exa"));
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("levels     14 used"));
+  EXPECT_THAT(r.output, HasSubstr("levels     14 hold leaf cells"));
   EXPECT_THAT(r.output, HasSubstr("[57344,57344,57344]"));
 
   r = run("gen rotation --block-cells 8 --out " + path("x"));
@@ -184,6 +184,28 @@ TEST_F(Cli, RenderingTracesFromAFileRefusesSeedAndStepOptions) {
                                     ": the lines come from --traces " + path("t.vtp")));
   }
   EXPECT_FALSE(fs::exists(path("r.png")));
+}
+
+// info says what a new user needs before tracing: a 2D file, cells taller than wide, levels that
+// lie wholly under finer ones.
+TEST_F(Cli, InfoSaysTheShapeOfTheCellsAndTheLevelsUnderFinerOnes) {
+  const fs::path real = AMRSTREAM_REAL_DATA_DIR;
+  const fs::path flash = real / "flash-2d-nanowire" / "nanowire_arrayhdf5_plt_cnt_0100";
+  const fs::path amrex = real / "amrex-pelelmex-3d" / "example_plt_3d";
+  if (!fs::exists(flash) || !fs::exists(amrex)) GTEST_SKIP() << "no real data at " << real;
+  Outcome r = run("info " + flash.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("finest     cell 7.8125e-07 x 7.8125e-06 x 7.8125e-07 "
+                                  "(anisotropic: 10 to 1)\n"));
+  EXPECT_THAT(r.output, HasSubstr("dimensions 2: one finest cell thick in z\n"));
+  EXPECT_THAT(r.output, HasSubstr("levels     1 hold leaf cells (the file's levels 1 to 4 lie "
+                                  "wholly under finer cells)"));
+  r = run("info " + amrex.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("levels     1 hold leaf cells (the file's levels 0 to 1 lie "
+                                  "wholly under finer cells), numbered as AMReX level"));
+  EXPECT_THAT(r.output, Not(HasSubstr("dimensions")));
+  EXPECT_THAT(r.output, Not(HasSubstr("anisotropic")));
 }
 
 TEST_F(Cli, BadOptionsFail) {
@@ -377,7 +399,8 @@ TEST_F(Cli, InfoNumbersEnzoLevelsFromTheRootGrid) {
   EXPECT_THAT(r.output, HasSubstr("format     Enzo\n"));
   EXPECT_THAT(r.output, HasSubstr("periodic   x y z\n"));
   EXPECT_THAT(r.output, HasSubstr("time       0.817513171 code units (1 = "));
-  EXPECT_THAT(r.output, HasSubstr("levels     8 used, numbered as Enzo level (0 = root grid)"));
+  EXPECT_THAT(r.output,
+              HasSubstr("levels     8 hold leaf cells, numbered as Enzo level (0 = root grid)"));
   const std::size_t level0 = r.output.find("\n  level 0 ");
   ASSERT_NE(level0, std::string::npos) << r.output;
   const std::string line =

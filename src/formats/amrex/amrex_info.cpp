@@ -59,6 +59,7 @@ DatasetInfo readAmrexInfo(const fs::path& directory, double time,
   info.finestFileLevel = finest;
   info.levelsCountDown = true;
   info.levelName = "AMReX level (0 = coarsest)";
+  info.rootFileLevel = 0;
   bool ratiosOfTwo = true;
   for (int l = 0; l <= finest; ++l) ratiosOfTwo &= internalLevels[l] == finest - l;
   if (!ratiosOfTwo) {

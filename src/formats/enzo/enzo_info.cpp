@@ -68,6 +68,7 @@ DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
   info.finestFileLevel = finestLevel;
   info.levelsCountDown = true;
   info.levelName = "Enzo level (0 = root grid)";
+  info.rootFileLevel = 0;
   if (parameters == nullptr) return info;
   info.time = readEnzoTime(*parameters);
   readPeriodicity(*parameters, info);

@@ -63,6 +63,7 @@ DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int 
   info.finestFileLevel = finestLeafRefineLevel;
   info.levelsCountDown = true;
   info.levelName = "FLASH refine level (1 = root)";
+  info.rootFileLevel = 1;
   return info;
 }
 
