@@ -176,7 +176,12 @@ void bindLineArrays(py::class_<TracesOfFiles>& traces) {
       return view(values.data(), values.size(), self);
     });
   };
-  perLine("offsets", &flow::TraceSet::offsets);
+  // int64, as numpy indexes: uint64 offsets[i] + 1 would be a float64 and fail as a slice bound.
+  // Offsets count points, far below 2^63, so the bytes read the same.
+  traces.def_property_readonly("offsets", [](py::object self) {
+    const std::vector<std::uint64_t>& offsets = linesOf(self.cast<const TracesOfFiles&>()).offsets;
+    return view(reinterpret_cast<const std::int64_t*>(offsets.data()), offsets.size(), self);
+  });
   perLine("seed_ids", &flow::TraceSet::seedIds);
   perLine("directions", &flow::TraceSet::directions);
   perLine("steps", &flow::TraceSet::steps);

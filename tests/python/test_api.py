@@ -532,6 +532,14 @@ def test_writing_through_traces_offsets_cannot_make_out_of_bounds_views(cloud, c
     assert line.shape[0] <= len(t.points), f"t[2] has {line.shape[0]} points of {len(t.points)}"
 
 
+def test_offsets_are_int64_so_they_slice_as_numpy_indexes(cloud, cloud_seeds):
+    t = amrstream.trace(cloud, cloud_seeds, steps=50, backend="cpu")
+    assert t.offsets.dtype == np.int64
+    start = t.offsets[2]
+    assert isinstance(start + 1, np.integer)  # uint64 + int was float64, no slice bound
+    assert np.array_equal(t.points[start:t.offsets[3]], t[2])
+
+
 # ---------------------------------------------------------------- 4. both directions
 
 def test_both_directions_forward_lines_then_backward(cloud, cloud_seeds):
