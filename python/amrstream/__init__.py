@@ -123,11 +123,19 @@ def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):
     """A Dataset of the leaf cells of a grid-based yt dataset (Enzo, FLASH, AMReX/BoxLib,
     Athena++, Chombo, ...): the vector's three fields first, then `fields`, in code units;
     positions in code_length. Trace it with vector=<the same three names> unless they are
-    velocity_x/y/z."""
+    velocity_x/y/z. `ds` may also be a path, which yt.load opens."""
     from .yt_cells import leaf_cells_from_yt
 
+    if isinstance(ds, (str, os.PathLike)):
+        try:
+            import yt
+        except ImportError:
+            raise TypeError(f"from_yt({os.fspath(ds)!r}): a path needs yt to open it, and yt is "
+                            "not installed; amrstream.load(path) reads Enzo, FLASH, AMReX, "
+                            "Gerris and .exa files without yt") from None
+        ds = yt.load(os.fspath(ds))
     if not hasattr(ds, "index") or not hasattr(ds, "dimensionality"):
-        raise TypeError(f"ds must be a yt dataset (yt.load's), not {type(ds).__name__}")
+        raise TypeError(f"ds must be a yt dataset (yt.load's) or a path, not {type(ds).__name__}")
     cells = leaf_cells_from_yt(ds, vector=vector, fields=fields)
     cells.pop("field_units", None)
     return from_arrays(**cells)

@@ -325,9 +325,9 @@ def test_pathlines_names_its_settings():
     refused(TypeError, lambda: amrstream.pathlines(3, SEED), "snapshots must be a file")
 
 
-def test_from_yt_needs_a_yt_dataset():
-    refused(TypeError, lambda: amrstream.from_yt("DD0010/moving7_0010"),
-            "ds must be a yt dataset (yt.load's), not str")
+def test_from_yt_needs_a_yt_dataset_or_a_path():
+    refused(TypeError, lambda: amrstream.from_yt(3),
+            "ds must be a yt dataset (yt.load's) or a path, not int")
 
 
 def test_reason_name_names_code():

@@ -99,6 +99,12 @@ def test_same_cell_count_and_domain(pair):
     assert ours.levels.dtype == np.int32 and ours.levels.shape == (ours.cell_count,)
 
 
+def test_a_path_is_opened_with_yt_load(enzo):
+    by_path = amrstream.from_yt(str(real_data(ENZO)), vector=ENZO_VECTOR)
+    assert by_path.cell_count == enzo.from_yt.cell_count
+    np.testing.assert_array_equal(by_path.finest_width, enzo.from_yt.finest_width)
+
+
 def test_enzo_finest_cell_is_1_over_2048(enzo):
     # 16^3 root grid, 7 refinements by 2: code units, not cm or Mpc.
     np.testing.assert_array_equal(enzo.loaded.finest_width, [1 / 2048] * 3)
