@@ -35,9 +35,11 @@ std::string trimSeparators(std::string s) {
   return s;
 }
 
-// "velx,vely,velz" -> "vel"; "x-velocity,y-velocity,z-velocity" -> "velocity"; otherwise the
-// names joined with '_'.
+// "velx,vely,velz" -> "vel"; "x-velocity,y-velocity,z-velocity" -> "velocity"; Gerris' "U,V,W"
+// (and "u,v,w") -> "velocity"; otherwise the names joined with '_'.
 std::string vectorName(const std::array<std::string, 3>& c) {
+  if ((c[0] == "U" && c[1] == "V" && c[2] == "W") || (c[0] == "u" && c[1] == "v" && c[2] == "w"))
+    return "velocity";
   const std::size_t shortest = std::min({c[0].size(), c[1].size(), c[2].size()});
   std::size_t prefix = 0, suffix = 0;
   while (prefix < shortest && c[0][prefix] == c[1][prefix] && c[0][prefix] == c[2][prefix])

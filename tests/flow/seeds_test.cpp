@@ -141,7 +141,7 @@ TEST(VectorSelection, PrefersVelocityThenMagneticFieldAndNamesTheVector) {
   EXPECT_EQ(chooseVectorChannels(field({"dens", "magx", "magy", "magz"}), "").name, "mag");
   EXPECT_EQ(chooseVectorChannels(field({"x-velocity", "y-velocity", "z-velocity"}), "").name,
             "velocity");
-  EXPECT_EQ(chooseVectorChannels(field({"U", "V", "W"}), "").name, "U_V_W");
+  EXPECT_EQ(chooseVectorChannels(field({"U", "V", "W"}), "").name, "velocity");
   EXPECT_EQ(chooseVectorChannels(field({"a", "b", "c"}), "c,b,a").channels,
             (std::array<std::string, 3>{"c", "b", "a"}));
   EXPECT_THAT(testing::inputErrorOf([&] {
