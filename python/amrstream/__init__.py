@@ -11,7 +11,10 @@ Vulkan GPU, with the data along them.
 docs/python.md in the amrstream sources is the reference.
 """
 
+import difflib
+import functools
 import os
+import re
 
 from ._amrstream import (
     BackendError,
@@ -39,6 +42,52 @@ __all__ = [
 DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
 
 
+def _keyword_names(text):
+    """The keywords a compiled function takes, from its signatures ("name: type") and its
+    settings' lines ("name=default: meaning") in `text` (its docstring or pybind11's error)."""
+    names = set(re.findall(r"(?:\(|, )\*?(\w+): ", text))
+    names.update(re.findall(r"^(\w+)=", text, flags=re.MULTILINE))
+    return names
+
+
+def _with_keyword_hints(compiled):
+    """`compiled`, whose TypeError for a keyword it does not take names that keyword and the
+    closest one it takes, instead of pybind11's list of signatures."""
+    @functools.wraps(compiled)
+    def call(*args, **kwargs):
+        try:
+            return compiled(*args, **kwargs)
+        except TypeError as error:
+            message = str(error)
+            if "incompatible function arguments" not in message and \
+                    "unexpected keyword argument" not in message:
+                raise
+            names = _keyword_names(message) | _keyword_names(compiled.__doc__ or "")
+            unknown = [k for k in kwargs if k not in names]
+            if not unknown:
+                raise
+            hints = []
+            for keyword in unknown:
+                close = difflib.get_close_matches(keyword, sorted(names), n=1)
+                hints.append(f"'{keyword}'" + (f" (did you mean '{close[0]}'?)" if close else ""))
+            name = compiled.__name__
+            raise TypeError(f"{name}() got an unexpected keyword argument {', '.join(hints)}; "
+                            f"help(amrstream.{name}) lists them") from None
+    return call
+
+
+from_arrays = _with_keyword_hints(from_arrays)
+load = _with_keyword_hints(load)
+seeds_densest = _with_keyword_hints(seeds_densest)
+seeds_grid = _with_keyword_hints(seeds_grid)
+seeds_line = _with_keyword_hints(seeds_line)
+seeds_random = _with_keyword_hints(seeds_random)
+_compiled_prepare = _with_keyword_hints(_amrstream.prepare)
+_compiled_trace = _with_keyword_hints(_amrstream.trace)
+_compiled_pathlines = _with_keyword_hints(_amrstream.pathlines)
+_compiled_render = _with_keyword_hints(Traces.render)
+
+
 def _vector_text(vector):
     """None, 'a,b,c' or three names -> None or 'a,b,c'."""
     if vector is None or isinstance(vector, str):
@@ -58,7 +107,7 @@ def prepare(dataset, vector=None, point_data=None, **settings):
         point_data = ",".join(point_data) if point_data else "none"
     if point_data is not None:
         settings["point_data"] = point_data
-    return _amrstream.prepare(dataset, vector=_vector_text(vector), **settings)
+    return _compiled_prepare(dataset, vector=_vector_text(vector), **settings)
 
 
 def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpolant=None,
@@ -70,8 +119,8 @@ def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpo
     """
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
-    return _amrstream.trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
-                            periodic=periodic, interpolant=interpolant, **settings)
+    return _compiled_trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
+                           periodic=periodic, interpolant=interpolant, **settings)
 
 
 def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
@@ -85,8 +134,8 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
     """
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
-    return _amrstream.pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
-                                point_data=point_data, **settings)
+    return _compiled_pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
+                               point_data=point_data, **settings)
 
 
 def _snapshot_paths(snapshots):
@@ -109,7 +158,7 @@ def render(traces, **look):
     Traces.render (below)."""
     if not isinstance(traces, Traces):
         raise TypeError(f"traces must be amrstream.Traces, not {type(traces).__name__}")
-    return traces.render(**look)
+    return _compiled_render(traces, **look)
 
 
 # The compiled functions' signatures and settings (defaults and meanings, from the library's one

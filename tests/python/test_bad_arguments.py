@@ -426,3 +426,21 @@ def test_to_vtp_writes_through_a_temporary_renamed_over_the_file(lines, tmp_path
     lines.to_vtp(str(out))
     assert link.read_text() == "old" and out.read_bytes().startswith(b"<?xml")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["lines.vtp", "old.vtp"]
+
+
+def test_a_mistyped_keyword_is_named_with_the_closest_one(flow, lines, tmp_path):
+    """pybind11 answers an unknown keyword with every signature; the module names the keyword
+    and the one meant instead."""
+    refused(TypeError, lambda: amrstream.trace(flow, [[0.5, 0.5, 0.5]], stpes=3),
+            "trace() got an unexpected keyword argument 'stpes' (did you mean 'steps'?)")
+    refused(TypeError, lambda: amrstream.load("builtin:rotation", level=2),
+            "load() got an unexpected keyword argument 'level' (did you mean 'levels'?)")
+    refused(TypeError, lambda: amrstream.seeds_random(flow, 4, sed=3), "(did you mean 'seed'?)")
+    refused(TypeError, lambda: amrstream.render(lines, widht=10),
+            "render() got an unexpected keyword argument 'widht' (did you mean 'width'?)")
+    error = refused(TypeError, lambda: amrstream.trace(flow, [[0.5, 0.5, 0.5]], frobnicate=1),
+                    "trace() got an unexpected keyword argument 'frobnicate'; "
+                    "help(amrstream.trace) lists them")
+    assert "did you mean" not in str(error) and "incompatible" not in str(error)
+    # A keyword it takes, of the wrong type, keeps its own message.
+    refused(TypeError, lambda: amrstream.trace(flow, [[0.5, 0.5, 0.5]], steps="ten"), "steps")
