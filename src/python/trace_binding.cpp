@@ -162,6 +162,26 @@ void bindLineArrays(py::class_<TracesOfFiles>& traces) {
             return pointsOf(lines, lines.firstPoint(line), lines.pointCount(line), self);
           },
           py::arg("index"), "(n_i, 3) points of line i: float32, float64 for precise positions")
+      .def(
+          "pieces",
+          [](py::object self, Given<py::ssize_t> index) {
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+            const std::size_t line = lineIndex(self.cast<const TracesOfFiles&>(), index.value);
+            const std::uint64_t first = lines.firstPoint(line),
+                                end = first + lines.pointCount(line);
+            py::list pieces;
+            std::uint64_t start = first;
+            for (std::uint64_t k = first + 1; k < end; ++k)
+              if (lines.periodic.wraps(lines.positions[k - 1], lines.positions[k])) {
+                pieces.append(pointsOf(lines, start, k - start, self));
+                start = k;
+              }
+            if (end > start) pieces.append(pointsOf(lines, start, end - start, self));
+            return pieces;
+          },
+          py::arg("index"),
+          "line i's points cut where the line crosses a periodic face: a list of (n, 3) arrays "
+          "to plot without a stroke across the box (the .vtp's periodic_lines='split')")
       .def_property_readonly(
           "points",
           [](py::object self) {

@@ -540,6 +540,22 @@ def test_offsets_are_int64_so_they_slice_as_numpy_indexes(cloud, cloud_seeds):
     assert np.array_equal(t.points[start:t.offsets[3]], t[2])
 
 
+def test_pieces_cut_a_periodic_line_where_it_crosses_a_face():
+    ds = amrstream.load("builtin:abc", levels=2, root_blocks=1, target_cells=600)
+    period = np.subtract(ds.domain_right_edge, ds.domain_left_edge)
+    t = amrstream.trace(ds, amrstream.seeds_random(ds, 4, seed=1), steps=500, backend="cpu")
+    cut = 0
+    for i in range(len(t)):
+        pieces = t.pieces(i)
+        assert np.array_equal(np.concatenate(pieces), t[i])
+        for piece in pieces:  # within a piece no step jumps by half a period
+            assert np.all(np.abs(np.diff(piece, axis=0)) <= period / 2)
+        for a, b in zip(pieces, pieces[1:]):  # between pieces the line jumps across the box
+            assert np.any(np.abs(b[0] - a[-1]) > period / 2)
+        cut += len(pieces) - 1
+    assert cut > 0  # ABC flow crosses its periodic faces within 500 steps
+
+
 # ---------------------------------------------------------------- 4. both directions
 
 def test_both_directions_forward_lines_then_backward(cloud, cloud_seeds):
