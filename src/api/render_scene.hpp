@@ -50,16 +50,20 @@ void setTubeRadius(render::RenderSettings& settings, float radius);
 // Throws InputError for a bad colour map, colour field, volume channel, range, camera, image size,
 // number of ambient-occlusion rays, or a value that is not finite.
 // `cells` give the context volume's channel and scalars to colour by; `volume` the domain.
+// `info` (the field's) gives the units of what the tubes are coloured by.
 RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
-                         const flow::VectorVolume& volume, const flow::TraceSet& traces);
+                         const flow::VectorVolume& volume, const flow::TraceSet& traces,
+                         const DatasetInfo& info);
 
 // Points scene.camera at what the options frame (--view-box, else the tubes or the domain, see
-// RenderOptions::frame) from their direction, up axis, field of view and projection. Throws
+// RenderOptions::frame) from their direction (side on to the traces where they give none:
+// render/side_on_view.hpp), up axis, field of view and projection. Throws
 // InputError for a bad one. The viewer calls it again to frame the traces as they are.
 void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume);
 
-// The box --axes follows, in physical coordinates: --view-box, else the domain.
-std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
+// The box --axes follows, in physical coordinates: --view-box, else what the camera frames (the
+// box around the scene's traces, or the domain).
+std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o, const RenderScene& scene,
                                              const flow::VectorVolume& volume);
 // The input's length unit short enough for a label: "kpc", or "code units" of
 // "code units (1 = 3.1e+24 cm)"; empty when unknown.

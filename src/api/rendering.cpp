@@ -18,6 +18,7 @@
 #include "flow/seeds.hpp"
 #include "render/image/font.hpp"
 #include "render/image/png_io.hpp"
+#include "render/scene_space.hpp"
 #include "render/volume_range.hpp"
 #include "scene_overlays.hpp"
 #include "util/stopwatch.hpp"
@@ -27,8 +28,9 @@ namespace amrstream {
 
 namespace {
 
-// The tube radius in finest cells: --tube-radius, --tube-radius-physical, else a fraction of the
-// view's height at the camera's target (so figures look alike whatever the data's depth).
+// The tube radius in scene units (finest cells): --tube-radius, --tube-radius-physical, else a
+// fraction of the view's height at the camera's target (so figures look alike whatever the data's
+// depth).
 float tubeRadiusOf(const RenderOptions& o, const flow::VectorVolume& volume,
                    const render::OrbitCamera& camera) {
   const int given = int(o.tubeRadius.has_value()) + int(o.tubeRadiusPhysical.has_value());
@@ -39,8 +41,8 @@ float tubeRadiusOf(const RenderOptions& o, const flow::VectorVolume& volume,
   if (o.tubeRadius) {
     radius = *o.tubeRadius;
   } else if (o.tubeRadiusPhysical) {
-    const glm::dvec3 spacing = volume.transform.spacing;
-    radius = float(*o.tubeRadiusPhysical / std::cbrt(spacing.x * spacing.y * spacing.z));
+    const double sceneUnit = std::abs(render::sceneTransformOf(volume.transform).spacing.x);
+    radius = float(*o.tubeRadiusPhysical / sceneUnit);
     option = "tube_radius_physical";
   } else {
     if (!(o.tubeRadiusOfView > 0.0f && o.tubeRadiusOfView <= 0.5f))
@@ -159,17 +161,25 @@ void setColourRange(RenderScene& scene) {
 
 std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
                                            const flow::VectorVolume& volume) {
-  if (o.outline == "none") return {};
-  if (o.outline == "domain")
-    return render::boxOutline(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper));
-  if (o.outline != "bricks")
-    throw settingError("outline", fmt::format("'{}': choose domain, bricks or none", o.outline));
+  // auto: the axes' box, where it is not the domain, takes the domain outline's place.
+  const bool axesAroundAnotherBox = o.axes && (o.frame == "traces" || !o.viewBox.empty());
+  const std::string& outline = o.outline != "auto"    ? o.outline
+                               : axesAroundAnotherBox ? "none"
+                                                      : "domain";
+  if (outline == "none") return {};
+  const glm::vec3 scale(render::sceneScaleOf(volume.transform));
+  if (outline == "domain")
+    return render::boxOutline(glm::vec3(volume.domain.lower) * scale,
+                              glm::vec3(volume.domain.upper) * scale);
+  if (outline != "bricks")
+    throw settingError("outline",
+                       fmt::format("'{}': choose auto, domain, bricks or none", o.outline));
   std::vector<shared::TubeSegment> edges;
   for (std::size_t i = 0; i < volume.originalBrickCount; ++i) {
     const shared::Brick& brick = volume.bricks[i];
     const glm::vec3 lower(brick.lower);
-    const std::vector<shared::TubeSegment> box =
-        render::boxOutline(lower, lower + glm::vec3(brick.size) * std::ldexp(1.0f, brick.level));
+    const glm::vec3 upper = lower + glm::vec3(brick.size) * std::ldexp(1.0f, brick.level);
+    const std::vector<shared::TubeSegment> box = render::boxOutline(lower * scale, upper * scale);
     edges.insert(edges.end(), box.begin(), box.end());
   }
   return edges;
@@ -193,7 +203,8 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const bricks::AmrFi
   scene.colourSeen = widenSeen(nothingSeen(), scaleKindOf(o), colour.values);
   scene.colourScale = colourScaleFor(o, scene.colourSeen);
   toCoordinates(scene.colourScale, colour.values);
-  scene.segments = render::buildTubeSegments(traces, colour, volume.transform);
+  scene.segments =
+      render::buildTubeSegments(traces, colour, render::sceneTransformOf(volume.transform));
   scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
   setColourRange(scene);
 }
@@ -214,7 +225,7 @@ std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
   scene.colourScale = scale;
   toCoordinates(scale, colour.values);
   std::vector<shared::TubeSegment> added =
-      render::buildTubeSegments(recent, colour, volume.transform);
+      render::buildTubeSegments(recent, colour, render::sceneTransformOf(volume.transform));
   scene.segments.insert(scene.segments.end() - std::ptrdiff_t(scene.outline.size()), added.begin(),
                         added.end());
   setColourRange(scene);
@@ -222,7 +233,8 @@ std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
 }
 
 RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
-                         const flow::VectorVolume& volume, const flow::TraceSet& traces) {
+                         const flow::VectorVolume& volume, const flow::TraceSet& traces,
+                         const DatasetInfo& info) {
   checkImageOptions(o);
   RenderScene scene;
   const auto map = render::parseColourMap(o.colourMap);
@@ -231,7 +243,9 @@ RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
   scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
-  scene.colourUnit = o.colourBy == "time" ? o.timeUnit : std::string();
+  scene.colourUnit = o.colourBy == "time"    ? o.timeUnit
+                     : o.colourBy == "speed" ? unitOf(info, traces.vectorName)
+                                             : unitOf(info, o.colourBy);
 
   render::RenderSettings& s = scene.settings;
   if (o.background == "transparent") {
@@ -354,7 +368,7 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
         "(see `amrstream devices`)");
   const vk::Context ctx = createContext(request, choice);
   requireTubesFit(ctx, choice.backend, linesOf(traces));
-  const RenderScene scene = prepareScene(o, cells, volume, linesOf(traces));
+  const RenderScene scene = prepareScene(o, cells, volume, linesOf(traces), field.info());
   RenderedImage result;
   result.backend = gpu::backendName(choice.backend);
   result.device = ctx.deviceName();

@@ -10,13 +10,16 @@
 
 #include "amrstream/error.hpp"
 #include "api/render_scene.hpp"
+#include "api/scene_overlays.hpp"
+#include "render/scene_space.hpp"
+#include "render/side_on_view.hpp"
 
 namespace amrstream {
 
 namespace {
 
-// What the camera frames, in cell units: the corners of --view-box, else the tubes' ends (with
-// their radius) or the domain's corners.
+// What the camera frames, in scene units (render/scene_space.hpp): the corners of --view-box, else
+// the tubes' ends (with their radius) or the domain's corners.
 struct Framed {
   std::vector<glm::vec3> points;
   float radius = 0.0f;
@@ -30,7 +33,7 @@ std::vector<glm::vec3> boxCorners(glm::vec3 lower, glm::vec3 upper) {
   return corners;
 }
 
-// --view-box in cell units, checked; nullopt without one.
+// --view-box in scene units, checked; nullopt without one.
 std::optional<std::pair<glm::vec3, glm::vec3>> viewBoxOf(const RenderOptions& o,
                                                          const flow::VectorVolume& volume) {
   if (o.viewBox.empty()) return std::nullopt;
@@ -39,14 +42,36 @@ std::optional<std::pair<glm::vec3, glm::vec3>> viewBoxOf(const RenderOptions& o,
   const glm::dvec3 b(o.viewBox[3], o.viewBox[4], o.viewBox[5]);
   if (!glm::all(glm::lessThan(a, b)))
     throw settingError("view_box", "the lower corner must be below the upper one on every axis");
-  return std::pair{glm::vec3(volume.transform.toCellUnits(a)),
-                   glm::vec3(volume.transform.toCellUnits(b))};
+  const WorldTransform scene = render::sceneTransformOf(volume.transform);
+  return std::pair{glm::vec3(scene.toCellUnits(a)), glm::vec3(scene.toCellUnits(b))};
 }
 
-// The box --axes follows, in cell units: --view-box, else the domain.
-std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const flow::VectorVolume& volume) {
-  return viewBoxOf(o, volume).value_or(
-      std::pair{glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper)});
+// The domain's box in scene units.
+std::pair<glm::vec3, glm::vec3> domainBox(const flow::VectorVolume& volume) {
+  const glm::vec3 scale(render::sceneScaleOf(volume.transform));
+  return {glm::vec3(volume.domain.lower) * scale, glm::vec3(volume.domain.upper) * scale};
+}
+
+// The box around the traces' tubes (their centre lines), in scene units; nullopt for none.
+std::optional<std::pair<glm::vec3, glm::vec3>> tracesBox(
+    std::span<const shared::TubeSegment> segments) {
+  if (segments.empty()) return std::nullopt;
+  glm::vec3 lower(INFINITY), upper(-INFINITY);
+  for (const shared::TubeSegment& s : segments) {
+    lower = glm::min(lower, glm::min(s.a, s.b));
+    upper = glm::max(upper, glm::max(s.a, s.b));
+  }
+  return std::pair{lower, upper};
+}
+
+// The box --axes follows, in scene units: --view-box, else what the camera frames (the traces,
+// or the domain).
+std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const flow::VectorVolume& volume,
+                                        std::span<const shared::TubeSegment> traces) {
+  if (const auto box = viewBoxOf(o, volume)) return *box;
+  if (o.frame == "traces")
+    if (const auto box = tracesBox(traces)) return *box;
+  return domainBox(volume);
 }
 
 Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
@@ -61,14 +86,15 @@ Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
       framed.points.push_back(s.a);
       framed.points.push_back(s.b);
     }
-    if (o.axes) {  // the axes (on the domain) and their labels stay in view too
-      const auto [lower, upper] = axesBox(o, volume);
+    if (o.axes) {  // the axes' box stays in view with their labels, flat or not
+      const auto [lower, upper] = axesBox(o, volume, segments);
       const std::vector<glm::vec3> corners = boxCorners(lower, upper);
       framed.points.insert(framed.points.end(), corners.begin(), corners.end());
     }
     return framed;
   }
-  return {boxCorners(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper))};
+  const auto [lower, upper] = domainBox(volume);
+  return {boxCorners(lower, upper)};
 }
 
 // The camera the options ask for, before framing.
@@ -108,11 +134,11 @@ std::span<const shared::TubeSegment> traceSegments(const RenderScene& scene) {
 
 }  // namespace
 
-std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o,
+std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o, const RenderScene& scene,
                                              const flow::VectorVolume& volume) {
-  const auto [lower, upper] = axesBox(o, volume);
-  return {volume.transform.toPhysical(glm::dvec3(lower)),
-          volume.transform.toPhysical(glm::dvec3(upper))};
+  const auto [lower, upper] = axesBox(o, volume, traceSegments(scene));
+  const WorldTransform transform = render::sceneTransformOf(volume.transform);
+  return {transform.toPhysical(glm::dvec3(lower)), transform.toPhysical(glm::dvec3(upper))};
 }
 
 void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorVolume& volume) {
@@ -125,11 +151,20 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
   std::optional<glm::vec3> target;
   if (!o.lookAt.empty()) {
     if (o.lookAt.size() != 3) throw settingError("look_at", "expected 3 numbers x,y,z");
-    target =
-        glm::vec3(volume.transform.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
+    const WorldTransform scene = render::sceneTransformOf(volume.transform);
+    target = glm::vec3(scene.toCellUnits(glm::dvec3(o.lookAt[0], o.lookAt[1], o.lookAt[2])));
   }
-  scene.camera = render::framePoints(cameraOf(o), framed.points, framed.radius,
-                                     float(o.width) / float(o.height), zoom, target);
+  render::OrbitCamera camera = cameraOf(o);
+  if (o.view.empty() && o.camera.size() < 2) camera = render::sideOn(camera, traceSegments(scene));
+  // Framed above the colour bars' band, so that they cover neither tubes nor labels.
+  const float band = float(colourBarsHeight(o, scene, o.width, o.height));
+  const float above = float(o.height) - band;
+  scene.camera = render::framePoints(camera, framed.points, framed.radius, float(o.width) / above,
+                                     zoom, target);
+  if (band > 0.0f) {
+    render::zoom(scene.camera, above / float(o.height));
+    render::pan(scene.camera, 0.0f, -0.5f * band / float(o.height));
+  }
 }
 
 void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {

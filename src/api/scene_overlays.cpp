@@ -11,7 +11,9 @@
 #include "render/annotations/scale_bar.hpp"
 #include "render/annotations/triad.hpp"
 #include "render/image/colour_bar.hpp"
+#include "render/image/colour_bar_layout.hpp"
 #include "render/image/font.hpp"
+#include "render/scene_space.hpp"
 
 namespace amrstream {
 
@@ -47,15 +49,19 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   const glm::vec3 grey = scene.settings.outlineColour * 1.15f;
   const render::Rgba8 ink = render::toRgba8(glm::min(grey, glm::vec3(1.0f)));
   if (o.axes) {
-    const auto [lower, upper] = axesBounds(o, volume);
+    const auto [lower, upper] = axesBounds(o, scene, volume);
     render::drawAxes(
-        image, render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size), ink);
+        image,
+        render::layoutAxes(scene.camera, w, h, lower, upper,
+                           render::sceneTransformOf(volume.transform), size, shortLengthUnit(info)),
+        ink);
   }
   if (o.triad) render::drawTriad(image, render::layoutTriad(scene.camera, w, h, size));
   if (o.scaleBar)
     render::drawScaleBar(
         image,
-        render::layoutScaleBar(scene.camera, w, h, volume.transform, shortLengthUnit(info), size),
+        render::layoutScaleBar(scene.camera, w, h, render::sceneTransformOf(volume.transform),
+                               shortLengthUnit(info), size),
         ink);
 }
 
@@ -81,19 +87,33 @@ glm::vec3 outlineColourOn(glm::vec3 background) {
   return luminance(background) > 0.5f ? glm::vec3(0.25f) : glm::vec3(0.75f);
 }
 
+std::vector<render::ColourBar> colourBarsOf(const RenderOptions& o, const RenderScene& scene) {
+  const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
+  std::vector<render::ColourBar> bars{
+      {scene.colourMap, scene.colourScale, scene.colourLabel, scene.colourUnit, {}, 0, light}};
+  if (scene.settings.volume) {
+    render::ColourBar bar = volumeBar(o, scene);
+    bar.light = light;
+    bars.push_back(bar);
+  }
+  return bars;
+}
+
+int colourBarsHeight(const RenderOptions& o, const RenderScene& scene, std::uint32_t width,
+                     std::uint32_t height) {
+  if (!o.colourBar) return 0;
+  int top = int(height);
+  for (const render::ColourBar& bar : colourBarsOf(o, scene))
+    if (const auto layout = render::layoutColourBar(width, height, bar))
+      top = std::min(top, layout->panel.y);
+  return int(height) - top;
+}
+
 void drawOverlays(render::Image& image, const RenderOptions& o, const RenderScene& scene,
                   const flow::VectorVolume& volume, const DatasetInfo& info, bool colourBars) {
   drawAnnotations(image, o, scene, volume, info);
   if (!colourBars) return;
-  const bool light = !scene.settings.transparent && luminance(scene.settings.background) > 0.5f;
-  render::drawColourBar(
-      image,
-      {scene.colourMap, scene.colourScale, scene.colourLabel, scene.colourUnit, {}, 0, light});
-  if (scene.settings.volume) {
-    render::ColourBar bar = volumeBar(o, scene);
-    bar.light = light;
-    render::drawColourBar(image, bar);
-  }
+  for (const render::ColourBar& bar : colourBarsOf(o, scene)) render::drawColourBar(image, bar);
 }
 
 std::string shortLengthUnit(const DatasetInfo& info) {

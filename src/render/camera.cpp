@@ -64,7 +64,8 @@ std::optional<NamedView> namedView(std::string_view name, Axis up) {
   if (name == "iso") return NamedView{45.0f, glm::degrees(std::atan(1.0f / std::sqrt(2.0f)))};
   const std::optional<Axis> from = parseAxis(name);
   if (!from || name.size() != 2) return std::nullopt;
-  if (from->index == up.index) return NamedView{0.0f, from->sign == up.sign ? 90.0f : -90.0f};
+  // Azimuth -90 turns the first axis after the up axis to the right (cameraFrame's `right`).
+  if (from->index == up.index) return NamedView{-90.0f, from->sign == up.sign ? 90.0f : -90.0f};
   const Basis basis = basisOf(up);
   const glm::vec3 v = from->vector();
   return NamedView{glm::degrees(std::atan2(glm::dot(v, basis.second), glm::dot(v, basis.first))),

@@ -109,7 +109,8 @@ std::vector<shared::TubeSegment> boxOutline(glm::vec3 lower, glm::vec3 upper) {
 
 float segmentRadius(const shared::TubeSegment& segment, float radius, float leastFraction,
                     const ValueRange& range) {
-  if (std::min(segment.valueA, segment.valueB) < 0.1f * AMRSTREAM_OUTLINE_VALUE) return radius;
+  if (std::min(segment.valueA, segment.valueB) < 0.1f * AMRSTREAM_OUTLINE_VALUE)
+    return shared::kOutlineRadiusFraction * radius;
   const float span = range.max - range.min;
   const float mean = 0.5f * segment.valueA + 0.5f * segment.valueB;
   const float t = span > 0.0f ? std::clamp((mean - range.min) / span, 0.0f, 1.0f) : 1.0f;

@@ -54,11 +54,11 @@ std::vector<shared::TubeSegment> buildTubeSegments(const flow::TraceSet& traces,
 
 // A segment's radius when radii follow the colour field (capsule.glsl's segmentRadius):
 // `leastFraction` of `radius` at range.min, all of it at range.max, in proportion to the mean of
-// the segment's two values between; outline segments keep `radius`.
+// the segment's two values between; outline segments are shared::kOutlineRadiusFraction of it.
 float segmentRadius(const shared::TubeSegment& segment, float radius, float leastFraction,
                     const ValueRange& range);
 
-// The twelve edges of a box (cell units) as outline segments (AMRSTREAM_OUTLINE_VALUE).
+// The twelve edges of a box (scene units) as outline segments (AMRSTREAM_OUTLINE_VALUE).
 std::vector<shared::TubeSegment> boxOutline(glm::vec3 lower, glm::vec3 upper);
 
 }  // namespace amrstream::render

@@ -12,6 +12,7 @@
 
 #include "bricks/descent_tree.hpp"
 #include "flow/cell_gradients.hpp"
+#include "scene_space.hpp"
 #include "tube_forest.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/buffer_transfer.hpp"
@@ -55,7 +56,10 @@ float orthographicStart(const OrbitCamera& camera, const CameraFrame& view,
     }
   };
   include(tubesLower, tubesUpper);
-  if (settings.volume) include(glm::vec3(volume.domain.lower), glm::vec3(volume.domain.upper));
+  if (settings.volume) {
+    const glm::vec3 scale(sceneScaleOf(volume.transform));
+    include(glm::vec3(volume.domain.lower) * scale, glm::vec3(volume.domain.upper) * scale);
+  }
   return nearest + 1.0f;
 }
 
@@ -99,6 +103,7 @@ shared::RenderParams makeParams(const OrbitCamera& camera, const RenderSettings&
   p.aoDistance = settings.aoDistance;
   p.domainLower = glm::vec3(volume.domain.lower);
   p.domainUpper = glm::vec3(volume.domain.upper);
+  p.sceneScale = glm::vec3(sceneScaleOf(volume.transform));
   p.valueMin = settings.colourRange.min;
   p.valueMax = settings.colourRange.max;
   p.volumeMin = settings.volumeRange.min;

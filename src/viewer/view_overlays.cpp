@@ -6,6 +6,7 @@
 #include "render/annotations/scale_bar.hpp"
 #include "render/annotations/triad.hpp"
 #include "render/image/font.hpp"
+#include "render/scene_space.hpp"
 
 namespace amrstream::viewer {
 namespace {
@@ -40,9 +41,10 @@ void drawSceneOverlays(const RenderScene& scene, const RenderOptions& look,
   const int size = render::overlayLabelPixelSize(w, h);
   const ImU32 ink = imguiColour(glm::min(scene.settings.outlineColour * 1.15f, glm::vec3(1.0f)));
   if (look.axes) {
-    const auto [lower, upper] = axesBounds(look, volume);
+    const auto [lower, upper] = axesBounds(look, scene, volume);
     const render::AxesLayout axes =
-        render::layoutAxes(scene.camera, w, h, lower, upper, volume.transform, size);
+        render::layoutAxes(scene.camera, w, h, lower, upper,
+                           render::sceneTransformOf(volume.transform), size, shortLengthUnit(info));
     for (const render::AxisLayout& axis : axes.axes) {
       if (!axis.shown) continue;
       canvas.line(axis.pixelStart, axis.pixelEnd, ink, axes.lineWidth);
@@ -63,7 +65,8 @@ void drawSceneOverlays(const RenderScene& scene, const RenderOptions& look,
   }
   if (look.scaleBar) {
     const render::ScaleBarLayout bar =
-        render::layoutScaleBar(scene.camera, w, h, volume.transform, shortLengthUnit(info), size);
+        render::layoutScaleBar(scene.camera, w, h, render::sceneTransformOf(volume.transform),
+                               shortLengthUnit(info), size);
     if (bar.length > 0.0) {
       canvas.line(bar.start, bar.end, ink, bar.thickness);
       for (const glm::vec2 end : {bar.start, bar.end})

@@ -22,7 +22,8 @@ ViewSession::ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Ba
       tracer_(ctx, backend, input_.volume()) {
   startTraces();
   options_.look.timeUnit = integrationTimeUnit(input_.options.stepMode, input_.field.info());
-  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces());
+  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces(),
+                        input_.field.info());
   renderer_ =
       std::make_unique<render::TubeRenderer>(ctx, backend, input_.volume(), scene_.contextScalars);
   setColourMap(scene_.colourMap);
@@ -91,7 +92,8 @@ void ViewSession::restartTraces() {
 
 void ViewSession::reloadVolume() {
   const render::OrbitCamera camera = scene_.camera;
-  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces());
+  scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces(),
+                        input_.field.info());
   scene_.camera = camera;
   vkQueueWaitIdle(ctx_->queue());
   renderer_ = std::make_unique<render::TubeRenderer>(*ctx_, backend_, input_.volume(),

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +82,64 @@ TEST(RenderCommand, AFlatBackgroundAndTheDomainOutline) {
     }
   EXPECT_GT(orange, 128u * 128u * 99 / 100) << "the flat background is not the colour asked for";
   EXPECT_GT(greyOnBorder, border / 10) << "no outline along the border";
+}
+
+// Whether a pixel of a figure on black holds any ink (outline, text, tube).
+bool inked(const render::Rgba8& c) { return std::max({c.r, c.g, c.b}) > 60; }
+
+// The largest 1, 2 or 5 x 10^k at most `most`.
+double roundLengthAtMost(double most) {
+  const double decade = std::pow(10.0, std::floor(std::log10(most)));
+  for (const double factor : {5.0, 2.0, 1.0})
+    if (factor * decade <= most * (1.0 + 1e-9)) return factor * decade;
+  return decade;
+}
+
+// Cells four times taller (y) than wide (x): seen from +z, the domain's outline is four times
+// taller than wide on the image, and the scale bar's length in pixels is its round length times
+// the pixels per physical unit that the outline shows.
+TEST(RenderCommand, AnisotropicCellsAreDrawnInTheirPhysicalShapeWithATrueScaleBar) {
+  const auto dir = std::filesystem::temp_directory_path() / "amrstream_render_view" / "aniso_data";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto run = testing::runAmrstream("gen rotation --levels 2 --root-blocks 2 --out " +
+                                   (dir / "rot").string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto exa = dir / "rot.exa";
+  std::ifstream in(exa);
+  std::stringstream text;
+  for (std::string line; std::getline(in, line);)
+    text << (line.starts_with("spacing ") ? "spacing 0.03125 0.125 0.03125" : line) << "\n";
+  in.close();
+  std::ofstream(exa) << text.str();  // 32^3 cells: 1 x 4 x 1 physical units
+
+  const auto png = outputPath("aniso.png");
+  run = testing::runAmrstream(
+      "render " + exa.string() +
+      " --count 1 --steps 1 --width 400 --height 400 --frames 1 --ao-samples 0 --no-colour-bar "
+      "--no-triad --scale-bar --background black --view +z --projection orthographic "
+      "--frame domain --outline domain --tube-radius-view 0.005 --out " +
+      png.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const render::Image image = render::readPng(png);
+  int left = -1, right = -1, top = -1, bottom = -1;
+  for (std::uint32_t x = 0; x < image.width; ++x)  // along row 100, above the scale bar
+    if (inked(image.at(x, 100))) right = int(x), left = left < 0 ? int(x) : left;
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    if (inked(image.at(image.width / 2, y))) bottom = int(y), top = top < 0 ? int(y) : top;
+  ASSERT_GT(right - left, 10) << "no outline's sides on row 100";
+  const double width = right - left, height = bottom - top;
+  EXPECT_NEAR(height / width, 4.0, 0.1) << width << " x " << height << " pixels";
+
+  const double pixelsPerUnit = height / 4.0;
+  const double barLength = roundLengthAtMost(0.25 * image.width / pixelsPerUnit);
+  int longestRun = 0;  // the scale bar: the longest row of ink left of the outline, lower half
+  for (std::uint32_t y = image.height / 2; y < image.height; ++y)
+    for (int x = 0, run = 0; x < left - 4; ++x) {
+      run = inked(image.at(std::uint32_t(x), y)) ? run + 1 : 0;
+      longestRun = std::max(longestRun, run);
+    }
+  EXPECT_NEAR(longestRun, barLength * pixelsPerUnit, 3.0) << barLength << " units";
 }
 
 // A transparent background: no tube, alpha 0; inside a tube, 255; the tubes' anti-aliased edges

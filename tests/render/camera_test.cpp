@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "glm_pixel.hpp"
+#include "render/side_on_view.hpp"
 
 namespace amrstream::render {
 namespace {
@@ -116,6 +117,10 @@ TEST(CameraViews, NamedViewsLookFromTheirAxis) {
       EXPECT_NEAR(glm::length(glm::cross(frame.right, frame.up) + frame.forward), 0.0f, 1e-5f);
       if (from != up.vector() && from != -up.vector()) {
         EXPECT_NEAR(glm::dot(frame.up, up.vector()), 1.0f, 1e-5f) << name << " up " << upName;
+      } else {  // along the up axis: the first axis after it points right
+        glm::vec3 first(0.0f);
+        first[(up.index + 1) % 3] = 1.0f;
+        EXPECT_NEAR(glm::dot(frame.right, first), 1.0f, 1e-5f) << name << " up " << upName;
       }
     }
   }
@@ -143,6 +148,40 @@ TEST(CameraViews, OrthographicSizesDoNotShrinkWithDepth) {
   EXPECT_NEAR(width(-40.0f), width(40.0f), 1e-3f);
   camera.projection = Projection::Perspective;
   EXPECT_GT(width(40.0f), 1.5f * width(-40.0f));  // nearer, larger
+}
+
+// Lines running one way that the default view looks along are seen across; lines in the plane
+// across the up axis from above; lines every way keep the default direction.
+TEST(SideOnView, LooksAcrossTheLinesRatherThanAlongThem) {
+  const auto along = [](glm::vec3 direction, int count) {
+    std::vector<shared::TubeSegment> segments;
+    for (int i = 0; i < count; ++i) {
+      const glm::vec3 start(float(i % 7), float(i % 5), float(i % 3));
+      segments.push_back({start, 0.0f, start + direction, 0.0f});
+    }
+    return segments;
+  };
+  OrbitCamera camera;  // azimuth 35, elevation 25, up +z
+  for (const glm::vec3 direction :
+       {glm::vec3(1, 0, 0.3f), glm::vec3(1, 0.7f, 0.6f), glm::vec3(1, 1, 0.3f)}) {
+    const std::vector<shared::TubeSegment> bundle = along(direction, 50);
+    const OrbitCamera side = sideOn(camera, bundle);
+    EXPECT_LT(lengthAlong(bundle, cameraFrame(side).forward), 0.01f) << direction.x << direction.y;
+    EXPECT_EQ(side.elevationDegrees, 25.0f);
+  }
+  std::vector<shared::TubeSegment> plane = along({1, 0, 0}, 20);
+  const std::vector<shared::TubeSegment> other = along({0.3f, 1, 0}, 20);
+  plane.insert(plane.end(), other.begin(), other.end());
+  const CameraFrame above = cameraFrame(sideOn(camera, plane));
+  EXPECT_NEAR(above.forward.z, -1.0f, 1e-5f);
+  EXPECT_NEAR(above.right.x, 1.0f, 1e-5f);  // x right, y up
+  std::vector<shared::TubeSegment> everyWay = along({1, 0, 0}, 10);
+  for (const glm::vec3 d : {glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
+    const std::vector<shared::TubeSegment> more = along(d, 10);
+    everyWay.insert(everyWay.end(), more.begin(), more.end());
+  }
+  EXPECT_EQ(sideOn(camera, everyWay), camera);
+  EXPECT_EQ(sideOn(camera, {}), camera);
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 class RenderOptionChecks : public ::testing::Test {
  protected:
   std::string errorOf(const RenderOptions& options) {
-    return inputErrorOf([&] { prepareScene(options, cells_, volume_, traces_); });
+    return inputErrorOf([&] { prepareScene(options, cells_, volume_, traces_, cells_.info()); });
   }
   std::string errorOfFrames(std::uint32_t frames) {
     return inputErrorOf([&] {
@@ -120,12 +120,12 @@ TEST_F(RenderOptionChecks, TheDefaultTubeRadiusIsAFractionOfTheView) {
   RenderOptions o;
   o.frame = "domain";
   o.tubeRadiusOfView = 0.01f;
-  const RenderScene scene = prepareScene(o, cells_, volume_, traces_);
+  const RenderScene scene = prepareScene(o, cells_, volume_, traces_, cells_.info());
   const float viewHeight =
       2.0f * scene.camera.distance * std::tan(glm::radians(scene.camera.fovYDegrees) / 2.0f);
   EXPECT_NEAR(scene.settings.tubeRadius, 0.01f * viewHeight, 1e-4f * viewHeight);
   o.zoom = 2.0f;  // half the view: half the radius
-  EXPECT_NEAR(prepareScene(o, cells_, volume_, traces_).settings.tubeRadius,
+  EXPECT_NEAR(prepareScene(o, cells_, volume_, traces_, cells_.info()).settings.tubeRadius,
               0.5f * scene.settings.tubeRadius, 1e-4f * viewHeight);
 }
 
@@ -142,9 +142,12 @@ TEST_F(RenderOptionChecks, ColouringByTimeShowsIntegrationTimesUnit) {
   RenderOptions o;
   o.timeUnit = "s";
   o.colourBy = "time";
-  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_).colourUnit, "s");
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_, cells_.info()).colourUnit, "s");
   o.colourBy = "speed";
-  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_).colourUnit, "");
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_, cells_.info()).colourUnit, "");
+  DatasetInfo declared = cells_.info();
+  declared.units[traces_.vectorName] = "km/s";
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_, declared).colourUnit, "km/s");
 }
 
 }  // namespace

@@ -41,11 +41,12 @@ float enterCapsule(vec3 o, vec3 d, vec3 a, vec3 b, float r) {
 
 // A segment's radius: tubeRadius, or with AMRSTREAM_RENDER_RADIUS_BY_VALUE, from
 // leastRadiusFraction of it at valueMin to all of it at valueMax by the mean of the segment's two
-// values (outline segments keep tubeRadius). The host's twin: render::segmentRadius.
+// values; outline segments are kOutlineRadiusFraction of it. The host's twin:
+// render::segmentRadius.
 float segmentRadius(TubeSegment s) {
-  if ((params.flags & AMRSTREAM_RENDER_RADIUS_BY_VALUE) == 0u ||
-      min(s.valueA, s.valueB) < 0.1 * AMRSTREAM_OUTLINE_VALUE)
-    return params.tubeRadius;
+  if (min(s.valueA, s.valueB) < 0.1 * AMRSTREAM_OUTLINE_VALUE)
+    return kOutlineRadiusFraction * params.tubeRadius;
+  if ((params.flags & AMRSTREAM_RENDER_RADIUS_BY_VALUE) == 0u) return params.tubeRadius;
   const float span = params.valueMax - params.valueMin;
   const float mean = 0.5 * s.valueA + 0.5 * s.valueB;
   const float t = span > 0.0 ? clamp((mean - params.valueMin) / span, 0.0, 1.0) : 1.0;

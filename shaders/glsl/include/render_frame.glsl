@@ -90,9 +90,14 @@ vec2 domainSpan(vec3 o, vec3 d) {
 
 vec3 transferColour(float x) { return mix(kVolumeLowColour, kVolumeHighColour, x); }
 
-// Emission-absorption along the ray up to tEnd: premultiplied colour and opacity. The step is
-// the finest cell width of the region at each sample, so fine regions are sampled finely.
-vec4 marchVolume(vec3 o, vec3 d, float tEnd) {
+// Emission-absorption along the ray (in scene units) up to sceneEnd: premultiplied colour and
+// opacity. The march runs in finest-cell units; the step is the finest cell width of the region
+// at each sample, so fine regions are sampled finely.
+vec4 marchVolume(vec3 sceneOrigin, vec3 sceneDirection, float sceneEnd) {
+  const vec3 cellDirection = sceneDirection / params.sceneScale;
+  const float stretch = length(cellDirection);
+  const vec3 o = sceneOrigin / params.sceneScale, d = cellDirection / stretch;
+  const float tEnd = sceneEnd * stretch;
   const vec2 span = domainSpan(o, d);
   vec4 result = vec4(0.0);
   float t = span.x;

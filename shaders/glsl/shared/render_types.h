@@ -1,5 +1,6 @@
 // Buffer structs of the renderer, shared by the host and the GLSL kernels (scalar layout).
-// Positions are in finest-cell units, like the tracer's.
+// Positions are in scene units: finest-cell units stretched per axis to the cells' physical
+// proportions (src/render/scene_space.hpp); the volume is marched in finest-cell units.
 #ifndef AMRSTREAM_SHARED_RENDER_TYPES_H
 #define AMRSTREAM_SHARED_RENDER_TYPES_H
 
@@ -45,6 +46,8 @@ const vec3 kVolumeHighColour = vec3(1.0, 0.88, 0.70);
 // A segment whose values are below this is an outline (of the domain or of bricks), drawn in
 // RenderParams::outlineColour rather than through the colour map.
 #define AMRSTREAM_OUTLINE_VALUE (-1.0e38)
+// Outlines are thinner than the tubes: this fraction of RenderParams::tubeRadius.
+const float kOutlineRadiusFraction = 0.4;
 
 // A pinhole (or orthographic) camera and what one frame draws. A frame adds one jittered sample per
 // pixel to the accumulation buffer; pixels show the mean of the frames since the last reset
@@ -65,7 +68,7 @@ struct RenderParams {
   uint aoSamples;
   vec3 background;
   float aoDistance;
-  vec3 domainLower;  // the volume's cell box, for the ray march
+  vec3 domainLower;  // the volume's box in finest-cell units, for the ray march
   float valueMin;    // colour field range mapped onto the colour map
   vec3 domainUpper;
   float valueMax;
@@ -77,12 +80,13 @@ struct RenderParams {
   // With AMRSTREAM_RENDER_RADIUS_BY_VALUE: the radius at valueMin as a fraction of tubeRadius
   // (tubeRadius itself at valueMax, and in proportion between).
   float leastRadiusFraction;
+  vec3 sceneScale;  // scene units per finest-cell unit, per axis
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(TubeSegment) == 32 && sizeof(TubeBvhNode) == 32);
 static_assert(offsetof(RenderParams, imageSize) == 64 && offsetof(RenderParams, volumeMin) == 144 &&
-              sizeof(RenderParams) == 176);
+              sizeof(RenderParams) == 188);
 }  // namespace amrstream::shared
 #endif
 

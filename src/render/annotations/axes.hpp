@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "bricks/amr_field.hpp"
@@ -41,7 +42,8 @@ struct AxisLayout {
   glm::vec2 pixelStart{0.0f}, pixelEnd{0.0f};
   glm::vec2 outward{0.0f};      // unit, across the edge on screen, away from the box's centre
   std::vector<AxisTick> ticks;  // increasing values
-  PlacedText name;  // "x", "y" or "z" beyond the middle of the edge, past the tick labels
+  // "x", "y" or "z" with the unit ("x [cm]") beyond the middle of the edge, past the tick labels.
+  PlacedText name;
 };
 
 struct AxesLayout {
@@ -52,7 +54,8 @@ struct AxesLayout {
 
 // The axes of the box [lowerPhysical, upperPhysical] (physical coordinates, lower <= upper on
 // each axis; `transform` maps them to the camera's cell units) seen by `camera` in a width x
-// height image, with labels of labelPixelSize px (overlayLabelPixelSize suits).
+// height image, with labels of labelPixelSize px (overlayLabelPixelSize suits); `unit` (the
+// coordinates', may be empty) follows the axes' names.
 //
 // Each axis takes the edge along it on the box's projected outline whose midpoint lies furthest
 // from the box's projected centre, measured across the edge on screen; none when that edge is
@@ -63,7 +66,8 @@ struct AxesLayout {
 // Nothing is shown when the box's centre lies behind a perspective eye.
 AxesLayout layoutAxes(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
                       glm::dvec3 lowerPhysical, glm::dvec3 upperPhysical,
-                      const WorldTransform& transform, int labelPixelSize);
+                      const WorldTransform& transform, int labelPixelSize,
+                      const std::string& unit = {});
 
 // The edges, marks and labels of every shown axis in `colour`, clipped to the image.
 void drawAxes(Image& image, const AxesLayout& layout, Rgba8 colour);

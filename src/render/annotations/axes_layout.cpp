@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "render/annotations/axes.hpp"
@@ -133,7 +134,8 @@ struct Box {
 };
 
 AxisLayout layoutAxis(int axis, const Box& box, const Projector& project,
-                      const WorldTransform& transform, int labelPixelSize, const Spacing& space) {
+                      const WorldTransform& transform, int labelPixelSize, const Spacing& space,
+                      const std::string& unit) {
   AxisLayout layout;
   layout.axis = axis;
   const std::optional<Edge> edge = outermostEdge(axis, box.projected, box.centre);
@@ -166,36 +168,45 @@ AxisLayout layoutAxis(int axis, const Box& box, const Projector& project,
   }
   const glm::vec2 middle = 0.5f * (layout.pixelStart + layout.pixelEnd);
   const float nameOffset = space.tickLength + 2.0f * space.labelGap + labelDepth;
-  layout.name = placeTextBeyond(kAxisNames[axis], middle + nameOffset * edge->outward,
-                                edge->outward, labelPixelSize);
+  std::string name = kAxisNames[axis];
+  if (!unit.empty()) name += " [" + unit + "]";
+  layout.name = placeTextBeyond(std::move(name), middle + nameOffset * edge->outward, edge->outward,
+                                labelPixelSize);
   return layout;
 }
 
-// Leaves out every label that comes within `spacing` of one kept before it: the axes' names
-// first, then the ticks' labels.
+// Leaves out every label that comes within `spacing` of one kept before it, or within a label's
+// height of one of another axis (two axes' values at a shared corner read as one label): the
+// axes' names first, then the ticks' labels.
 void leaveOutOverlappingLabels(AxesLayout& layout, int spacing) {
-  std::vector<PixelRect> kept;
-  const auto keepUnlessOverlapping = [&](PlacedText& label) {
+  struct Kept {
+    PixelRect box;
+    int axis;
+  };
+  std::vector<Kept> kept;
+  const int apartAcrossAxes = std::max(spacing, layout.labelPixelSize);
+  const auto keepUnlessOverlapping = [&](PlacedText& label, int axis) {
     if (label.text.empty()) return;
-    for (const PixelRect& other : kept) {
-      if (boxesOverlap(label.box, other, spacing)) {
+    for (const Kept& other : kept) {
+      if (boxesOverlap(label.box, other.box, other.axis == axis ? spacing : apartAcrossAxes)) {
         label.text.clear();
         label.box.width = 0;
         return;
       }
     }
-    kept.push_back(label.box);
+    kept.push_back({label.box, axis});
   };
-  for (AxisLayout& axis : layout.axes) keepUnlessOverlapping(axis.name);
+  for (AxisLayout& axis : layout.axes) keepUnlessOverlapping(axis.name, axis.axis);
   for (AxisLayout& axis : layout.axes)
-    for (AxisTick& tick : axis.ticks) keepUnlessOverlapping(tick.label);
+    for (AxisTick& tick : axis.ticks) keepUnlessOverlapping(tick.label, axis.axis);
 }
 
 }  // namespace
 
 AxesLayout layoutAxes(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
                       glm::dvec3 lowerPhysical, glm::dvec3 upperPhysical,
-                      const WorldTransform& transform, int labelPixelSize) {
+                      const WorldTransform& transform, int labelPixelSize,
+                      const std::string& unit) {
   const Spacing space = spacingFor(labelPixelSize);
   AxesLayout layout;
   layout.labelPixelSize = labelPixelSize;
@@ -210,7 +221,7 @@ AxesLayout layoutAxes(const OrbitCamera& camera, std::uint32_t width, std::uint3
   if (!centre) return layout;
   const Box box{lowerPhysical, upperPhysical, projectBox(lowerCell, upperCell, project), *centre};
   for (int axis = 0; axis < 3; ++axis)
-    layout.axes[axis] = layoutAxis(axis, box, project, transform, labelPixelSize, space);
+    layout.axes[axis] = layoutAxis(axis, box, project, transform, labelPixelSize, space, unit);
   leaveOutOverlappingLabels(layout, space.labelSpacing);
   return layout;
 }

@@ -37,14 +37,35 @@ double niceStep(double span, int most) {
   return 10.0 * decade;
 }
 
-// Round values evenly spaced in the value itself, inside [lower, upper].
-std::vector<double> linearTickValues(double lower, double upper, int most) {
-  const double step = niceStep(upper - lower, most);
+// The round values k * step inside [lower, upper].
+std::vector<double> multiplesInside(double lower, double upper, double step) {
   std::vector<double> values;
   const double first = std::ceil(lower / step - 1e-9);
   for (double k = first; k * step <= upper + step * 1e-9; ++k) {
     const double v = std::abs(k) < 0.5 ? 0.0 : k * step;
     values.push_back(v);
+  }
+  return values;
+}
+
+// The next round step below `step` (1, 2, 5 x 10^k).
+double smallerNiceStep(double step) {
+  const double decade = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double factor = step / decade;
+  return factor > 5.5   ? 5.0 * decade
+         : factor > 2.5 ? 2.0 * decade
+         : factor > 1.5 ? decade
+                        : 0.5 * decade;
+}
+
+// Round values evenly spaced in the value itself, inside [lower, upper]: at least two (a
+// smaller step than `most` asks for where the range falls between round values).
+std::vector<double> linearTickValues(double lower, double upper, int most) {
+  double step = niceStep(upper - lower, most);
+  std::vector<double> values = multiplesInside(lower, upper, step);
+  while (values.size() < 2 && step > (upper - lower) * 1e-6) {
+    step = smallerNiceStep(step);
+    values = multiplesInside(lower, upper, step);
   }
   return values;
 }

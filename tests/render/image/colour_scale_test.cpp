@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace amrstream::render {
 namespace {
@@ -59,6 +60,20 @@ TEST(ColourScale, NamesRoundTrip) {
   for (const ScaleKind kind : {ScaleKind::Linear, ScaleKind::Log, ScaleKind::SymLog})
     EXPECT_EQ(parseScaleKind(scaleKindName(kind)), kind);
   EXPECT_FALSE(parseScaleKind("logarithmic"));
+}
+
+// An axis of few ticks over a range between round values (0.011 to 0.019: no multiple of 0.01
+// or 0.005 but one inside) still gets two ticks, at a smaller round step.
+TEST(ScaleTicks, ARangeBetweenRoundValuesGetsAtLeastTwoTicks) {
+  for (const auto& [lower, upper] : {std::pair{0.011, 0.019}, std::pair{0.13, 0.97},
+                                     std::pair{-3.4, -3.1}, std::pair{1.0e6 + 0.1, 1.0e6 + 0.9}}) {
+    const auto ticks = scaleTicks({ScaleKind::Linear, lower, upper}, 2);
+    ASSERT_GE(ticks.size(), 2u) << lower << " to " << upper;
+    for (const ScaleTick& tick : ticks) {  // inside, to rounding
+      EXPECT_GE(tick.value, lower - 1e-12 * std::abs(lower));
+      EXPECT_LE(tick.value, upper + 1e-12 * std::abs(upper));
+    }
+  }
 }
 
 TEST(ScaleTicks, LinearTicksAreRoundAndInsideTheRange) {

@@ -1,0 +1,31 @@
+#pragma once
+// The space the renderer draws in: the input's cell units stretched per axis to the physical
+// proportions of its finest cell, so that figures of anisotropic data (cells taller than wide)
+// keep their physical shape. One scene unit is the finest cell's shortest physical side; where
+// the cells are cubes, scene units are cell units.
+
+#include <glm/glm.hpp>
+
+#include "amrstream/cell_types.hpp"
+
+namespace amrstream::render {
+
+// Scene units per cell unit along each axis: 1 on the finest cell's shortest side, more on the
+// others.
+inline glm::dvec3 sceneScaleOf(const WorldTransform& transform) {
+  const glm::dvec3 side = glm::abs(transform.spacing);
+  const double shortest = glm::min(side.x, glm::min(side.y, side.z));
+  return side / shortest;
+}
+
+// Maps scene units to physical coordinates, as `transform` maps cell units.
+inline WorldTransform sceneTransformOf(const WorldTransform& transform) {
+  return {transform.origin, transform.spacing / sceneScaleOf(transform)};
+}
+
+// Whether the finest cell is not a cube: then scene units and cell units differ.
+inline bool isAnisotropic(const WorldTransform& transform) {
+  return sceneScaleOf(transform) != glm::dvec3(1.0);
+}
+
+}  // namespace amrstream::render

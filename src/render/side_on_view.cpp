@@ -1,0 +1,62 @@
+#include "side_on_view.hpp"
+
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+
+namespace amrstream::render {
+namespace {
+
+// The view from above wins where it looks along the lines at most this much more than the best
+// side view: lines (nearly) across the up axis.
+constexpr float kFlatTolerance = 1e-3f;
+
+glm::dmat3 orientationTensor(std::span<const shared::TubeSegment> segments) {
+  glm::dmat3 tensor(0.0);
+  for (const shared::TubeSegment& s : segments) {
+    const glm::dvec3 along = glm::dvec3(s.b) - glm::dvec3(s.a);
+    const double length = glm::length(along);
+    if (length > 0.0) tensor += glm::outerProduct(along, along) / length;
+  }
+  return tensor;
+}
+
+float fractionAlong(const glm::dmat3& tensor, glm::vec3 direction) {
+  const double trace = tensor[0][0] + tensor[1][1] + tensor[2][2];
+  if (!(trace > 0.0)) return 0.0f;
+  const glm::dvec3 d = glm::normalize(glm::dvec3(direction));
+  return static_cast<float>(glm::dot(d, tensor * d) / trace);
+}
+
+}  // namespace
+
+float lengthAlong(std::span<const shared::TubeSegment> segments, glm::vec3 direction) {
+  return fractionAlong(orientationTensor(segments), direction);
+}
+
+OrbitCamera sideOn(OrbitCamera camera, std::span<const shared::TubeSegment> segments) {
+  const glm::dmat3 tensor = orientationTensor(segments);
+  const auto along = [&](const OrbitCamera& view) {
+    return fractionAlong(tensor, cameraFrame(view).forward);
+  };
+  const float kept = along(camera);
+  OrbitCamera best = camera;
+  float bestAlong = kept;
+  const auto consider = [&](float azimuth, float elevation) {
+    OrbitCamera view = camera;
+    view.azimuthDegrees = azimuth, view.elevationDegrees = elevation;
+    if (const float a = along(view); a < bestAlong) best = view, bestAlong = a;
+  };
+  for (int azimuth = -180; azimuth < 180; azimuth += 5)
+    consider(float(azimuth), camera.elevationDegrees);
+  // Lines that lie across the up axis (2D data) are seen from above, without foreshortening.
+  const std::string upName{camera.up.sign > 0.0f ? '+' : '-', "xyz"[camera.up.index]};
+  if (const std::optional<NamedView> above = namedView(upName, camera.up)) {
+    OrbitCamera view = camera;
+    view.azimuthDegrees = above->azimuthDegrees, view.elevationDegrees = above->elevationDegrees;
+    if (const float a = along(view); a <= bestAlong + kFlatTolerance) best = view, bestAlong = a;
+  }
+  return bestAlong + kSideOnGain <= kept ? best : camera;
+}
+
+}  // namespace amrstream::render
