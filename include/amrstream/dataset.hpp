@@ -52,8 +52,11 @@ class Dataset {
 };
 
 // A FLASH, Enzo, AMReX, Gerris or ExaBricks file (recognised by content), or builtin:NAME sized
-// by `builtin`. Throws InputError naming the input and the problem.
-Dataset load(const std::string& input, const BuiltinOptions& builtin = {});
+// by `builtin`, with the units `units` declares where the file states none (a NAME there is a
+// channel, or the name of the vector the field takes by default). Throws InputError naming the
+// input and the problem.
+Dataset load(const std::string& input, const BuiltinOptions& builtin = {},
+             const DeclaredUnits& units = {});
 
 // The existing files and directories that reading `input` may open: nothing for builtin:KIND;
 // an AMReX plotfile directory itself (everything under it); an ExaBricks .exa with the cells and

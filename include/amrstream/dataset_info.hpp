@@ -4,8 +4,10 @@
 // readers fill it from the file alone; nothing here is guessed from the data.
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace amrstream {
@@ -37,7 +39,25 @@ struct DatasetInfo {
   // the file level of each internal level, -1 where no file level has that cell width. When not
   // empty, fileLevel() reads it instead of the formula above.
   std::vector<int> fileLevelOfInternal;
+  // The unit of a channel's values (or a vector's, by its name), e.g. "g/cm**3", or "code units
+  // (1 = 1.7e-24 g/cm**3)": where the file states it, or the user declares it (DeclaredUnits).
+  std::map<std::string, std::string, std::less<>> units;
 };
+
+// The unit of a channel or vector `name`, empty when unknown.
+std::string unitOf(const DatasetInfo& info, std::string_view name);
+
+// Units the user declares for an input that does not state them: the length unit and NAME=UNIT
+// for channels (or the vector, by its name). The settings length_unit and unit.
+struct DeclaredUnits {
+  std::string length;
+  std::vector<std::string> units;  // "NAME=UNIT"
+  bool empty() const { return length.empty() && units.empty(); }
+};
+
+// Adds the declared units to `info`. Throws InputError naming the setting for a malformed entry,
+// or for a unit that differs from one the file states (`source` names the file).
+void declareUnits(DatasetInfo& info, const DeclaredUnits& declared, const std::string& source);
 
 // ", t = 0.82 code units (1 = 1.4e+16 s), lengths in cm": the time and the units the file
 // states, for a one-line summary; empty when it states none of them.

@@ -61,6 +61,18 @@ inline constexpr Setting kGenSeed{
 inline constexpr Setting kTime{
     .name = "time", .help = "snapshot time of a generated unsteady dataset (swirl)", .shown = "0"};
 
+// Units the input does not state.
+inline constexpr Setting kLengthUnit{
+    .name = "length_unit",
+    .help =
+        "the unit of the input's coordinates where the file states none, e.g. cm: shown on "
+        "axes and scale bars and written with the traces"};
+inline constexpr Setting kUnit{
+    .name = "unit",
+    .help =
+        "NAME=UNIT: the unit of a channel (or of the vector, by its name) where the file "
+        "states none, e.g. density=g/cm**3; shown on colour bars; repeat for several"};
+
 // The field.
 inline constexpr Setting kVector{
     .name = "vector",
@@ -402,9 +414,11 @@ inline constexpr Setting kRange{
     .most = kFloatMax};
 inline constexpr Setting kOutline{
     .name = "outline",
-    .help = "thin tubes along the domain's edges (domain), every brick's (bricks) or none",
-    .shown = "domain",
-    .choices = "domain|bricks|none"};
+    .help =
+        "thin tubes along the domain's edges (domain), every brick's (bricks) or none; "
+        "auto: the domain's, unless {axes} are drawn around the traces or {view_box}",
+    .shown = "auto",
+    .choices = "auto|domain|bricks|none"};
 inline constexpr Setting kAxes{
     .name = "axes",
     .help =

@@ -26,6 +26,7 @@ namespace amrstream {
 struct DatasetRequest {
   std::string input;
   BuiltinOptions builtin;
+  DeclaredUnits units;  // length_unit, unit
 };
 
 struct TraceJob {

@@ -5,7 +5,9 @@
 #include <algorithm>
 
 #include "amrstream/error.hpp"
+#include "api/declared_units.hpp"
 #include "api/handles.hpp"
+#include "flow/vector_selection.hpp"
 #include "formats/dataset_files.hpp"
 #include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
@@ -41,8 +43,18 @@ int Dataset::finestLevel() const { return impl_->cells.finestLevel(); }
 int Dataset::coarsestLevel() const { return impl_->cells.coarsestLevel(); }
 std::vector<std::size_t> Dataset::cellsPerLevel() const { return impl_->cells.cellsPerLevel(); }
 
-Dataset load(const std::string& input, const BuiltinOptions& builtin) {
-  return datasetOf(formats::loadInput(input, builtin));
+Dataset load(const std::string& input, const BuiltinOptions& builtin, const DeclaredUnits& units) {
+  bricks::AmrField cells = formats::loadInput(input, builtin);
+  if (!units.empty()) {
+    const flow::ChannelCatalog catalog = flow::catalogOf(cells);
+    std::vector<std::string> names = catalog.names;
+    try {
+      names.push_back(flow::chooseVectorChannels(catalog, "").name);
+    } catch (const InputError&) {  // no vector by default: the names are the channels
+    }
+    declareInputUnits(cells, units, names);
+  }
+  return datasetOf(std::move(cells));
 }
 
 std::vector<std::filesystem::path> datasetFiles(const std::string& input) {

@@ -63,6 +63,12 @@ Field fieldOf(flow::VectorVolume volume, flow::VectorChannels vector, std::strin
   impl->volume = std::move(volume);
   impl->vector = std::move(vector);
   impl->source = std::move(source);
+  // The vector's unit: declared by its name, else its components' where they share one.
+  const std::string component = unitOf(info, impl->vector.channels[0]);
+  if (unitOf(info, impl->vector.name).empty() && !component.empty() &&
+      unitOf(info, impl->vector.channels[1]) == component &&
+      unitOf(info, impl->vector.channels[2]) == component)
+    info.units[impl->vector.name] = component;
   impl->info = std::move(info);
   impl->times = {times.bricks, times.regions, times.gradients, times.gather};
   impl->dataset = std::move(dataset);

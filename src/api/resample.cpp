@@ -27,7 +27,7 @@ std::string channelList(const flow::VectorVolume& volume) {
 // Loads the dataset and builds the field; the cells go once the field holds what sampling reads.
 Field loadField(const ResampleJob& job, const Log& log) {
   Stopwatch clock;
-  const Dataset cells = load(job.dataset.input, job.dataset.builtin);
+  const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
   clock.restart();

@@ -22,6 +22,8 @@ std::span<const Setting* const> allSettings() {
                                   &kTargetCells,
                                   &kGenSeed,
                                   &kTime,
+                                  &kLengthUnit,
+                                  &kUnit,
                                   &kVector,
                                   &kPointData,
                                   &kPeriodic,

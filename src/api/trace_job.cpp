@@ -6,6 +6,7 @@
 #include <map>
 
 #include "amrstream/error.hpp"
+#include "api/declared_units.hpp"
 #include "api/deferred_dataset.hpp"
 #include "api/field_plan.hpp"
 #include "api/input_share.hpp"
@@ -237,6 +238,9 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
   const bool deferred = options.dataset == KeepDataset::No && options.seeds && !share;
   ReadInput read = readInput(job, deferred, share);
   const FieldPlan plan = planField(read.data.catalog, read.data.cells->info(), job.field);
+  std::vector<std::string> named = read.data.catalog.names;
+  named.push_back(plan.vector.name);
+  declareInputUnits(*read.data.cells, job.dataset.units, named);
   sayInput(*read.data.cells, plan.vector, read.seconds, log);
 
   flow::SeedList seeds;

@@ -143,7 +143,7 @@ void addBenchCommand(CLI::App& app, const std::string& commandLine, const MpiWor
   options->commandLine = commandLine;
   CLI::App* command = app.add_subcommand(
       "bench", "the paper's performance experiment: particle-steps per second of every backend");
-  addDatasetOptions(*command, options->dataset, "--gen-seed");
+  addDatasetOptions(*command, options->dataset, "--gen-seed", DeclaresUnits::No);
   command->add_option("--vector", options->vector, "three channels forming the vector");
   addRunOptions(*command, *options);
   addSteppingOptions(*command, *options);

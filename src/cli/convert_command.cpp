@@ -34,7 +34,7 @@ void runConvert(const DatasetRequest& input, const std::string& out) {
   files.addOutput("OUT's cells", exaFile(prefix, ".cells"));
   auto start = std::chrono::steady_clock::now();
   const std::string format = formatName(input.input);
-  const Dataset dataset = load(input.input, input.builtin);
+  const Dataset dataset = load(input.input, input.builtin, input.units);
   // The channels' names are known now, still before anything is written.
   for (const std::string& channel : dataset.channelNames())
     files.addOutput("OUT's scalars", exaFile(prefix, "." + channel + ".scalars"));

@@ -21,7 +21,8 @@ void addGeneratorOptions(CLI::App& command, BuiltinOptions& options, const std::
   addSetting(command, settings::kTime, options.time);
 }
 
-void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::string& seedFlag) {
+void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::string& seedFlag,
+                       DeclaresUnits units) {
   std::string kinds;
   for (const std::string& kind : builtinKinds()) kinds += (kinds.empty() ? "" : "|") + kind;
   command
@@ -32,6 +33,11 @@ void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::st
                       kinds)
       ->required();
   addGeneratorOptions(command, options.builtin, seedFlag, kMaxBuiltinLevels);
+  if (units == DeclaresUnits::No) return;
+  addSetting(command, settings::kLengthUnit, options.units.length);
+  addSetting(command, settings::kUnit, options.units.units)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 }  // namespace amrstream::cli

@@ -9,9 +9,13 @@
 
 namespace amrstream::cli {
 
-// Adds the positional INPUT and the --levels, --root-blocks, --target-cells and `seedFlag`
-// options of builtin datasets.
-void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::string& seedFlag);
+// Whether a command takes --length-unit and --unit: those whose outputs show or keep units.
+enum class DeclaresUnits { No, Yes };
+
+// Adds the positional INPUT, the --levels, --root-blocks, --target-cells and `seedFlag` options
+// of builtin datasets and, for commands that declare units, --length-unit and --unit.
+void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::string& seedFlag,
+                       DeclaresUnits units = DeclaresUnits::Yes);
 // The same options without INPUT, --levels taking 1 to `maxLevels`.
 void addGeneratorOptions(CLI::App& command, BuiltinOptions& options, const std::string& seedFlag,
                          int maxLevels);

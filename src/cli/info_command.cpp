@@ -79,7 +79,7 @@ void printStructure(const Dataset& dataset, const DatasetSummary& s) {
 void runInfo(const DatasetRequest& request) {
   if (request.input.starts_with("builtin:")) checkBuiltinSize(request.builtin);
   const auto start = std::chrono::steady_clock::now();
-  const Dataset dataset = load(request.input, request.builtin);
+  const Dataset dataset = load(request.input, request.builtin, request.units);
   const DatasetInfo& info = dataset.info();
   printLine(
       fmt::format("input      {} [{:.2f} s]", dataset.source(),
@@ -102,8 +102,11 @@ void runInfo(const DatasetRequest& request) {
   printShape(box, (hi - lo) / glm::dvec3(box.upper - box.lower));
   const DatasetSummary summary = summarize(dataset);
   printLine(fmt::format("channels   {}", summary.channels.size()));
-  for (const DatasetSummary::ChannelRange& c : summary.channels)
-    printLine(fmt::format("  {:<16} [{:g}, {:g}]", c.name, c.min, c.max));
+  for (const DatasetSummary::ChannelRange& c : summary.channels) {
+    const std::string unit = unitOf(info, c.name);
+    printLine(fmt::format("  {:<16} [{:g}, {:g}]{}{}", c.name, c.min, c.max,
+                          unit.empty() ? "" : " ", unit));
+  }
   printStructure(dataset, summary);
 }
 

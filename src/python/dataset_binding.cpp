@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
+#include <string>
 
 #include "amrstream/builtin.hpp"
 #include "amrstream/dataset.hpp"
@@ -244,11 +247,16 @@ void checkBuiltinCells(const std::string& path, const BuiltinOptions& builtin) {
 std::shared_ptr<Dataset> loadDataset(const std::string& path, Given<std::optional<int>> levels,
                                      Given<std::optional<int>> rootBlocks,
                                      Given<std::optional<std::size_t>> targetCells,
-                                     Given<std::optional<std::uint64_t>> genSeed) {
+                                     Given<std::optional<std::uint64_t>> genSeed,
+                                     std::optional<std::string> lengthUnit,
+                                     std::optional<std::map<std::string, std::string>> units) {
   const BuiltinOptions builtin = builtinOptions(path, levels, rootBlocks, targetCells, genSeed);
   checkBuiltinCells(path, builtin);
+  DeclaredUnits declared{lengthUnit.value_or("")};
+  for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
+    declared.units.push_back(name + "=" + unit);
   py::gil_scoped_release unlocked;
-  return std::make_shared<Dataset>(load(path, builtin));
+  return std::make_shared<Dataset>(load(path, builtin, declared));
 }
 
 void bindDatasetClass(py::module_& m) {
@@ -261,6 +269,12 @@ void bindDatasetClass(py::module_& m) {
       .def_property_readonly("time", [](const Dataset& d) { return d.info().time; })
       .def_property_readonly("time_unit", [](const Dataset& d) { return d.info().timeUnit; })
       .def_property_readonly("length_unit", [](const Dataset& d) { return d.info().lengthUnit; })
+      .def_property_readonly(
+          "units",
+          [](const Dataset& d) {
+            return std::map<std::string, std::string>(d.info().units.begin(), d.info().units.end());
+          },
+          "{name: unit} for the channels whose unit the file states or load declared")
       .def_property_readonly(
           "periodic", [](const Dataset& d) { return periodicOf(d.info()); },
           "(x, y, z) periodicity the file declares, or None")
@@ -334,10 +348,13 @@ void bindDataset(py::module_& m) {
   bindFieldClass(m);
   m.def("load", &loadDataset, py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("root_blocks") = py::none(), py::arg("target_cells") = py::none(),
-        py::arg("gen_seed") = py::none(),
+        py::arg("gen_seed") = py::none(), py::arg("length_unit") = py::none(),
+        py::arg("units") = py::none(),
         "Loads a FLASH, Enzo, AMReX, Gerris or ExaBricks file, or builtin:NAME (rotation, abc, "
         "cloud, swirl; sized by levels, root_blocks, target_cells; or nest, sized by levels "
-        "alone).");
+        "alone). length_unit and units ({name: unit}) declare the units of the coordinates and "
+        "of channels (or the default vector, by its name) where the file states none; figures "
+        "show them.");
 
   m.def("from_arrays", &fromArrays, py::arg("corners"), py::arg("levels"), py::arg("fields"),
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),

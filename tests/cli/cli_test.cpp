@@ -208,6 +208,40 @@ TEST_F(Cli, InfoSaysTheShapeOfTheCellsAndTheLevelsUnderFinerOnes) {
   EXPECT_THAT(r.output, Not(HasSubstr("anisotropic")));
 }
 
+// Units: FLASH states its standard variables'; a format that states none takes --length-unit
+// and --unit, which info shows and convert keeps; a unit the file states is not changed, and a
+// name that is no channel is refused with the closest one.
+TEST_F(Cli, UnitsTheFileStatesOrTheUserDeclares) {
+  const fs::path flash =
+      fs::path(AMRSTREAM_REAL_DATA_DIR) / "flash-2d-nanowire" / "nanowire_arrayhdf5_plt_cnt_0100";
+  if (fs::exists(flash)) {
+    Outcome r = run("info " + flash.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_THAT(r.output, testing::ContainsRegex("\n  dens +\\[[^]]+\\] g/cm\\*\\*3\n"));
+    EXPECT_THAT(r.output, testing::ContainsRegex("\n  tele +\\[[^]]+\\] K\n"));
+    r = run("info " + flash.string() + " --length-unit m");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr("--length-unit: " + flash.string() +
+                                    " states its lengths in "
+                                    "cm; a unit the file states cannot be changed"));
+  }
+  const std::string declared = " --length-unit kpc --unit velx=km/s --unit vel=km/s";
+  Outcome r = run("convert builtin:rotation" + kSmall + declared + " " + path("units"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = run("info " + path("units.exa"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("lengths    kpc\n"));
+  EXPECT_THAT(r.output, testing::ContainsRegex("\n  velx +\\[[^]]+\\] km/s\n"));
+  EXPECT_THAT(r.output, testing::ContainsRegex("\n  vely +\\[[^]]+\\]\n"));
+  r = run("info builtin:rotation" + kSmall + " --unit Velx=km/s");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--unit: 'Velx' is no channel or vector of builtin:rotation "
+                                  "(did you mean 'velx'?)"));
+  r = run("info builtin:rotation" + kSmall + " --unit velx");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--unit: 'velx': expected NAME=UNIT"));
+}
+
 TEST_F(Cli, BadOptionsFail) {
   Outcome r =
       run("trace builtin:rotation" + kSmall + " --seed-box 0,0,0,2,1,1 --out " + path("t.vtp"));

@@ -41,7 +41,7 @@ struct ExaConfig {
 
 constexpr const char* kDirectives =
     "cells, scalar, bricks, origin, spacing, time, periodic, "
-    "length-unit or time-unit";
+    "length-unit, time-unit or unit";
 
 glm::dvec3 readVector(std::istringstream& words, const std::string& where,
                       const std::string& what) {
@@ -136,6 +136,10 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
       result.info.lengthUnit = readText(words, where, keyword);
     } else if (keyword == "time-unit") {
       result.info.timeUnit = readText(words, where, keyword);
+    } else if (keyword == "unit") {
+      std::string channel;
+      if (!(words >> channel)) throw InputError(where, "'unit' needs a channel's name and a unit");
+      result.info.units[channel] = readText(words, where, keyword);
     } else {
       throw InputError(where, fmt::format("unknown directive '{}' (expected {})", excerpt(keyword),
                                           kDirectives));
@@ -308,6 +312,15 @@ std::string infoLines(const DatasetInfo& info, const std::filesystem::path& exaP
                                    "cannot hold",
                                    keyword, *text));
     lines += fmt::format("{} {}\n", keyword, *text);
+  }
+  for (const auto& [channel, unit] : info.units) {
+    requireWritableName(channel, "channel", exaPath);
+    if (unit.find_first_of("#\r\n") != std::string::npos || unit.empty())
+      throw InputError(exaPath.string(),
+                       fmt::format("the unit '{}' of {} is empty or holds '#' or a line break, "
+                                   "which a .exa line cannot hold",
+                                   unit, channel));
+    lines += fmt::format("unit {} {}\n", channel, unit);
   }
   if (info.periodicKnown)
     lines += fmt::format("periodic {:d} {:d} {:d}\n", info.periodic[0], info.periodic[1],

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace amrstream::formats::flash {
 
@@ -22,6 +24,32 @@ std::map<std::string, std::string> stringParameters(const FlashFile& file) {
   return parameters;
 }
 
+// The units of FLASH's standard variables in its CGS and MKS unit systems (the physics units
+// its Config files declare); other variables' are left unknown.
+struct StandardUnit {
+  const char* name;
+  const char* cgs;
+  const char* mks;
+};
+constexpr StandardUnit kStandardUnits[] = {
+    {"dens", "g/cm**3", "kg/m**3"},
+    {"pres", "erg/cm**3", "Pa"},
+    {"temp", "K", "K"},
+    {"tele", "K", "K"},
+    {"tion", "K", "K"},
+    {"trad", "K", "K"},
+    {"velx", "cm/s", "m/s"},
+    {"vely", "cm/s", "m/s"},
+    {"velz", "cm/s", "m/s"},
+    {"magx", "gauss", "T"},
+    {"magy", "gauss", "T"},
+    {"magz", "gauss", "T"},
+    {"magp", "erg/cm**3", "Pa"},
+    {"ener", "erg/g", "J/kg"},
+    {"eint", "erg/g", "J/kg"},
+    {"gpot", "erg/g", "J/kg"},
+};
+
 }  // namespace
 
 std::optional<double> readFlashTime(const FlashFile& file) {
@@ -31,7 +59,8 @@ std::optional<double> readFlashTime(const FlashFile& file) {
   return time;
 }
 
-DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int dimensionality) {
+DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int dimensionality,
+                          const std::vector<std::string>& variables) {
   DatasetInfo info;
   info.format = "FLASH";
   info.time = readFlashTime(file);
@@ -49,6 +78,9 @@ DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int 
     info.lengthUnitCentimetres = base == "cgs" ? 1.0 : 100.0;
     info.timeUnit = std::string("s");
     info.timeUnitSeconds = 1.0;
+    for (const StandardUnit& standard : kStandardUnits)
+      if (std::ranges::find(variables, standard.name) != variables.end())
+        info.units[standard.name] = base == "cgs" ? standard.cgs : standard.mks;
   }
 
   for (int a = 0; a < std::min(dimensionality, 3); ++a) {

@@ -358,7 +358,7 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
   setValues(file, sink, names, layout, cells, windowed);
 
   bricks::AmrField field = sink.finish(transform);
-  field.setInfo(flash::readFlashInfo(file, grid.rmax, shape.dimensionality));
+  field.setInfo(flash::readFlashInfo(file, grid.rmax, shape.dimensionality, names));
   return field;
 }
 
