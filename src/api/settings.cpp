@@ -23,6 +23,7 @@ std::span<const Setting* const> allSettings() {
                                   &kGenSeed,
                                   &kTime,
                                   &kVector,
+                                  &kFrameVelocity,
                                   &kPointData,
                                   &kPeriodic,
                                   &kInterpolant,
