@@ -40,8 +40,8 @@ struct PathlineSettings {
 
 struct PathlineJob {
   std::vector<SnapshotFile> series;  // listSnapshots'
-  FieldOptions field;
-  SeedRequest seeds;  // chosen on the snapshot at or before the start time
+  FieldOptions field;                // without frameVelocity, which tracePathlines refuses
+  SeedRequest seeds;                 // chosen on the snapshot at or before the start time
   PathlineSettings settings;
   BackendRequest backend;
 };

@@ -77,8 +77,15 @@ inline constexpr Setting kUnit{
 inline constexpr Setting kVector{
     .name = "vector",
     .help =
-        "three channels forming the vector, e.g. velx,vely,velz (default: the velocity, else "
-        "the magnetic field)",
+        "three channels forming the vector, e.g. velx,vely,velz, or grad(NAME) or -grad(NAME): "
+        "the gradient of the scalar channel NAME per unit length, or its negative (default: the "
+        "velocity, else the magnetic field)",
+    .shown = ""};
+inline constexpr Setting kFrameVelocity{
+    .name = "frame_velocity",
+    .help =
+        "VX,VY,VZ subtracted from the vector (a velocity relative to a frame moving at it), or "
+        "auto: the vector's mean over the seeding region, weighted by cell volume",
     .shown = ""};
 inline constexpr Setting kPointData{.name = "point_data",
                                     .help =

@@ -99,10 +99,11 @@ def _vector_text(vector):
 
 
 def prepare(dataset, vector=None, point_data=None, **settings):
-    """A Field ready for tracing: the vector ('a,b,c' or three names), the point data ('all',
-    'none' or names), the periodic axes and the interpolant; bricks and regions built once for
-    many traces. The settings, with their defaults, are those of amrstream._amrstream.prepare
-    (below)."""
+    """A Field ready for tracing: the vector ('a,b,c' or three names, 'grad(NAME)' or
+    '-grad(NAME)'), the frame velocity subtracted from it ((vx, vy, vz) or 'auto'), the point
+    data ('all', 'none' or names), the periodic axes and the interpolant; bricks and regions
+    built once for many traces. The settings, with their defaults, are those of
+    amrstream._amrstream.prepare (below)."""
     if isinstance(point_data, (list, tuple)):
         point_data = ",".join(point_data) if point_data else "none"
     if point_data is not None:
@@ -113,8 +114,8 @@ def prepare(dataset, vector=None, point_data=None, **settings):
 def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpolant=None,
           **settings):
     """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field
-    (vector, point_data, periodic and interpolant only with a Dataset). Returns Traces. The
-    settings, as `amrstream trace` names them, with their defaults, are those of
+    (vector, frame_velocity, point_data, periodic and interpolant only with a Dataset). Returns
+    Traces. The settings, as `amrstream trace` names them, with their defaults, are those of
     amrstream._amrstream.trace (below).
     """
     if isinstance(point_data, (list, tuple)):

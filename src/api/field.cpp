@@ -50,6 +50,8 @@ FieldPlan planField(const flow::ChannelCatalog& channels, const DatasetInfo& inf
                     const FieldOptions& options) {
   FieldPlan plan;
   plan.vector = flow::chooseVectorChannels(channels, options.vector);
+  plan.frame = parseFrameVelocity(options.frameVelocity);
+  plan.vector.frameVelocity = plan.frame.velocity;
   plan.volume.periodic = periodicAxes(options.periodic, info);
   plan.volume.pointData = flow::choosePointData(channels, plan.vector, options.pointData);
   plan.volume.interpolant = parseInterpolant(options.interpolant);
@@ -75,11 +77,15 @@ Field fieldOf(flow::VectorVolume volume, flow::VectorChannels vector, std::strin
   return Field(std::move(impl));
 }
 
-Field buildField(const Dataset& dataset, const FieldOptions& options, KeepDataset keep) {
+Field buildField(const Dataset& dataset, const FieldOptions& options, KeepDataset keep,
+                 std::span<const glm::dvec3> seeds) {
   const bricks::AmrField& cells = cellsOf(dataset);
-  const FieldPlan plan = planField(flow::catalogOf(cells), cells.info(), options);
+  FieldPlan plan = planField(flow::catalogOf(cells), cells.info(), options);
   flow::VolumeBuildTimes times;
-  flow::VectorVolume volume = flow::buildVectorVolume(cells, plan.vector, plan.volume, &times);
+  flow::VectorVolume volume = flow::buildCellLayout(cells, plan.volume, &times);
+  std::string region;
+  if (plan.frame.automatic) plan.volume.autoFrame = pointsRegion(seeds, volume, region);
+  flow::fillVolumeValues(volume, cells, plan.vector, plan.volume, &times);
   return fieldOf(std::move(volume), plan.vector, cells.source(), cells.info(), times,
                  keep == KeepDataset::Yes ? std::optional<Dataset>(dataset) : std::nullopt);
 }
@@ -89,6 +95,7 @@ const std::string& Field::source() const { return impl_->source; }
 const DatasetInfo& Field::info() const { return impl_->info; }
 const std::string& Field::vectorName() const { return impl_->volume.vectorName; }
 const std::array<std::string, 3>& Field::vectorChannels() const { return impl_->vector.channels; }
+glm::dvec3 Field::frameVelocity() const { return impl_->volume.frameVelocity; }
 const std::vector<std::string>& Field::pointDataNames() const { return impl_->volume.channelNames; }
 std::string Field::periodicAxes() const { return axesText(impl_->volume.periodic); }
 std::string Field::interpolant() const { return interpolantName(impl_->volume.interpolant); }

@@ -8,14 +8,17 @@
 
 #include "amrstream/dataset_info.hpp"
 #include "amrstream/field.hpp"
+#include "api/frame_choice.hpp"
 #include "flow/vector_selection.hpp"
 #include "flow/vector_volume.hpp"
 
 namespace amrstream {
 
+// For frame_velocity auto, volume.autoFrame is set by the builder, which knows the region.
 struct FieldPlan {
-  flow::VectorChannels vector;
+  flow::VectorChannels vector;  // with the frame velocity when given
   flow::VolumeOptions volume;
+  FrameChoice frame;
 };
 FieldPlan planField(const flow::ChannelCatalog& channels, const DatasetInfo& info,
                     const FieldOptions& options);

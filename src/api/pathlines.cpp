@@ -371,6 +371,12 @@ std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotF
 PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) {
   const Log& log = reporter.log;
   const std::span<const SnapshotFile> series = job.series;
+  // v - U at fixed points is not the flow seen from a frame moving at U when v changes in time:
+  // that is v(x + U t, t) - U.
+  if (!job.field.frameVelocity.empty())
+    throw settingError("frame_velocity",
+                       "is for streamlines of one snapshot: a particle's path is the same in any "
+                       "frame (a point at time t moves by -U t in a frame moving at U)");
   if (series.size() < 2)
     throw InputError("pathlines",
                      fmt::format("a series needs two snapshots or more; {} given", series.size()));

@@ -1,5 +1,7 @@
 #include "api/provenance.hpp"
 
+#include <fmt/format.h>
+
 #include "amrstream/version.hpp"
 #include "api/field_plan.hpp"
 #include "api/stepping.hpp"
@@ -15,7 +17,7 @@ std::vector<output::FieldDataArray> inputFields(const std::string& source, const
   for (const std::string& name : volume.channelNames)
     pointData += (pointData.empty() ? "" : ",") + name;
   const std::string periodic = axesText(volume.periodic);
-  return {
+  std::vector<output::FieldDataArray> fields{
       textField("amrstream", "amrstream " AMRSTREAM_VERSION),
       textField("Input", source),
       textField("InputFormat", info.format),
@@ -24,6 +26,12 @@ std::vector<output::FieldDataArray> inputFields(const std::string& source, const
       textField("Periodic", periodic.empty() ? "none" : periodic),
       textField("Interpolant", interpolantName(volume.interpolant)),
   };
+  const glm::dvec3 frame = volume.frameVelocity;
+  if (frame != glm::dvec3(0.0))
+    fields.insert(fields.begin() + 4,
+                  textField("FrameVelocity",
+                            fmt::format("{:.17g},{:.17g},{:.17g}", frame.x, frame.y, frame.z)));
+  return fields;
 }
 
 void addTimeAndUnits(const DatasetInfo& info, std::vector<output::FieldDataArray>& fields) {

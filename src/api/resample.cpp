@@ -6,6 +6,7 @@
 
 #include "amrstream/error.hpp"
 #include "api/field_plan.hpp"
+#include "api/frame_choice.hpp"
 #include "api/handles.hpp"
 #include "api/job_state.hpp"
 #include "api/provenance.hpp"
@@ -33,11 +34,12 @@ Field loadField(const ResampleJob& job, const Log& log) {
   clock.restart();
   Field field = buildField(cells, job.field, KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);
-  say(log, fmt::format("structure  {} bricks, {} regions, vector {}, point data {}, interpolant {} "
-                       "[{:.2f} s]",
-                       withCommas(volume.originalBrickCount),
-                       withCommas(volume.regions.regions.size()), volume.vectorName,
-                       channelList(volume), interpolantName(volume.interpolant), clock.seconds()));
+  say(log,
+      fmt::format("structure  {} bricks, {} regions, vector {}{}, point data {}, interpolant "
+                  "{} [{:.2f} s]",
+                  withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
+                  volume.vectorName, relativeToFrame(volume), channelList(volume),
+                  interpolantName(volume.interpolant), clock.seconds()));
   return field;
 }
 

@@ -25,6 +25,7 @@ std::span<const Setting* const> allSettings() {
                                   &kLengthUnit,
                                   &kUnit,
                                   &kVector,
+                                  &kFrameVelocity,
                                   &kPointData,
                                   &kPeriodic,
                                   &kInterpolant,

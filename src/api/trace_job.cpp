@@ -9,6 +9,7 @@
 #include "api/declared_units.hpp"
 #include "api/deferred_dataset.hpp"
 #include "api/field_plan.hpp"
+#include "api/frame_choice.hpp"
 #include "api/input_share.hpp"
 #include "api/job_state.hpp"
 #include "api/provenance.hpp"
@@ -192,44 +193,67 @@ void sayStepping(const TraceSettings& settings, const flow::TraceOptions& option
                   settings.steps, limits));
 }
 
-// The field of `read`: its volume built whole, from a share's layout, or (deferred) from the
-// layout, the seeds chosen between the layout and the values, when the cells are freed.
-Field buildJobField(const TraceJob& job, ReadInput& read, const FieldPlan& plan, InputShare* share,
-                    flow::SeedList& seeds, std::string& seedDescription) {
+// The seeds of a job whose field is built here, chosen between the cells' layout and the values
+// (frame_velocity auto takes its mean over the region they were drawn from); not for a rank's
+// share, whose ranks choose density seeds together once the values are read.
+struct JobSeeds {
+  bool here = false;
+  flow::SeedList seeds;
+  std::string description;
+  std::string frameRegion;  // what auto's mean was taken over
+};
+
+// The seeds, those on the domain's upper faces moved inside (checked once the values are there).
+// The density channel of a deferred input is read first, once the layout, whose build needs
+// memory beside the cells, is made.
+void chooseJobSeeds(const TraceJob& job, DeferredDataset& data, bool deferred,
+                    const flow::VectorVolume& layout, JobSeeds& seeding) {
+  const std::string& density = job.seeds.density;
+  if (deferred && !density.empty() && !data.cells->findChannel(density)) {
+    data.catalog.require(density);  // listing every channel when it is absent
+    data.channels(density, [&](std::span<const float> values) {
+      data.cells->addChannel({density, {values.begin(), values.end()}});
+    });
+  }
+  seeding.seeds = chooseSeeds(job.seeds, domainOf(layout), data.cells.get(), seeding.description);
+  flow::closeUpperFaces(layout, seeding.seeds);
+}
+
+// The field of `read`: the cells' layout (a share's, built from the same cells before their
+// values were read, or built here), the seeds where they are chosen here, then the values, read
+// from the cells or, deferred, from the channels' files once the cells are freed.
+Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, InputShare* share,
+                    JobSeeds& seeding) {
   DeferredDataset& data = read.data;
   const bricks::AmrField& cells = *data.cells;
   const std::string source = cells.source();
   const DatasetInfo info = cells.info();
   flow::VolumeBuildTimes times;
   flow::VectorVolume volume;
-  std::optional<Dataset> dataset;
-  if (read.deferred) {
-    volume = flow::buildCellLayout(cells, plan.volume, &times);
-    // The seeds' density channel after the layout, whose build needs memory beside the cells.
-    const std::string& density = job.seeds.density;
-    if (!density.empty() && !cells.findChannel(density)) {
-      data.catalog.require(density);  // listing every channel when it is absent
-      data.channels(density, [&](std::span<const float> values) {
-        data.cells->addChannel({density, {values.begin(), values.end()}});
-      });
-    }
-    seeds = chooseSeeds(job.seeds, domainOf(volume), &cells, seedDescription);
-    data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
-    flow::fillVolumeValues(volume, plan.vector, plan.volume, source, data.channels, &times);
-  } else if (share && share->layout) {
-    // The cells' layout, built from the same cells before their values were read.
+  if (share && share->layout) {
     volume = std::move(*share->layout);
     share->layout.reset();
     times = share->layoutTimes;
-    flow::fillVolumeValues(volume, cells, plan.vector, plan.volume, &times);
-    dataset = datasetOf(std::move(*data.cells));
   } else {
-    volume = flow::buildVectorVolume(cells, plan.vector, plan.volume, &times);
+    volume = flow::buildCellLayout(cells, plan.volume, &times);
+  }
+  if (seeding.here) chooseJobSeeds(job, data, read.deferred, volume, seeding);
+  if (plan.frame.automatic) {
+    // A share holds part of the values: its ranks read the whole input for auto's mean.
+    if (share) throw std::logic_error("frame_velocity auto needs every rank to read the whole");
+    plan.volume.autoFrame =
+        seedingRegion(job.seeds, seeding.seeds.points, volume, seeding.frameRegion);
+  }
+  std::optional<Dataset> dataset;
+  if (read.deferred) {
+    data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
+    flow::fillVolumeValues(volume, plan.vector, plan.volume, source, data.channels, &times);
+  } else {
+    flow::fillVolumeValues(volume, cells, plan.vector, plan.volume, &times);
     dataset = datasetOf(std::move(*data.cells));
   }
   data.cells.reset();
-  Field field = fieldOf(std::move(volume), plan.vector, source, info, times, std::move(dataset));
-  return field;
+  return fieldOf(std::move(volume), plan.vector, source, info, times, std::move(dataset));
 }
 
 PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, InputShare* share,
@@ -237,33 +261,34 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
   const Log& log = reporter.log;
   const bool deferred = options.dataset == KeepDataset::No && options.seeds && !share;
   ReadInput read = readInput(job, deferred, share);
-  const FieldPlan plan = planField(read.data.catalog, read.data.cells->info(), job.field);
+  FieldPlan plan = planField(read.data.catalog, read.data.cells->info(), job.field);
   std::vector<std::string> named = read.data.catalog.names;
   named.push_back(plan.vector.name);
   declareInputUnits(*read.data.cells, job.dataset.units, named);
   sayInput(*read.data.cells, plan.vector, read.seconds, log);
 
-  flow::SeedList seeds;
-  std::string seedDescription;
-  auto prepared = std::make_unique<PreparedJob::Impl>(
-      buildJobField(job, read, plan, share, seeds, seedDescription));
+  JobSeeds seeding;
+  seeding.here = options.seeds && !share;
+  auto prepared =
+      std::make_unique<PreparedJob::Impl>(buildJobField(job, read, plan, share, seeding));
   PreparedJob::Impl& p = *prepared;
   p.backend = job.backend;
-  p.seeds = std::move(seeds);
-  p.seedDescription = std::move(seedDescription);
+  p.seeds = std::move(seeding.seeds);
+  p.seedDescription = std::move(seeding.description);
   const flow::VectorVolume& volume = p.volume();
   sayStructure(volume, p.field.buildTimes(), log);
+  if (const std::optional<std::string> frame = frameLine(plan.frame, volume, seeding.frameRegion))
+    say(log, *frame);
   if (!options.seeds) return PreparedJob(std::move(prepared));
 
   sayPointData(volume, job.trace.vorticity, log);
-  if (share && !job.seeds.density.empty()) {
-    share->markOwned(p.cells(), share->owned);
-    share->cells.owned = share->owned;
-  }
-  if (!deferred) {
-    const std::optional<Dataset>& dataset = p.field.dataset();
-    p.seeds = chooseSeeds(job.seeds, domainOf(volume), dataset ? &cellsOf(*dataset) : nullptr,
-                          p.seedDescription, share ? &share->cells : nullptr);
+  if (share) {
+    if (!job.seeds.density.empty()) {
+      share->markOwned(p.cells(), share->owned);
+      share->cells.owned = share->owned;
+    }
+    p.seeds =
+        chooseSeeds(job.seeds, domainOf(volume), &p.cells(), p.seedDescription, &share->cells);
   }
   placeSeeds(volume, p.seeds);
   if (!job.seedsOut.empty()) output::writeSeedFile(job.seedsOut, p.seeds);

@@ -46,6 +46,10 @@ void addFieldOptions(CLI::App& command, FieldOptions& field) {
   addSetting(command, s::kInterpolant, field.interpolant);
 }
 
+void addFrameVelocityOption(CLI::App& command, FieldOptions& field) {
+  addSetting(command, s::kFrameVelocity, field.frameVelocity);
+}
+
 void addBackendOptions(CLI::App& command, BackendRequest& backend) {
   addSetting(command, s::kBackend, backend.backend);
   addSetting(command, s::kDevice, backend.device);
@@ -55,6 +59,7 @@ void addTraceJobOptions(CLI::App& command, TraceJob& job, std::size_t defaultCou
   job.seeds.count = defaultCount;
   addDatasetOptions(command, job.dataset, "--gen-seed");
   addFieldOptions(command, job.field);
+  addFrameVelocityOption(command, job.field);
   addSeedOptions(command, job.seeds, &job.seedsOut);
   TraceSettings& t = job.trace;
   const auto stepping = [&](const Setting& setting, auto& value) {

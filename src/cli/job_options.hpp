@@ -1,6 +1,6 @@
 #pragma once
-// The options of the trace job that `trace`, `render` and `view` share: the dataset, the vector,
-// the point data, the seeding, the stepping and the backend.
+// The options of the trace job that `trace`, `render` and `view` share: the dataset, the vector
+// and its frame, the point data, the seeding, the stepping and the backend.
 
 #include <CLI/CLI.hpp>
 #include <cstddef>
@@ -18,6 +18,8 @@ namespace amrstream::cli {
 // --periodic, --interpolant).
 void addSeedOptions(CLI::App& command, SeedRequest& seeds, std::string* seedsOut);
 void addFieldOptions(CLI::App& command, FieldOptions& field);
+// --frame-velocity: for the commands that trace or sample one snapshot (not pathlines).
+void addFrameVelocityOption(CLI::App& command, FieldOptions& field);
 // --backend and --device.
 void addBackendOptions(CLI::App& command, BackendRequest& backend);
 

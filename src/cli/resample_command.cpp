@@ -31,6 +31,7 @@ void addResampleCommand(CLI::App& app) {
       "resample", "the reconstructed vector and point data on a uniform grid, as VTK ImageData");
   addDatasetOptions(*command, options->dataset, "--gen-seed");
   addFieldOptions(*command, options->field);
+  addFrameVelocityOption(*command, options->field);
   command
       ->add_option("--dims", options->dims,
                    "points per axis: N for the longest axis of the box (the others in "

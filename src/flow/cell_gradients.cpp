@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "sampler.hpp"
+#include "cell_at.hpp"
 
 namespace amrstream::flow {
 
@@ -21,29 +21,6 @@ struct Neighbour {
 glm::dvec3 cellCentre(const shared::Brick& brick, glm::ivec3 cell) {
   const double width = double(1 << brick.level);
   return glm::dvec3(brick.lower) + (glm::dvec3(cell) + 0.5) * width;
-}
-
-// The original brick cell containing q (inside the domain), with its centre.
-std::optional<std::pair<std::uint32_t, glm::dvec3>> cellAt(const VectorVolume& volume,
-                                                           glm::dvec3 q) {
-  const std::int32_t region = locateRegion(volume, toCellPoint(q));
-  if (region < 0) return std::nullopt;
-  const shared::Region& r = volume.regions.regions[std::size_t(region)];
-  for (std::uint32_t k = 0; k < r.brickCount; ++k) {
-    const std::uint32_t b = volume.regions.regionBricks[r.brickOffset + k];
-    if (b >= volume.originalBrickCount) continue;
-    const shared::Brick& brick = volume.bricks[b];
-    const double width = double(1 << brick.level);
-    const glm::dvec3 local = (q - glm::dvec3(brick.lower)) / width;
-    if (glm::any(glm::lessThan(local, glm::dvec3(0.0))) ||
-        glm::any(glm::greaterThanEqual(local, glm::dvec3(brick.size))))
-      continue;
-    const glm::ivec3 cell(glm::floor(local));
-    const std::uint32_t slot =
-        brick.valueOffset + std::uint32_t(cell.x + brick.size.x * (cell.y + brick.size.y * cell.z));
-    return std::make_pair(slot, cellCentre(brick, cell));
-  }
-  return std::nullopt;
 }
 
 // The face neighbours of one cell: up to six, fewer at non-periodic domain faces.
@@ -75,9 +52,9 @@ std::array<std::optional<Neighbour>, 6> faceNeighbours(const VectorVolume& volum
         if (!volume.periodic[axis]) continue;
         shift[axis] = (q[axis] < lower[axis] ? -1.0 : 1.0) * (upper[axis] - lower[axis]);
       }
-      const auto found = cellAt(volume, q - shift);
+      const std::optional<CellAt> found = cellAt(volume, q - shift);
       if (!found) continue;
-      result[2 * axis + side] = Neighbour{found->first, found->second + shift - centre};
+      result[2 * axis + side] = Neighbour{found->slot, found->centre + shift - centre};
     }
   }
   return result;

@@ -8,6 +8,7 @@
 
 #include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
+#include "gradient_request.hpp"
 
 namespace amrstream::flow {
 
@@ -54,7 +55,23 @@ std::string vectorName(const std::array<std::string, 3>& c) {
   return c[0] + "_" + c[1] + "_" + c[2];
 }
 
+// The gradient of a scalar channel the catalog must have.
+VectorChannels chosenGradient(const ChannelCatalog& field, const GradientRequest& gradient) {
+  const std::string& name = gradient.scalar;
+  if (!field.has(name))
+    throw settingError(
+        "vector", fmt::format("no channel '{}' in {} to take the gradient of{}; "
+                              "the channels are: {}",
+                              name, field.source, didYouMean(name, field.names), field.list()));
+  return gradientVector(gradient);
+}
+
 }  // namespace
+
+std::vector<std::string> VectorChannels::sourceChannels() const {
+  if (isGradient()) return {gradientOf};
+  return {channels.begin(), channels.end()};
+}
 
 bool ChannelCatalog::has(const std::string& name) const {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -98,12 +115,15 @@ VectorChannels chooseVectorChannels(const ChannelCatalog& field, const std::stri
                                  field.list()));
   }
 
+  if (const std::optional<GradientRequest> gradient = parseGradientRequest(request))
+    return chosenGradient(field, *gradient);
   std::vector<std::string> names;
   std::istringstream parts(request);
   for (std::string part; std::getline(parts, part, ',');) names.push_back(part);
   if (names.size() != 3 || request.back() == ',')
     throw InputError(field.source, fmt::format("{{vector}} '{}' must name exactly three channels "
-                                               "separated by commas",
+                                               "separated by commas, or be grad(NAME) or "
+                                               "-grad(NAME)",
                                                request));
   std::copy(names.begin(), names.end(), result.channels.begin());
   for (const std::string& name : result.channels) field.require(name);

@@ -1,7 +1,9 @@
 #pragma once
-// Chooses the three channels that form the traced vector.
+// Chooses the traced vector: three channels, or the gradient of a scalar channel (derived from
+// the cell values: gradient_vector.hpp), less the velocity of a moving frame.
 
 #include <array>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -10,8 +12,18 @@
 namespace amrstream::flow {
 
 struct VectorChannels {
+  // The components' names: the dataset's channels, or a gradient's "d(T)/dx", "d(T)/dy", ...
   std::array<std::string, 3> channels;
   std::string name;  // the name of the vector in outputs, e.g. "vel" for velx,vely,velz
+  // Set for grad(NAME) and -grad(NAME): the scalar channel NAME, whose gradient per physical
+  // length, times gradientSign, is the vector.
+  std::string gradientOf{};
+  float gradientSign = 1.0f;
+  glm::dvec3 frameVelocity{0.0};  // subtracted from every value: a frame moving at it
+
+  bool isGradient() const { return !gradientOf.empty(); }
+  // The dataset's channels the vector is made of: its three, or the gradient's scalar.
+  std::vector<std::string> sourceChannels() const;
 };
 
 // A dataset's channel names, known before its values are read (formats::readExaCells).
@@ -27,9 +39,9 @@ struct ChannelCatalog {
 };
 ChannelCatalog catalogOf(const bricks::AmrField& field);
 
-// `request` is "a,b,c" or empty. Empty picks the first known velocity triplet, then the first
-// known magnetic-field triplet. Throws InputError naming the source, the missing channel or the
-// available channels.
+// `request` is "a,b,c", grad(NAME), -grad(NAME) or empty. Empty picks the first known velocity
+// triplet, then the first known magnetic-field triplet. Throws InputError naming the source, the
+// missing channel or the available channels; for a gradient, naming {vector}.
 VectorChannels chooseVectorChannels(const ChannelCatalog& channels, const std::string& request);
 VectorChannels chooseVectorChannels(const bricks::AmrField& field, const std::string& request);
 

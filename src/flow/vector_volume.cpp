@@ -10,6 +10,8 @@
 #include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "cell_gradients.hpp"
+#include "frame_velocity.hpp"
+#include "gradient_vector.hpp"
 #include "util/stopwatch.hpp"
 #include "value_range.hpp"
 
@@ -188,7 +190,7 @@ VectorVolume cropCellLayout(const VectorVolume& whole, const VolumeOptions& opti
 
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
                                const VolumeOptions& options, VolumeBuildTimes* times) {
-  for (const std::string& name : vector.channels) field.channel(name);  // throw before building
+  for (const std::string& name : vector.sourceChannels()) field.channel(name);  // throw first
   for (const std::string& name : options.pointData) field.channel(name);
   VolumeBuildTimes local;
   VectorVolume volume = buildCellLayout(field, options, &local);
@@ -200,13 +202,64 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
 void fillVolumeValues(VectorVolume& volume, const bricks::AmrField& field,
                       const VectorChannels& vector, const VolumeOptions& options,
                       VolumeBuildTimes* times) {
-  for (const std::string& name : vector.channels) field.channel(name);  // throw before filling
+  for (const std::string& name : vector.sourceChannels()) field.channel(name);  // throw first
   for (const std::string& name : options.pointData) field.channel(name);
   const ChannelSource fromField = [&field](const std::string& name, const ChannelUse& use) {
     use(field.channel(name).values);
   };
   fillVolumeValues(volume, vector, options, field.source(), fromField, times);
 }
+
+namespace {
+
+// The cells a channel must have values for: every slot's cell (the source's cells are the
+// layout's).
+std::size_t cellsNeeded(const VectorVolume& volume) {
+  return volume.cellIds.empty()
+             ? 0
+             : std::size_t(*std::max_element(volume.cellIds.begin(), volume.cellIds.end())) + 1;
+}
+
+void checkCount(std::size_t cellsNeeded, const std::string& name, std::span<const float> values) {
+  if (values.size() < cellsNeeded)
+    throw std::logic_error(
+        fmt::format("fillVolumeValues: channel '{}' has {} values, fewer than the layout's {} "
+                    "cells",
+                    name, values.size(), cellsNeeded));
+}
+
+// The vector's values in brick order: its three channels, or its scalar's gradient.
+void gatherVector(VectorVolume& volume, const VectorChannels& vector, const std::string& source,
+                  const ChannelSource& channels, std::size_t cells) {
+  const std::size_t slots = volume.cellIds.size();
+  if (vector.isGradient()) {
+    std::vector<float> scalars(slots);
+    channels(vector.gradientOf, [&](std::span<const float> values) {
+      checkCount(cells, vector.gradientOf, values);
+      checkChannelRange(values, source, vector.gradientOf, kMaxPointDataValue,
+                        "the scalar of the gradient");
+      tbb::parallel_for(std::size_t(0), slots,
+                        [&](std::size_t slot) { scalars[slot] = values[volume.cellIds[slot]]; });
+    });
+    const std::vector<glm::vec3> gradients =
+        physicalGradients(volume, scalars, vector.gradientSign, source, vector.gradientOf);
+    tbb::parallel_for(std::size_t(0), slots,
+                      [&](std::size_t slot) { volume.values[slot] = gradients[slot]; });
+    return;
+  }
+  for (int c = 0; c < 3; ++c) {
+    const std::string& name = vector.channels[c];
+    channels(name, [&](std::span<const float> values) {
+      checkCount(cells, name, values);
+      checkChannelRange(values, source, name, kMaxVectorComponent, "the vector component");
+      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
+        volume.values[slot][c] = values[volume.cellIds[slot]];
+      });
+    });
+  }
+}
+
+}  // namespace
 
 void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
                       const VolumeOptions& options, const std::string& source,
@@ -218,32 +271,15 @@ void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
   volume.values.resize(slots);
   volume.channelValues.clear();
   volume.channelValues.resize(slots * channelCount);
-  // Every slot's cell must have a value: the source's cells are the layout's.
-  const std::size_t cellsNeeded =
-      volume.cellIds.empty()
-          ? 0
-          : std::size_t(*std::max_element(volume.cellIds.begin(), volume.cellIds.end())) + 1;
-  const auto checkCount = [&](const std::string& name, std::span<const float> values) {
-    if (values.size() < cellsNeeded)
-      throw std::logic_error(
-          fmt::format("fillVolumeValues: channel '{}' has {} values, fewer "
-                      "than the layout's {} cells",
-                      name, values.size(), cellsNeeded));
-  };
-  for (int c = 0; c < 3; ++c) {
-    const std::string& name = vector.channels[c];
-    channels(name, [&](std::span<const float> values) {
-      checkCount(name, values);
-      checkChannelRange(values, source, name, kMaxVectorComponent, "the vector component");
-      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
-        volume.values[slot][c] = values[volume.cellIds[slot]];
-      });
-    });
-  }
+  const std::size_t cells = cellsNeeded(volume);
+  gatherVector(volume, vector, source, channels, cells);
+  volume.frameVelocity =
+      options.autoFrame ? meanVector(volume, *options.autoFrame) : vector.frameVelocity;
+  subtractFrameVelocity(volume, volume.frameVelocity);
   for (std::size_t c = 0; c < channelCount; ++c) {
     const std::string& name = options.pointData[c];
     channels(name, [&](std::span<const float> values) {
-      checkCount(name, values);
+      checkCount(cells, name, values);
       checkChannelRange(values, source, name, kMaxPointDataValue, "the point-data channel");
       tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
         volume.channelValues[slot * channelCount + c] = values[volume.cellIds[slot]];

@@ -58,6 +58,9 @@ struct VectorVolume {
   PeriodicAxes periodic{};
   WorldTransform transform;
   std::string vectorName;
+  // The velocity of the frame the values are relative to, subtracted from the vector's values
+  // (frame_velocity.hpp); zero for none.
+  glm::dvec3 frameVelocity{0.0};
 
   glm::ivec3 period() const { return domain.upper - domain.lower; }
   std::size_t channelCount() const { return channelNames.size(); }
@@ -68,6 +71,19 @@ struct VectorVolume {
     const glm::ivec3 extent = period();
     return glm::any(glm::greaterThan(extent, glm::ivec3(1 << 21)));
   }
+};
+
+// Where frame_velocity auto takes the mean of the vector (frame_velocity.hpp), in the volume's
+// cell units: the cells inside a box, each weighted by the volume of its part inside (along an
+// axis where the box has no thickness, by whether it holds the box there: a plane's cells are
+// weighted by their area on it); or, without a box, the cells that hold the points, each once,
+// weighted by its volume.
+struct FrameRegion {
+  struct Box {
+    glm::dvec3 lower, upper;
+  };
+  std::optional<Box> box;
+  std::vector<glm::dvec3> points;
 };
 
 struct VolumeOptions {
@@ -84,6 +100,9 @@ struct VolumeOptions {
   PeriodicAxes periodic{};
   std::vector<std::string> pointData;  // channel names to sample along the traces
   Interpolant interpolant = Interpolant::Tent;
+  // frame_velocity auto: the frame's velocity is the vector's mean over this region, not the
+  // vector's frameVelocity.
+  std::optional<FrameRegion> autoFrame;
 };
 
 // The shifts of -1, 0 or +1 periods along each periodic axis (none along the others), the zero
@@ -120,10 +139,12 @@ VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChanne
 using ChannelUse = std::function<void(std::span<const float> values)>;
 using ChannelSource = std::function<void(const std::string& name, const ChannelUse& use)>;
 
-// What buildVectorVolume does after buildCellLayout: the vector's values and the point data
-// (options.pointData) gathered into brick order from `channels`, checked against the float32
-// bounds (value_range.hpp; errors name `source`), and the linear interpolant's gradients. The
-// same volume as buildVectorVolume's from a field with those values.
+// What buildVectorVolume does after buildCellLayout: the vector's values (its three channels,
+// or its scalar's gradient: gradient_vector.hpp) and the point data (options.pointData)
+// gathered into brick order from `channels`, checked against the float32 bounds
+// (value_range.hpp; errors name `source`), less the frame velocity (the vector's, or with
+// options.autoFrame the mean over that region: frame_velocity.hpp), then the linear
+// interpolant's gradients. The same volume as buildVectorVolume's from a field with those values.
 void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
                       const VolumeOptions& options, const std::string& source,
                       const ChannelSource& channels, VolumeBuildTimes* times = nullptr);

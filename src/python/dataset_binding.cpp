@@ -316,6 +316,10 @@ void bindFieldClass(py::module_& m) {
       .def_property_readonly("source", &Field::source)
       .def_property_readonly("vector_name", &Field::vectorName)
       .def_property_readonly("vector", &Field::vectorChannels)
+      .def_property_readonly(
+          "frame_velocity", [](const Field& f) { return tuple3(f.frameVelocity()); },
+          "(VX, VY, VZ) subtracted from the vector: the frame_velocity given or found by "
+          "'auto'; zeros for none")
       .def_property_readonly("point_data", &Field::pointDataNames)
       .def_property_readonly("periodic",
                              [](const Field& f) {
@@ -366,18 +370,22 @@ void bindDataset(py::module_& m) {
 
   m.def(
       "prepare",
-      [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector, std::string pointData,
-         std::string periodic, std::string interpolant) {
+      [](std::shared_ptr<Dataset> dataset, std::optional<std::string> vector,
+         py::object frameVelocity, std::string pointData, std::string periodic,
+         std::string interpolant) {
+        FieldOptions options{vector.value_or(""), pointData, periodic, interpolant,
+                             frameVelocityText(frameVelocity)};
         py::gil_scoped_release unlocked;
-        return std::make_shared<Field>(
-            buildField(*dataset, {vector.value_or(""), pointData, periodic, interpolant}));
+        return std::make_shared<Field>(buildField(*dataset, options));
       },
       py::arg("dataset").none(false), py::kw_only(), arg(settings::kVector) = py::none(),
+      arg(settings::kFrameVelocity) = py::none(),
       arg(settings::kPointData) = FieldOptions{}.pointData,
       arg(settings::kPeriodic) = FieldOptions{}.periodic,
       arg(settings::kInterpolant) = FieldOptions{}.interpolant,
       ("Chooses the vector and the point data, adds periodic images, builds bricks and "
-       "regions.\n\n" +
+       "regions. frame_velocity is (VX, VY, VZ) or 'auto', here the vector's mean over the "
+       "whole domain.\n\n" +
        settingsDoc(keywords::kField))
           .c_str());
 }

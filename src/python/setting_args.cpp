@@ -86,6 +86,13 @@ std::string outputPath(std::string_view name, py::handle value) {
       fmt::format("{} must be a str or os.PathLike naming a file, not {}", name, typeName(value)));
 }
 
+std::string frameVelocityText(py::handle value) {
+  if (value.is_none()) return {};
+  if (PyUnicode_Check(value.ptr())) return value.cast<std::string>();
+  const auto v = settingValue<std::array<double, 3>>(settings::kFrameVelocity, value);
+  return fmt::format("{:.17g},{:.17g},{:.17g}", v[0], v[1], v[2]);
+}
+
 namespace detail {
 
 std::vector<py::object> items(std::string_view name, py::handle value, std::size_t count) {

@@ -68,6 +68,10 @@ std::string text(std::string_view name, py::handle value);
 // A path to write: a str or an os.PathLike naming one. TypeError naming `name` otherwise.
 std::string outputPath(std::string_view name, py::handle value);
 
+// frame_velocity as a keyword takes it, as FieldOptions::frameVelocity's text: None (none, ""),
+// a str ("auto" or "VX,VY,VZ", checked where the field is built) or three real numbers.
+std::string frameVelocityText(py::handle value);
+
 namespace detail {
 template <typename T>
 struct IsOptional : std::false_type {};
@@ -131,13 +135,14 @@ T settingValue(const Setting& setting, const Given<T>& given, std::string_view n
 // The settings of each call, in the order of its keywords.
 namespace keywords {
 namespace s = settings;
-inline constexpr const Setting* kField[] = {&s::kVector, &s::kPointData, &s::kPeriodic,
-                                            &s::kInterpolant};
+inline constexpr const Setting* kField[] = {&s::kVector, &s::kFrameVelocity, &s::kPointData,
+                                            &s::kPeriodic, &s::kInterpolant};
 inline constexpr const Setting* kTrace[] = {
-    &s::kVector,        &s::kPointData,    &s::kPeriodic,   &s::kInterpolant, &s::kSteps,
-    &s::kStepSize,      &s::kStepMode,     &s::kIntegrator, &s::kTolerance,   &s::kMinStep,
-    &s::kMaxStep,       &s::kDirection,    &s::kVorticity,  &s::kMaxLength,   &s::kMaxTime,
-    &s::kTerminalSpeed, &s::kMemoryBudget, &s::kCpuTail,    &s::kBackend,     &s::kDevice};
+    &s::kVector,  &s::kFrameVelocity, &s::kPointData,    &s::kPeriodic,   &s::kInterpolant,
+    &s::kSteps,   &s::kStepSize,      &s::kStepMode,     &s::kIntegrator, &s::kTolerance,
+    &s::kMinStep, &s::kMaxStep,       &s::kDirection,    &s::kVorticity,  &s::kMaxLength,
+    &s::kMaxTime, &s::kTerminalSpeed, &s::kMemoryBudget, &s::kCpuTail,    &s::kBackend,
+    &s::kDevice};
 inline constexpr const Setting* kPathlines[] = {
     &s::kVector,  &s::kPointData, &s::kPeriodic,     &s::kInterpolant, &s::kStartTime,
     &s::kEndTime, &s::kTimeStep,  &s::kReleaseEvery, &s::kBackend,     &s::kDevice};

@@ -85,17 +85,32 @@ std::vector<fs::path> inputFiles(const std::string& source) {
   return files;
 }
 
-TracesOfFiles runTrace(py::object target, py::object seeds, std::optional<std::string> vector,
-                       std::optional<std::string> pointData, std::optional<std::string> periodic,
-                       std::optional<std::string> interpolant, const TraceSettings& settings,
-                       const BackendRequest& backend, py::object progress, bool verbose) {
+// The field options of trace(): None leaves each as the library's default.
+struct FieldKeywords {
+  std::optional<std::string> vector, pointData, periodic, interpolant;
+  py::object frameVelocity;
+
+  bool any() const {
+    return vector || pointData || periodic || interpolant || !frameVelocity.is_none();
+  }
+  FieldOptions options() const {
+    const FieldOptions defaults;
+    return {vector.value_or(""), pointData.value_or(defaults.pointData),
+            periodic.value_or(defaults.periodic), interpolant.value_or(defaults.interpolant),
+            frameVelocityText(frameVelocity)};
+  }
+};
+
+TracesOfFiles runTrace(py::object target, py::object seeds, const FieldKeywords& fieldKeywords,
+                       const TraceSettings& settings, const BackendRequest& backend,
+                       py::object progress, bool verbose) {
   std::optional<Field> field;
   std::shared_ptr<Dataset> dataset;
   if (py::isinstance<Field>(target)) {
-    if (vector || pointData || periodic || interpolant)
+    if (fieldKeywords.any())
       throw py::value_error(
-          "vector, point_data and periodic were chosen when the Field was prepared; pass the "
-          "Dataset to choose them here");
+          "vector, frame_velocity, point_data, periodic and interpolant were chosen when the "
+          "Field was prepared; pass the Dataset to choose them here");
     field = target.cast<Field>();
   } else if (py::isinstance<Dataset>(target)) {
     dataset = target.cast<std::shared_ptr<Dataset>>();
@@ -105,13 +120,10 @@ TracesOfFiles runTrace(py::object target, py::object seeds, std::optional<std::s
   }
   std::vector<glm::dvec3> points = seedPointsOf(seeds);
   const Reporter reporter{pythonLog(verbose), throttled(progress)};
+  const FieldOptions options = field ? FieldOptions{} : fieldKeywords.options();
   py::gil_scoped_release unlocked;
-  if (!field) {
-    const FieldOptions defaults;
-    field = buildField(*dataset, {vector.value_or(""), pointData.value_or(defaults.pointData),
-                                  periodic.value_or(defaults.periodic),
-                                  interpolant.value_or(defaults.interpolant)});
-  }
+  // frame_velocity auto: the mean over the cells that hold the seeds.
+  if (!field) field = buildField(*dataset, options, KeepDataset::Yes, points);
   std::vector<fs::path> inputs = inputFiles(field->source());
   PreparedJob job = prepare(*field, std::move(points), settings, backend, "Python");
   return {trace(job, {TraceStore::Host, HostValues::Keep}, reporter).assemble(), std::move(inputs)};
@@ -287,10 +299,10 @@ void bindTracing(py::module_& m) {
   m.def(
       "trace",
       [](py::object target, py::object seeds, std::optional<std::string> vector,
-         std::optional<std::string> pointData, std::optional<std::string> periodic,
-         std::optional<std::string> interpolant, Given<std::uint32_t> steps,
-         Given<std::optional<float>> stepSize, std::string stepMode, std::string integrator,
-         Given<float> tolerance, Given<std::optional<float>> minStep,
+         py::object frameVelocity, std::optional<std::string> pointData,
+         std::optional<std::string> periodic, std::optional<std::string> interpolant,
+         Given<std::uint32_t> steps, Given<std::optional<float>> stepSize, std::string stepMode,
+         std::string integrator, Given<float> tolerance, Given<std::optional<float>> minStep,
          Given<std::optional<float>> maxStep, std::string direction, bool vorticity,
          Given<float> maxLength, Given<float> maxTime, Given<float> terminalSpeed,
          Given<std::uint64_t> memoryBudget, Given<std::uint32_t> cpuTail, std::string backend,
@@ -314,22 +326,23 @@ void bindTracing(py::module_& m) {
         settings.cpuTail = settingValue(s::kCpuTail, cpuTail);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
-        return runTrace(target, seeds, vector, pointData, periodic, interpolant, settings, request,
-                        progress, verbose);
+        return runTrace(target, seeds, {vector, pointData, periodic, interpolant, frameVelocity},
+                        settings, request, progress, verbose);
       },
       py::arg("target"), py::arg("seeds"), py::kw_only(), arg(s::kVector) = py::none(),
-      arg(s::kPointData) = py::none(), arg(s::kPeriodic) = py::none(),
-      arg(s::kInterpolant) = py::none(), arg(s::kSteps) = t.steps, arg(s::kStepSize) = py::none(),
-      arg(s::kStepMode) = t.stepMode, arg(s::kIntegrator) = t.integrator,
-      arg(s::kTolerance) = s::kTolerance.fallback, arg(s::kMinStep) = py::none(),
-      arg(s::kMaxStep) = py::none(), arg(s::kDirection) = t.direction,
-      arg(s::kVorticity) = t.vorticity, arg(s::kMaxLength) = s::kMaxLength.fallback,
-      arg(s::kMaxTime) = s::kMaxTime.fallback, arg(s::kTerminalSpeed) = s::kTerminalSpeed.fallback,
-      arg(s::kMemoryBudget) = t.memoryBudget, arg(s::kCpuTail) = t.cpuTail,
-      arg(s::kBackend) = b.backend, arg(s::kDevice) = b.device, py::arg("validation") = false,
-      py::arg("progress") = py::none(), py::arg("verbose") = false,
+      arg(s::kFrameVelocity) = py::none(), arg(s::kPointData) = py::none(),
+      arg(s::kPeriodic) = py::none(), arg(s::kInterpolant) = py::none(), arg(s::kSteps) = t.steps,
+      arg(s::kStepSize) = py::none(), arg(s::kStepMode) = t.stepMode,
+      arg(s::kIntegrator) = t.integrator, arg(s::kTolerance) = s::kTolerance.fallback,
+      arg(s::kMinStep) = py::none(), arg(s::kMaxStep) = py::none(),
+      arg(s::kDirection) = t.direction, arg(s::kVorticity) = t.vorticity,
+      arg(s::kMaxLength) = s::kMaxLength.fallback, arg(s::kMaxTime) = s::kMaxTime.fallback,
+      arg(s::kTerminalSpeed) = s::kTerminalSpeed.fallback, arg(s::kMemoryBudget) = t.memoryBudget,
+      arg(s::kCpuTail) = t.cpuTail, arg(s::kBackend) = b.backend, arg(s::kDevice) = b.device,
+      py::arg("validation") = false, py::arg("progress") = py::none(), py::arg("verbose") = false,
       ("Traces streamlines from seeds ((N, 3) points) through a Dataset (vector, point_data "
-       "and periodic as for prepare()) or a prepared Field, as `amrstream trace` does. "
+       "and periodic as for prepare(); frame_velocity 'auto' here the vector's mean over the "
+       "cells that hold the seeds) or a prepared Field, as `amrstream trace` does. "
        "progress(done, total) counts seeds; verbose prints what the command line would.\n\n" +
        settingsDoc(keywords::kTrace))
           .c_str());
@@ -344,7 +357,7 @@ void bindTracing(py::module_& m) {
         const FieldOptions defaults;
         const FieldOptions field{vector.value_or(""), pointData.value_or(defaults.pointData),
                                  periodic.value_or(defaults.periodic),
-                                 interpolant.value_or(defaults.interpolant)};
+                                 interpolant.value_or(defaults.interpolant), ""};
         PathlineSettings settings;
         settings.startTime = settingValue(s::kStartTime, startTime);
         settings.endTime = settingValue(s::kEndTime, endTime);

@@ -239,6 +239,15 @@ TEST_F(MpiPiecesTest, OverDataWithLinesCrossingParts) {
   EXPECT_GT(handOffs(lastRun_), 0) << lastRun_;
 }
 
+// Every rank builds the field: the gradient vector and auto's frame velocity (the mean over the
+// domain, summed in the same order whatever the threads) are the same bits on each.
+TEST_F(MpiTraceTest, DerivedVectorsOverSeeds) {
+  expectRanksAgree(
+      "trace builtin:cloud --backend cpu --count 50 --steps 300 --vector=-grad\\(dens\\) "
+      "--frame-velocity auto",
+      {2, 3});
+}
+
 // More ranks than seeds: some ranks trace nothing.
 TEST_F(MpiTraceTest, RanksWithoutSeeds) {
   expectRanksAgree("trace builtin:cloud --backend cpu --count 2 --steps 300", {3});
@@ -520,6 +529,27 @@ TEST_F(MpiDataTraceTest, LinearInterpolantAcrossTheParts) {
       {2, 3});
 }
 
+// A gradient vector over data: its values near a part's faces are fitted to cells beyond them,
+// which the parts keep (twice as far with the linear interpolant, whose gradients of the
+// gradient fit their neighbours' in turn). The frame velocity auto over a seed box off the axis
+// of the rotation, (0, pi/2, 0): every rank finds it over the whole box.
+TEST_F(MpiDataTraceTest, DerivedVectorsAcrossTheParts) {
+  expectDataRanksAgree(
+      "trace builtin:cloud --backend cpu --count 60 --steps 300 --vector=-grad\\(dens\\) "
+      "--halo-steps 1",
+      {2, 3});
+  expectDataRanksAgree(
+      "trace builtin:cloud --backend cpu --count 60 --steps 300 --vector 'grad(dens)' "
+      "--interpolant linear --halo-steps 1",
+      {3});
+  const std::string output = expectDataRanksAgree(
+      "trace builtin:rotation --backend cpu --count 40 --steps 800 --point-data none "
+      "--frame-velocity auto --seed-box 0.5,0.25,0.25,1,0.75,0.75",
+      {2, 3});
+  EXPECT_THAT(output, HasSubstr("frame      vel relative to a frame moving at ("));
+  EXPECT_GT(handOffs(output), 0) << output;
+}
+
 // What a run over data printed of the values each rank read ("read       each rank its part's
 // values: 48 / 64 of 73 boxes; ..."): each rank's pieces, then the whole's; empty when it
 // printed none.
@@ -587,6 +617,25 @@ TEST_F(MpiDataTraceTest, RealInputsEachRankReadingItsPart) {
   const std::string output = expectDataRanksAgree(
       "trace " + amrex.string() + " --backend cpu --count 50 --steps 200 --step-mode time", {2});
   EXPECT_THAT(output, HasSubstr("every rank the whole input: in time mode"));
+}
+
+// On an input each rank reads its part of: a given frame velocity in cell mode, where the ranks
+// find the fastest vector relative to the frame together, still reads parts; a gradient vector
+// or auto's frame velocity makes every rank read the whole, saying why.
+TEST_F(MpiDataTraceTest, RealInputWithDerivedVectors) {
+  const std::filesystem::path enzo =
+      std::filesystem::path(AMRSTREAM_REAL_DATA_DIR) / "enzo-moving7" / "DD0010" / "moving7_0010";
+  if (!std::filesystem::exists(enzo)) GTEST_SKIP() << "real data " << enzo << " is absent";
+  const std::string trace =
+      "trace " + enzo.string() + " --backend cpu --count 100 --steps 300 --seed-density Density ";
+  std::string output = expectDataRanksAgree(
+      trace + "--step-mode cell --step-size 3 --halo-steps 1 --frame-velocity 0.6,0.6,0.6", {3});
+  EXPECT_EQ(piecesRead(output).size(), 4u) << output;
+  output = expectDataRanksAgree(trace + "--frame-velocity auto", {3});
+  EXPECT_THAT(output, HasSubstr("every rank the whole input: the frame velocity auto is the mean "
+                                "over the whole seeding region"));
+  output = expectDataRanksAgree(trace + "--vector=-grad\\(Temperature\\)", {3});
+  EXPECT_THAT(output, HasSubstr("every rank the whole input: a gradient vector at a part's edge"));
 }
 
 // A bad value in a box that some ranks read and others do not: every rank ends with the error of

@@ -9,9 +9,11 @@
 #include "amrstream/error.hpp"
 #include "api/device.hpp"
 #include "api/field_plan.hpp"
+#include "api/frame_choice.hpp"
 #include "api/input_share.hpp"
 #include "api/mpi/rank_rounds.hpp"
 #include "api/stepping.hpp"
+#include "flow/gradient_request.hpp"
 #include "flow/line_plan.hpp"
 #include "formats/load_input.hpp"
 #include "gpu/gpu_tracer.hpp"
@@ -47,8 +49,9 @@ struct RankReach {
 };
 
 // `fastest`: the fastest vector, when the volume holds part of the values.
-RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& options,
-                    std::uint32_t haloSteps, std::optional<double> fastest = std::nullopt) {
+RankReach rankReach(const flow::VectorVolume& volume, const flow::VectorChannels& vector,
+                    const flow::TraceOptions& options, std::uint32_t haloSteps,
+                    std::optional<double> fastest = std::nullopt) {
   float widest = 0.0f;
   for (const shared::Region& region : volume.regions.regions)
     widest = std::max(widest, region.finestCellWidth);
@@ -58,8 +61,11 @@ RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
   RankReach r;
   r.margin = (haloSteps - 1) * reach.step * 1.01;
   r.halo = r.margin + reach.stage * 1.01 + 0.5 * widest + 2.0;
-  // The linear interpolant's gradients at the cells samples reach fit their face neighbours.
-  r.kept = r.halo + (volume.interpolant == flow::Interpolant::Linear ? 2.0 * widest : 0.0);
+  // Gradients fitted to face neighbours (the linear interpolant's, a gradient vector's, and
+  // with both the gradients of the gradient) at the cells samples reach fit every neighbour.
+  const int fits =
+      (volume.interpolant == flow::Interpolant::Linear ? 1 : 0) + (vector.isGradient() ? 1 : 0);
+  r.kept = r.halo + 2.0 * widest * fits;
   return r;
 }
 
@@ -67,11 +73,15 @@ RankReach rankReach(const flow::VectorVolume& volume, const flow::TraceOptions& 
 // format allows, in arc mode (a step's reach follows from the cells' layout) and in cell mode
 // with the tent interpolant (it also needs the fastest cell, which the ranks find together); in
 // time mode the default step depends on the fastest vector too, and the linear interpolant's
-// reach on its steepest gradient.
+// reach on its steepest gradient. A gradient vector's values at a part's edge come from cells
+// beyond it, and frame_velocity auto's mean from the whole seeding region: with either, every
+// rank reads the whole input.
 bool readsItsPartAlone(const TraceJob& job) {
   return formats::readsValueWindows(formats::detectFormat(job.dataset.input)) &&
          (job.trace.stepMode == "arc" ||
-          (job.trace.stepMode == "cell" && job.field.interpolant == "tent"));
+          (job.trace.stepMode == "cell" && job.field.interpolant == "tent")) &&
+         !flow::parseGradientRequest(job.field.vector) &&
+         !parseFrameVelocity(job.field.frameVelocity).automatic;
 }
 
 // The fastest vector of the whole input: each rank reads its part of a first cut alone.
@@ -88,9 +98,11 @@ double fastestOverRanks(const MpiWorld& world, const TraceJob& job,
     const std::vector<float>& x = part.channel(vector.channels[0]).values;
     const std::vector<float>& y = part.channel(vector.channels[1]).values;
     const std::vector<float>& z = part.channel(vector.channels[2]).values;
+    const glm::dvec3 frame = parseFrameVelocity(job.field.frameVelocity).velocity;
     double fastest = 0.0;  // as stepReach finds it over a whole volume's values
     for (std::size_t c = 0; c < x.size(); ++c)
-      fastest = std::max(fastest, double(glm::length(glm::vec3(x[c], y[c], z[c]))));
+      fastest =
+          std::max(fastest, double(glm::length(glm::vec3(glm::dvec3(x[c], y[c], z[c]) - frame))));
     return fastest;
   });
   return world.maxOverRanks(mine);
@@ -120,7 +132,8 @@ RankWindow rankWindow(const MpiWorld& world, const TraceJob& job, std::uint32_t 
   r.layout = flow::buildCellLayout(layoutCells, plan.volume, &r.layoutTimes);
   const flow::VectorVolume& layout = r.layout;
   if (job.trace.stepMode == "cell") r.fastest = fastestOverRanks(world, job, layoutCells);
-  const RankReach reach = rankReach(layout, traceOptions(job.trace, layout), haloSteps, r.fastest);
+  const RankReach reach =
+      rankReach(layout, plan.vector, traceOptions(job.trace, layout), haloSteps, r.fastest);
   r.partition = mpi::partitionCells(layoutCells, world.size(), reach.halo);
   r.window = mpi::partWindow(r.partition, world.rank(), reach.kept + 2.0, layoutCells.bounds(),
                              layout.periodic);
@@ -146,6 +159,10 @@ std::string wholeReadReason(const TraceJob& job) {
   const formats::Format format = formats::detectFormat(job.dataset.input);
   if (!formats::readsValueWindows(format))
     return fmt::format("{} inputs are read whole", formats::formatName(format));
+  if (flow::parseGradientRequest(job.field.vector))
+    return "a gradient vector at a part's edge takes the cells beyond it";
+  if (parseFrameVelocity(job.field.frameVelocity).automatic)
+    return "the frame velocity auto is the mean over the whole seeding region";
   if (job.trace.stepMode == "time")
     return "in time mode the default step and a step's reach depend on the fastest vector";
   return "with the linear interpolant in cell mode a step's reach depends on its gradients";
@@ -184,7 +201,10 @@ RankPart prepareRank(const MpiWorld& world, const TraceJob& job, std::uint32_t h
   if (share) rank.read = share->read;
   checkDataVolume(input.volume());
   const bricks::AmrField& cells = input.cells();
-  const RankReach reach = rankReach(input.volume(), input.options, haloSteps, fastest);
+  // The vector as the whole volume has it, with the frame velocity auto found there.
+  flow::VectorChannels vector = input.field.impl().vector;
+  vector.frameVelocity = input.volume().frameVelocity;
+  const RankReach reach = rankReach(input.volume(), vector, input.options, haloSteps, fastest);
   rank.halo = reach.halo;
   if (partition) {
     rank.partition = std::move(*partition);
@@ -217,7 +237,7 @@ RankPart prepareRank(const MpiWorld& world, const TraceJob& job, std::uint32_t h
       flow::VolumeOptions::Box{glm::dvec3(lower) - reach.kept, glm::dvec3(upper) + reach.kept};
   // Cropped from the whole volume's bricks, which the cells gave, without building them again.
   flow::VectorVolume cropped = flow::cropCellLayout(input.volume(), part);
-  flow::fillVolumeValues(cropped, cells, flow::chooseVectorChannels(cells, job.field.vector), part);
+  flow::fillVolumeValues(cropped, cells, vector, part);
   input.volume() = std::move(cropped);
   input.releaseDataset();
   return rank;
