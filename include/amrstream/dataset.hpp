@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -87,7 +88,8 @@ struct CellArrays {
   std::string format = "arrays";
   std::optional<double> time;
   std::string timeUnit, lengthUnit;
-  std::optional<std::array<bool, 3>> periodic;  // unset: the source says nothing
+  std::map<std::string, std::string, std::less<>> units;  // a channel's unit, by its name
+  std::optional<std::array<bool, 3>> periodic;            // unset: the source says nothing
 };
 
 // Throws InputError (naming `source`) for levels out of range and everything a Dataset rejects:

@@ -187,5 +187,6 @@ def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):
     if not hasattr(ds, "index") or not hasattr(ds, "dimensionality"):
         raise TypeError(f"ds must be a yt dataset (yt.load's) or a path, not {type(ds).__name__}")
     cells = leaf_cells_from_yt(ds, vector=vector, fields=fields)
-    cells.pop("field_units", None)
+    cells["units"] = {name: unit for name, unit in cells.pop("field_units", {}).items()
+                      if unit not in ("", "dimensionless")}
     return from_arrays(**cells)

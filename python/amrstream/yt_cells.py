@@ -261,7 +261,7 @@ def _code_unit_description(unit, physical):
     from unyt.exceptions import UnitConversionError
 
     try:
-        return f"code units (1 = {unit.to_value(physical):.6g} {physical})"
+        return f"code units (1 = {unit.to_value(physical):.4g} {physical})"  # as load() says
     except UnitConversionError:
         return f"code units (1 = {unit})"
 

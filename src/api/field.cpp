@@ -8,6 +8,7 @@
 #include "amrstream/error.hpp"
 #include "api/field_plan.hpp"
 #include "api/handles.hpp"
+#include "flow/gradient_request.hpp"
 #include "flow/seeds.hpp"
 
 namespace amrstream {
@@ -58,6 +59,27 @@ FieldPlan planField(const flow::ChannelCatalog& channels, const DatasetInfo& inf
   return plan;
 }
 
+namespace {
+
+// A vector's unit where it follows from others: its components' where they share one; a
+// gradient's, the scalar's per length unit where both are plain units ("K/cm").
+std::string derivedVectorUnit(const DatasetInfo& info, const flow::VectorChannels& vector) {
+  if (const auto gradient = flow::parseGradientRequest(vector.name)) {
+    const std::string scalar = unitOf(info, gradient->scalar);
+    const bool plain =
+        scalar.find(' ') == std::string::npos && info.lengthUnit.find(' ') == std::string::npos;
+    return plain && !scalar.empty() && !info.lengthUnit.empty() ? scalar + "/" + info.lengthUnit
+                                                                : std::string();
+  }
+  const std::string component = unitOf(info, vector.channels[0]);
+  return unitOf(info, vector.channels[1]) == component &&
+                 unitOf(info, vector.channels[2]) == component
+             ? component
+             : std::string();
+}
+
+}  // namespace
+
 Field fieldOf(flow::VectorVolume volume, flow::VectorChannels vector, std::string source,
               DatasetInfo info, const flow::VolumeBuildTimes& times,
               std::optional<Dataset> dataset) {
@@ -65,12 +87,9 @@ Field fieldOf(flow::VectorVolume volume, flow::VectorChannels vector, std::strin
   impl->volume = std::move(volume);
   impl->vector = std::move(vector);
   impl->source = std::move(source);
-  // The vector's unit: declared by its name, else its components' where they share one.
-  const std::string component = unitOf(info, impl->vector.channels[0]);
-  if (unitOf(info, impl->vector.name).empty() && !component.empty() &&
-      unitOf(info, impl->vector.channels[1]) == component &&
-      unitOf(info, impl->vector.channels[2]) == component)
-    info.units[impl->vector.name] = component;
+  if (unitOf(info, impl->vector.name).empty())
+    if (std::string unit = derivedVectorUnit(info, impl->vector); !unit.empty())
+      info.units[impl->vector.name] = std::move(unit);
   impl->info = std::move(info);
   impl->times = {times.bricks, times.regions, times.gradients, times.gather};
   impl->dataset = std::move(dataset);

@@ -187,8 +187,8 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
                                     py::handle origin, py::handle finestWidth,
                                     std::optional<std::array<bool, 3>> periodic,
                                     Given<std::optional<double>> time, std::string timeUnit,
-                                    std::string lengthUnit, std::string source,
-                                    std::string format) {
+                                    std::string lengthUnit, std::string source, std::string format,
+                                    std::optional<std::map<std::string, std::string>> units) {
   const py::array givenCorners =
       realArray(corners, "corners", "an (N, 3) array of integer cell indices", 2);
   if (givenCorners.shape(1) != 3)
@@ -210,6 +210,8 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
   cells.time = settingValue(settings::kTime, time);
   cells.timeUnit = std::move(timeUnit);
   cells.lengthUnit = std::move(lengthUnit);
+  for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
+    if (!unit.empty()) cells.units[name] = unit;
   cells.source = std::move(source);
   cells.format = std::move(format);
   py::gil_scoped_release unlocked;
@@ -364,9 +366,9 @@ void bindDataset(py::module_& m) {
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
         py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0), py::arg("periodic") = py::none(),
         py::arg("time") = py::none(), py::arg("time_unit") = "", py::arg("length_unit") = "",
-        py::arg("source") = "arrays", py::arg("format") = "arrays",
+        py::arg("source") = "arrays", py::arg("format") = "arrays", py::arg("units") = py::none(),
         "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
-        "with 0 the coarsest, fields {name: (N,) values}.");
+        "with 0 the coarsest, fields {name: (N,) values}, units {name: unit} of the fields.");
 
   m.def(
       "prepare",

@@ -1,8 +1,12 @@
 #include "side_on_view.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace amrstream::render {
 namespace {
@@ -39,24 +43,37 @@ OrbitCamera sideOn(OrbitCamera camera, std::span<const shared::TubeSegment> segm
   const auto along = [&](const OrbitCamera& view) {
     return fractionAlong(tensor, cameraFrame(view).forward);
   };
-  const float kept = along(camera);
-  OrbitCamera best = camera;
-  float bestAlong = kept;
-  const auto consider = [&](float azimuth, float elevation) {
+  const auto turned = [&](float azimuth, float elevation) {
     OrbitCamera view = camera;
     view.azimuthDegrees = azimuth, view.elevationDegrees = elevation;
-    if (const float a = along(view); a < bestAlong) best = view, bestAlong = a;
+    return view;
   };
-  for (int azimuth = -180; azimuth < 180; azimuth += 5)
-    consider(float(azimuth), camera.elevationDegrees);
+  const float kept = along(camera);
+  std::vector<std::pair<float, float>> sides;  // azimuth, fraction along
+  float least = kept;
+  for (int azimuth = -180; azimuth < 180; azimuth += 5) {
+    const float a = along(turned(float(azimuth), camera.elevationDegrees));
+    sides.emplace_back(float(azimuth), a);
+    least = std::min(least, a);
+  }
+  if (!(least + kSideOnGain <= kept)) return camera;
   // Lines that lie across the up axis (2D data) are seen from above, without foreshortening.
   const std::string upName{camera.up.sign > 0.0f ? '+' : '-', "xyz"[camera.up.index]};
   if (const std::optional<NamedView> above = namedView(upName, camera.up)) {
-    OrbitCamera view = camera;
-    view.azimuthDegrees = above->azimuthDegrees, view.elevationDegrees = above->elevationDegrees;
-    if (const float a = along(view); a <= bestAlong + kFlatTolerance) best = view, bestAlong = a;
+    const OrbitCamera view = turned(above->azimuthDegrees, above->elevationDegrees);
+    if (along(view) <= least + kFlatTolerance) return view;
   }
-  return bestAlong + kSideOnGain <= kept ? best : camera;
+  // Of the side views nearly as good as the best, the one nearest the camera's azimuth.
+  const auto turn = [&](float azimuth) {
+    const float d = std::fmod(std::abs(azimuth - camera.azimuthDegrees), 360.0f);
+    return std::min(d, 360.0f - d);
+  };
+  float chosen = camera.azimuthDegrees;
+  for (const auto& [azimuth, a] : sides)
+    if (a <= least + kSideOnSlack &&
+        (chosen == camera.azimuthDegrees || turn(azimuth) < turn(chosen)))
+      chosen = azimuth;
+  return turned(chosen, camera.elevationDegrees);
 }
 
 }  // namespace amrstream::render

@@ -105,6 +105,11 @@ def test_a_path_is_opened_with_yt_load(enzo):
     np.testing.assert_array_equal(by_path.finest_width, enzo.from_yt.finest_width)
 
 
+def test_time_unit_as_load_says_and_the_fields_units_from_yt(enzo):
+    assert enzo.from_yt.time_unit == enzo.loaded.time_unit
+    assert enzo.from_yt.units["x-velocity"] == "code_velocity"
+
+
 def test_enzo_finest_cell_is_1_over_2048(enzo):
     # 16^3 root grid, 7 refinements by 2: code units, not cm or Mpc.
     np.testing.assert_array_equal(enzo.loaded.finest_width, [1 / 2048] * 3)

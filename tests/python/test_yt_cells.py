@@ -354,7 +354,7 @@ def test_synthetic_cells_sit_where_their_values_say():
     assert cells["periodic"] == (True, False, True)
     assert cells["time"] == 2.5
     assert cells["time_unit"] == "code units (1 = 3 s)"
-    assert cells["length_unit"] == "code units (1 = 200000 cm)"
+    assert cells["length_unit"] == "code units (1 = 2e+05 cm)"
 
 
 # ---------------------------------------------------------------- what the adapter refuses
