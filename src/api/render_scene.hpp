@@ -27,6 +27,8 @@ struct RenderScene {
   // The traces' tubes, then the outline's (RenderOptions::outline), which updateTubes keeps.
   std::vector<shared::TubeSegment> segments;
   std::vector<shared::TubeSegment> outline;
+  // The box around the traces' segments (not the outline's), scene units; none without segments.
+  std::optional<std::pair<glm::vec3, glm::vec3>> tracesBox;
   render::RenderSettings settings;
   render::ColourMap colourMap = render::ColourMap::Viridis;
   // The colour field's values at the ends of the map, and how values between map onto it; the

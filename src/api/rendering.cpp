@@ -153,6 +153,16 @@ void toCoordinates(const render::ColourScale& scale, std::vector<float>& values)
     if (std::isfinite(v)) v = static_cast<float>(scale.coordinate(v));
 }
 
+// Grows scene.tracesBox to hold `segments`.
+void widenTracesBox(RenderScene& scene, std::span<const shared::TubeSegment> segments) {
+  for (const shared::TubeSegment& s : segments) {
+    const glm::vec3 lower = glm::min(s.a, s.b), upper = glm::max(s.a, s.b);
+    if (!scene.tracesBox) scene.tracesBox = std::pair{lower, upper};
+    scene.tracesBox->first = glm::min(scene.tracesBox->first, lower);
+    scene.tracesBox->second = glm::max(scene.tracesBox->second, upper);
+  }
+}
+
 void setColourRange(RenderScene& scene) {
   const render::ColourScale& scale = scene.colourScale;
   scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
@@ -205,6 +215,8 @@ void updateTubes(RenderScene& scene, const RenderOptions& o, const bricks::AmrFi
   toCoordinates(scene.colourScale, colour.values);
   scene.segments =
       render::buildTubeSegments(traces, colour, render::sceneTransformOf(volume.transform));
+  scene.tracesBox.reset();
+  widenTracesBox(scene, scene.segments);
   scene.segments.insert(scene.segments.end(), scene.outline.begin(), scene.outline.end());
   setColourRange(scene);
 }
@@ -226,6 +238,7 @@ std::optional<std::vector<shared::TubeSegment>> appendTubes(RenderScene& scene,
   toCoordinates(scale, colour.values);
   std::vector<shared::TubeSegment> added =
       render::buildTubeSegments(recent, colour, render::sceneTransformOf(volume.transform));
+  widenTracesBox(scene, added);
   scene.segments.insert(scene.segments.end() - std::ptrdiff_t(scene.outline.size()), added.begin(),
                         added.end());
   setColourRange(scene);

@@ -52,30 +52,23 @@ std::pair<glm::vec3, glm::vec3> domainBox(const flow::VectorVolume& volume) {
   return {glm::vec3(volume.domain.lower) * scale, glm::vec3(volume.domain.upper) * scale};
 }
 
-// The box around the traces' tubes (their centre lines), in scene units; nullopt for none.
-std::optional<std::pair<glm::vec3, glm::vec3>> tracesBox(
-    std::span<const shared::TubeSegment> segments) {
-  if (segments.empty()) return std::nullopt;
-  glm::vec3 lower(INFINITY), upper(-INFINITY);
-  for (const shared::TubeSegment& s : segments) {
-    lower = glm::min(lower, glm::min(s.a, s.b));
-    upper = glm::max(upper, glm::max(s.a, s.b));
-  }
-  return std::pair{lower, upper};
-}
-
 // The box --axes follows, in scene units: --view-box, else what the camera frames (the traces,
 // or the domain).
-std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const flow::VectorVolume& volume,
-                                        std::span<const shared::TubeSegment> traces) {
+std::pair<glm::vec3, glm::vec3> axesBox(const RenderOptions& o, const RenderScene& scene,
+                                        const flow::VectorVolume& volume) {
   if (const auto box = viewBoxOf(o, volume)) return *box;
-  if (o.frame == "traces")
-    if (const auto box = tracesBox(traces)) return *box;
+  if (o.frame == "traces" && scene.tracesBox) return *scene.tracesBox;
   return domainBox(volume);
 }
 
-Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
-                    std::span<const shared::TubeSegment> segments, float radius) {
+// The traces' tubes: the scene's segments before the outline's.
+std::span<const shared::TubeSegment> traceSegments(const RenderScene& scene) {
+  return std::span(scene.segments).first(scene.segments.size() - scene.outline.size());
+}
+
+Framed framedPoints(const RenderOptions& o, const RenderScene& scene,
+                    const flow::VectorVolume& volume, float radius) {
+  const std::span<const shared::TubeSegment> segments = traceSegments(scene);
   if (const auto box = viewBoxOf(o, volume)) return {boxCorners(box->first, box->second)};
   if (o.frame != "traces" && o.frame != "domain")
     throw settingError("frame", fmt::format("'{}': choose traces or domain", o.frame));
@@ -87,7 +80,7 @@ Framed framedPoints(const RenderOptions& o, const flow::VectorVolume& volume,
       framed.points.push_back(s.b);
     }
     if (o.axes) {  // the axes' box stays in view with their labels, flat or not
-      const auto [lower, upper] = axesBox(o, volume, segments);
+      const auto [lower, upper] = axesBox(o, scene, volume);
       const std::vector<glm::vec3> corners = boxCorners(lower, upper);
       framed.points.insert(framed.points.end(), corners.begin(), corners.end());
     }
@@ -127,16 +120,11 @@ render::OrbitCamera cameraOf(const RenderOptions& o) {
   return camera;
 }
 
-// The traces' tubes: the scene's segments before the outline's.
-std::span<const shared::TubeSegment> traceSegments(const RenderScene& scene) {
-  return std::span(scene.segments).first(scene.segments.size() - scene.outline.size());
-}
-
 }  // namespace
 
 std::pair<glm::dvec3, glm::dvec3> axesBounds(const RenderOptions& o, const RenderScene& scene,
                                              const flow::VectorVolume& volume) {
-  const auto [lower, upper] = axesBox(o, volume, traceSegments(scene));
+  const auto [lower, upper] = axesBox(o, scene, volume);
   const WorldTransform transform = render::sceneTransformOf(volume.transform);
   return {transform.toPhysical(glm::dvec3(lower)), transform.toPhysical(glm::dvec3(upper))};
 }
@@ -147,7 +135,7 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
   if (!(zoom > 0.0f) || !std::isfinite(zoom))
     throw settingError(o.camera.size() == 3 ? "camera" : "zoom",
                        "the zoom factor must be positive and finite");
-  const Framed framed = framedPoints(o, volume, traceSegments(scene), scene.settings.tubeRadius);
+  const Framed framed = framedPoints(o, scene, volume, scene.settings.tubeRadius);
   std::optional<glm::vec3> target;
   if (!o.lookAt.empty()) {
     if (o.lookAt.size() != 3) throw settingError("look_at", "expected 3 numbers x,y,z");
@@ -170,8 +158,7 @@ void frameCamera(RenderScene& scene, const RenderOptions& o, const flow::VectorV
 void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect) {
   RenderOptions tubes;
   tubes.frame = "traces";
-  const Framed framed =
-      framedPoints(tubes, volume, traceSegments(scene), scene.settings.tubeRadius);
+  const Framed framed = framedPoints(tubes, scene, volume, scene.settings.tubeRadius);
   scene.camera = render::framePoints(scene.camera, framed.points, framed.radius, aspect);
 }
 

@@ -23,9 +23,4 @@ inline WorldTransform sceneTransformOf(const WorldTransform& transform) {
   return {transform.origin, transform.spacing / sceneScaleOf(transform)};
 }
 
-// Whether the finest cell is not a cube: then scene units and cell units differ.
-inline bool isAnisotropic(const WorldTransform& transform) {
-  return sceneScaleOf(transform) != glm::dvec3(1.0);
-}
-
 }  // namespace amrstream::render
