@@ -427,6 +427,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   lines.provenance =
       pathlineProvenance(series, report, result.streaklines ? "streaklines" : "pathlines");
   lines.report = {report.backend, report.device, report.deviceSeconds, report.traceSeconds};
+  lines.stepMode = flow::StepMode::Time;
   result.lines = tracesOf(std::move(lines));
   return result;
 }

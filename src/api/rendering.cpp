@@ -255,7 +255,9 @@ RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
     throw settingError("colour_map", fmt::format("no colour map '{}'; choose one of: {}",
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
-  scene.colourLabel = o.colourBy == "speed" ? "|" + traces.vectorName + "|" : o.colourBy;
+  scene.colourLabel = o.colourBy == "speed"                         ? "|" + traces.vectorName + "|"
+                      : o.colourBy == "time" && traces.timesAreAges ? "age"
+                                                                    : o.colourBy;
   scene.colourUnit = o.colourBy == "time"    ? o.timeUnit
                      : o.colourBy == "speed" ? unitOf(info, traces.vectorName)
                                              : unitOf(info, o.colourBy);

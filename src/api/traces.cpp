@@ -6,6 +6,7 @@
 #include "amrstream/error.hpp"
 #include "amrstream/tracing.hpp"
 #include "api/job_state.hpp"
+#include "api/stepping.hpp"
 #include "api/traces_impl.hpp"
 #include "flow/trace_view.hpp"
 #include "output/vtp_reader.hpp"
@@ -69,9 +70,28 @@ WrittenLines Traces::write(const TraceOutput& output) const {
   return writeLines(flow::TraceSetView(impl_->lines), output, impl_->provenance);
 }
 
+namespace {
+
+// The step mode a .vtp's "StepMode" string records (this program writes one), where it is known.
+std::optional<flow::StepMode> recordedStepMode(const std::vector<output::FieldDataArray>& fields) {
+  for (const output::FieldDataArray& field : fields) {
+    const auto* text = std::get_if<std::vector<std::string>>(&field.values);
+    if (field.name != "StepMode" || !text || text->size() != 1) continue;
+    for (const flow::StepMode mode :
+         {flow::StepMode::Cell, flow::StepMode::Time, flow::StepMode::Arc})
+      if (stepModeName(mode) == text->front()) return mode;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Traces readTraces(const std::filesystem::path& path) {
+  output::VtpContents contents = output::readVtpFile(path);
   Traces::Impl impl;
-  impl.lines = output::readVtpTraces(path);
+  impl.lines = std::move(contents.lines);
+  impl.provenance = std::move(contents.fieldData);
+  impl.stepMode = recordedStepMode(impl.provenance);
   return tracesOf(std::move(impl));
 }
 

@@ -408,6 +408,7 @@ TraceSet PathlineTracer::pathlines() const {
 
 TraceSet PathlineTracer::streaklines() const {
   TraceSet set = emptySet();
+  set.timesAreAges = true;
   const std::size_t channels = channelNames_.size();
   const std::size_t releases = seedCount_ == 0 ? 0 : particles_.size() / seedCount_;
   std::uint64_t at = 0;

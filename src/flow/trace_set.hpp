@@ -51,6 +51,7 @@ struct TraceSet {
   Column<glm::vec3> positionsLow;  // one per point with precisePositions, else empty
   bool precisePositions = false;   // point i is at joinPosition(positions[i], positionsLow[i])
   Column<float> times;             // IntegrationTime: negative along backward lines
+  bool timesAreAges = false;       // streaklines: times are the particles' ages at the end time
   Column<glm::vec3> vectors;       // the traced vector sampled at the point
   Column<float> channels;          // channelNames.size() values per point
   Column<glm::vec3> vorticity;     // one per point with withVorticity, else empty
@@ -79,6 +80,7 @@ inline TraceSet shapeOf(const TraceSet& t) {
   shape.periodic = t.periodic;
   shape.precisePositions = t.precisePositions;
   shape.withVorticity = t.withVorticity;
+  shape.timesAreAges = t.timesAreAges;
   return shape;
 }
 

@@ -615,4 +615,26 @@ std::vector<std::int64_t> VtkXmlFile::integers(const XmlElement& dataArray,
   return values<std::int64_t>(dataArray, tuples, components, what);
 }
 
+std::vector<std::string> VtkXmlFile::strings(const XmlElement& array,
+                                             const std::string& what) const {
+  const std::string* typeName = array.attribute("type");
+  if (typeName == nullptr || *typeName != "String")
+    fail(fmt::format("array {} is not a String array", what));
+  XmlElement bytesArray = array;  // a String array's payload is its characters' bytes
+  for (auto& [key, value] : bytesArray.attributes) {
+    if (key == "type") value = "UInt8";
+    if (key == "NumberOfComponents") value = "1";
+  }
+  std::vector<std::string> out(1);
+  for (const std::int64_t byte : values<std::int64_t>(bytesArray, std::nullopt, 1, what)) {
+    if (byte == 0) {
+      out.emplace_back();
+    } else {
+      out.back().push_back(char(byte));
+    }
+  }
+  if (out.back().empty()) out.pop_back();
+  return out;
+}
+
 }  // namespace amrstream::output

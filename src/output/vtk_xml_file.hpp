@@ -71,6 +71,8 @@ class VtkXmlFile {
   std::vector<std::int64_t> integers(const XmlElement& dataArray,
                                      std::optional<std::uint64_t> tuples, int components,
                                      const std::string& what) const;
+  // The strings of a type="String" array (each stored as its bytes and a terminating 0).
+  std::vector<std::string> strings(const XmlElement& array, const std::string& what) const;
 
  private:
   struct Appended {

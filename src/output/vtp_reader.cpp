@@ -227,10 +227,37 @@ void checkFitsInMemory(const VtkXmlFile& file, std::uint64_t points, bool precis
                     points, bytes / 0x1p30, memory / 0x1p30));
 }
 
-}  // namespace
+std::vector<FieldDataArray> readFieldData(const VtkXmlFile& file) {
+  std::vector<FieldDataArray> arrays;
+  const XmlElement* polyData = file.root().child("PolyData");
+  const XmlElement* fieldData = polyData ? polyData->child("FieldData") : nullptr;
+  if (fieldData == nullptr) return arrays;
+  for (const XmlElement& array : fieldData->children) {
+    const std::string* name = array.attribute("Name");
+    const std::string* type = array.attribute("type");
+    if (name == nullptr || type == nullptr || file.components(array) != 1) continue;
+    const std::string what = "FieldData/" + *name;
+    if (*type == "String") {
+      arrays.push_back({*name, file.strings(array, what)});
+    } else if (type->starts_with("Float")) {
+      arrays.push_back({*name, file.doubles(array, std::nullopt, 1, what)});
+    } else if (type->starts_with("Int") || type->starts_with("UInt")) {
+      arrays.push_back({*name, file.integers(array, std::nullopt, 1, what)});
+    }
+  }
+  return arrays;
+}
 
-flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
-  const VtkXmlFile file(path);
+bool holdsStreaklines(const std::vector<FieldDataArray>& fieldData) {
+  for (const FieldDataArray& array : fieldData) {
+    const auto* text = std::get_if<std::vector<std::string>>(&array.values);
+    if (array.name == "Output" && text && text->size() == 1 && text->front() == "streaklines")
+      return true;
+  }
+  return false;
+}
+
+flow::TraceSet readLinesOf(const VtkXmlFile& file) {
   const XmlElement& piece = onlyPiece(file);
   const PieceCounts counts = countsOf(file, piece);
   const XmlElement* pointData = piece.child("PointData");
@@ -288,6 +315,19 @@ flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
     traces.reasons.push_back(reasons[line]);
   }
   return traces;
+}
+
+}  // namespace
+
+flow::TraceSet readVtpTraces(const std::filesystem::path& path) {
+  return readLinesOf(VtkXmlFile(path));
+}
+
+VtpContents readVtpFile(const std::filesystem::path& path) {
+  const VtkXmlFile file(path);
+  VtpContents contents{readLinesOf(file), readFieldData(file)};
+  contents.lines.timesAreAges = holdsStreaklines(contents.fieldData);
+  return contents;
 }
 
 }  // namespace amrstream::output

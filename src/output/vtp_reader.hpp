@@ -28,6 +28,7 @@
 #include <filesystem>
 
 #include "flow/trace_set.hpp"
+#include "output/vtk_field_data.hpp"
 
 namespace amrstream::output {
 
@@ -37,5 +38,16 @@ namespace amrstream::output {
 // outside the appended data, connectivity ids out of range, decreasing offsets, non-finite
 // positions, or arrays or traces that would not fit in this machine's memory.
 flow::TraceSet readVtpTraces(const std::filesystem::path& path);
+
+struct VtpContents {
+  flow::TraceSet lines;
+  // The file's <FieldData> arrays of one component: strings, Float32/Float64 as doubles, the
+  // integer types as Int64; others are skipped. Streaklines (a "streaklines" Output string, as
+  // `amrstream pathlines --release-every` writes) give lines.timesAreAges.
+  std::vector<FieldDataArray> fieldData;
+};
+
+// The traces and the provenance; errors as readVtpTraces.
+VtpContents readVtpFile(const std::filesystem::path& path);
 
 }  // namespace amrstream::output

@@ -116,6 +116,34 @@ TEST_F(VtpReader, RoundTripsRaggedTraces) {
   EXPECT_EQ(read.steps, (std::vector<std::uint32_t>{2, 0, 4, 1}));
 }
 
+TEST_F(VtpReader, ReadsTheFieldDataBackAndKnowsStreaklinesAges) {
+  const fs::path path = dir_ / "streaklines.vtp";
+  for (const output::Compression compression :
+       {output::Compression::None, output::Compression::ZLib, output::Compression::LZ4}) {
+    for (const std::string output : {"streaklines", "pathlines"}) {
+      output::VtpWriteOptions options;
+      options.compression = compression;
+      options.fieldData = {output::textField("Output", output),
+                           {"Empty", std::vector<std::string>{"a", "", "bc"}},
+                           output::numberField("SimulationTime", 0.125),
+                           output::integerField("Steps", -7)};
+      output::writeVtp(path, sampleTraces(kSamplePointCounts), options);
+      const output::VtpContents read = output::readVtpFile(path);
+      EXPECT_EQ(read.lines.timesAreAges, output == "streaklines");
+      ASSERT_EQ(read.fieldData.size(), 4u);
+      EXPECT_EQ(read.fieldData[0].name, "Output");
+      EXPECT_EQ(std::get<std::vector<std::string>>(read.fieldData[0].values),
+                std::vector<std::string>{output});
+      EXPECT_EQ(std::get<std::vector<std::string>>(read.fieldData[1].values),
+                (std::vector<std::string>{"a", "", "bc"}));
+      EXPECT_EQ(std::get<std::vector<double>>(read.fieldData[2].values),
+                std::vector<double>{0.125});
+      EXPECT_EQ(std::get<std::vector<std::int64_t>>(read.fieldData[3].values),
+                std::vector<std::int64_t>{-7});
+    }
+  }
+}
+
 TEST_F(VtpReader, RoundTripsLinesOfDifferentLengths) {
   const flow::TraceSet written = sampleTraces({2, 3, 1});
   expectSameTraces(roundTrip(written), written);

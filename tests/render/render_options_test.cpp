@@ -150,5 +150,17 @@ TEST_F(RenderOptionChecks, ColouringByTimeShowsIntegrationTimesUnit) {
   EXPECT_EQ(prepareScene(o, cells_, volume_, traces_, declared).colourUnit, "km/s");
 }
 
+TEST_F(RenderOptionChecks, StreaklinesTimesAreLabelledAsAges) {
+  RenderOptions o;
+  o.colourBy = "time";
+  EXPECT_EQ(prepareScene(o, cells_, volume_, traces_, cells_.info()).colourLabel, "time");
+  flow::TraceSet streaklines = traces_;
+  streaklines.timesAreAges = true;
+  EXPECT_EQ(prepareScene(o, cells_, volume_, streaklines, cells_.info()).colourLabel, "age");
+  o.colourBy = "speed";
+  EXPECT_EQ(prepareScene(o, cells_, volume_, streaklines, cells_.info()).colourLabel,
+            "|" + traces_.vectorName + "|");
+}
+
 }  // namespace
 }  // namespace amrstream
