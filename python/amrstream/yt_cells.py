@@ -18,6 +18,9 @@ Conventions of the returned arrays:
   the caller to read; pop it before ``from_arrays(**cells)`` if that does not take it.
 * Cells come grid by grid in ``ds.index.grids`` order, and within a grid in C order of
   yt's (i, j, k) = (x, y, z) index.
+* 2D data become a slab in z as ``amrstream.load`` makes of a 2D FLASH file: finest cells as
+  deep as they are wide in x, the slab as thick as the coarsest leaf cell, each finer cell
+  repeated along z to fill it; z is not periodic.
 
 Only yt and numpy are needed; nothing from the compiled amrstream module is imported.
 """
@@ -30,6 +33,8 @@ DEFAULT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
 
 # How far (in finest cells) a grid edge may sit from the finest lattice before we refuse it.
 _LATTICE_TOLERANCE = 1e-4
+# A 2D leaf cell is repeated along z at most this many times (as amrstream.load does).
+_MAX_SLAB_GROWTH = 256
 
 
 def leaf_cells_from_yt(ds, vector=None, fields=None):
@@ -39,20 +44,22 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
     ``fields``: optional extra scalar fields. Raises ValueError (TypeError for datasets
     that are not made of grid patches) when the dataset cannot be traced by amrstream.
     """
-    _require_cartesian_3d(ds)
+    _require_cartesian_2d_or_3d(ds)
     grids = _grid_patches(ds)
     _require_refinement_by_2(ds)
     requested = _resolve_fields(ds, _as_vector(vector), list(fields or ()))
 
     max_level = int(ds.index.max_level)
+    planar = int(ds.dimensionality) == 2
     domain_left = _code_length(ds.domain_left_edge)
-    finest_width = _finest_cell_width(ds, max_level)
+    finest_width = _finest_cell_width(ds, max_level, planar)
 
     corner_parts, level_parts = [], []
     value_parts = {name: [] for name, _ in requested}
     field_units = {}
     for grid in grids:
-        corners, level, mask = _grid_leaf_geometry(grid, max_level, domain_left, finest_width)
+        corners, level, mask = _grid_leaf_geometry(grid, max_level, domain_left, finest_width,
+                                                   planar)
         if len(corners) == 0:
             continue
         corner_parts.append(corners)
@@ -67,17 +74,22 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
         raise ValueError(f"yt dataset {ds} has no leaf cells (no grid has an uncovered cell)")
     corners = np.ascontiguousarray(np.concatenate(corner_parts), dtype=np.int64)
     levels = np.concatenate(level_parts)
-    _check_leaf_volume(ds, levels, max_level)
+    _check_leaf_volume(ds, levels, max_level, planar)
+    values = {name: np.ascontiguousarray(np.concatenate(parts), dtype=np.float32)
+              for name, parts in value_parts.items()}
+    periodic = tuple(bool(p) for p in ds.periodicity)
+    if planar:
+        corners, levels, values = _stacked_into_a_slab(ds, corners, levels, values, max_level)
+        periodic = periodic[:2] + (False,)
 
     return {
         "corners": corners,
         "levels": levels,
-        "fields": {name: np.ascontiguousarray(np.concatenate(parts), dtype=np.float32)
-                   for name, parts in value_parts.items()},
+        "fields": values,
         "field_units": field_units,
         "origin": domain_left,
         "finest_width": finest_width,
-        "periodic": tuple(bool(p) for p in ds.periodicity),
+        "periodic": periodic,
         "time": float(ds.current_time.to_value("code_time")),
         "time_unit": _code_unit_description(ds.time_unit, "s"),
         "length_unit": _code_unit_description(ds.length_unit, "cm"),
@@ -86,14 +98,14 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
     }
 
 
-def _require_cartesian_3d(ds):
-    if ds.dimensionality < 3:
+def _require_cartesian_2d_or_3d(ds):
+    if ds.dimensionality < 2:
         raise ValueError(
-            f"amrstream traces 3D data; yt dataset {ds} is {ds.dimensionality}D")
+            f"amrstream traces 2D and 3D data; yt dataset {ds} is {ds.dimensionality}D")
     geometry = str(ds.geometry)
     if geometry != "cartesian":
         raise ValueError(
-            f"amrstream traces Cartesian 3D data; yt dataset {ds} has {geometry} geometry")
+            f"amrstream traces Cartesian 2D and 3D data; yt dataset {ds} has {geometry} geometry")
 
 
 def _grid_patches(ds):
@@ -188,26 +200,33 @@ def _code_length(value):
     return np.asarray(value.to_value("code_length"), dtype=np.float64)
 
 
-def _finest_cell_width(ds, max_level):
+def _finest_cell_width(ds, max_level, planar):
     domain_width = _code_length(ds.domain_right_edge - ds.domain_left_edge)
-    return domain_width / (np.asarray(ds.domain_dimensions, dtype=np.float64) * 2.0**max_level)
+    width = domain_width / (np.asarray(ds.domain_dimensions, dtype=np.float64) * 2.0**max_level)
+    if planar:
+        width[2] = width[0]
+    return width
 
 
-def _grid_leaf_geometry(grid, max_level, domain_left, finest_width):
-    """Return (corners of the grid's leaf cells, grid level, leaf mask)."""
+def _grid_leaf_geometry(grid, max_level, domain_left, finest_width, planar):
+    """Return (corners of the grid's leaf cells, grid level, leaf mask); a 2D grid's at z 0."""
     level = int(grid.Level)
     if not 0 <= level <= max_level:
         raise ValueError(f"grid {grid} has level {level}, outside 0..{max_level}")
     span = 2 ** (max_level - level)
-    _require_cell_width(grid, finest_width * span)
-    grid_corner = _on_finest_lattice(grid, (_code_length(grid.LeftEdge) - domain_left) / finest_width)
+    axes = 2 if planar else 3
+    _require_cell_width(grid, finest_width[:axes] * span, axes)
+    offset = (_code_length(grid.LeftEdge) - domain_left) / finest_width
+    if planar:
+        offset[2] = 0.0
+    grid_corner = _on_finest_lattice(grid, offset)
     mask = np.asarray(grid.child_mask, dtype=bool)
     cell_index = np.stack(np.nonzero(mask), axis=1).astype(np.int64)
     return grid_corner + cell_index * span, level, mask
 
 
-def _require_cell_width(grid, expected):
-    actual = _code_length(grid.dds)
+def _require_cell_width(grid, expected, axes):
+    actual = _code_length(grid.dds)[:axes]
     if not np.allclose(actual, expected, rtol=1e-6, atol=0.0):
         raise ValueError(
             f"grid {grid} at level {grid.Level} has cells {actual} wide, but refinement by 2 "
@@ -242,11 +261,13 @@ def _leaf_values_in_code_units(grid, field, mask):
     return np.asarray(values.d, dtype=np.float32), str(values.units)
 
 
-def _check_leaf_volume(ds, levels, max_level):
+def _check_leaf_volume(ds, levels, max_level, planar):
     """Leaf cells must fill the domain once: more volume means overlapping grids."""
     counts = np.bincount(levels, minlength=max_level + 1)
-    leaf_volume = sum(int(count) * 8 ** (max_level - level) for level, count in enumerate(counts))
-    domain_volume = int(np.prod([int(n) << max_level for n in ds.domain_dimensions]))
+    axes = 2 if planar else 3
+    leaf_volume = sum(int(count) * (2**axes) ** (max_level - level)
+                      for level, count in enumerate(counts))
+    domain_volume = int(np.prod([int(n) << max_level for n in ds.domain_dimensions[:axes]]))
     if leaf_volume > domain_volume:
         raise ValueError(
             f"leaf cells of {ds} cover {leaf_volume} finest cells but the domain has "
@@ -255,6 +276,24 @@ def _check_leaf_volume(ds, levels, max_level):
         warnings.warn(
             f"leaf cells of {ds} cover {leaf_volume} of the domain's {domain_volume} "
             "finest cells: part of the domain has no data", stacklevel=3)
+
+
+def _stacked_into_a_slab(ds, corners, levels, values, max_level):
+    """2D cells repeated along z up to the coarsest leaf's width, as load() makes of 2D FLASH."""
+    coarsest = int(levels.min())
+    copies = np.left_shift(1, levels - coarsest).astype(np.int64)
+    total = int(copies.sum())
+    if total > _MAX_SLAB_GROWTH * len(levels):
+        raise ValueError(
+            f"yt dataset {ds}: {len(levels)} leaf cells become {total} cells when stacked into "
+            "a slab in z: too many")
+    source = np.repeat(np.arange(len(levels)), copies)
+    first = np.cumsum(copies) - copies
+    copy = np.arange(total, dtype=np.int64) - np.repeat(first, copies)
+    stacked = corners[source]
+    stacked[:, 2] = copy * np.left_shift(1, max_level - levels[source]).astype(np.int64)
+    return (np.ascontiguousarray(stacked), levels[source],
+            {name: np.ascontiguousarray(v[source]) for name, v in values.items()})
 
 
 def _code_unit_description(unit, physical):

@@ -294,11 +294,22 @@ def test_particle_only_dataset_is_refused_with_advice():
     assert "covering_grid" in message or "arbitrary_grid" in message
 
 
-def test_2d_flash_file_is_refused():
-    ds = yt.load(str(real_data(FLASH_2D)))
+def test_2d_flash_file_gives_the_slab_load_gives():
+    """yt's 2D FLASH file becomes the same one-cell-thick slab as load(), cell for cell."""
+    path = real_data(FLASH_2D)
+    ds = yt.load(str(path))
     assert ds.dimensionality == 2
-    # Fields that exist, so the only thing wrong is the dimensionality.
-    with pytest.raises(ValueError, match="3D"):
-        amrstream.from_yt(ds, vector=("dens", "tele", "tion"))
-    with pytest.raises(ValueError, match="3D"):
-        amrstream.from_yt(ds)
+    loaded = amrstream.load(str(path))
+    ours = amrstream.from_yt(ds, vector=("dens", "tele", "tion"), fields=["pele"])
+    assert ours.cell_count == loaded.cell_count == 65536
+    a, b = cell_order(loaded), cell_order(ours)
+    np.testing.assert_array_equal(ours.corners[b], loaded.corners[a])
+    # load() numbers FLASH's levels as the file does (refine level 1 = root), yt from 0.
+    assert "1 = root" in loaded.level_name
+    np.testing.assert_array_equal(ours.levels[b] + 1, loaded.levels[a])
+    # yt states the FLASH bounding box in float64, the file in float32 as load reads it.
+    np.testing.assert_allclose(ours.finest_width, loaded.finest_width, rtol=1e-7)
+    np.testing.assert_allclose(ours.origin, loaded.origin, rtol=1e-7)
+    assert ours.periodic == loaded.periodic == (True, False, False)
+    for name in ("dens", "tele", "tion", "pele"):
+        np.testing.assert_array_equal(ours.field(name)[b], loaded.field(name)[a], err_msg=name)

@@ -357,6 +357,38 @@ def test_synthetic_cells_sit_where_their_values_say():
     assert cells["length_unit"] == "code units (1 = 2e+05 cm)"
 
 
+def synthetic_planar_dataset():
+    """A 2D dataset of 3 levels: 8x8 root cells on [-1, 1] x [0, 2], a level-1 and a level-2 grid."""
+    bbox = np.array([[-1.0, 1.0], [0.0, 2.0], [0.0, 1.0]])
+    grids = [synthetic_grid([-1.0, 0.0, 0.0], [1.0, 2.0, 1.0], 0, [8, 8, 1]),
+             synthetic_grid([0.0, 0.5, 0.0], [1.0, 1.5, 1.0], 1, [8, 8, 1]),
+             synthetic_grid([0.5, 1.0, 0.0], [1.0, 1.5, 1.0], 2, [8, 8, 1])]
+    return yt.load_amr_grids(grids, [8, 8, 1], bbox=bbox, periodicity=(True, False, True))
+
+
+def test_planar_cells_become_a_slab_as_load_makes_of_2d_flash():
+    """Each 2D leaf cell is repeated along z up to the coarsest leaf's width; the slab is tiled
+    once; values are the 2D cell's."""
+    ds = synthetic_planar_dataset()
+    assert ds.dimensionality == 2
+    cells = yt_cells.leaf_cells_from_yt(ds, fields=["density"])
+    max_level = ds.index.max_level
+    assert max_level == 2
+    leaves = {0: 64 - 16, 1: 64 - 16, 2: 64}  # 2D leaves per level
+    # Level l repeats 2**l times: the coarsest leaves (level 0) set the slab's thickness.
+    assert adapter_counts(cells) == {level: n * 2**level for level, n in leaves.items()}
+    np.testing.assert_array_equal(cells["finest_width"], [0.0625, 0.0625, 0.0625])
+    np.testing.assert_array_equal(cells["origin"], [-1.0, 0.0, 0.0])
+    assert cells["periodic"] == (True, False, False)
+    # The slab is one root cell (4 finest cells) thick and tiled exactly once.
+    assert_exact_tiling(cells, max_level, [8, 8, 1])
+    span = 2.0 ** (max_level - cells["levels"])
+    centres = cells["origin"] + (cells["corners"] + span[:, None] / 2) * cells["finest_width"]
+    np.testing.assert_array_equal(cells["fields"]["velocity_x"], centres[:, 0].astype(np.float32))
+    np.testing.assert_array_equal(cells["fields"]["velocity_y"], centres[:, 1].astype(np.float32))
+    np.testing.assert_array_equal(cells["fields"]["density"], cells["levels"].astype(np.float32))
+
+
 # ---------------------------------------------------------------- what the adapter refuses
 
 @pytest.mark.parametrize("request_kind", ["vector", "fields"])
@@ -378,11 +410,13 @@ def test_vector_needs_three_components(enzo_ds):
         yt_cells.leaf_cells_from_yt(enzo_ds, vector=("x-velocity", "y-velocity"))
 
 
-def test_2d_dataset_is_refused():
-    pytest.importorskip("h5py", reason="yt reads FLASH files through h5py")
-    ds = yt.load(str(real_data("flash-2d-nanowire/nanowire_arrayhdf5_plt_cnt_0100")))
-    with pytest.raises(ValueError, match="3D"):
-        yt_cells.leaf_cells_from_yt(ds, vector=("dens", "tele", "tion"))
+def test_1d_dataset_is_refused():
+    ones = np.ones((8, 1, 1))
+    ds = yt.load_uniform_grid({name: ones for name in ("velocity_x", "velocity_y", "velocity_z")},
+                              [8, 1, 1])
+    assert ds.dimensionality == 1
+    with pytest.raises(ValueError, match="2D and 3D data; yt dataset .* is 1D"):
+        yt_cells.leaf_cells_from_yt(ds)
 
 
 def test_refinement_other_than_2_is_refused():
