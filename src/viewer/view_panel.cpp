@@ -16,8 +16,9 @@ namespace {
 
 void text(const std::string& line) { ImGui::TextUnformatted(line.c_str()); }
 
-// The colour map as a gradient with its range and field name.
-void drawColourLegend(const RenderScene& scene) {
+// The colour map as a gradient with its range and field name; `middle`: the values at its ends
+// where they are the middle of the values, not the whole range.
+void drawColourLegend(const RenderScene& scene, const std::optional<render::ValueRange>& middle) {
   const std::vector<glm::vec3> table = render::colourMapTable(scene.colourMap, 64);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, height = 14.0f;
@@ -32,10 +33,19 @@ void drawColourLegend(const RenderScene& scene) {
   }
   ImGui::Dummy(ImVec2(width, height));
   const render::ColourScale& scale = scene.colourScale;
-  text(fmt::format("{}: {:.3g} .. {:.3g}{}", scene.colourLabel, scale.min, scale.max,
-                   scale.kind == render::ScaleKind::Linear
-                       ? ""
-                       : fmt::format(" ({})", render::scaleKindName(scale.kind))));
+  const std::string unit = scene.colourUnit.empty() ? "" : " " + scene.colourUnit;
+  const std::string kind = scale.kind == render::ScaleKind::Linear
+                               ? ""
+                               : fmt::format(" ({})", render::scaleKindName(scale.kind));
+  if (middle) {
+    text(fmt::format("{}: {:.3g} .. {:.3g}{}{}", scene.colourLabel, middle->min, middle->max, unit,
+                     kind));
+    text(fmt::format("middle {:g} %; all {:.3g} .. {:.3g}", 100.0 * kMiddleShare, scale.min,
+                     scale.max));
+  } else {
+    text(fmt::format("{}: {:.3g} .. {:.3g}{}{}", scene.colourLabel, scale.min, scale.max, unit,
+                     kind));
+  }
 }
 
 // What runs, how fast, and how far the traces have got.
@@ -105,8 +115,12 @@ void drawColours(ViewSession& session) {
       if (ImGui::Selectable(f.c_str(), f == o.look.colourBy)) {
         o.look.colourBy = f;
         o.look.range.clear();
-        scene.colourLabel = f == "speed" ? "|" + session.traces().traces().vectorName + "|" : f;
-        scene.colourUnit = f == "time" ? o.look.timeUnit : std::string();
+        const DatasetInfo& info = session.input().field.info();
+        const std::string& vector = session.traces().traces().vectorName;
+        scene.colourLabel = f == "speed" ? "|" + vector + "|" : f;
+        scene.colourUnit = f == "time"    ? o.look.timeUnit
+                           : f == "speed" ? unitOf(info, vector)
+                                          : unitOf(info, f);
         session.rebuildTubes();
       }
     ImGui::EndCombo();
@@ -122,7 +136,11 @@ void drawColours(ViewSession& session) {
         session.setColourMap(m);
     ImGui::EndCombo();
   }
-  drawColourLegend(scene);
+  if (o.look.range.empty() &&
+      ImGui::Checkbox(fmt::format("colours for the middle {:g} %", 100.0 * kMiddleShare).c_str(),
+                      &session.middleColours))
+    session.fitColourRange();
+  drawColourLegend(scene, session.middleValues());
 }
 
 // The tubes' radius, their occlusion and the context volume.
@@ -175,8 +193,7 @@ PanelRequests drawViewAndOutputs(ViewSession& session) {
 
 PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("amrstream");
+  ImGui::Begin("amrstream", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   drawStatus(session, stats);
   if (ImGui::CollapsingHeader("Seeding and stepping", ImGuiTreeNodeFlags_DefaultOpen))
     drawSeedingAndStepping(session);
@@ -185,12 +202,13 @@ PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats) {
     drawTubesAndVolume(session);
   }
   const PanelRequests requests = drawViewAndOutputs(session);
-  text("drag: orbit, right drag: pan, wheel: zoom, F: frame all, H: hide");
+  text("drag: orbit, right drag: pan, wheel: zoom");
+  text("F: frame all, H: hide the controls");
   ImGui::End();
   return requests;
 }
 
-void drawLegendOverlay(const RenderScene& scene) {
+void drawLegendOverlay(const RenderScene& scene, const std::optional<render::ValueRange>& middle) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 8.0f, display.y - 8.0f), ImGuiCond_Always,
                           ImVec2(1.0f, 1.0f));
@@ -199,7 +217,7 @@ void drawLegendOverlay(const RenderScene& scene) {
   ImGui::Begin("legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  drawColourLegend(scene);
+  drawColourLegend(scene, middle);
   ImGui::End();
 }
 

@@ -24,7 +24,7 @@ struct PanelRequests {
 PanelRequests drawViewPanel(ViewSession& session, const FrameStats& stats);
 
 // The colour legend alone in the bottom-right corner, for when the controls are hidden.
-void drawLegendOverlay(const RenderScene& scene);
+void drawLegendOverlay(const RenderScene& scene, const std::optional<render::ValueRange>& middle);
 
 // Left drag orbits, right or middle drag pans, the wheel zooms.
 void moveCamera(render::OrbitCamera& camera, const app::InputFrame& input, float viewHeight);

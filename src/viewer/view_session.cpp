@@ -7,6 +7,7 @@
 #include "amrstream/error.hpp"
 #include "api/seed_choice.hpp"
 #include "flow/line_plan.hpp"
+#include "render/middle_range.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 
@@ -40,8 +41,25 @@ void ViewSession::startTraces() {
                   std::move(plan.layout), flow::traceShape(input_.volume(), input_.options));
 }
 
+void ViewSession::fitColourRange() {
+  middleValues_.reset();
+  if (!middleColours || !options_.look.range.empty()) return;
+  const double tail = 0.5 * (1.0 - kMiddleShare);
+  const std::optional<render::ValueRange> middle =
+      render::middleRange(scene_.segments, tail, 1.0 - tail);
+  const render::ValueRange whole = scene_.settings.colourRange;
+  if (!middle || (middle->min <= whole.min && middle->max >= whole.max)) return;
+  scene_.settings.colourRange = *middle;
+  const render::ColourScale& scale = scene_.colourScale;
+  const auto valueOf = [&](float coordinate) {
+    return float(scale.valueAt((coordinate - whole.min) / (whole.max - whole.min)));
+  };
+  middleValues_ = render::ValueRange{valueOf(middle->min), valueOf(middle->max)};
+}
+
 void ViewSession::rebuildTubes() {
   updateTubes(scene_, options_.look, input_.cells(), input_.volume(), traces_->traces());
+  fitColourRange();
   vkQueueWaitIdle(ctx_->queue());
   renderer_->setTubes(scene_.segments, scene_.settings.tubeRadius);
 }
@@ -61,6 +79,7 @@ bool ViewSession::growTubes() {
   }
   const std::optional<std::vector<shared::TubeSegment>> added =
       appendTubes(scene_, options_.look, input_.cells(), input_.volume(), traces_->recent());
+  if (added) fitColourRange();
   times_.segmentsSeconds = clock.seconds();
   if (!added) {
     clock.restart();

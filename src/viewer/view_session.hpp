@@ -18,6 +18,9 @@ namespace amrstream::viewer {
 
 // The control panel's steps-per-frame slider goes up to this; the rounds have room for it.
 inline constexpr std::uint32_t kPanelMostStepsPerFrame = 200;
+// The share of the colour values the viewer's default colour range holds, from the 1st to the
+// 99th percentile.
+inline constexpr double kMiddleShare = 0.98;
 
 // Where one frame's time went (ViewSession::step), wall clock on the host.
 struct ViewFrameTimes {
@@ -65,6 +68,13 @@ class ViewSession {
   RenderScene& scene() { return scene_; }
   render::OrbitCamera& camera() { return scene_.camera; }
   bool paused = false;
+  // Without a range asked for, colour by the middle 98 % of the values (kMiddleShare), so that
+  // a few outliers do not leave the tubes one colour.
+  bool middleColours = true;
+  // The values at the colour map's ends where they are the middle ones, not the whole range.
+  const std::optional<render::ValueRange>& middleValues() const { return middleValues_; }
+  // Applies middleColours to the scene's colour range (after its tubes changed).
+  void fitColourRange();
   const flow::ProgressiveTraces& traces() const { return *traces_; }
   const render::TubeRenderer& renderer() const { return *renderer_; }
   gpu::Backend backend() const { return backend_; }
@@ -80,6 +90,7 @@ class ViewSession {
   RenderScene scene_;
   std::unique_ptr<render::TubeRenderer> renderer_;
   ViewFrameTimes times_;
+  std::optional<render::ValueRange> middleValues_;
 };
 
 }  // namespace amrstream::viewer

@@ -76,7 +76,7 @@ class WindowLoop {
     if (showPanel_)
       requests = drawViewPanel(session_, stats_);
     else
-      drawLegendOverlay(session_.scene());
+      drawLegendOverlay(session_.scene(), session_.middleValues());
     for (const app::KeyPress& key : input.keyPresses) {
       if (key.key == GLFW_KEY_S) requests.screenshot = true;
       if (key.key == GLFW_KEY_E) requests.exportTraces = true;
