@@ -44,6 +44,7 @@ struct PathlineJob {
   SeedRequest seeds;                 // chosen on the snapshot at or before the start time
   PathlineSettings settings;
   BackendRequest backend;
+  DeclaredUnits units;  // length_unit, unit: declared for every snapshot (as load's)
 };
 
 // Where the time went: reading and building every snapshot (on the loading thread, except the

@@ -39,17 +39,17 @@ struct LoadedSnapshot {
   double readSeconds = 0.0, buildSeconds = 0.0;
 };
 
-std::unique_ptr<LoadedSnapshot> loadSnapshot(const SnapshotFile& file, const FieldOptions& options,
+std::unique_ptr<LoadedSnapshot> loadSnapshot(const SnapshotFile& file, const PathlineJob& job,
                                              bool keepCells) {
   auto owned = std::make_unique<LoadedSnapshot>();
   LoadedSnapshot& loaded = *owned;
   loaded.time = file.time;
   Stopwatch clock;
-  Dataset cells = load(file.path);
+  Dataset cells = load(file.path, {}, job.units);
   loaded.readSeconds = clock.seconds();
   loaded.cellCount = cells.cellCount();
   clock.restart();
-  loaded.field = buildField(cells, options, KeepDataset::No);
+  loaded.field = buildField(cells, job.field, KeepDataset::No);
   loaded.buildSeconds = clock.seconds();
   if (keepCells) loaded.cells.emplace(std::move(cells));
   return owned;
@@ -284,8 +284,7 @@ void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
                     const Reporter& reporter) {
   const std::span<const SnapshotFile> series = job.series;
   const auto loadAhead = [&](std::size_t i) {
-    return std::async(std::launch::async,
-                      [&, i] { return loadSnapshot(series[i], job.field, false); });
+    return std::async(std::launch::async, [&, i] { return loadSnapshot(series[i], job, false); });
   };
   std::future<std::unique_ptr<LoadedSnapshot>> next = loadAhead(first + 1);
   std::unique_ptr<gpu::VectorProbe> probeA, probeB;
@@ -396,7 +395,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   report.snapshotsUsed = last - first + 1;
 
   // On the heap: a GPU probe points at its snapshot's volume, which must not move.
-  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], job.field, true);
+  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], job, true);
   addLoadTimes(*a, report);
   const flow::VectorVolume& firstVolume = volumeOf(*a->field);
   report.vectorName = firstVolume.vectorName;

@@ -33,9 +33,12 @@ void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::st
                       kinds)
       ->required();
   addGeneratorOptions(command, options.builtin, seedFlag, kMaxBuiltinLevels);
-  if (units == DeclaresUnits::No) return;
-  addSetting(command, settings::kLengthUnit, options.units.length);
-  addSetting(command, settings::kUnit, options.units.units)
+  if (units == DeclaresUnits::Yes) addUnitOptions(command, options.units);
+}
+
+void addUnitOptions(CLI::App& command, DeclaredUnits& units) {
+  addSetting(command, settings::kLengthUnit, units.length);
+  addSetting(command, settings::kUnit, units.units)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }

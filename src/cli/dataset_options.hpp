@@ -16,6 +16,8 @@ enum class DeclaresUnits { No, Yes };
 // of builtin datasets and, for commands that declare units, --length-unit and --unit.
 void addDatasetOptions(CLI::App& command, DatasetRequest& options, const std::string& seedFlag,
                        DeclaresUnits units = DeclaresUnits::Yes);
+// --length-unit and --unit NAME=UNIT.
+void addUnitOptions(CLI::App& command, DeclaredUnits& units);
 // The same options without INPUT, --levels taking 1 to `maxLevels`.
 void addGeneratorOptions(CLI::App& command, BuiltinOptions& options, const std::string& seedFlag,
                          int maxLevels);

@@ -5,6 +5,7 @@
 #include "amrstream/pathlines.hpp"
 #include "amrstream/run_files.hpp"
 #include "console.hpp"
+#include "dataset_options.hpp"
 #include "job_options.hpp"
 #include "option_checks.hpp"
 #include "setting_options.hpp"
@@ -44,6 +45,7 @@ void addPathlinesCommand(CLI::App& app) {
       ->required();
   PathlineJob& job = options->job;
   addFieldOptions(*command, job.field);
+  addUnitOptions(*command, job.units);
   // The seeds are chosen inside the run (on the snapshot at the start time): no --seeds-out.
   addSeedOptions(*command, job.seeds, nullptr);
   addSetting(*command, settings::kStartTime, job.settings.startTime);

@@ -254,9 +254,7 @@ std::shared_ptr<Dataset> loadDataset(const std::string& path, Given<std::optiona
                                      std::optional<std::map<std::string, std::string>> units) {
   const BuiltinOptions builtin = builtinOptions(path, levels, rootBlocks, targetCells, genSeed);
   checkBuiltinCells(path, builtin);
-  DeclaredUnits declared{lengthUnit.value_or("")};
-  for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
-    declared.units.push_back(name + "=" + unit);
+  const DeclaredUnits declared = declaredUnits(lengthUnit, units);
   py::gil_scoped_release unlocked;
   return std::make_shared<Dataset>(load(path, builtin, declared));
 }

@@ -32,6 +32,14 @@ bool isRealNumber(py::handle value) {
 
 }  // namespace
 
+DeclaredUnits declaredUnits(const std::optional<std::string>& lengthUnit,
+                            const std::optional<std::map<std::string, std::string>>& units) {
+  DeclaredUnits declared{lengthUnit.value_or("")};
+  for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
+    declared.units.push_back(name + "=" + unit);
+  return declared;
+}
+
 std::string settingsDoc(std::span<const Setting* const> settings) {
   std::string doc;
   for (const Setting* s : settings) {

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,6 +19,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "amrstream/dataset_info.hpp"
 #include "amrstream/settings.hpp"
 
 namespace amrstream::python {
@@ -26,6 +28,10 @@ namespace py = pybind11;
 
 // The keyword argument named as the setting.
 inline pybind11::arg arg(const Setting& setting) { return pybind11::arg(setting.name.data()); }
+
+// The units length_unit and units ({name: unit}) declare, as DeclaredUnits.
+DeclaredUnits declaredUnits(const std::optional<std::string>& lengthUnit,
+                            const std::optional<std::map<std::string, std::string>>& units);
 
 // "name=default: what it means" for each setting, one a line, other settings named as keywords.
 std::string settingsDoc(std::span<const Setting* const> settings);

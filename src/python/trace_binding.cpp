@@ -131,8 +131,10 @@ TracesOfFiles runTrace(py::object target, py::object seeds, const FieldKeywords&
 
 TracesOfFiles runPathlines(const std::vector<std::string>& snapshots, py::object seeds,
                            const FieldOptions& field, const PathlineSettings& settings,
-                           const BackendRequest& backend, py::object progress, bool verbose) {
+                           const DeclaredUnits& units, const BackendRequest& backend,
+                           py::object progress, bool verbose) {
   PathlineJob job;
+  job.units = units;
   job.seeds.points = seedPointsOf(seeds);
   if (job.seeds.points.empty()) throw py::value_error("pathlines() needs at least one seed");
   job.field = field;
@@ -352,8 +354,9 @@ void bindTracing(py::module_& m) {
          std::optional<std::string> pointData, std::optional<std::string> periodic,
          std::optional<std::string> interpolant, Given<std::optional<double>> startTime,
          Given<std::optional<double>> endTime, Given<std::optional<double>> stepSize,
-         Given<double> releaseEvery, std::string backend, std::string device, bool validation,
-         py::object progress, bool verbose) {
+         Given<double> releaseEvery, std::optional<std::string> lengthUnit,
+         std::optional<std::map<std::string, std::string>> units, std::string backend,
+         std::string device, bool validation, py::object progress, bool verbose) {
         const FieldOptions defaults;
         const FieldOptions field{vector.value_or(""), pointData.value_or(defaults.pointData),
                                  periodic.value_or(defaults.periodic),
@@ -369,20 +372,22 @@ void bindTracing(py::module_& m) {
         settings.releaseEvery = settingValue(releases, releaseEvery);
         const BackendRequest request{std::move(backend), std::move(device),
                                      validation || validationRequested()};
-        return runPathlines(snapshots, seeds, field, settings, request, progress, verbose);
+        return runPathlines(snapshots, seeds, field, settings, declaredUnits(lengthUnit, units),
+                            request, progress, verbose);
       },
       py::arg("snapshots"), py::arg("seeds"), py::kw_only(), arg(s::kVector) = py::none(),
       arg(s::kPointData) = py::none(), arg(s::kPeriodic) = py::none(),
       arg(s::kInterpolant) = py::none(), arg(s::kStartTime) = py::none(),
       arg(s::kEndTime) = py::none(), arg(s::kTimeStep) = py::none(),
-      arg(s::kReleaseEvery) = PathlineSettings{}.releaseEvery, arg(s::kBackend) = b.backend,
-      arg(s::kDevice) = b.device, py::arg("validation") = false, py::arg("progress") = py::none(),
-      py::arg("verbose") = false,
+      arg(s::kReleaseEvery) = PathlineSettings{}.releaseEvery, py::arg("length_unit") = py::none(),
+      py::arg("units") = py::none(), arg(s::kBackend) = b.backend, arg(s::kDevice) = b.device,
+      py::arg("validation") = false, py::arg("progress") = py::none(), py::arg("verbose") = false,
       ("Traces pathlines from seeds ((N, 3) points, released at start_time) through a time "
        "series of snapshot files or glob patterns, ordered by the times the files state, as "
        "`amrstream pathlines` does; with release_every, streaklines. integration_time is "
-       "physical time (streaklines: each particle's age); progress(done, total) counts "
-       "intervals.\n\n" +
+       "physical time (streaklines: each particle's age); length_unit and units ({name: "
+       "unit}) declare units for snapshots that do not state them, as load() does; "
+       "progress(done, total) counts intervals.\n\n" +
        settingsDoc(keywords::kPathlines))
           .c_str());
   m.def(

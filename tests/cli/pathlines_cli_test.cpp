@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "run_amrstream.hpp"
@@ -58,6 +59,24 @@ TEST_F(PathlinesCli, WritesStreaklinesWithReleaseEvery) {
   EXPECT_THAT(r.output, HasSubstr("particles  24 (3 seeds)"));
   EXPECT_THAT(r.output, HasSubstr("max time (7): 24"));
   EXPECT_THAT(r.output, HasSubstr("(3 streaklines, 24 points)"));
+}
+
+TEST_F(PathlinesCli, DeclaresUnitsForSnapshotsThatStateNone) {
+  generateSwirl(3);
+  const std::string series = "'" + path("swirl_*.exa") + "' --count 4 --compression none ";
+  const Outcome r =
+      run("pathlines " + series + "--length-unit km --unit temp=K --out " + path("p.vtp"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream file(path("p.vtp"), std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(file), {}};
+  EXPECT_THAT(bytes, HasSubstr("Name=\"LengthUnit\""));
+  EXPECT_THAT(bytes, HasSubstr(std::string("km\0", 3)));
+
+  const Outcome bad = run("pathlines " + series + "--unit tmp=K --out " + path("q.vtp"));
+  EXPECT_NE(bad.status, 0);
+  EXPECT_THAT(bad.output, HasSubstr("--unit: 'tmp' is no channel or vector of"));
+  EXPECT_THAT(bad.output, HasSubstr("did you mean 'temp'?"));
+  EXPECT_FALSE(fs::exists(path("q.vtp")));
 }
 
 TEST_F(PathlinesCli, RunsTheRealGerrisSeriesFromItsFiles) {

@@ -88,6 +88,17 @@ def test_streaklines_have_one_line_per_seed(series):
     assert np.all(np.diff(streaks.offsets) == 5)  # released at 0, 0.02, ..., 0.08
 
 
+def test_units_are_declared_for_every_snapshot(series, tmp_path):
+    lines = amrstream.pathlines(str(series / "swirl_*.exa"), [[0.6, 0.5, 0.5]], end_time=0.1,
+                                length_unit="km", units={"temp": "K"})
+    out = tmp_path / "p.vtp"
+    lines.to_vtp(out, compression="none")
+    data = out.read_bytes()
+    assert b'Name="LengthUnit"' in data and b"km\0" in data
+    with pytest.raises(ValueError, match=r"unit: 'tmp' is no channel .*did you mean 'temp'"):
+        amrstream.pathlines(str(series / "swirl_*.exa"), [[0.6, 0.5, 0.5]], units={"tmp": "K"})
+
+
 def test_bad_series_raise_input_error_naming_the_file(series, tmp_path):
     with pytest.raises(amrstream.InputError, match="two snapshots or more"):
         amrstream.pathlines(str(series / "swirl_0000.exa"), [[0.5, 0.5, 0.5]])
