@@ -24,7 +24,8 @@ def bound_defaults(function):
     """{keyword: default} of a pybind11 function, from its signature line."""
     first = function.__doc__.splitlines()[0]
     defaults = {}
-    for name, value in re.findall(r"(\w+): [^=,]+ = ('[^']*'|[^,)]+)", first):
+    # A type may hold commas inside brackets: Optional[Dict[str, str]].
+    for name, value in re.findall(r"(\w+): (?:[^=,\[]|\[[^\]]*\])+ = ('[^']*'|[^,)]+)", first):
         defaults[name] = ast.literal_eval(value)
     return defaults
 
