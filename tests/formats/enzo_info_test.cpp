@@ -126,6 +126,24 @@ TEST_F(EnzoInfoWritten, NonCosmologicalUnitsFromLengthUnitsAndTimeUnits) {
   EXPECT_EQ(info.fileLevel(0), 4);
 }
 
+TEST_F(EnzoInfoWritten, FieldUnitsFromDataUnitsElseTheCgsConversionFactor) {
+  const EnzoParameters parameters(
+      write("DataLabel[0] = Density\nDataUnits[0] = none\n"
+            "#DataCGSConversionFactor[0] = 6.24041e-27\n"
+            "DataLabel[1] = TotalEnergy\nDataUnits[1] = none\n"
+            "DataLabel[2] = x-velocity\nDataUnits[2] = none\n"
+            "#DataCGSConversionFactor[2] = 4.06287e+07\n"
+            "DataLabel[3] = Metal_Density\nDataUnits[3] = none\n"
+            "#DataCGSConversionFactor[3] = 6.24041e-27\n"
+            "DataLabel[4] = Bx\nDataUnits[4] = G\n"));
+  const DatasetInfo info = readEnzoInfo(&parameters, 0);
+  EXPECT_EQ(unitOf(info, "Density"), "code units (1 = 6.24e-27 g/cm**3)");
+  EXPECT_EQ(unitOf(info, "x-velocity"), "code units (1 = 4.063e+07 cm/s)");
+  EXPECT_EQ(unitOf(info, "TotalEnergy"), "");    // no factor stated
+  EXPECT_EQ(unitOf(info, "Metal_Density"), "");  // a label whose CGS unit is not fixed
+  EXPECT_EQ(unitOf(info, "Bx"), "G");            // as DataUnits states it
+}
+
 TEST_F(EnzoInfoWritten, UnstatedValuesStayUnknown) {
   const EnzoParameters parameters(write("TopGridRank = 3\n"));
   const DatasetInfo info = readEnzoInfo(&parameters, 2);

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "amrstream/error.hpp"
 
@@ -60,6 +62,33 @@ void readUnits(const EnzoParameters& p, DatasetInfo& info) {
   }
 }
 
+// The CGS unit of a field Enzo labels so, where Enzo's definition fixes it.
+std::string cgsUnitOfLabel(const std::string& label) {
+  if (label == "Density" || label == "Dark_Matter_Density") return "g/cm**3";
+  if (label.ends_with("-velocity")) return "cm/s";
+  if (label == "TotalEnergy" || label == "GasEnergy" || label == "InternalEnergy") return "erg/g";
+  if (label == "Bx" || label == "By" || label == "Bz") return "gauss";
+  return "";
+}
+
+// DataUnits[i] where it is not "none"; else, for a label whose CGS unit is known, the code unit
+// #DataCGSConversionFactor[i] gives.
+void readFieldUnits(const EnzoParameters& p, DatasetInfo& info) {
+  const std::map<std::string, std::string>& values = p.values();
+  for (int i = 0;; ++i) {
+    const auto label = values.find(fmt::format("DataLabel[{}]", i));
+    if (label == values.end()) break;
+    const auto stated = values.find(fmt::format("DataUnits[{}]", i));
+    const std::optional<double> factor = p.number(fmt::format("#DataCGSConversionFactor[{}]", i));
+    const std::string cgs = cgsUnitOfLabel(label->second);
+    if (stated != values.end() && !stated->second.empty() && stated->second != "none") {
+      info.units[label->second] = stated->second;
+    } else if (factor && *factor > 0 && !cgs.empty()) {
+      info.units[label->second] = fmt::format("code units (1 = {:.4g} {})", *factor, cgs);
+    }
+  }
+}
+
 }  // namespace
 
 DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
@@ -73,6 +102,7 @@ DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
   info.time = readEnzoTime(*parameters);
   readPeriodicity(*parameters, info);
   readUnits(*parameters, info);
+  readFieldUnits(*parameters, info);
   return info;
 }
 

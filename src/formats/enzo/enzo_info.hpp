@@ -9,6 +9,11 @@
 //                1 / sqrt(4 pi G rho_m0 (1 + z_initial)^3) = 1 / (H0 sqrt(3/2 Omega_m (1 +
 //                z_initial)^3)). Otherwise from LengthUnits / TimeUnits (cm, s) when the file has
 //                them.
+//   field units  DataUnits[i] of DataLabel[i] where it is not "none"; else, for labels whose CGS
+//                unit Enzo's definition fixes (Density, Dark_Matter_Density g/cm**3, *-velocity
+//                cm/s, TotalEnergy/GasEnergy/InternalEnergy erg/g, Bx/By/Bz gauss), the code unit
+//                that #DataCGSConversionFactor[i] states, e.g. "code units (1 = 6.24e-27
+//                g/cm**3)". (The reader adds K for a Temperature field: Enzo writes kelvin.)
 //   levels       Enzo levels, 0 = root grid: internal level L is Enzo level finest - L
 // Without a parameter file only the level numbering is known.
 

@@ -575,7 +575,9 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     throw InputError(table.string(), "the grids cannot be placed: " + *problem);
   bricks::AmrField field = sink.finish(transform);
-  field.setInfo(readEnzoInfo(parameters ? &*parameters : nullptr, finest));
+  DatasetInfo info = readEnzoInfo(parameters ? &*parameters : nullptr, finest);
+  if (field.findChannel("Temperature")) info.units.emplace("Temperature", "K");  // Enzo writes K
+  field.setInfo(std::move(info));
   return field;
 }
 
