@@ -60,7 +60,7 @@ void drawAnnotations(render::Image& image, const RenderOptions& o, const RenderS
   if (o.scaleBar)
     render::drawScaleBar(
         image,
-        render::layoutScaleBar(scene.camera, w, h, render::sceneTransformOf(volume.transform),
+        render::layoutScaleBar(scene.camera, w, h, render::sceneUnitLength(volume.transform),
                                shortLengthUnit(info), size),
         ink);
 }

@@ -10,12 +10,16 @@
 
 namespace amrstream::render {
 
+// The physical length of one scene unit: the finest cell's shortest side.
+inline double sceneUnitLength(const WorldTransform& transform) {
+  const glm::dvec3 side = glm::abs(transform.spacing);
+  return glm::min(side.x, glm::min(side.y, side.z));
+}
+
 // Scene units per cell unit along each axis: 1 on the finest cell's shortest side, more on the
 // others.
 inline glm::dvec3 sceneScaleOf(const WorldTransform& transform) {
-  const glm::dvec3 side = glm::abs(transform.spacing);
-  const double shortest = glm::min(side.x, glm::min(side.y, side.z));
-  return side / shortest;
+  return glm::abs(transform.spacing) / sceneUnitLength(transform);
 }
 
 // Maps scene units to physical coordinates, as `transform` maps cell units.

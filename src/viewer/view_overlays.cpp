@@ -64,9 +64,8 @@ void drawSceneOverlays(const RenderScene& scene, const RenderOptions& look,
     }
   }
   if (look.scaleBar) {
-    const render::ScaleBarLayout bar =
-        render::layoutScaleBar(scene.camera, w, h, render::sceneTransformOf(volume.transform),
-                               shortLengthUnit(info), size);
+    const render::ScaleBarLayout bar = render::layoutScaleBar(
+        scene.camera, w, h, render::sceneUnitLength(volume.transform), shortLengthUnit(info), size);
     if (bar.length > 0.0) {
       canvas.line(bar.start, bar.end, ink, bar.thickness);
       for (const glm::vec2 end : {bar.start, bar.end})

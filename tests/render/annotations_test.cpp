@@ -285,14 +285,13 @@ TEST(ScaleBar, InAnOrthographicViewOfAKnownHeightTheBarIsARoundLength) {
   OrbitCamera camera;
   camera.projection = Projection::Orthographic;
   camera.distance = 50.0f;
-  camera.fovYDegrees = 90.0f;  // the view is 2 * 50 * tan(45 degrees) = 100 cells tall
-  const WorldTransform transform{{3.0, -7.0, 1.0}, glm::dvec3(0.01)};  // 1 kpc tall
-  const ScaleBarLayout layout = layoutScaleBar(camera, 1000, 1000, transform, "kpc", 16);
+  camera.fovYDegrees = 90.0f;  // the view is 2 * 50 * tan(45 degrees) = 100 units tall: 1 kpc
+  const ScaleBarLayout layout = layoutScaleBar(camera, 1000, 1000, 0.01, "kpc", 16);
   EXPECT_DOUBLE_EQ(layout.length, 0.2);  // of 0.1 to 0.25 kpc (10 to 25 % of the width)
   EXPECT_NEAR(layout.end.x - layout.start.x, 200.0f, 1e-2f);
   EXPECT_EQ(layout.end.y, layout.start.y);
   EXPECT_EQ(layout.label.text, "0.2 kpc");
-  EXPECT_EQ(layoutScaleBar(camera, 1000, 1000, transform, "", 16).label.text, "0.2");
+  EXPECT_EQ(layoutScaleBar(camera, 1000, 1000, 0.01, "", 16).label.text, "0.2");
 }
 
 TEST(ScaleBar, InOrthographicViewsTheBarIsItsLengthOverTheViewHeightTimesTheImageHeight) {
@@ -302,11 +301,10 @@ TEST(ScaleBar, InOrthographicViewsTheBarIsItsLengthOverTheViewHeightTimesTheImag
     s.camera.projection = Projection::Orthographic;
     const int labelSize = overlayLabelPixelSize(s.width, s.height);
     const ScaleBarLayout layout =
-        layoutScaleBar(s.camera, s.width, s.height, s.transform, "Mpc", labelSize);
+        layoutScaleBar(s.camera, s.width, s.height, s.transform.spacing.y, "Mpc", labelSize);
     const double viewHeightCells =
         2.0 * s.camera.distance * std::tan(glm::radians(double(s.camera.fovYDegrees)) / 2.0);
-    const glm::dvec3 spacing = s.transform.spacing;
-    const double viewHeight = viewHeightCells * (spacing.x + spacing.y + spacing.z) / 3.0;
+    const double viewHeight = viewHeightCells * s.transform.spacing.y;
     const double expected = layout.length / viewHeight * s.height;
     EXPECT_NEAR(layout.end.x - layout.start.x, expected, 1e-4 * expected) << view;
     EXPECT_GE(expected, 0.1 * s.width * (1 - 1e-6)) << view;

@@ -22,27 +22,23 @@ double roundLengthAtMost(double most) {
   return decade;
 }
 
-// The view's height in cell units is 2 distance tan(fovY / 2) at the target, in either
+// The view's height in the camera's units is 2 distance tan(fovY / 2) at the target, in either
 // projection (camera.hpp).
-double pixelsPerPhysicalUnit(const OrbitCamera& camera, std::uint32_t height,
-                             const WorldTransform& transform) {
+double pixelsPerPhysicalUnit(const OrbitCamera& camera, std::uint32_t height, double unitLength) {
   const double viewHeight = 2.0 * camera.distance * halfHeightAtUnitDistance(camera);
-  const glm::dvec3 spacing = glm::abs(transform.spacing);
-  const double cellSide = (spacing.x + spacing.y + spacing.z) / 3.0;
-  const double pixels = height / (viewHeight * cellSide);
+  const double pixels = height / (viewHeight * std::abs(unitLength));
   return std::isfinite(pixels) && pixels > 0.0 ? pixels : 0.0;
 }
 
 }  // namespace
 
 ScaleBarLayout layoutScaleBar(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
-                              const WorldTransform& transform, std::string unit,
-                              int labelPixelSize) {
+                              double unitLength, std::string unit, int labelPixelSize) {
   ScaleBarLayout layout;
   layout.labelPixelSize = labelPixelSize;
   layout.thickness = std::max(2.0f, labelPixelSize / 6.0f);
   layout.endHeight = std::max(6.0f, 0.6f * labelPixelSize);
-  layout.pixelsPerUnit = pixelsPerPhysicalUnit(camera, height, transform);
+  layout.pixelsPerUnit = pixelsPerPhysicalUnit(camera, height, unitLength);
   if (layout.pixelsPerUnit == 0.0 || width == 0) return layout;
   layout.length = roundLengthAtMost(kLongestFraction * width / layout.pixelsPerUnit);
 

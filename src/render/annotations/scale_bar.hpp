@@ -28,13 +28,13 @@ struct ScaleBarLayout {
   PlacedText label;  // "0.2 kpc", or "0.2" without a unit, centred above the bar
 };
 
-// In perspective, things nearer or further than the target look larger or smaller than the bar
-// says; in orthographic projection it holds everywhere. Where the spacing differs per axis, one
-// cell counts as the mean of its three sides. labelPixelSize: overlayLabelPixelSize suits; the
-// bar sits above the triad laid out with the same size.
+// `unitLength`: the physical length of one unit of the camera's space (the scene's, see
+// scene_space.hpp, which is the same along every axis). In perspective, things nearer or further
+// than the target look larger or smaller than the bar says; in orthographic projection it holds
+// everywhere. labelPixelSize: overlayLabelPixelSize suits; the bar sits above the triad laid out
+// with the same size.
 ScaleBarLayout layoutScaleBar(const OrbitCamera& camera, std::uint32_t width, std::uint32_t height,
-                              const WorldTransform& transform, std::string unit,
-                              int labelPixelSize);
+                              double unitLength, std::string unit, int labelPixelSize);
 
 // The bar and its label in `colour`; nothing when the layout's length is 0.
 void drawScaleBar(Image& image, const ScaleBarLayout& layout, Rgba8 colour);
