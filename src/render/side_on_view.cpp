@@ -11,8 +11,8 @@
 namespace amrstream::render {
 namespace {
 
-// The view from above wins where it looks along the lines at most this much more than the best
-// side view: lines (nearly) across the up axis.
+// The view from above wins where at most this share of the lines' length runs along the up axis:
+// lines (nearly) across it.
 constexpr float kFlatTolerance = 1e-3f;
 
 glm::dmat3 orientationTensor(std::span<const shared::TubeSegment> segments) {
@@ -48,6 +48,12 @@ OrbitCamera sideOn(OrbitCamera camera, std::span<const shared::TubeSegment> segm
     view.azimuthDegrees = azimuth, view.elevationDegrees = elevation;
     return view;
   };
+  // Lines that lie across the up axis (2D data) are seen from above, without foreshortening.
+  const std::string upName{camera.up.sign > 0.0f ? '+' : '-', "xyz"[camera.up.index]};
+  if (const std::optional<NamedView> above = namedView(upName, camera.up)) {
+    const OrbitCamera view = turned(above->azimuthDegrees, above->elevationDegrees);
+    if (along(view) <= kFlatTolerance && !segments.empty()) return view;
+  }
   const float kept = along(camera);
   std::vector<std::pair<float, float>> sides;  // azimuth, fraction along
   float least = kept;
@@ -57,12 +63,6 @@ OrbitCamera sideOn(OrbitCamera camera, std::span<const shared::TubeSegment> segm
     least = std::min(least, a);
   }
   if (!(least + kSideOnGain <= kept)) return camera;
-  // Lines that lie across the up axis (2D data) are seen from above, without foreshortening.
-  const std::string upName{camera.up.sign > 0.0f ? '+' : '-', "xyz"[camera.up.index]};
-  if (const std::optional<NamedView> above = namedView(upName, camera.up)) {
-    const OrbitCamera view = turned(above->azimuthDegrees, above->elevationDegrees);
-    if (along(view) <= least + kFlatTolerance) return view;
-  }
   // Of the side views nearly as good as the best, the one nearest the camera's azimuth.
   const auto turn = [&](float azimuth) {
     const float d = std::fmod(std::abs(azimuth - camera.azimuthDegrees), 360.0f);

@@ -14,11 +14,11 @@ namespace amrstream::render {
 // of its unit direction. 0 for no segments.
 float lengthAlong(std::span<const shared::TubeSegment> segments, glm::vec3 direction);
 
-// The camera turned to see `segments` side on, where the view it has runs at least kSideOnGain
-// more along them than the best side view: the view from above along the up axis (the next axis
-// to the right) where that runs hardly more along them than the best side view (lines across the
-// up axis, as in 2D data), else of the azimuths every 5 degrees at its elevation that run at most
-// kSideOnSlack more along them than the best, the one nearest its azimuth (some depth shows).
+// The camera turned to see `segments` side on: the view from above along the up axis (the next
+// axis to the right) where hardly any of their length runs along the up axis (lines across it,
+// as in 2D data); else, where the view it has runs at least kSideOnGain more along them than the
+// best side view, of the azimuths every 5 degrees at its elevation that run at most kSideOnSlack
+// more along them than the best, the one nearest its azimuth (some depth shows).
 constexpr float kSideOnGain = 0.1f;
 constexpr float kSideOnSlack = 0.05f;
 OrbitCamera sideOn(OrbitCamera camera, std::span<const shared::TubeSegment> segments);

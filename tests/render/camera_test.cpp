@@ -176,6 +176,12 @@ TEST(SideOnView, LooksAcrossTheLinesRatherThanAlongThem) {
   const CameraFrame above = cameraFrame(sideOn(camera, plane));
   EXPECT_NEAR(above.forward.z, -1.0f, 1e-5f);
   EXPECT_NEAR(above.right.x, 1.0f, 1e-5f);  // x right, y up
+  // Staircases in the plane, as much along x as along y: no side view gains on the default,
+  // yet they lie across the up axis.
+  std::vector<shared::TubeSegment> stairs = along({1, 0, 0}, 20);
+  const std::vector<shared::TubeSegment> risers = along({0, 1, 0}, 20);
+  stairs.insert(stairs.end(), risers.begin(), risers.end());
+  EXPECT_NEAR(cameraFrame(sideOn(camera, stairs)).forward.z, -1.0f, 1e-5f);
   std::vector<shared::TubeSegment> everyWay = along({1, 0, 0}, 10);
   for (const glm::vec3 d : {glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
     const std::vector<shared::TubeSegment> more = along(d, 10);
