@@ -2,13 +2,15 @@
 # Installs every Debian 12 package amrstream needs to build, test and run. Idempotent: when
 # everything is already present it only checks and returns. Works as root or through sudo.
 # Lavapipe with ray query / ray tracing pipelines needs Mesa from bookworm-backports, so this
-# adds that suite when it is missing (see docs/setup.md).
+# adds that suite when it is missing (see the README; scikit-build-core comes from there too).
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   python3 python3-vtk9 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
+  # the Python package: pip into a venv (python3-venv), with scikit-build-core (backports)
+  python3-venv
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
   # text in rendered images: FreeType and the DejaVu Sans font
@@ -22,7 +24,7 @@ packages=(
   # for scripts/fuzz.sh
   clang libclang-rt-dev
 )
-backports_packages=(mesa-vulkan-drivers)
+backports_packages=(mesa-vulkan-drivers python3-scikit-build-core)
 
 if [ "$(id -u)" -eq 0 ]; then
   as_root() { "$@"; }

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# Installs the built `amrstream` Python package where Debian's python3 finds it
-# (/usr/local/lib/python3.X/dist-packages/amrstream), then checks that it imports.
-# Usage: scripts/install_python.sh [BUILD_DIR]   (default: build)
+# Installs the `amrstream` Python package into a virtual environment with pip (pyproject.toml,
+# scikit-build-core), reusing the CMake build scripts/build.sh made so that nothing is compiled
+# twice; makes the environment first where it does not exist (with Debian's python3 and
+# --system-site-packages, so that numpy, yt and scikit-build-core come from Debian).
+# Usage: scripts/install_python.sh [VENV] [BUILD_DIR]   (defaults: .venv, build)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$root/build}
-if [ "$(id -u)" -eq 0 ]; then
-  cmake --install "$build" --component python
-else
-  sudo cmake --install "$build" --component python
-fi
-(cd / && /usr/bin/python3 -c "import amrstream; print('python     import amrstream works:', amrstream.__file__)")
+venv=$(realpath -m "${1:-$root/.venv}")
+build=$(realpath -m "${2:-$root/build}")
+[ -x "$venv/bin/python" ] || /usr/bin/python3 -m venv --system-site-packages "$venv"
+# --no-build-isolation: the build requirements come from the environment (Debian's), as only
+# Debian's archive may be reachable; the generator is the one scripts/build.sh configured with.
+CMAKE_GENERATOR="Unix Makefiles" "$venv/bin/pip" install --quiet --no-build-isolation \
+  --config-settings=build-dir="$build" "$root"
+# scikit-build-core's configure left its settings in the build's cache: back to the plain build's.
+cmake -S "$root" -B "$build" -U 'SKBUILD*' -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+(cd / && "$venv/bin/python" -c "import amrstream; print('python     amrstream', amrstream.__version__, 'in', '$venv', '(source $venv/bin/activate)')")

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Quick start, command 1: installs what is missing, builds, traces the built-in magnetised cloud
 # to traces.vtp (open it in ParaView) and renders its field lines as tubes in front of the
-# density to cloud.png (the README's first image; one to two minutes on lavapipe). Installs the
-# Python module for Debian's python3 (`import amrstream`). Extra arguments go to `amrstream trace`.
+# density to cloud.png (the README's first image; seconds on lavapipe). Installs the Python
+# package with pip into the virtual environment .venv (`source .venv/bin/activate`, then
+# `import amrstream`). Extra arguments go to `amrstream trace`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_deps.sh"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Quick start, command 2: installs what is missing, builds, and runs the whole test suite; then
-# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the `cpu` tests and the `gpu`
-# tests (on lavapipe, with the Vulkan loader and driver in the process) again. First checks that
-# the C++ sources follow .clang-format.
+# Quick start, command 2: installs what is missing, builds, installs the Python package with pip
+# into a fresh venv (build/test-venv), and runs the whole test suite (the Python tests against
+# that package); then builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the
+# `cpu` tests and the `gpu` tests (on lavapipe, with the Vulkan loader and driver in the process)
+# again. First checks that the C++ sources follow .clang-format.
 # Usage: scripts/run_tests.sh [--no-sanitize]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,9 +13,11 @@ jobs=$(nproc 2>/dev/null || echo 2)
 echo "== format"
 "$root/scripts/check_format.sh"
 
-echo "== release build: all tests"
+echo "== release build: all tests (Python: on the package pip installs into a fresh venv)"
 "$root/scripts/build.sh" release
-ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
+rm -rf "$root/build/test-venv"
+"$root/scripts/install_python.sh" "$root/build/test-venv"
+AMRSTREAM_TEST_VENV="$root/build/test-venv" ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
 
 if [ "${1:-}" != "--no-sanitize" ]; then
   echo "== sanitizer build (ASan + UBSan): cpu tests"

@@ -1,0 +1,26 @@
+"""The package the tests run against: pip's install in $AMRSTREAM_TEST_VENV where that is set
+(scripts/run_tests.sh), else the build tree's; one version for the package, module and CLI."""
+import importlib.metadata
+import os
+import subprocess
+from pathlib import Path
+
+import amrstream
+from amrstream import _amrstream
+
+
+def test_the_package_is_the_one_asked_for():
+    venv = os.environ.get("AMRSTREAM_TEST_VENV")
+    where = Path(venv) if venv else Path(os.environ["AMRSTREAM_BUILD_PACKAGE"])
+    for module in (amrstream, _amrstream):
+        assert where.resolve() in Path(module.__file__).resolve().parents, module.__file__
+    if venv:
+        assert "site-packages" in Path(amrstream.__file__).parts
+
+
+def test_one_version_for_the_package_the_module_and_the_command_line():
+    cli = subprocess.run([os.environ["AMRSTREAM_CLI"], "--version"], check=True,
+                         capture_output=True, text=True).stdout.split()
+    assert amrstream.__version__ in cli
+    if os.environ.get("AMRSTREAM_TEST_VENV"):
+        assert importlib.metadata.version("amrstream") == amrstream.__version__
