@@ -9,8 +9,9 @@ packages=(
   build-essential cmake pkg-config
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   python3 python3-vtk9 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
-  # the Python package: pip into a venv (python3-venv), with scikit-build-core (backports)
-  python3-venv
+  # the Python package: pip into a venv (python3-venv), with scikit-build-core (backports);
+  # its stubs' check (mypy's stubtest)
+  python3-venv mypy
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libhdf5-dev libpng-dev zlib1g-dev liblz4-dev libdeflate-dev libexpat1-dev
   # text in rendered images: FreeType and the DejaVu Sans font

@@ -15,6 +15,8 @@ import difflib
 import functools
 import os
 import re
+from collections.abc import Sequence as _Sequence
+from typing import Any, Callable, List, Optional, Tuple, TypeVar, Union
 
 from ._amrstream import (
     BackendError,
@@ -42,6 +44,9 @@ __all__ = [
 DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
 
 
+_Function = TypeVar("_Function", bound=Callable[..., Any])
+
+
 def _keyword_names(text):
     """The keywords a compiled function takes, from its signatures ("name: type") and its
     settings' lines ("name=default: meaning") in `text` (its docstring or pybind11's error)."""
@@ -50,7 +55,7 @@ def _keyword_names(text):
     return names
 
 
-def _with_keyword_hints(compiled):
+def _with_keyword_hints(compiled: _Function) -> _Function:
     """`compiled`, whose TypeError for a keyword it does not take names that keyword and the
     closest one it takes, instead of pybind11's list of signatures."""
     @functools.wraps(compiled)
@@ -73,7 +78,7 @@ def _with_keyword_hints(compiled):
             name = compiled.__name__
             raise TypeError(f"{name}() got an unexpected keyword argument {', '.join(hints)}; "
                             f"help(amrstream.{name}) lists them") from None
-    return call
+    return call  # type: ignore[return-value]
 
 
 from_arrays = _with_keyword_hints(from_arrays)
@@ -88,6 +93,17 @@ _compiled_pathlines = _with_keyword_hints(_amrstream.pathlines)
 _compiled_render = _with_keyword_hints(Traces.render)
 
 
+_VectorRequest = Union[None, str, _Sequence[Union[str, Tuple[str, str]]]]
+_PointDataRequest = Union[None, str, _Sequence[str]]
+
+
+def _point_data_text(point_data: _PointDataRequest) -> Optional[str]:
+    """None, 'all', 'none', 'a,b' or names -> None or the text the module takes."""
+    if point_data is None or isinstance(point_data, str):
+        return point_data
+    return ",".join(point_data) if point_data else "none"
+
+
 def _vector_text(vector):
     """None, 'a,b,c' or three names -> None or 'a,b,c'."""
     if vector is None or isinstance(vector, str):
@@ -98,33 +114,36 @@ def _vector_text(vector):
     return ",".join(names)
 
 
-def prepare(dataset, vector=None, point_data=None, **settings):
+def prepare(dataset: Dataset, vector: _VectorRequest = None, point_data: _PointDataRequest = None,
+            **settings: Any) -> Field:
     """A Field ready for tracing: the vector ('a,b,c' or three names, 'grad(NAME)' or
     '-grad(NAME)'), the frame velocity subtracted from it ((vx, vy, vz) or 'auto'), the point
     data ('all', 'none' or names), the periodic axes and the interpolant; bricks and regions
     built once for many traces. The settings, with their defaults, are those of
     amrstream._amrstream.prepare (below)."""
-    if isinstance(point_data, (list, tuple)):
-        point_data = ",".join(point_data) if point_data else "none"
     if point_data is not None:
-        settings["point_data"] = point_data
+        settings["point_data"] = _point_data_text(point_data)
     return _compiled_prepare(dataset, vector=_vector_text(vector), **settings)
 
 
-def trace(target, seeds, *, vector=None, point_data=None, periodic=None, interpolant=None,
-          **settings):
+def trace(target: Union[Dataset, Field], seeds: Any, *, vector: _VectorRequest = None,
+          point_data: _PointDataRequest = None, periodic: Optional[str] = None,
+          interpolant: Optional[str] = None, **settings: Any) -> Traces:
     """Traces streamlines from seeds ((N, 3) points) through a Dataset or a prepared Field
     (vector, frame_velocity, point_data, periodic and interpolant only with a Dataset). Returns
     Traces. The settings, as `amrstream trace` names them, with their defaults, are those of
     amrstream._amrstream.trace (below).
     """
-    if isinstance(point_data, (list, tuple)):
-        point_data = ",".join(point_data) if point_data else "none"
-    return _compiled_trace(target, seeds, vector=_vector_text(vector), point_data=point_data,
+    return _compiled_trace(target, seeds, vector=_vector_text(vector),
+                           point_data=_point_data_text(point_data),
                            periodic=periodic, interpolant=interpolant, **settings)
 
 
-def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
+_SnapshotRequest = Union[str, "os.PathLike[str]", _Sequence[Union[str, "os.PathLike[str]"]]]
+
+
+def pathlines(snapshots: _SnapshotRequest, seeds: Any, *, vector: _VectorRequest = None,
+              point_data: _PointDataRequest = None, **settings: Any) -> Traces:
     """Traces pathlines from seeds ((N, 3) points) through a time series of snapshots: a list of
     files, folders (AMReX plotfiles) or glob patterns (a single string is one pattern), ordered
     by the times the files state.
@@ -133,13 +152,11 @@ def pathlines(snapshots, seeds, *, vector=None, point_data=None, **settings):
     writes. The settings, as `amrstream pathlines` names them, with their defaults, are those of
     amrstream._amrstream.pathlines (below).
     """
-    if isinstance(point_data, (list, tuple)):
-        point_data = ",".join(point_data) if point_data else "none"
     return _compiled_pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
-                               point_data=point_data, **settings)
+                               point_data=_point_data_text(point_data), **settings)
 
 
-def _snapshot_paths(snapshots):
+def _snapshot_paths(snapshots: Any) -> List[str]:
     """A file, folder or pattern (str or os.PathLike), or a list of them -> a list of str."""
     if isinstance(snapshots, (str, os.PathLike)):
         snapshots = [snapshots]
@@ -153,7 +170,7 @@ def _snapshot_paths(snapshots):
     return paths
 
 
-def render(traces, **look):
+def render(traces: Traces, **look: Any) -> Any:
     """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
     RGBA image. The options, as `amrstream render` names them, with their defaults, are those of
     Traces.render (below)."""
@@ -166,10 +183,11 @@ def render(traces, **look):
 # list of settings) complete the wrappers' docstrings.
 for _wrapper, _compiled in ((prepare, _amrstream.prepare), (trace, _amrstream.trace),
                             (pathlines, _amrstream.pathlines), (render, Traces.render)):
-    _wrapper.__doc__ += "\n" + _compiled.__doc__
+    _wrapper.__doc__ = (_wrapper.__doc__ or "") + "\n" + (_compiled.__doc__ or "")
 
 
-def from_yt(ds, vector=DEFAULT_YT_VECTOR, fields=None):
+def from_yt(ds: Any, vector: _Sequence[Union[str, Tuple[str, str]]] = DEFAULT_YT_VECTOR,
+            fields: Optional[_Sequence[Union[str, Tuple[str, str]]]] = None) -> Dataset:
     """A Dataset of the leaf cells of a grid-based yt dataset (Enzo, FLASH, AMReX/BoxLib,
     Athena++, Chombo, ...): the vector's three fields first, then `fields`, in code units;
     positions in code_length. Trace it with vector=<the same three names> unless they are

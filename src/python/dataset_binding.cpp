@@ -262,13 +262,22 @@ std::shared_ptr<Dataset> loadDataset(const std::string& path, Given<std::optiona
 void bindDatasetClass(py::module_& m) {
   py::class_<Dataset, std::shared_ptr<Dataset>>(
       m, "Dataset", "Leaf cells of an AMR output, their fields, and what the file says of itself.")
-      .def_property_readonly("source", &Dataset::source)
-      .def_property_readonly("format", [](const Dataset& d) { return d.info().format; })
-      .def_property_readonly("cell_count", &Dataset::cellCount)
-      .def_property_readonly("field_names", &Dataset::channelNames)
-      .def_property_readonly("time", [](const Dataset& d) { return d.info().time; })
-      .def_property_readonly("time_unit", [](const Dataset& d) { return d.info().timeUnit; })
-      .def_property_readonly("length_unit", [](const Dataset& d) { return d.info().lengthUnit; })
+      .def_property_readonly("source", &Dataset::source, "the path or description it came from")
+      .def_property_readonly(
+          "format", [](const Dataset& d) { return d.info().format; },
+          "the file's format: 'FLASH', 'Enzo', 'AMReX', 'Gerris', 'ExaBricks', 'builtin', ...")
+      .def_property_readonly("cell_count", &Dataset::cellCount, "the number of leaf cells")
+      .def_property_readonly("field_names", &Dataset::channelNames,
+                             "the fields' names, in the file's order")
+      .def_property_readonly(
+          "time", [](const Dataset& d) { return d.info().time; },
+          "the snapshot's simulation time in time_unit, or None where the file states none")
+      .def_property_readonly(
+          "time_unit", [](const Dataset& d) { return d.info().timeUnit; },
+          "the unit of time, e.g. 's' or 'code units (1 = 1.381e+16 s)'; '' where unknown")
+      .def_property_readonly(
+          "length_unit", [](const Dataset& d) { return d.info().lengthUnit; },
+          "the unit of the coordinates, e.g. 'cm'; '' where unknown")
       .def_property_readonly(
           "units",
           [](const Dataset& d) {
@@ -281,11 +290,15 @@ void bindDatasetClass(py::module_& m) {
       .def_property_readonly(
           "origin", [](const Dataset& d) { return tuple3(d.transform().origin); },
           "physical position of corner (0, 0, 0)")
-      .def_property_readonly("finest_width",
-                             [](const Dataset& d) { return tuple3(d.transform().spacing); })
-      .def_property_readonly("domain_left_edge", [](const Dataset& d) { return tuple3(d.lower()); })
-      .def_property_readonly("domain_right_edge",
-                             [](const Dataset& d) { return tuple3(d.upper()); })
+      .def_property_readonly(
+          "finest_width", [](const Dataset& d) { return tuple3(d.transform().spacing); },
+          "(dx, dy, dz): the physical widths of a finest cell")
+      .def_property_readonly(
+          "domain_left_edge", [](const Dataset& d) { return tuple3(d.lower()); },
+          "the physical lower corner of the cells' bounding box")
+      .def_property_readonly(
+          "domain_right_edge", [](const Dataset& d) { return tuple3(d.upper()); },
+          "the physical upper corner of the cells' bounding box")
       .def_property_readonly(
           "corners",
           [](py::object self) {
@@ -295,7 +308,9 @@ void bindDatasetClass(py::module_& m) {
           "(N, 3) int32: each cell's lower corner in finest cells, counted from `origin`")
       .def_property_readonly("levels", &fileLevels,
                              "(N,) int32: each cell's level as the file numbers them (level_name)")
-      .def_property_readonly("level_name", [](const Dataset& d) { return d.info().levelName; })
+      .def_property_readonly(
+          "level_name", [](const Dataset& d) { return d.info().levelName; },
+          "how `levels` are numbered, e.g. 'Enzo level (0 = root grid)'")
       .def(
           "field",
           [](py::object self, Given<std::string> name) {
@@ -313,23 +328,34 @@ void bindDatasetClass(py::module_& m) {
 void bindFieldClass(py::module_& m) {
   py::class_<Field, std::shared_ptr<Field>>(
       m, "Field", "A dataset made ready for tracing: vector, point data, bricks and regions.")
-      .def_property_readonly("source", &Field::source)
-      .def_property_readonly("vector_name", &Field::vectorName)
-      .def_property_readonly("vector", &Field::vectorChannels)
+      .def_property_readonly("source", &Field::source, "the dataset's source")
+      .def_property_readonly("vector_name", &Field::vectorName,
+                             "the vector's name, e.g. 'vel' or '-grad(temp)'")
+      .def_property_readonly("vector", &Field::vectorChannels,
+                             "the names of the fields the vector is made of")
       .def_property_readonly(
           "frame_velocity", [](const Field& f) { return tuple3(f.frameVelocity()); },
           "(VX, VY, VZ) subtracted from the vector: the frame_velocity given or found by "
           "'auto'; zeros for none")
-      .def_property_readonly("point_data", &Field::pointDataNames)
-      .def_property_readonly("periodic",
-                             [](const Field& f) {
-                               const flow::PeriodicAxes& p = volumeOf(f).periodic;
-                               return py::make_tuple(p[0], p[1], p[2]);
-                             })
-      .def_property_readonly("brick_count", &Field::brickCount)
-      .def_property_readonly("region_count", &Field::regionCount)
-      .def_property_readonly("domain_left_edge", [](const Field& f) { return tuple3(f.lower()); })
-      .def_property_readonly("domain_right_edge", [](const Field& f) { return tuple3(f.upper()); })
+      .def_property_readonly("point_data", &Field::pointDataNames,
+                             "the fields sampled at every point of a trace")
+      .def_property_readonly(
+          "periodic",
+          [](const Field& f) {
+            const flow::PeriodicAxes& p = volumeOf(f).periodic;
+            return py::make_tuple(p[0], p[1], p[2]);
+          },
+          "(x, y, z): the axes traced as periodic")
+      .def_property_readonly("brick_count", &Field::brickCount,
+                             "the same-level bricks the cells are grouped into")
+      .def_property_readonly("region_count", &Field::regionCount,
+                             "the active brick regions space is cut into")
+      .def_property_readonly(
+          "domain_left_edge", [](const Field& f) { return tuple3(f.lower()); },
+          "the physical lower corner of the domain")
+      .def_property_readonly(
+          "domain_right_edge", [](const Field& f) { return tuple3(f.upper()); },
+          "the physical upper corner of the domain")
       .def("resample", &resampled, py::arg("dims") = 128, py::kw_only(),
            py::arg("box") = py::none(),
            "The reconstructed vector and point data on a uniform grid, as `amrstream resample` "

@@ -13,6 +13,12 @@ PYBIND11_MODULE(_amrstream, m) {
   static py::exception<amrstream::InputError> inputError(m, "InputError", PyExc_ValueError);
   static py::exception<amrstream::vk::ContextError> backendError(m, "BackendError",
                                                                  PyExc_RuntimeError);
+  inputError.doc() =
+      "Bad input (a ValueError): a file, a dataset or a keyword's value that cannot be used. The "
+      "message names the file or keyword and says what is wrong, as the command line's does.";
+  backendError.doc() =
+      "A Vulkan device lacks what the backend asked for needs (a RuntimeError); `amrstream "
+      "devices` lists what each device supports.";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -203,38 +203,52 @@ void bindLineArrays(py::class_<TracesOfFiles>& traces) {
             return pointsOf(lines, 0, lines.pointCount(), self);
           },
           "(M, 3) points of all lines: float32, float64 for precise positions");
-  const auto perLine = [&](const char* name, auto member) {
-    traces.def_property_readonly(name, [member](py::object self) {
-      const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
-      const auto& values = lines.*member;
-      return view(values.data(), values.size(), self);
-    });
+  const auto perLine = [&](const char* name, auto member, const char* doc) {
+    traces.def_property_readonly(
+        name,
+        [member](py::object self) {
+          const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+          const auto& values = lines.*member;
+          return view(values.data(), values.size(), self);
+        },
+        doc);
   };
   // int64, as numpy indexes: uint64 offsets[i] + 1 would be a float64 and fail as a slice bound.
   // Offsets count points, far below 2^63, so the bytes read the same.
-  traces.def_property_readonly("offsets", [](py::object self) {
-    const std::vector<std::uint64_t>& offsets = linesOf(self.cast<const TracesOfFiles&>()).offsets;
-    return view(reinterpret_cast<const std::int64_t*>(offsets.data()), offsets.size(), self);
-  });
-  perLine("seed_ids", &flow::TraceSet::seedIds);
-  perLine("directions", &flow::TraceSet::directions);
-  perLine("steps", &flow::TraceSet::steps);
-  perLine("reasons", &flow::TraceSet::reasons);
+  traces.def_property_readonly(
+      "offsets",
+      [](py::object self) {
+        const std::vector<std::uint64_t>& offsets =
+            linesOf(self.cast<const TracesOfFiles&>()).offsets;
+        return view(reinterpret_cast<const std::int64_t*>(offsets.data()), offsets.size(), self);
+      },
+      "(L + 1,) int64: line i is points[offsets[i]:offsets[i + 1]]");
+  perLine("seed_ids", &flow::TraceSet::seedIds, "(L,) uint32: the seed each line starts at");
+  perLine("directions", &flow::TraceSet::directions,
+          "(L,) float32: +1 for a forward line, -1 for a backward one");
+  perLine("steps", &flow::TraceSet::steps, "(L,) uint32: the integration steps each line took");
+  perLine("reasons", &flow::TraceSet::reasons,
+          "(L,) int32: why each line ended, a ReasonForTermination code (reason_name names it)");
   traces
-      .def_property_readonly("integration_time",
-                             [](py::object self) {
-                               const flow::TraceSet& lines =
-                                   linesOf(self.cast<const TracesOfFiles&>());
-                               return view(lines.times.data(), lines.pointCount(), self);
-                             })
-      .def_property_readonly("vectors",
-                             [](py::object self) {
-                               const flow::TraceSet& lines =
-                                   linesOf(self.cast<const TracesOfFiles&>());
-                               return view3(lines.vectors.data(), lines.pointCount(), self);
-                             })
-      .def_property_readonly("vector_name",
-                             [](const TracesOfFiles& t) { return linesOf(t).vectorName; })
+      .def_property_readonly(
+          "integration_time",
+          [](py::object self) {
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+            return view(lines.times.data(), lines.pointCount(), self);
+          },
+          "(M,) float32 IntegrationTime at every point: negative along "
+          "backward lines; for pathlines physical time, for streaklines "
+          "each particle's age")
+      .def_property_readonly(
+          "vectors",
+          [](py::object self) {
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+            return view3(lines.vectors.data(), lines.pointCount(), self);
+          },
+          "(M, 3) float32: the traced vector at every point")
+      .def_property_readonly(
+          "vector_name", [](const TracesOfFiles& t) { return linesOf(t).vectorName; },
+          "the traced vector's name, e.g. 'vel' or '-grad(temp)'")
       .def_property_readonly(
           "point_data",
           [](py::object self) {
@@ -247,21 +261,32 @@ void bindLineArrays(py::class_<TracesOfFiles>& traces) {
             return arrays;
           },
           "{name: (M,) float32} sampled at every point")
-      .def_property_readonly("vorticity", [](py::object self) -> py::object {
-        const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
-        if (!lines.withVorticity) return py::none();
-        return view3(lines.vorticity.data(), lines.pointCount(), self);
-      });
+      .def_property_readonly(
+          "vorticity",
+          [](py::object self) -> py::object {
+            const flow::TraceSet& lines = linesOf(self.cast<const TracesOfFiles&>());
+            if (!lines.withVorticity) return py::none();
+            return view3(lines.vorticity.data(), lines.pointCount(), self);
+          },
+          "(M, 3) float32 curl of the vector at every point (traced with vorticity=True), else "
+          "None");
 }
 
 // What ran them, and writing them.
 void bindReportAndOutput(py::class_<TracesOfFiles>& traces) {
-  traces.def_property_readonly("backend", [](const TracesOfFiles& t) { return t.report().backend; })
-      .def_property_readonly("device", [](const TracesOfFiles& t) { return t.report().device; })
-      .def_property_readonly("trace_seconds",
-                             [](const TracesOfFiles& t) { return t.report().traceSeconds; })
-      .def_property_readonly("setup_seconds",
-                             [](const TracesOfFiles& t) { return t.report().setupSeconds; })
+  traces
+      .def_property_readonly(
+          "backend", [](const TracesOfFiles& t) { return t.report().backend; },
+          "the backend that traced them: 'cpu', 'rayquery', 'pipeline' or 'compute'")
+      .def_property_readonly(
+          "device", [](const TracesOfFiles& t) { return t.report().device; },
+          "the Vulkan device's name, or the CPU's threads")
+      .def_property_readonly(
+          "trace_seconds", [](const TracesOfFiles& t) { return t.report().traceSeconds; },
+          "seconds spent tracing")
+      .def_property_readonly(
+          "setup_seconds", [](const TracesOfFiles& t) { return t.report().setupSeconds; },
+          "seconds spent before tracing: the device, its structures and uploads")
       .def(
           "to_vtp",
           [](const TracesOfFiles& t, Given<std::string> path, const std::string& compression,
