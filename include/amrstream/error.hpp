@@ -64,6 +64,14 @@ class InputError : public std::runtime_error {
     return error;
   }
 
+  // The input file `path` cannot be opened: the system's error `code` (errno), which Python
+  // raises as its OSError subclass (ENOENT: FileNotFoundError, EACCES: PermissionError).
+  static InputError fileError(const std::string& path, int code, const std::string& problem) {
+    InputError error(path, problem);
+    error.systemError_ = code;
+    return error;
+  }
+
   // The message with settings spelled by `spell`: a setting's name before the problem, and the
   // names the source and the problem mention as {name}.
   std::string spelled(const SettingSpelling& spell) const {
@@ -74,10 +82,12 @@ class InputError : public std::runtime_error {
   const std::string& source() const { return source_; }  // the setting's name for a setting
   const std::string& problem() const { return problem_; }
   bool isAboutSetting() const { return setting_; }
+  int systemError() const { return systemError_; }  // 0: not a system error
 
  private:
   std::string source_, problem_;
   bool setting_ = false;
+  int systemError_ = 0;
 };
 
 // The error for a setting, as InputError::aboutSetting makes it.

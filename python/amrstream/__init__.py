@@ -15,6 +15,7 @@ import difflib
 import functools
 import os
 import re
+import sys
 from collections.abc import Sequence as _Sequence
 from typing import Any, Callable, List, Optional, Tuple, TypeVar, Union
 
@@ -97,6 +98,43 @@ _VectorRequest = Union[None, str, _Sequence[Union[str, Tuple[str, str]]]]
 _PointDataRequest = Union[None, str, _Sequence[str]]
 
 
+def _interactive() -> bool:
+    """Whether a person is watching: a terminal on stderr, or a Jupyter kernel."""
+    if "ipykernel" in sys.modules:
+        return True
+    return sys.stderr is not None and hasattr(sys.stderr, "isatty") and sys.stderr.isatty()
+
+
+def _progress_bar(what: str, unit: str) -> Optional[Callable[[int, int], None]]:
+    """A progress(done, total) that draws a tqdm bar where someone watches and tqdm is
+    installed; None (quiet) otherwise."""
+    if not _interactive():
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        return None
+    bar = None
+
+    def progress(done: int, total: int) -> None:
+        nonlocal bar
+        if bar is None:
+            bar = tqdm(total=total, desc=what, unit=unit, leave=False)
+        bar.total = total
+        bar.update(done - bar.n)
+        if done >= total:
+            bar.close()
+
+    return progress
+
+
+def _with_default_progress(settings: dict, what: str, unit: str) -> dict:
+    """`settings` with progress set to a bar (see _progress_bar) unless the caller chose."""
+    if "progress" not in settings:
+        settings["progress"] = _progress_bar(what, unit)
+    return settings
+
+
 def _point_data_text(point_data: _PointDataRequest) -> Optional[str]:
     """None, 'all', 'none', 'a,b' or names -> None or the text the module takes."""
     if point_data is None or isinstance(point_data, str):
@@ -135,8 +173,9 @@ def trace(target: Union[Dataset, Field], seeds: Any, *, vector: _VectorRequest =
     amrstream._amrstream.trace (below).
     """
     return _compiled_trace(target, seeds, vector=_vector_text(vector),
-                           point_data=_point_data_text(point_data),
-                           periodic=periodic, interpolant=interpolant, **settings)
+                           point_data=_point_data_text(point_data), periodic=periodic,
+                           interpolant=interpolant,
+                           **_with_default_progress(settings, "tracing", "seed"))
 
 
 _SnapshotRequest = Union[str, "os.PathLike[str]", _Sequence[Union[str, "os.PathLike[str]"]]]
@@ -153,7 +192,8 @@ def pathlines(snapshots: _SnapshotRequest, seeds: Any, *, vector: _VectorRequest
     amrstream._amrstream.pathlines (below).
     """
     return _compiled_pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
-                               point_data=_point_data_text(point_data), **settings)
+                               point_data=_point_data_text(point_data),
+                               **_with_default_progress(settings, "pathlines", "interval"))
 
 
 def _snapshot_paths(snapshots: Any) -> List[str]:
@@ -176,7 +216,15 @@ def render(traces: Traces, **look: Any) -> Any:
     Traces.render (below)."""
     if not isinstance(traces, Traces):
         raise TypeError(f"traces must be amrstream.Traces, not {type(traces).__name__}")
-    return _compiled_render(traces, **look)
+    return _compiled_render(traces, **_with_default_progress(look, "rendering", "frame"))
+
+
+def _render_method(self: Traces, **look: Any) -> Any:
+    return render(self, **look)
+
+
+_render_method.__doc__ = Traces.render.__doc__
+Traces.render = _render_method  # type: ignore  # the method, with the default progress bar
 
 
 # The compiled functions' signatures and settings (defaults and meanings, from the library's one

@@ -24,7 +24,16 @@ PYBIND11_MODULE(_amrstream, m) {
       if (p) std::rethrow_exception(p);
     } catch (const amrstream::InputError& e) {
       // Settings by their keywords, which are their neutral names.
-      PyErr_SetString(inputError.ptr(), e.spelled(amrstream::plainName).c_str());
+      const std::string message = e.spelled(amrstream::plainName);
+      if (e.systemError() != 0) {
+        // OSError(errno, message) is the subclass for errno (FileNotFoundError, ...), shown as
+        // "[Errno 2] " and the command line's message.
+        py::object error = py::reinterpret_steal<py::object>(
+            PyObject_CallFunction(PyExc_OSError, "is", e.systemError(), message.c_str()));
+        PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+        return;
+      }
+      PyErr_SetString(inputError.ptr(), message.c_str());
     } catch (const amrstream::vk::ContextError& e) {
       PyErr_SetString(backendError.ptr(), e.what());
     }

@@ -23,9 +23,10 @@ inline std::uint64_t regularFileSize(const std::filesystem::path& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) {
     const int error = errno;
-    throw InputError(path.string(), error == ENOENT
-                                        ? std::string("no such file")
-                                        : std::string("cannot be read: ") + std::strerror(error));
+    throw InputError::fileError(path.string(), error,
+                                error == ENOENT
+                                    ? std::string("no such file")
+                                    : std::string("cannot be read: ") + std::strerror(error));
   }
   if (S_ISDIR(status.st_mode)) throw InputError(path.string(), "is a directory, not a file");
   if (!S_ISREG(status.st_mode))

@@ -5,6 +5,7 @@ executable from $AMRSTREAM_CLI and the real data sets from $AMRSTREAM_SHARED_DAT
 need either skip, saying so, when it is absent. CTest sets all three.
 """
 
+import errno
 import gc
 import os
 import subprocess
@@ -17,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import amrstream  # noqa: E402  (CTest puts build/python on PYTHONPATH)
+import amrstream  # noqa: E402  (the package CTest names: tests/python/run_pytest.sh)
 import vtk  # noqa: E402  (Debian's python3-vtk9 reads the .vtp files)
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
@@ -803,7 +804,11 @@ def test_from_arrays_refuses_non_integer_corners():
 
 def test_load_missing_file_names_it(tmp_path):
     path = tmp_path / "missing.exa"
-    _raises(amrstream.InputError, lambda: amrstream.load(str(path)), str(path), "no such file")
+    # The standard type for it, with the command line's message.
+    error = _raises(FileNotFoundError, lambda: amrstream.load(str(path)), str(path),
+                    "no such file")
+    assert error.errno == errno.ENOENT
+    assert str(error) == f"[Errno 2] {path}: no such file"
     _raises(amrstream.InputError, lambda: amrstream.load("builtin:nope"), "'nope'",
             "rotation, abc, cloud")
 
@@ -926,3 +931,18 @@ def test_cpu_tail_finishes_the_lines_as_the_cpu_traces_them(backend, capfd):
     # The GPU's tolerance (1e-5 finest cells and 2e-6 a step) at 3000 steps, in physical units.
     finest = 1.0 / 64
     assert np.abs(t.points - cpu.points).max() <= (1e-5 + 2e-6 * 3000) * finest
+
+
+def test_a_progress_bar_where_someone_watches(monkeypatch, capsys):
+    """By default trace() draws a tqdm bar on a terminal (or in Jupyter) and is quiet
+    elsewhere; progress=None is quiet everywhere."""
+    ds = amrstream.load("builtin:rotation", levels=2, root_blocks=1)
+    seeds = amrstream.seeds_random(ds, 64)
+    amrstream.trace(ds, seeds, steps=50, backend="cpu")
+    assert capsys.readouterr().err == ""  # pytest's stderr is no terminal
+    monkeypatch.setattr(amrstream, "_interactive", lambda: True)
+    amrstream.trace(ds, seeds, steps=50, backend="cpu")
+    bar = capsys.readouterr().err
+    assert "tracing" in bar and "/64 " in bar and "seed" in bar, bar  # of 64 seeds
+    amrstream.trace(ds, seeds, steps=50, backend="cpu", progress=None)
+    assert capsys.readouterr().err == ""

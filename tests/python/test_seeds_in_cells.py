@@ -6,7 +6,7 @@ Needs the module on PYTHONPATH (build/python); CTest sets it.
 import numpy as np
 import pytest
 
-import amrstream  # noqa: E402  (CTest puts build/python on PYTHONPATH)
+import amrstream  # noqa: E402  (the package CTest names: tests/python/run_pytest.sh)
 
 ORIGIN = np.array([1.0, 2.0, 3.0])
 FINEST_WIDTH = np.array([0.5, 0.25, 0.5])
