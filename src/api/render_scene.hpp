@@ -75,6 +75,14 @@ std::string shortLengthUnit(const DatasetInfo& info);
 // are (the domain when there are none) at this aspect: the viewer's "frame all".
 void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspect);
 
+// The colour bar's label and unit for options.colourBy: "|vector|" for speed, "age" for the
+// times of streaklines, else the name; the unit where known.
+void titleColourBar(RenderScene& scene, const RenderOptions& o, const flow::TraceSet& traces,
+                    const DatasetInfo& info);
+
+// The scene's colour range (the tubes' scale coordinates) over its whole colour scale.
+void setColourRange(RenderScene& scene);
+
 // The tube segments and colour range for traces (also used as traces grow in the viewer).
 void updateTubes(RenderScene& scene, const RenderOptions& o, const bricks::AmrField& cells,
                  const flow::VectorVolume& volume, const flow::TraceSet& traces);

@@ -163,12 +163,6 @@ void widenTracesBox(RenderScene& scene, std::span<const shared::TubeSegment> seg
   }
 }
 
-void setColourRange(RenderScene& scene) {
-  const render::ColourScale& scale = scene.colourScale;
-  scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
-                                static_cast<float>(scale.coordinate(scale.max))};
-}
-
 std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
                                            const flow::VectorVolume& volume) {
   // auto: the axes' box, where it is not the domain, takes the domain outline's place.
@@ -196,6 +190,22 @@ std::vector<shared::TubeSegment> outlineOf(const RenderOptions& o,
 }
 
 }  // namespace
+
+void titleColourBar(RenderScene& scene, const RenderOptions& o, const flow::TraceSet& traces,
+                    const DatasetInfo& info) {
+  scene.colourLabel = o.colourBy == "speed"                         ? "|" + traces.vectorName + "|"
+                      : o.colourBy == "time" && traces.timesAreAges ? "age"
+                                                                    : o.colourBy;
+  scene.colourUnit = o.colourBy == "time"    ? o.timeUnit
+                     : o.colourBy == "speed" ? unitOf(info, traces.vectorName)
+                                             : unitOf(info, o.colourBy);
+}
+
+void setColourRange(RenderScene& scene) {
+  const render::ColourScale& scale = scene.colourScale;
+  scene.settings.colourRange = {static_cast<float>(scale.coordinate(scale.min)),
+                                static_cast<float>(scale.coordinate(scale.max))};
+}
 
 std::string integrationTimeUnit(flow::StepMode mode, const DatasetInfo& info) {
   return mode == flow::StepMode::Arc ? shortLengthUnit(info) : info.timeUnit;
@@ -255,12 +265,7 @@ RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
     throw settingError("colour_map", fmt::format("no colour map '{}'; choose one of: {}",
                                                  o.colourMap, render::colourMapNames()));
   scene.colourMap = *map;
-  scene.colourLabel = o.colourBy == "speed"                         ? "|" + traces.vectorName + "|"
-                      : o.colourBy == "time" && traces.timesAreAges ? "age"
-                                                                    : o.colourBy;
-  scene.colourUnit = o.colourBy == "time"    ? o.timeUnit
-                     : o.colourBy == "speed" ? unitOf(info, traces.vectorName)
-                                             : unitOf(info, o.colourBy);
+  titleColourBar(scene, o, traces, info);
 
   render::RenderSettings& s = scene.settings;
   if (o.background == "transparent") {

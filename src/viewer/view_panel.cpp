@@ -115,12 +115,7 @@ void drawColours(ViewSession& session) {
       if (ImGui::Selectable(f.c_str(), f == o.look.colourBy)) {
         o.look.colourBy = f;
         o.look.range.clear();
-        const DatasetInfo& info = session.input().field.info();
-        const std::string& vector = session.traces().traces().vectorName;
-        scene.colourLabel = f == "speed" ? "|" + vector + "|" : f;
-        scene.colourUnit = f == "time"    ? o.look.timeUnit
-                           : f == "speed" ? unitOf(info, vector)
-                                          : unitOf(info, f);
+        titleColourBar(scene, o.look, session.traces().traces(), session.input().field.info());
         session.rebuildTubes();
       }
     ImGui::EndCombo();

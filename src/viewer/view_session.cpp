@@ -43,6 +43,7 @@ void ViewSession::startTraces() {
 
 void ViewSession::fitColourRange() {
   middleValues_.reset();
+  setColourRange(scene_);  // the whole range, which the middle one narrows
   if (!middleColours || !options_.look.range.empty()) return;
   const double tail = 0.5 * (1.0 - kMiddleShare);
   const std::optional<render::ValueRange> middle =
