@@ -88,6 +88,7 @@ struct CellArrays {
   std::string format = "arrays";
   std::optional<double> time;
   std::string timeUnit, lengthUnit;
+  std::optional<double> lengthUnitCentimetres;            // where the length unit is known
   std::map<std::string, std::string, std::less<>> units;  // a channel's unit, by its name
   std::optional<std::array<bool, 3>> periodic;            // unset: the source says nothing
 };

@@ -13,6 +13,7 @@ docs/python.md in the amrstream sources is the reference.
 
 import difflib
 import functools
+import glob
 import os
 import re
 import sys
@@ -30,11 +31,9 @@ from ._amrstream import (
     load,
     reason_name,
     seeds_densest,
-    seeds_grid,
-    seeds_line,
-    seeds_random,
 )
 from . import _amrstream
+from .lengths import first_unit, has_units, in_coordinates, in_unit, with_unit
 
 __all__ = [
     "BackendError", "Dataset", "Field", "InputError", "Traces", "__version__", "from_arrays",
@@ -85,9 +84,10 @@ def _with_keyword_hints(compiled: _Function) -> _Function:
 from_arrays = _with_keyword_hints(from_arrays)
 load = _with_keyword_hints(load)
 seeds_densest = _with_keyword_hints(seeds_densest)
-seeds_grid = _with_keyword_hints(seeds_grid)
-seeds_line = _with_keyword_hints(seeds_line)
-seeds_random = _with_keyword_hints(seeds_random)
+_compiled_seeds_grid = _with_keyword_hints(_amrstream.seeds_grid)
+_compiled_seeds_line = _with_keyword_hints(_amrstream.seeds_line)
+_compiled_seeds_random = _with_keyword_hints(_amrstream.seeds_random)
+_compiled_resample = _with_keyword_hints(Field.resample)
 _compiled_prepare = _with_keyword_hints(_amrstream.prepare)
 _compiled_trace = _with_keyword_hints(_amrstream.trace)
 _compiled_pathlines = _with_keyword_hints(_amrstream.pathlines)
@@ -164,6 +164,53 @@ def prepare(dataset: Dataset, vector: _VectorRequest = None, point_data: _PointD
     return _compiled_prepare(dataset, vector=_vector_text(vector), **settings)
 
 
+def seeds_random(target: Union[Dataset, Field], count: int = 256, **settings: Any) -> Any:
+    return _compiled_seeds_random(target, count, **_box_in_coordinates(settings, target))
+
+
+def seeds_grid(target: Union[Dataset, Field], counts: _Sequence[int], **settings: Any) -> Any:
+    return _compiled_seeds_grid(target, counts, **_box_in_coordinates(settings, target))
+
+
+def _box_in_coordinates(settings: dict, target: Any) -> dict:
+    """`settings` with a box of quantities in the coordinates of `target`."""
+    if "box" in settings:
+        settings["box"] = in_coordinates(settings["box"], target, "box")
+    return settings
+
+
+def seeds_line(start: Any, end: Any, count: int = 256) -> Any:
+    if not has_units((start, end)):
+        return _compiled_seeds_line(start, end, count)
+    unit = first_unit((start, end))
+    return with_unit(_compiled_seeds_line(in_unit(start, unit, "start"), in_unit(end, unit, "end"),
+                                          count), unit)
+
+
+for _wrapper, _compiled in ((seeds_random, _amrstream.seeds_random),
+                            (seeds_grid, _amrstream.seeds_grid),
+                            (seeds_line, _amrstream.seeds_line)):
+    _wrapper.__doc__ = _compiled.__doc__
+
+
+def _resample_method(self: Field, dims: Any = 128, **settings: Any) -> Any:
+    return _compiled_resample(self, dims, **_box_in_coordinates(settings, self))
+
+
+_resample_method.__doc__ = Field.resample.__doc__
+Field.resample = _resample_method  # type: ignore  # the method, taking quantities for the box
+
+_LENGTH_SETTINGS = ("max_length", "look_at", "view_box", "tube_radius_physical")
+
+
+def _lengths_in_coordinates(settings: dict, target: Any) -> dict:
+    """`settings` with its lengths and positions (quantities) in the dataset's coordinates."""
+    for name in _LENGTH_SETTINGS:
+        if name in settings:
+            settings[name] = in_coordinates(settings[name], target, name)
+    return settings
+
+
 def trace(target: Union[Dataset, Field], seeds: Any, *, vector: _VectorRequest = None,
           point_data: _PointDataRequest = None, periodic: Optional[str] = None,
           interpolant: Optional[str] = None, **settings: Any) -> Traces:
@@ -172,6 +219,8 @@ def trace(target: Union[Dataset, Field], seeds: Any, *, vector: _VectorRequest =
     Traces. The settings, as `amrstream trace` names them, with their defaults, are those of
     amrstream._amrstream.trace (below).
     """
+    seeds = in_coordinates(seeds, target, "seeds")
+    _lengths_in_coordinates(settings, target)
     return _compiled_trace(target, seeds, vector=_vector_text(vector),
                            point_data=_point_data_text(point_data), periodic=periodic,
                            interpolant=interpolant,
@@ -191,7 +240,10 @@ def pathlines(snapshots: _SnapshotRequest, seeds: Any, *, vector: _VectorRequest
     writes. The settings, as `amrstream pathlines` names them, with their defaults, are those of
     amrstream._amrstream.pathlines (below).
     """
-    return _compiled_pathlines(_snapshot_paths(snapshots), seeds, vector=_vector_text(vector),
+    paths = _snapshot_paths(snapshots)
+    if has_units(seeds):
+        seeds = in_coordinates(seeds, _first_snapshot(paths, settings), "seeds")
+    return _compiled_pathlines(paths, seeds, vector=_vector_text(vector),
                                point_data=_point_data_text(point_data),
                                **_with_default_progress(settings, "pathlines", "interval"))
 
@@ -210,12 +262,22 @@ def _snapshot_paths(snapshots: Any) -> List[str]:
     return paths
 
 
+def _first_snapshot(paths: List[str], settings: dict) -> Any:
+    """What states the series' coordinates: its first snapshot, loaded (with the length_unit=
+    given)."""
+    matches = sorted(glob.glob(paths[0])) if paths and glob.has_magic(paths[0]) else paths[:1]
+    if not matches:  # the pathlines call names the pattern that matches nothing
+        return None
+    return load(matches[0], length_unit=settings.get("length_unit"), units=settings.get("units"))
+
+
 def render(traces: Traces, **look: Any) -> Any:
     """Renders Traces as shaded tubes on a Vulkan device; returns a (height, width, 4) uint8
     RGBA image. The options, as `amrstream render` names them, with their defaults, are those of
     Traces.render (below)."""
     if not isinstance(traces, Traces):
         raise TypeError(f"traces must be amrstream.Traces, not {type(traces).__name__}")
+    _lengths_in_coordinates(look, traces)
     return _compiled_render(traces, **_with_default_progress(look, "rendering", "frame"))
 
 

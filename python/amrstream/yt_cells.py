@@ -93,6 +93,7 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
         "time": float(ds.current_time.to_value("code_time")),
         "time_unit": _code_unit_description(ds.time_unit, "s"),
         "length_unit": _code_unit_description(ds.length_unit, "cm"),
+        "length_unit_cm": _centimetres(ds.length_unit),
         "source": _dataset_source(ds),
         "format": "yt:" + type(ds).__name__,
     }
@@ -303,6 +304,15 @@ def _code_unit_description(unit, physical):
         return f"code units (1 = {unit.to_value(physical):.4g} {physical})"  # as load() says
     except UnitConversionError:
         return f"code units (1 = {unit})"
+
+
+def _centimetres(unit):
+    from unyt.exceptions import UnitConversionError
+
+    try:
+        return float(unit.to_value("cm"))
+    except UnitConversionError:
+        return None
 
 
 def _dataset_source(ds):

@@ -92,6 +92,7 @@ Dataset fromCells(CellArrays cells) {
   info.time = cells.time;
   info.timeUnit = cells.timeUnit;
   info.lengthUnit = cells.lengthUnit;
+  info.lengthUnitCentimetres = cells.lengthUnitCentimetres;
   info.units = cells.units;
   info.periodicKnown = cells.periodic.has_value();
   if (cells.periodic) info.periodic = *cells.periodic;

@@ -187,7 +187,8 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
                                     py::handle origin, py::handle finestWidth,
                                     std::optional<std::array<bool, 3>> periodic,
                                     Given<std::optional<double>> time, std::string timeUnit,
-                                    std::string lengthUnit, std::string source, std::string format,
+                                    std::string lengthUnit, std::optional<double> lengthUnitCm,
+                                    std::string source, std::string format,
                                     std::optional<std::map<std::string, std::string>> units) {
   const py::array givenCorners =
       realArray(corners, "corners", "an (N, 3) array of integer cell indices", 2);
@@ -210,6 +211,10 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
   cells.time = settingValue(settings::kTime, time);
   cells.timeUnit = std::move(timeUnit);
   cells.lengthUnit = std::move(lengthUnit);
+  if (lengthUnitCm && !(std::isfinite(*lengthUnitCm) && *lengthUnitCm > 0))
+    throw py::value_error(fmt::format("length_unit_cm must be a positive number of centimetres, "
+                                      "not {}", *lengthUnitCm));
+  cells.lengthUnitCentimetres = lengthUnitCm;
   for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
     if (!unit.empty()) cells.units[name] = unit;
   cells.source = std::move(source);
@@ -279,6 +284,9 @@ void bindDatasetClass(py::module_& m) {
           "length_unit", [](const Dataset& d) { return d.info().lengthUnit; },
           "the unit of the coordinates, e.g. 'cm'; '' where unknown")
       .def_property_readonly(
+          "length_unit_cm", [](const Dataset& d) { return d.info().lengthUnitCentimetres; },
+          "the centimetres in one length_unit, where the file states it; else None")
+      .def_property_readonly(
           "units",
           [](const Dataset& d) {
             return std::map<std::string, std::string>(d.info().units.begin(), d.info().units.end());
@@ -329,6 +337,13 @@ void bindFieldClass(py::module_& m) {
   py::class_<Field, std::shared_ptr<Field>>(
       m, "Field", "A dataset made ready for tracing: vector, point data, bricks and regions.")
       .def_property_readonly("source", &Field::source, "the dataset's source")
+      .def_property_readonly(
+          "length_unit", [](const Field& f) { return f.info().lengthUnit; },
+          "the unit of the coordinates, as the dataset states it (e.g. 'cm'); '' where it is "
+          "unknown")
+      .def_property_readonly(
+          "length_unit_cm", [](const Field& f) { return f.info().lengthUnitCentimetres; },
+          "the centimetres in one length_unit, where the dataset states it; else None")
       .def_property_readonly("vector_name", &Field::vectorName,
                              "the vector's name, e.g. 'vel' or '-grad(temp)'")
       .def_property_readonly("vector", &Field::vectorChannels,
@@ -390,9 +405,10 @@ void bindDataset(py::module_& m) {
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
         py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0), py::arg("periodic") = py::none(),
         py::arg("time") = py::none(), py::arg("time_unit") = "", py::arg("length_unit") = "",
-        py::arg("source") = "arrays", py::arg("format") = "arrays", py::arg("units") = py::none(),
+        py::arg("length_unit_cm") = py::none(), py::arg("source") = "arrays", py::arg("format") = "arrays", py::arg("units") = py::none(),
         "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
-        "with 0 the coarsest, fields {name: (N,) values}, units {name: unit} of the fields.");
+        "with 0 the coarsest, fields {name: (N,) values}, units {name: unit} of the fields; "
+        "length_unit_cm: the centimetres in a unit of length_unit, where it is code units.");
 
   m.def(
       "prepare",

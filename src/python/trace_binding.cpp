@@ -35,6 +35,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The unit of the points' coordinates: the field's, else the one the .vtp states; "" unknown.
+std::string lengthUnitOf(const Traces& t) {
+  if (t.field()) return t.field()->info().lengthUnit;
+  for (const output::FieldDataArray& array : t.impl().provenance) {
+    const auto* text = std::get_if<std::vector<std::string>>(&array.values);
+    if (array.name == "LengthUnit" && text && !text->empty()) return text->front();
+  }
+  return "";
+}
+
 std::size_t lineIndex(const Traces& t, py::handle index) {
   const py::ssize_t n = py::ssize_t(t.lineCount());
   py::ssize_t i =
@@ -275,6 +285,17 @@ void bindLineArrays(py::class_<TracesOfFiles>& traces) {
 // What ran them, and writing them.
 void bindReportAndOutput(py::class_<TracesOfFiles>& traces) {
   traces
+      .def_property_readonly(
+          "length_unit", [](const TracesOfFiles& t) { return lengthUnitOf(t); },
+          "the unit of the points' coordinates, as the dataset states it (e.g. 'cm'); '' where "
+          "it is unknown")
+      .def_property_readonly(
+          "length_unit_cm",
+          [](const TracesOfFiles& t) {
+            return t.field() ? t.field()->info().lengthUnitCentimetres : std::nullopt;
+          },
+          "the centimetres in one length_unit, where the field they were traced in states it; "
+          "else None")
       .def_property_readonly(
           "backend", [](const TracesOfFiles& t) { return t.report().backend; },
           "the backend that traced them: 'cpu', 'rayquery', 'pipeline' or 'compute'")
