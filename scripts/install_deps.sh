@@ -17,6 +17,8 @@ packages=(
   # text in rendered images: FreeType and the DejaVu Sans font
   libfreetype-dev fonts-dejavu-core
   libglfw3-dev libimgui-dev xvfb xauth
+  # the ParaView plugin and its tests (pvpython, pvbatch)
+  paraview python3-paraview
   # MPI: distributed tracing and its tests (mpirun)
   libopenmpi-dev openmpi-bin
   # the sources' format check (scripts/check_format.sh)

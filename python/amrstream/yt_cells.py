@@ -79,7 +79,7 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
               for name, parts in value_parts.items()}
     periodic = tuple(bool(p) for p in ds.periodicity)
     if planar:
-        corners, levels, values = _stacked_into_a_slab(ds, corners, levels, values, max_level)
+        corners, levels, values = stacked_into_a_slab(ds, corners, levels, values, max_level)
         periodic = periodic[:2] + (False,)
 
     return {
@@ -279,7 +279,7 @@ def _check_leaf_volume(ds, levels, max_level, planar):
             "finest cells: part of the domain has no data", stacklevel=3)
 
 
-def _stacked_into_a_slab(ds, corners, levels, values, max_level):
+def stacked_into_a_slab(ds, corners, levels, values, max_level):
     """2D cells repeated along z up to the coarsest leaf's width, as load() makes of 2D FLASH."""
     coarsest = int(levels.min())
     copies = np.left_shift(1, levels - coarsest).astype(np.int64)

@@ -24,3 +24,18 @@ def test_one_version_for_the_package_the_module_and_the_command_line():
     assert amrstream.__version__ in cli
     if os.environ.get("AMRSTREAM_TEST_VENV"):
         assert importlib.metadata.version("amrstream") == amrstream.__version__
+
+
+def test_the_package_ships_the_paraview_plugin_and_names_it():
+    import sys
+
+    plugin = Path(amrstream.__file__).parent / "paraview_plugin" / "amrstream_paraview.xml"
+    assert plugin.is_file()
+    # The plugin's folder holds it alone: ParaView loads every plugin in a PV_PLUGIN_PATH folder.
+    assert [p.name for p in plugin.parent.iterdir()] == [plugin.name]
+    printed = subprocess.run([sys.executable, "-m", "amrstream", "plugin"], check=True,
+                             capture_output=True, text=True).stdout.strip()
+    assert Path(printed) == plugin
+    refused = subprocess.run([sys.executable, "-m", "amrstream", "paraveiw"],
+                             capture_output=True, text=True)
+    assert refused.returncode == 2 and "unknown command 'paraveiw'" in refused.stderr
