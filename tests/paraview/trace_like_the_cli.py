@@ -1,6 +1,6 @@
 """The ParaView plugin's AMR Stream Tracer equals `amrstream trace` bit for bit on the CPU backend:
-on the real Enzo and AMReX samples read by ParaView's own readers, and on the Gerris sample read
-by the plugin's amrstream AMR Reader, from the same seeds (a ParaView Line source's points,
+on the real Enzo and AMReX samples read by ParaView's own readers, and on the FLASH and Gerris
+samples read by the plugin's amrstream AMR Reader, from the same seeds (a ParaView Line source's points,
 written for the CLI's --seeds). Run by pvpython:
 
     pvpython trace_like_the_cli.py CLI DATA OUT
@@ -179,6 +179,15 @@ def main():
     trace_both("amrex", reader, amrex, [0.002, 0.003, 0.004], [0.014, 0.013, 0.012],
                {"Periodic": "none", "IntegratorType": "Runge-Kutta 4-5"},
                ["--periodic", "none", "--point-data", "density,temp", "--integrator", "rk45"])
+
+    # ParaView 5.11's FLASH reader makes no blocks of this 2D file ("Inconsistent types of
+    # vtkUniformGrid"); the plugin's reader reads it as the CLI does (a slab). It holds no vector
+    # field: three of its scalars exercise the path.
+    flash = os.path.join(DATA, "flash-2d-nanowire", "nanowire_arrayhdf5_plt_cnt_0100")
+    reader = plugin_proxy("amrstreamAMRReader")(FileName=flash)
+    trace_both("flash", reader, flash, [-5e-5, 5e-4, 3.9e-7], [5e-5, 1.5e-3, 3.9e-7],
+               {"Vectors": "tele,tion,depo", "MaximumSteps": 300},
+               ["--vector", "tele,tion,depo", "--steps", "300"])
 
     gerris = os.path.join(DATA, "gerris-ring", "ring-end.txt")
     reader = plugin_proxy("amrstreamAMRReader")(FileName=gerris)
