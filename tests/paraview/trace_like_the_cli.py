@@ -156,12 +156,40 @@ def check_leaf_cells_of_paraviews_enzo_reader(reader, path):
     print(f"ParaView's Enzo reader: {dataset.cell_count} leaf cells, as amrstream.load reads them")
 
 
+def check_leaf_cells_of_a_gaussian_pulse(dimension):
+    """vtk_amr.leaf_cells of VTK's AMR Gaussian pulse (2D and 3D): every leaf cell's corner, level
+    and width put its centre where the source's own Centroid array says; the leaves tile the
+    domain once; 2D data become a slab as thick as the coarsest leaf, finer cells repeated."""
+    source = simple.AMRGaussianPulseSource(Dimension=dimension)
+    source.UpdatePipeline()
+    cells = vtk_amr.leaf_cells(source.GetClientSideObject().GetOutputDataObject(0))
+    finest = max(cells["levels"])
+    widths = numpy.left_shift(1, finest - cells["levels"])[:, None] * numpy.array(
+        cells["finest_width"])
+    centres = numpy.array(cells["origin"]) + (cells["corners"] + 0.5 * numpy.left_shift(
+        1, finest - cells["levels"])[:, None]) * numpy.array(cells["finest_width"])
+    axes = range(dimension)
+    for axis, suffix in zip(axes, "XYZ"):
+        assert numpy.allclose(centres[:, axis], cells["fields"]["Centroid_" + suffix],
+                              rtol=0, atol=1e-12), f"{dimension}D: centres along {suffix}"
+    dataset = amrstream.from_arrays(**cells)
+    extent = numpy.array(dataset.domain_right_edge) - numpy.array(dataset.domain_left_edge)
+    assert numpy.isclose(numpy.prod(widths, axis=1).sum(), numpy.prod(extent)), "the tiling"
+    if dimension == 2:
+        coarsest = widths[:, 0].max()
+        assert numpy.isclose(extent[2], coarsest), "the slab's thickness"
+    print(f"{dimension}D Gaussian pulse: {len(cells['levels'])} leaf cells where its centroids "
+          "say, tiling the domain once")
+
+
 def main():
     if not os.path.isdir(DATA):
         print(f"real data {DATA} is absent: skipped")
         sys.exit(77)
     os.makedirs(OUT, exist_ok=True)
     check_property_defaults()
+    check_leaf_cells_of_a_gaussian_pulse(2)
+    check_leaf_cells_of_a_gaussian_pulse(3)
 
     enzo = os.path.join(DATA, "enzo-moving7", "DD0010", "moving7_0010")
     reader = simple.EnzoReader(FileNames=[enzo + ".hierarchy"])
