@@ -100,6 +100,7 @@ class AMRStreamTracer(VTKPythonAlgorithmBase):
         VTKPythonAlgorithmBase.__init__(self, nInputPorts=2, nOutputPorts=1,
                                         outputType="vtkPolyData")
         self.settings = {keyword: default for keyword, _, default in _PROPERTIES.values()}
+        self._dataset = None  # (the input, its modification time, its amrstream Dataset)
 
     def FillInputPortInformation(self, port, info):
         info.Set(self.INPUT_REQUIRED_DATA_TYPE(),
@@ -110,13 +111,12 @@ class AMRStreamTracer(VTKPythonAlgorithmBase):
         from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkOverlappingAMR, vtkPolyData
 
         amr = vtkOverlappingAMR.GetData(inInfoVec[0], 0)
-        seeds = seed_points(vtkDataObject.GetData(inInfoVec[1], 0))
-        if len(seeds) == 0:
-            _report("the Seed Source has no points", error=True)
-            return 0
         try:
+            seeds = seed_points(vtkDataObject.GetData(inInfoVec[1], 0))
+            if len(seeds) == 0:
+                raise ValueError("the Seed Source has no points")
             traces = amrstream.trace(
-                dataset_of(amr), seeds,
+                self._dataset_of(amr), seeds,
                 progress=lambda done, total: self.UpdateProgress(done / max(total, 1)),
                 **self.settings)
         except (amrstream.InputError, amrstream.BackendError, ValueError) as error:
@@ -124,6 +124,13 @@ class AMRStreamTracer(VTKPythonAlgorithmBase):
             return 0
         _copy_traces(traces, vtkPolyData.GetData(outInfoVec, 0))
         return 1
+
+    def _dataset_of(self, amr):
+        """dataset_of(amr), kept while the input is unchanged (a property changed alone)."""
+        if self._dataset is None or self._dataset[0] is not amr or \
+                self._dataset[1] != amr.GetMTime():
+            self._dataset = (amr, amr.GetMTime(), dataset_of(amr))
+        return self._dataset[2]
 
 
 def _setter(name):
