@@ -8,7 +8,8 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
-  python3 python3-vtk9 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
+  # VTK's Python modules come with python3-paraview (below), which conflicts with python3-vtk9
+  python3 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
   # the Python package: pip into a venv (python3-venv), with scikit-build-core (backports);
   # its stubs' check (mypy's stubtest)
   python3-venv mypy
@@ -17,7 +18,7 @@ packages=(
   # text in rendered images: FreeType and the DejaVu Sans font
   libfreetype-dev fonts-dejavu-core
   libglfw3-dev libimgui-dev xvfb xauth
-  # the ParaView plugin and its tests (pvpython, pvbatch)
+  # the ParaView plugin and its tests (pvpython, pvbatch); VTK's Python modules for the tests
   paraview python3-paraview
   # MPI: distributed tracing and its tests (mpirun)
   libopenmpi-dev openmpi-bin

@@ -212,8 +212,10 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
   cells.timeUnit = std::move(timeUnit);
   cells.lengthUnit = std::move(lengthUnit);
   if (lengthUnitCm && !(std::isfinite(*lengthUnitCm) && *lengthUnitCm > 0))
-    throw py::value_error(fmt::format("length_unit_cm must be a positive number of centimetres, "
-                                      "not {}", *lengthUnitCm));
+    throw py::value_error(
+        fmt::format("length_unit_cm must be a positive number of centimetres, "
+                    "not {}",
+                    *lengthUnitCm));
   cells.lengthUnitCentimetres = lengthUnitCm;
   for (const auto& [name, unit] : units.value_or(std::map<std::string, std::string>{}))
     if (!unit.empty()) cells.units[name] = unit;
@@ -405,7 +407,8 @@ void bindDataset(py::module_& m) {
         py::kw_only(), py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
         py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0), py::arg("periodic") = py::none(),
         py::arg("time") = py::none(), py::arg("time_unit") = "", py::arg("length_unit") = "",
-        py::arg("length_unit_cm") = py::none(), py::arg("source") = "arrays", py::arg("format") = "arrays", py::arg("units") = py::none(),
+        py::arg("length_unit_cm") = py::none(), py::arg("source") = "arrays",
+        py::arg("format") = "arrays", py::arg("units") = py::none(),
         "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
         "with 0 the coarsest, fields {name: (N,) values}, units {name: unit} of the fields; "
         "length_unit_cm: the centimetres in a unit of length_unit, where it is code units.");

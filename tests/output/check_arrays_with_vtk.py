@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks that VTK reads exactly the arrays write_sample_arrays wrote, in every compression.
 
-Run with Debian's /usr/bin/python3 (python3-vtk9 and numpy):
+Run with Debian's /usr/bin/python3 (python3-paraview and numpy):
 
   check_arrays_with_vtk.py DIR
 
@@ -20,7 +20,7 @@ try:
     from vtk.util.numpy_support import vtk_to_numpy
 except ImportError as error:
     sys.exit(f"check_arrays_with_vtk: cannot import vtk and numpy ({error}); "
-             "run scripts/install_deps.sh (python3-vtk9) and use /usr/bin/python3")
+             "run scripts/install_deps.sh (python3-paraview) and use /usr/bin/python3")
 
 from check_vtp_with_vtk import Messages
 

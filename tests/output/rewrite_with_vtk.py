@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Rewrites a .vtp with VTK's own vtkXMLPolyDataWriter in every layout readVtpTraces reads.
 
-Run with Debian's /usr/bin/python3 (python3-vtk9):
+Run with Debian's /usr/bin/python3 (python3-paraview):
 
   rewrite_with_vtk.py IN.vtp OUT_DIR
 
@@ -27,7 +27,7 @@ try:
     import vtk
 except ImportError as error:
     sys.exit(f"rewrite_with_vtk: cannot import vtk ({error}); "
-             "run scripts/install_deps.sh (python3-vtk9) and use /usr/bin/python3")
+             "run scripts/install_deps.sh (python3-paraview) and use /usr/bin/python3")
 
 
 def as_double(array):

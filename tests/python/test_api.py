@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import amrstream  # noqa: E402  (the package CTest names: tests/python/run_pytest.sh)
-import vtk  # noqa: E402  (Debian's python3-vtk9 reads the .vtp files)
+import vtk  # noqa: E402  (Debian's python3-paraview reads the .vtp files)
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 from shared_data import real_data
