@@ -9,7 +9,8 @@ set_target_properties(amrstream_api_mpi PROPERTIES EXPORT_NAME distributed
 # Every static library the two link, which a consumer's link needs too.
 set(amrstream_installed amrstream_api amrstream_api_mpi amrstream_core amrstream_bricks
     amrstream_synth amrstream_formats amrstream_flow amrstream_output amrstream_vk amrstream_gpu
-    amrstream_render amrstream_image amrstream_annotations amrstream_mpi amrstream_bench)
+    amrstream_render amrstream_image amrstream_annotations amrstream_slice amrstream_mpi
+    amrstream_bench)
 install(TARGETS ${amrstream_installed} EXPORT amrstreamTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT library
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

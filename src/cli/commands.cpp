@@ -8,6 +8,7 @@
 #include "pathlines_command.hpp"
 #include "render_command.hpp"
 #include "resample_command.hpp"
+#include "slice_command.hpp"
 #include "trace_command.hpp"
 #ifdef AMRSTREAM_HAVE_VIEWER
 #include "view_command.hpp"
@@ -24,6 +25,7 @@ void addCommands(CLI::App& app, const MpiWorld& world, const std::string& comman
   addConvertCommand(app);
   addResampleCommand(app);
   addRenderCommand(app);
+  addSliceCommand(app);
 #ifdef AMRSTREAM_HAVE_VIEWER
   addViewCommand(app);
 #endif

@@ -55,36 +55,35 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
   return spec;
 }
 
-UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& spec,
-                            const std::function<void(std::size_t)>& progress) {
-  UniformGrid grid;
-  grid.spec = spec;
-  const std::size_t points = spec.pointCount(), channelCount = volume.channelCount();
-  grid.vectors.assign(points, glm::vec3(0.0f));
-  grid.channels.assign(points * channelCount, 0.0f);
-  grid.valid.assign(points, 0);
-  const glm::dvec3 origin = spec.origin(), spacing = spec.spacing();
-  const std::size_t nx = spec.dims[0], ny = spec.dims[1], nz = spec.dims[2];
+GridSamples sampleGrid(const VectorVolume& volume, const AffineGrid& grid,
+                       const std::function<void(std::size_t)>& progress) {
+  GridSamples samples;
+  const std::size_t points = grid.pointCount(), channelCount = volume.channelCount();
+  samples.vectors.assign(points, glm::vec3(0.0f));
+  samples.channels.assign(points * channelCount, 0.0f);
+  samples.valid.assign(points, 0);
+  const std::size_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   std::atomic<std::uint64_t> validCount{0};
   std::size_t rowsDone = 0;
   std::mutex progressMutex;
   tbb::parallel_for(std::size_t(0), nz * ny, [&](std::size_t row) {
     const std::size_t j = row % ny, k = row / ny;
+    const glm::dvec3 rowStart = grid.origin + grid.steps[1] * double(j) + grid.steps[2] * double(k);
     RegionCache cache;
     std::vector<float> values(channelCount);
     std::uint64_t rowValid = 0;
     for (std::size_t i = 0; i < nx; ++i) {
-      const glm::dvec3 physical = origin + spacing * glm::dvec3(double(i), double(j), double(k));
+      const glm::dvec3 physical = rowStart + grid.steps[0] * double(i);
       const CellPoint p = wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(physical)));
       const VectorSample sample = sampleVector(volume, p, &cache);
       if (!sample.valid) continue;
       const std::size_t n = i + nx * row;
-      grid.vectors[n] = sample.value;
-      grid.valid[n] = 1;
+      samples.vectors[n] = sample.value;
+      samples.valid[n] = 1;
       ++rowValid;
       if (channelCount == 0) continue;
       sampleChannels(volume, sample.region, p, values);
-      std::copy(values.begin(), values.end(), grid.channels.begin() + n * channelCount);
+      std::copy(values.begin(), values.end(), samples.channels.begin() + n * channelCount);
     }
     validCount += rowValid;
     if (progress) {
@@ -92,8 +91,22 @@ UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& s
       progress(++rowsDone);
     }
   });
-  grid.validCount = validCount;
-  return grid;
+  samples.validCount = validCount;
+  return samples;
+}
+
+UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& spec,
+                            const std::function<void(std::size_t)>& progress) {
+  const glm::dvec3 spacing = spec.spacing();
+  AffineGrid grid;
+  grid.origin = spec.origin();
+  grid.steps = {glm::dvec3(spacing.x, 0, 0), glm::dvec3(0, spacing.y, 0),
+                glm::dvec3(0, 0, spacing.z)};
+  grid.dims = spec.dims;
+  UniformGrid uniform;
+  static_cast<GridSamples&>(uniform) = sampleGrid(volume, grid, progress);
+  uniform.spec = spec;
+  return uniform;
 }
 
 }  // namespace amrstream::flow

@@ -35,17 +35,34 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
 // The counts' checks alone, before there is a volume.
 void checkGridCounts(std::span<const std::uint64_t> dims);
 
-struct UniformGrid {
-  UniformGridSpec spec;
-  // x fastest: point (i, j, k) is i + NX (j + NY k). Invalid points hold zeros.
+// Points origin + i steps[0] + j steps[1] + k steps[2] (physical), for i, j, k below dims: a
+// uniform grid, or a slice's pixel centres on a plane of any direction.
+struct AffineGrid {
+  glm::dvec3 origin{0.0};
+  std::array<glm::dvec3, 3> steps{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+  std::array<std::uint32_t, 3> dims{1, 1, 1};
+
+  std::uint64_t pointCount() const { return std::uint64_t(dims[0]) * dims[1] * dims[2]; }
+};
+
+struct GridSamples {
+  // Point (i, j, k) is i + NX (j + NY k). Invalid points hold zeros.
   std::vector<glm::vec3> vectors;
   std::vector<float> channels;  // interleaved: channel c of point n at n * channelCount + c
   std::vector<std::uint8_t> valid;
   std::uint64_t validCount = 0;
 };
 
-// Samples `volume` at every point of `spec` on all cores; `progress(done)` is called from one
+struct UniformGrid : GridSamples {
+  UniformGridSpec spec;
+};
+
+// Samples `volume` at every point of `grid` on all cores; `progress(done)` is called from one
 // thread at a time with the number of rows of points done (of dims[1] * dims[2]).
+GridSamples sampleGrid(const VectorVolume& volume, const AffineGrid& grid,
+                       const std::function<void(std::size_t)>& progress = {});
+
+// sampleGrid at the points of `spec`.
 UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& spec,
                             const std::function<void(std::size_t)>& progress = {});
 

@@ -521,6 +521,36 @@ TEST_F(Cli, EnzoIsPeriodicAsItsParameterFileSays) {
 
 }  // namespace
 
+// slice: a figure and the plane's samples; bad planes, channels and colours fail naming the
+// option, before any file is written.
+TEST_F(Cli, SliceWritesTheFigureAndThePlaneAndRefusesBadOptions) {
+  const std::string out = " --out " + path("s.png") + " --vti " + path("s.vti");
+  const struct {
+    std::string options, message;
+  } cases[] = {
+      {"--normal 0,0,0", "--normal: '0,0,0' is neither x, y, z nor a non-zero NX,NY,NZ"},
+      {"--point 2,0.5,0.5", "--point: (2, 0.5, 0.5) is outside the domain"},
+      {"--window 3,3,4,4", "--window: [3, 4] x [3, 4] misses the domain"},
+      {"--background nosuch", "--background: 'nosuch' is not a channel of the point data"},
+      {"--colour-scale cubic", "--colour-scale"},
+      {"--range 2,1", "--range"},
+      {"--normal 1,1,1", "--vti: a slice across a normal"},
+  };
+  for (const auto& c : cases) {
+    const Outcome r = run("slice builtin:cloud" + kSmall + " --width 32 " + c.options + out);
+    EXPECT_NE(r.status, 0) << c.options;
+    EXPECT_THAT(r.output, HasSubstr(c.message)) << c.options;
+    EXPECT_FALSE(fs::exists(path("s.png"))) << c.options;
+  }
+  const Outcome r = run("slice builtin:cloud" + kSmall + " --width 64 --lic --normal y" + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("64 x 64 pixels across y"));
+  EXPECT_THAT(r.output, HasSubstr("background dens"));
+  EXPECT_THAT(r.output, HasSubstr("evenly spaced"));
+  EXPECT_TRUE(fs::exists(path("s.png")));
+  EXPECT_TRUE(fs::exists(path("s.vti")));
+}
+
 // resample: bad grids, boxes and channels fail naming the option, before any file is written.
 TEST_F(Cli, ResampleRefusesBadGridsAndLeavesNoFile) {
   const std::string out = " --out " + path("g.vti");

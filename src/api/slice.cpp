@@ -1,0 +1,243 @@
+#include "amrstream/slice.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include "amrstream/builtin.hpp"
+#include "amrstream/error.hpp"
+#include "api/handles.hpp"
+#include "api/provenance.hpp"
+#include "api/render_scene.hpp"
+#include "flow/uniform_resample.hpp"
+#include "output/vti_writer.hpp"
+#include "render/image/colour_map.hpp"
+#include "render/image/png_io.hpp"
+#include "slice/even_lines.hpp"
+#include "slice/lic.hpp"
+#include "slice/plane_field.hpp"
+#include "slice/slice_figure.hpp"
+#include "slice/slice_plane.hpp"
+#include "util/stopwatch.hpp"
+
+namespace amrstream {
+
+namespace {
+
+constexpr std::string_view kMagnitude = "magnitude";
+
+std::string lowered(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+// The channel the background shows ("magnitude" for the vector's), or empty for none.
+std::string chosenBackground(const SliceJob& job, const flow::VectorVolume& volume) {
+  if (job.background == "none") return {};
+  if (job.background == "auto") {
+    for (const std::string& name : volume.channelNames)
+      if (const std::string l = lowered(name); l == "dens" || l == "density" || l == "rho")
+        return name;
+    return std::string(kMagnitude);
+  }
+  if (job.background == kMagnitude) return job.background;
+  if (std::find(volume.channelNames.begin(), volume.channelNames.end(), job.background) ==
+      volume.channelNames.end())
+    throw settingError("background",
+                       fmt::format("'{}' is not a channel of the point data ({}); "
+                                   "give one, magnitude, auto or none",
+                                   job.background, fmt::join(volume.channelNames, ", ")));
+  return job.background;
+}
+
+std::vector<float> backgroundValues(const std::string& name, const flow::VectorVolume& volume,
+                                    const flow::GridSamples& samples) {
+  const std::size_t points = samples.valid.size(), count = volume.channelCount();
+  std::vector<float> values(points, std::numeric_limits<float>::quiet_NaN());
+  const auto channel = std::find(volume.channelNames.begin(), volume.channelNames.end(), name);
+  for (std::size_t n = 0; n < points; ++n) {
+    if (!samples.valid[n]) continue;
+    values[n] =
+        name == kMagnitude
+            ? glm::length(samples.vectors[n])
+            : samples.channels[n * count + std::size_t(channel - volume.channelNames.begin())];
+  }
+  return values;
+}
+
+render::ColourScale backgroundScale(const SliceJob& job, const std::vector<float>& values) {
+  render::ColourScale scale;
+  scale.kind = *render::parseScaleKind(job.colourScale);
+  if (job.range) {
+    scale.min = (*job.range)[0];
+    scale.max = (*job.range)[1];
+  } else {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const float v : values) {
+      if (!std::isfinite(v) || (scale.kind == render::ScaleKind::Log && v <= 0.0f)) continue;
+      low = std::min(low, double(v));
+      high = std::max(high, double(v));
+    }
+    if (!(low <= high)) low = high = 1.0;
+    if (low == high) high = low == 0.0 ? 1.0 : low + std::abs(low) * 1e-6;
+    scale.min = low;
+    scale.max = high;
+  }
+  if (scale.kind == render::ScaleKind::SymLog)
+    scale.linearWidth = render::defaultLinearWidth(scale.min, scale.max);
+  return scale;
+}
+
+void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePlane& plane,
+                   const flow::GridSamples& samples, const std::vector<float>& lic) {
+  const flow::VectorVolume& volume = volumeOf(field);
+  // ImageData's point (i, j, k) runs along x, y, z; the plane's pixels along its (u, v).
+  const int uAxis = plane.axis == 0 ? 1 : plane.axis == 1 ? 2 : 0;
+  const int vAxis = plane.axis == 0 ? 2 : plane.axis == 1 ? 0 : 1;
+  flow::UniformGrid grid;
+  glm::dvec3 lower = plane.point, upper = plane.point;
+  lower[uAxis] = plane.lower.x;
+  upper[uAxis] = plane.upper.x;
+  lower[vAxis] = plane.lower.y;
+  upper[vAxis] = plane.upper.y;
+  grid.spec.lower = lower;
+  grid.spec.upper = upper;
+  grid.spec.dims = {1, 1, 1};
+  grid.spec.dims[uAxis] = plane.width;
+  grid.spec.dims[vAxis] = plane.height;
+  const std::size_t count = volume.channelCount(), channels = count + (lic.empty() ? 0 : 1);
+  const std::size_t points = samples.valid.size();
+  grid.vectors.resize(points);
+  grid.valid.resize(points);
+  grid.channels.resize(points * channels);
+  for (std::uint32_t j = 0; j < plane.height; ++j) {
+    for (std::uint32_t i = 0; i < plane.width; ++i) {
+      const std::size_t from = i + std::size_t(plane.width) * j;
+      std::array<std::size_t, 3> at{0, 0, 0};
+      at[std::size_t(uAxis)] = i;
+      at[std::size_t(vAxis)] = j;
+      const std::size_t to =
+          at[0] + grid.spec.dims[0] * (at[1] + std::size_t(grid.spec.dims[1]) * at[2]);
+      grid.vectors[to] = samples.vectors[from];
+      grid.valid[to] = samples.valid[from];
+      for (std::size_t c = 0; c < count; ++c)
+        grid.channels[to * channels + c] = samples.channels[from * count + c];
+      if (!lic.empty()) grid.channels[to * channels + count] = lic[from];
+    }
+  }
+  output::VtiWriteOptions options;
+  options.vectorName = volume.vectorName;
+  options.channelNames = volume.channelNames;
+  if (!lic.empty()) options.channelNames.push_back("LIC");
+  options.fieldData = datasetProvenance(field.source(), field.info(), volume);
+  output::writeVti(job.vti, grid, options);
+}
+
+}  // namespace
+
+void checkSliceJob(const SliceJob& job) {
+  if (job.dataset.input.starts_with("builtin:")) checkBuiltinSize(job.dataset.builtin);
+  if (!render::parseColourMap(job.colourMap))
+    throw settingError("colour_map", fmt::format("'{}' is not one of {}", job.colourMap,
+                                                 render::colourMapNames()));
+  if (!render::parseScaleKind(job.colourScale))
+    throw settingError("colour_scale",
+                       fmt::format("'{}' is not linear, log or symlog", job.colourScale));
+  if (job.range) {
+    const auto [low, high] = *job.range;
+    if (!std::isfinite(low) || !std::isfinite(high) || !(low < high))
+      throw settingError("range", "give MIN,MAX, finite, with MIN below MAX");
+    if (job.colourScale == "log" && !(low > 0.0))
+      throw settingError("range", "a log scale needs a positive MIN");
+  }
+  if (!std::isfinite(job.lineSeparation) || job.lineSeparation < 0.0)
+    throw settingError("line_separation", "give a positive length (0: the default)");
+  if (!std::isfinite(job.lineWidth) || !(job.lineWidth > 0.0f) || job.lineWidth > 64.0f)
+    throw settingError("line_width", "give a width in pixels above 0, at most 64");
+  if (!std::isfinite(job.licLength) || job.licLength < 0.0)
+    throw settingError("lic_length", "give a positive length (0: the default)");
+}
+
+void runSliceJob(const SliceJob& job, const Reporter& reporter) {
+  checkSliceJob(job);
+  const Log& log = reporter.log;
+  Stopwatch clock;
+  const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
+  say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
+                       withCommas(cells.cellCount()), clock.seconds()));
+  clock.restart();
+  const Field field = buildField(cells, job.field, KeepDataset::No);
+  const flow::VectorVolume& volume = volumeOf(field);
+  say(log,
+      fmt::format("structure  {} bricks, {} regions, vector {} [{:.2f} s]",
+                  withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
+                  volume.vectorName, clock.seconds()));
+
+  slice::SliceRequest request;
+  request.normal = job.normal;
+  if (job.point) request.point = glm::dvec3((*job.point)[0], (*job.point)[1], (*job.point)[2]);
+  request.window = job.window;
+  request.width = job.width;
+  const slice::SlicePlane plane =
+      slice::slicePlane(request, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
+                        volume.transform.toPhysical(glm::dvec3(volume.domain.upper)));
+  if (plane.axis < 0 && !job.vti.empty())
+    throw settingError("vti",
+                       "a slice across a normal that is not x, y or z has no .vti yet "
+                       "(ImageData without a direction holds axis-aligned planes)");
+  const std::string background = chosenBackground(job, volume);
+  clock.restart();
+  const flow::GridSamples samples = flow::sampleGrid(volume, plane.grid(), [&](std::size_t done) {
+    reporter.advance("slicing", done, plane.height);
+  });
+  say(log, fmt::format("plane      {} x {} pixels across {}, {} with data, background {} "
+                       "[{:.2f} s]",
+                       plane.width, plane.height, job.normal, withCommas(samples.validCount),
+                       background.empty() ? "none" : background, clock.seconds()));
+
+  slice::SliceLayers layers;
+  layers.lengthUnit = shortLengthUnit(field.info());
+  layers.lineWidthPixels = job.lineWidth;
+  if (!background.empty()) {
+    layers.background = backgroundValues(background, volume, samples);
+    layers.colours.map = *render::parseColourMap(job.colourMap);
+    layers.colours.scale = backgroundScale(job, layers.background);
+    const bool magnitude = background == kMagnitude;
+    layers.colours.label = magnitude ? "|" + volume.vectorName + "|" : background;
+    layers.colours.unit = unitOf(field.info(), magnitude ? volume.vectorName : background);
+  }
+  const double windowWidth = plane.upper.x - plane.lower.x;
+  if (job.lic) {
+    clock.restart();
+    slice::LicOptions options;
+    const double length = job.licLength > 0.0 ? job.licLength : windowWidth / 50.0;
+    options.halfLengthPixels = float(length / plane.pixelSize().x);
+    layers.lic = slice::lineIntegralConvolution(slice::inPlaneImage(plane, samples), options);
+    say(log, fmt::format("lic        kernel {:g} each way ({:.1f} pixels) [{:.2f} s]", length,
+                         options.halfLengthPixels, clock.seconds()));
+  }
+  if (job.lines) {
+    clock.restart();
+    slice::EvenLinesOptions options;
+    options.lower = plane.lower;
+    options.upper = plane.upper;
+    options.separation = job.lineSeparation > 0.0 ? job.lineSeparation : windowWidth / 30.0;
+    layers.lines = slice::evenlySpacedLines(slice::exactInPlane(volume, plane), options);
+    std::size_t points = 0;
+    for (const slice::PlaneLine& line : layers.lines) points += line.points.size();
+    say(log,
+        fmt::format("lines      {} evenly spaced {:g} apart, {} points [{:.2f} s]",
+                    layers.lines.size(), options.separation, withCommas(points), clock.seconds()));
+  }
+  clock.restart();
+  render::writePng(job.out, slice::drawSliceFigure(plane, layers));
+  if (!job.vti.empty()) writeSliceVti(job, field, plane, samples, layers.lic);
+  say(log, fmt::format("output     {}{} [{:.2f} s]", job.out, job.vti.empty() ? "" : ", " + job.vti,
+                       clock.seconds()));
+}
+
+}  // namespace amrstream
