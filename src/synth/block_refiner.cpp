@@ -67,9 +67,8 @@ void validateGeneratorOptions(const BuiltinOptions& options, const std::string& 
                                          "supported",
                                          options.rootBlocks, options.rootBlocks, rootCells));
   if (double(options.targetCells) < rootCells)
-    throw InputError(source, fmt::format("the cell budget (target cells) is {}, but the root "
-                                         "grid of {}^3 blocks alone has {} cells: raise the "
-                                         "budget or lower the root blocks",
+    throw InputError(source, fmt::format("option targetCells is {}; the root grid of {}^3 blocks "
+                                         "alone has {} cells",
                                          options.targetCells, options.rootBlocks, rootCells));
 }
 
