@@ -21,7 +21,7 @@ using render::Rgba8;
 constexpr Rgba8 kPaper{255, 255, 255, 255};
 constexpr Rgba8 kNoData{217, 217, 217, 255};
 constexpr Rgba8 kInk{25, 25, 25, 255};
-constexpr Rgba8 kHalo{255, 255, 255, 110};
+constexpr Rgba8 kHalo{255, 255, 255, 90};
 constexpr int kMostTicks = 6;
 
 std::vector<render::ScaleTick> axisTicks(double lower, double upper) {
@@ -114,9 +114,20 @@ glm::vec2 toPixel(const Layout& layout, const SlicePlane& plane, glm::dvec2 p) {
   return {float(layout.left + t.x * plane.width), float(layout.top + (1.0 - t.y) * plane.height)};
 }
 
+float arrowLength(float width) { return 3.0f * width + 4.0f; }
+
+// Whether an arrow at `tip` stays inside the window's pixels.
+bool insideByAnArrow(const Layout& layout, const SlicePlane& plane, glm::vec2 tip, float width) {
+  const float margin = arrowLength(width) + width;
+  return tip.x >= float(layout.left) + margin &&
+         tip.x <= float(layout.left + int(plane.width)) - margin &&
+         tip.y >= float(layout.top) + margin &&
+         tip.y <= float(layout.top + int(plane.height)) - margin;
+}
+
 // A chevron pointing along `direction` with its tip at `tip`.
 void drawArrow(Image& image, glm::vec2 tip, glm::vec2 direction, float width, Rgba8 colour) {
-  const float length = 3.0f * width + 4.0f;
+  const float length = arrowLength(width);
   const float c = std::cos(0.45f), s = std::sin(0.45f);
   const glm::vec2 back = -direction;
   const glm::vec2 left{back.x * c - back.y * s, back.x * s + back.y * c};
@@ -129,15 +140,19 @@ void drawLinePass(Image& image, const Layout& layout, const SlicePlane& plane,
                   const std::vector<PlaneLine>& lines, float width, Rgba8 colour) {
   const double arrowEvery =
       0.3 * std::min(plane.upper.x - plane.lower.x, plane.upper.y - plane.lower.y);
-  for (const PlaneLine& line : lines) {
-    double arc = 0.0, nextArrow = 0.5 * arrowEvery;
+  for (std::size_t index = 0; index < lines.size(); ++index) {
+    const PlaneLine& line = lines[index];
+    // Each line's arrows start at its own phase, so that lines entering side by side do not
+    // align their arrows in rows.
+    const double phase = std::fmod(0.25 + 0.618034 * double(index), 1.0);
+    double arc = 0.0, nextArrow = phase * arrowEvery;
     for (std::size_t k = 1; k < line.points.size(); ++k) {
       const glm::vec2 from = toPixel(layout, plane, line.points[k - 1]);
       const glm::vec2 to = toPixel(layout, plane, line.points[k]);
       render::drawLine(image, from, to, width, colour, render::LineCap::Round);
       arc += glm::distance(line.points[k - 1], line.points[k]);
       const float pixels = glm::distance(from, to);
-      if (arc >= nextArrow && pixels > 0.0f) {
+      if (arc >= nextArrow && pixels > 0.0f && insideByAnArrow(layout, plane, to, width)) {
         drawArrow(image, to, (to - from) / pixels, width, colour);
         nextArrow += arrowEvery;
       }
@@ -149,7 +164,7 @@ void drawLinePass(Image& image, const Layout& layout, const SlicePlane& plane,
 // colours as on light ones.
 void drawLines(Image& image, const Layout& layout, const SlicePlane& plane,
                const SliceLayers& layers) {
-  drawLinePass(image, layout, plane, layers.lines, layers.lineWidthPixels + 2.0f, kHalo);
+  drawLinePass(image, layout, plane, layers.lines, layers.lineWidthPixels + 1.0f, kHalo);
   drawLinePass(image, layout, plane, layers.lines, layers.lineWidthPixels, layers.lineColour);
 }
 
