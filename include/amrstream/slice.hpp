@@ -7,16 +7,17 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "amrstream/field.hpp"
 #include "amrstream/log.hpp"
+#include "amrstream/rendering.hpp"
 #include "amrstream/trace_job.hpp"
 
 namespace amrstream {
 
-struct SliceJob {
-  DatasetRequest dataset;
-  FieldOptions field;
+// What a slice shows (the command line's options of the same names).
+struct SliceOptions {
   std::string normal = "z";                     // x, y, z, or NX,NY,NZ
   std::optional<std::array<double, 3>> point;   // default: the domain's centre
   std::optional<std::array<double, 4>> window;  // a0,b0,a1,b1 in the plane; default: the domain
@@ -33,9 +34,35 @@ struct SliceJob {
   bool lic = false;
   double licLength = 0.0;  // the LIC kernel's half-length, in the plane's coordinates; 0: 1/50
                            // of the window's width
+};
+
+// A slice as drawn: the figure and what it shows, for callers that want the numbers.
+struct SliceFigure {
+  Image image;                          // the figure, RGBA
+  std::uint32_t width = 0, height = 0;  // the window's pixels (the arrays' shape)
+  std::array<double, 4> window{};       // a0, b0, a1, b1
+  std::array<std::string, 2> axes;      // the plane's axes' names: "x", "y", ... or "a", "b"
+  std::string backgroundName;           // empty: none
+  std::vector<float> background;        // width x height, x fastest, row 0 at b0; NaN: no data
+  std::vector<float> lic;               // the same; empty without LIC
+  std::vector<std::vector<std::array<double, 2>>> lines;  // in the plane's coordinates
+};
+
+struct SliceJob {
+  DatasetRequest dataset;
+  FieldOptions field;
+  SliceOptions slice;
   std::string out = "slice.png";
   std::string vti;  // the plane's samples (vector, channels, LIC) as VTK ImageData; empty: none
 };
+
+// Throws InputError naming the option for a value out of its range.
+void checkSliceOptions(const SliceOptions& options);
+
+// Samples the plane in `field`, traces its lines and convolves its LIC as `options` say, and
+// draws the figure. Says the "plane", "lines" and "lic" lines; progress: stage "slicing", rows.
+SliceFigure makeSlice(const Field& field, const SliceOptions& options,
+                      const Reporter& reporter = {});
 
 // The checks made before any work: the builtin dataset's size and the options' values.
 void checkSliceJob(const SliceJob& job);

@@ -38,7 +38,7 @@ from .lengths import first_unit, has_units, in_coordinates, in_unit, with_unit
 __all__ = [
     "BackendError", "Dataset", "Field", "InputError", "Traces", "__version__", "from_arrays",
     "from_yt", "load", "pathlines", "prepare", "reason_name", "render", "seeds_densest",
-    "seeds_grid", "seeds_line", "seeds_random", "trace",
+    "seeds_grid", "seeds_line", "seeds_random", "slice", "trace",
 ]
 
 DEFAULT_YT_VECTOR = ("velocity_x", "velocity_y", "velocity_z")
@@ -55,7 +55,7 @@ def _keyword_names(text):
     return names
 
 
-def _with_keyword_hints(compiled: _Function) -> _Function:
+def _with_keyword_hints(compiled: _Function, name: Optional[str] = None) -> _Function:
     """`compiled`, whose TypeError for a keyword it does not take names that keyword and the
     closest one it takes, instead of pybind11's list of signatures."""
     @functools.wraps(compiled)
@@ -75,9 +75,9 @@ def _with_keyword_hints(compiled: _Function) -> _Function:
             for keyword in unknown:
                 close = difflib.get_close_matches(keyword, sorted(names), n=1)
                 hints.append(f"'{keyword}'" + (f" (did you mean '{close[0]}'?)" if close else ""))
-            name = compiled.__name__
-            raise TypeError(f"{name}() got an unexpected keyword argument {', '.join(hints)}; "
-                            f"help(amrstream.{name}) lists them") from None
+            called = name or compiled.__name__
+            raise TypeError(f"{called}() got an unexpected keyword argument {', '.join(hints)}; "
+                            f"help(amrstream.{called}) lists them") from None
     return call  # type: ignore[return-value]
 
 
@@ -92,6 +92,7 @@ _compiled_prepare = _with_keyword_hints(_amrstream.prepare)
 _compiled_trace = _with_keyword_hints(_amrstream.trace)
 _compiled_pathlines = _with_keyword_hints(_amrstream.pathlines)
 _compiled_render = _with_keyword_hints(Traces.render)
+_compiled_slice = _with_keyword_hints(_amrstream._slice, "slice")
 
 
 _VectorRequest = Union[None, str, _Sequence[Union[str, Tuple[str, str]]]]
@@ -246,6 +247,56 @@ def pathlines(snapshots: _SnapshotRequest, seeds: Any, *, vector: _VectorRequest
     return _compiled_pathlines(paths, seeds, vector=_vector_text(vector),
                                point_data=_point_data_text(point_data),
                                **_with_default_progress(settings, "pathlines", "interval"))
+
+
+_SLICE_LENGTHS = ("line_separation", "lic_length")
+
+
+def slice(target: Union[Dataset, Field], *, vector: _VectorRequest = None,
+          frame_velocity: Any = None, point_data: _PointDataRequest = None,
+          periodic: Optional[str] = None, interpolant: Optional[str] = None,
+          **settings: Any) -> dict:
+    """A slice figure, as `amrstream slice` draws it: a plane through a Dataset (prepared with
+    vector, frame_velocity, point_data, periodic and interpolant, as prepare() takes them) or a
+    prepared Field, with a channel reconstructed at every pixel's centre, the evenly spaced field
+    lines of the vector's part in the plane and optionally a LIC texture.
+
+    Keywords, with their defaults (the command line's options of the same names; `lines=False`
+    is --no-lines; point, window, line_separation and lic_length also as unyt quantities):
+    normal='z' (x, y, z or 'NX,NY,NZ'), point=None (x, y, z; default the domain's centre),
+    window=None (a0, b0, a1, b1 in the plane; default the domain), width=1024 (pixels across),
+    background='auto' (a channel, 'magnitude', 'none' or 'auto'), colour_map='viridis',
+    colour_scale='linear', range=None (min, max), lines=True, line_separation=0.0 (0: 1/30 of
+    the window's width), line_width=1.5 (pixels), lic=False, lic_length=0.0 (0: 1/50 of the
+    window's width), progress=None (progress(done, total) over the rows; a bar where someone
+    watches), verbose=False.
+
+    Returns a dict: 'image' ((H, W, 4) uint8, the figure), 'window' (a0, b0, a1, b1), 'axes'
+    (the plane's axes' names), 'background_name', 'background' and 'lic' ((height, width)
+    float32 over the window, row 0 at b0, NaN without data; None when not drawn) and 'lines'
+    ((n, 2) arrays in the plane's coordinates).
+    """
+    if isinstance(target, Field):
+        if any(v is not None for v in (vector, frame_velocity, point_data, periodic,
+                                       interpolant)):
+            raise ValueError("vector, frame_velocity, point_data, periodic and interpolant were "
+                             "chosen when the Field was prepared; pass the Dataset to choose "
+                             "them here")
+        field = target
+    elif isinstance(target, Dataset):
+        field_settings = {name: value for name, value in
+                          (("frame_velocity", frame_velocity), ("periodic", periodic),
+                           ("interpolant", interpolant)) if value is not None}
+        field = prepare(target, vector=vector, point_data=point_data, **field_settings)
+    else:
+        raise TypeError(f"slice() needs an amrstream.Dataset or amrstream.Field, not "
+                        f"{type(target).__name__}")
+    if "point" in settings:
+        settings["point"] = in_coordinates(settings["point"], field, "point")
+    for name in ("window",) + _SLICE_LENGTHS:
+        if name in settings:
+            settings[name] = in_coordinates(settings[name], field, name)
+    return _compiled_slice(field, **_with_default_progress(settings, "slicing", "row"))
 
 
 def _snapshot_paths(snapshots: Any) -> List[str]:

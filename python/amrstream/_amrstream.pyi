@@ -161,3 +161,10 @@ def pathlines(snapshots: List[str], seeds: ArrayLike, *, vector: Optional[str] =
               validation: bool = False, progress: _Progress = None,
               verbose: bool = False) -> Traces: ...
 def reason_name(code: int) -> str: ...
+def _slice(field: Field, *, normal: str = "z", point: Optional[Sequence[float]] = None,
+           window: Optional[Sequence[float]] = None, width: int = 1024,
+           background: str = "auto", colour_map: str = "viridis",
+           colour_scale: str = "linear", range: Optional[Sequence[float]] = None,
+           lines: bool = True, line_separation: float = 0.0, line_width: float = 1.5,
+           lic: bool = False, lic_length: float = 0.0, progress: _Progress = None,
+           verbose: bool = False) -> Dict[str, Any]: ...

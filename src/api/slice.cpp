@@ -36,7 +36,7 @@ std::string lowered(std::string text) {
 }
 
 // The channel the background shows ("magnitude" for the vector's), or empty for none.
-std::string chosenBackground(const SliceJob& job, const flow::VectorVolume& volume) {
+std::string chosenBackground(const SliceOptions& job, const flow::VectorVolume& volume) {
   if (job.background == "none") return {};
   if (job.background == "auto") {
     for (const std::string& name : volume.channelNames)
@@ -69,7 +69,7 @@ std::vector<float> backgroundValues(const std::string& name, const flow::VectorV
   return values;
 }
 
-render::ColourScale backgroundScale(const SliceJob& job, const std::vector<float>& values) {
+render::ColourScale backgroundScale(const SliceOptions& job, const std::vector<float>& values) {
   render::ColourScale scale;
   scale.kind = *render::parseScaleKind(job.colourScale);
   if (job.range) {
@@ -137,29 +137,135 @@ void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePl
   output::writeVti(job.vti, grid, options);
 }
 
+// A slice's plane, samples and layers, before they are drawn or written.
+struct Sliced {
+  slice::SlicePlane plane;
+  flow::GridSamples samples;
+  slice::SliceLayers layers;
+  std::string background;
+};
+
+slice::SlicePlane planeOf(const flow::VectorVolume& volume, const SliceOptions& options) {
+  slice::SliceRequest request;
+  request.normal = options.normal;
+  if (options.point)
+    request.point = glm::dvec3((*options.point)[0], (*options.point)[1], (*options.point)[2]);
+  request.window = options.window;
+  request.width = options.width;
+  return slice::slicePlane(request, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
+                           volume.transform.toPhysical(glm::dvec3(volume.domain.upper)));
+}
+
+Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const SliceOptions& options,
+                    const Reporter& reporter) {
+  const Log& log = reporter.log;
+  const flow::VectorVolume& volume = volumeOf(field);
+  Sliced sliced;
+  sliced.plane = plane;
+  sliced.background = chosenBackground(options, volume);
+  Stopwatch clock;
+  sliced.samples = flow::sampleGrid(volume, plane.grid(), [&](std::size_t done) {
+    reporter.advance("slicing", done, plane.height);
+  });
+  say(log,
+      fmt::format("plane      {} x {} pixels across {}, {} with data, background {} "
+                  "[{:.2f} s]",
+                  plane.width, plane.height, options.normal, withCommas(sliced.samples.validCount),
+                  sliced.background.empty() ? "none" : sliced.background, clock.seconds()));
+  slice::SliceLayers& layers = sliced.layers;
+  layers.lengthUnit = shortLengthUnit(field.info());
+  layers.lineWidthPixels = options.lineWidth;
+  if (!sliced.background.empty()) {
+    layers.background = backgroundValues(sliced.background, volume, sliced.samples);
+    layers.colours.map = *render::parseColourMap(options.colourMap);
+    layers.colours.scale = backgroundScale(options, layers.background);
+    const bool magnitude = sliced.background == kMagnitude;
+    layers.colours.label = magnitude ? "|" + volume.vectorName + "|" : sliced.background;
+    layers.colours.unit = unitOf(field.info(), magnitude ? volume.vectorName : sliced.background);
+  }
+  const double windowWidth = plane.upper.x - plane.lower.x;
+  if (options.lic) {
+    clock.restart();
+    slice::LicOptions lic;
+    const double length = options.licLength > 0.0 ? options.licLength : windowWidth / 50.0;
+    lic.halfLengthPixels = float(length / plane.pixelSize().x);
+    layers.lic = slice::lineIntegralConvolution(slice::inPlaneImage(plane, sliced.samples), lic);
+    say(log, fmt::format("lic        kernel {:g} each way ({:.1f} pixels) [{:.2f} s]", length,
+                         lic.halfLengthPixels, clock.seconds()));
+  }
+  if (options.lines) {
+    clock.restart();
+    slice::EvenLinesOptions even;
+    even.lower = plane.lower;
+    even.upper = plane.upper;
+    even.separation = options.lineSeparation > 0.0 ? options.lineSeparation : windowWidth / 30.0;
+    layers.lines = slice::evenlySpacedLines(slice::exactInPlane(volume, plane), even);
+    std::size_t points = 0;
+    for (const slice::PlaneLine& line : layers.lines) points += line.points.size();
+    say(log,
+        fmt::format("lines      {} evenly spaced {:g} apart, {} points [{:.2f} s]",
+                    layers.lines.size(), even.separation, withCommas(points), clock.seconds()));
+  }
+  return sliced;
+}
+
+Image publicImageOf(const render::Image& image) {
+  Image out;
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba = image.rgba;
+  return out;
+}
+
 }  // namespace
+
+void checkSliceOptions(const SliceOptions& options) {
+  if (!render::parseColourMap(options.colourMap))
+    throw settingError("colour_map", fmt::format("'{}' is not one of {}", options.colourMap,
+                                                 render::colourMapNames()));
+  if (!render::parseScaleKind(options.colourScale))
+    throw settingError("colour_scale",
+                       fmt::format("'{}' is not linear, log or symlog", options.colourScale));
+  if (options.range) {
+    const auto [low, high] = *options.range;
+    if (!std::isfinite(low) || !std::isfinite(high) || !(low < high))
+      throw settingError("range", "give MIN,MAX, finite, with MIN below MAX");
+    if (options.colourScale == "log" && !(low > 0.0))
+      throw settingError("range", "a log scale needs a positive MIN");
+  }
+  if (options.width < 1 || options.width > 16384)
+    throw settingError("width", fmt::format("{} is outside 1..16384", options.width));
+  if (!std::isfinite(options.lineSeparation) || options.lineSeparation < 0.0)
+    throw settingError("line_separation", "give a positive length (0: the default)");
+  if (!std::isfinite(options.lineWidth) || !(options.lineWidth > 0.0f) || options.lineWidth > 64.0f)
+    throw settingError("line_width", "give a width in pixels above 0, at most 64");
+  if (!std::isfinite(options.licLength) || options.licLength < 0.0)
+    throw settingError("lic_length", "give a positive length (0: the default)");
+}
 
 void checkSliceJob(const SliceJob& job) {
   if (job.dataset.input.starts_with("builtin:")) checkBuiltinSize(job.dataset.builtin);
-  if (!render::parseColourMap(job.colourMap))
-    throw settingError("colour_map", fmt::format("'{}' is not one of {}", job.colourMap,
-                                                 render::colourMapNames()));
-  if (!render::parseScaleKind(job.colourScale))
-    throw settingError("colour_scale",
-                       fmt::format("'{}' is not linear, log or symlog", job.colourScale));
-  if (job.range) {
-    const auto [low, high] = *job.range;
-    if (!std::isfinite(low) || !std::isfinite(high) || !(low < high))
-      throw settingError("range", "give MIN,MAX, finite, with MIN below MAX");
-    if (job.colourScale == "log" && !(low > 0.0))
-      throw settingError("range", "a log scale needs a positive MIN");
+  checkSliceOptions(job.slice);
+}
+
+SliceFigure makeSlice(const Field& field, const SliceOptions& options, const Reporter& reporter) {
+  checkSliceOptions(options);
+  const Sliced sliced = sliceOnPlane(field, planeOf(volumeOf(field), options), options, reporter);
+  SliceFigure figure;
+  figure.image = publicImageOf(slice::drawSliceFigure(sliced.plane, sliced.layers));
+  figure.width = sliced.plane.width;
+  figure.height = sliced.plane.height;
+  figure.window = {sliced.plane.lower.x, sliced.plane.lower.y, sliced.plane.upper.x,
+                   sliced.plane.upper.y};
+  figure.axes = sliced.plane.axisNames();
+  figure.backgroundName = sliced.background;
+  figure.background = sliced.layers.background;
+  figure.lic = sliced.layers.lic;
+  for (const slice::PlaneLine& line : sliced.layers.lines) {
+    std::vector<std::array<double, 2>>& points = figure.lines.emplace_back();
+    for (const glm::dvec2& p : line.points) points.push_back({p.x, p.y});
   }
-  if (!std::isfinite(job.lineSeparation) || job.lineSeparation < 0.0)
-    throw settingError("line_separation", "give a positive length (0: the default)");
-  if (!std::isfinite(job.lineWidth) || !(job.lineWidth > 0.0f) || job.lineWidth > 64.0f)
-    throw settingError("line_width", "give a width in pixels above 0, at most 64");
-  if (!std::isfinite(job.licLength) || job.licLength < 0.0)
-    throw settingError("lic_length", "give a positive length (0: the default)");
+  return figure;
 }
 
 void runSliceJob(const SliceJob& job, const Reporter& reporter) {
@@ -176,66 +282,15 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
       fmt::format("structure  {} bricks, {} regions, vector {} [{:.2f} s]",
                   withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
                   volume.vectorName, clock.seconds()));
-
-  slice::SliceRequest request;
-  request.normal = job.normal;
-  if (job.point) request.point = glm::dvec3((*job.point)[0], (*job.point)[1], (*job.point)[2]);
-  request.window = job.window;
-  request.width = job.width;
-  const slice::SlicePlane plane =
-      slice::slicePlane(request, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
-                        volume.transform.toPhysical(glm::dvec3(volume.domain.upper)));
+  const slice::SlicePlane plane = planeOf(volume, job.slice);
   if (plane.axis < 0 && !job.vti.empty())
     throw settingError("vti",
                        "a slice across a normal that is not x, y or z has no .vti yet "
                        "(ImageData without a direction holds axis-aligned planes)");
-  const std::string background = chosenBackground(job, volume);
+  const Sliced sliced = sliceOnPlane(field, plane, job.slice, reporter);
   clock.restart();
-  const flow::GridSamples samples = flow::sampleGrid(volume, plane.grid(), [&](std::size_t done) {
-    reporter.advance("slicing", done, plane.height);
-  });
-  say(log, fmt::format("plane      {} x {} pixels across {}, {} with data, background {} "
-                       "[{:.2f} s]",
-                       plane.width, plane.height, job.normal, withCommas(samples.validCount),
-                       background.empty() ? "none" : background, clock.seconds()));
-
-  slice::SliceLayers layers;
-  layers.lengthUnit = shortLengthUnit(field.info());
-  layers.lineWidthPixels = job.lineWidth;
-  if (!background.empty()) {
-    layers.background = backgroundValues(background, volume, samples);
-    layers.colours.map = *render::parseColourMap(job.colourMap);
-    layers.colours.scale = backgroundScale(job, layers.background);
-    const bool magnitude = background == kMagnitude;
-    layers.colours.label = magnitude ? "|" + volume.vectorName + "|" : background;
-    layers.colours.unit = unitOf(field.info(), magnitude ? volume.vectorName : background);
-  }
-  const double windowWidth = plane.upper.x - plane.lower.x;
-  if (job.lic) {
-    clock.restart();
-    slice::LicOptions options;
-    const double length = job.licLength > 0.0 ? job.licLength : windowWidth / 50.0;
-    options.halfLengthPixels = float(length / plane.pixelSize().x);
-    layers.lic = slice::lineIntegralConvolution(slice::inPlaneImage(plane, samples), options);
-    say(log, fmt::format("lic        kernel {:g} each way ({:.1f} pixels) [{:.2f} s]", length,
-                         options.halfLengthPixels, clock.seconds()));
-  }
-  if (job.lines) {
-    clock.restart();
-    slice::EvenLinesOptions options;
-    options.lower = plane.lower;
-    options.upper = plane.upper;
-    options.separation = job.lineSeparation > 0.0 ? job.lineSeparation : windowWidth / 30.0;
-    layers.lines = slice::evenlySpacedLines(slice::exactInPlane(volume, plane), options);
-    std::size_t points = 0;
-    for (const slice::PlaneLine& line : layers.lines) points += line.points.size();
-    say(log,
-        fmt::format("lines      {} evenly spaced {:g} apart, {} points [{:.2f} s]",
-                    layers.lines.size(), options.separation, withCommas(points), clock.seconds()));
-  }
-  clock.restart();
-  render::writePng(job.out, slice::drawSliceFigure(plane, layers));
-  if (!job.vti.empty()) writeSliceVti(job, field, plane, samples, layers.lic);
+  render::writePng(job.out, slice::drawSliceFigure(plane, sliced.layers));
+  if (!job.vti.empty()) writeSliceVti(job, field, plane, sliced.samples, sliced.layers.lic);
   say(log, fmt::format("output     {}{} [{:.2f} s]", job.out, job.vti.empty() ? "" : ", " + job.vti,
                        clock.seconds()));
 }

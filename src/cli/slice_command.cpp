@@ -24,12 +24,13 @@ struct SliceOptions {
 void runSlice(SliceOptions& options) {
   SliceJob& job = options.job;
   if (!options.point.empty())
-    job.point = std::array<double, 3>{options.point[0], options.point[1], options.point[2]};
+    job.slice.point = std::array<double, 3>{options.point[0], options.point[1], options.point[2]};
   if (!options.window.empty())
-    job.window = std::array<double, 4>{options.window[0], options.window[1], options.window[2],
-                                       options.window[3]};
-  if (!options.range.empty()) job.range = std::array<double, 2>{options.range[0], options.range[1]};
-  job.lines = !options.noLines;
+    job.slice.window = std::array<double, 4>{options.window[0], options.window[1],
+                                             options.window[2], options.window[3]};
+  if (!options.range.empty())
+    job.slice.range = std::array<double, 2>{options.range[0], options.range[1]};
+  job.slice.lines = !options.noLines;
   checkSliceJob(job);
   RunFiles files;
   files.addInputs(datasetFiles(job.dataset.input));
@@ -56,7 +57,7 @@ void addSliceCommand(CLI::App& app) {
   addFieldOptions(*command, job.field);
   addFrameVelocityOption(*command, job.field);
   command
-      ->add_option("--normal", job.normal,
+      ->add_option("--normal", job.slice.normal,
                    "the plane's normal: x, y, z (the figure's axes are then (y, z), (z, x), "
                    "(x, y), as yt's), or NX,NY,NZ")
       ->capture_default_str();
@@ -73,16 +74,16 @@ void addSliceCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(4)
       ->check(finiteFloat());
-  command->add_option("--width", job.width, "pixels across the window (up in proportion)")
+  command->add_option("--width", job.slice.width, "pixels across the window (up in proportion)")
       ->check(countIn(1, 16384))
       ->capture_default_str();
   command
-      ->add_option("--background", job.background,
+      ->add_option("--background", job.slice.background,
                    "a channel shown in colours, magnitude (the vector's), none, or auto (a "
                    "density channel where there is one, else the magnitude)")
       ->capture_default_str();
-  command->add_option("--colour-map", job.colourMap, colourMapNames())->capture_default_str();
-  command->add_option("--colour-scale", job.colourScale, "linear, log or symlog")
+  command->add_option("--colour-map", job.slice.colourMap, colourMapNames())->capture_default_str();
+  command->add_option("--colour-scale", job.slice.colourScale, "linear, log or symlog")
       ->check(CLI::IsMember({"linear", "log", "symlog"}))
       ->capture_default_str();
   command
@@ -93,19 +94,19 @@ void addSliceCommand(CLI::App& app) {
       ->check(finiteFloat());
   command->add_flag("--no-lines", options->noLines, "leave out the field lines");
   command
-      ->add_option("--line-separation", job.lineSeparation,
+      ->add_option("--line-separation", job.slice.lineSeparation,
                    "the distance between neighbouring field lines, in the plane's "
                    "coordinates (0: 1/30 of the window's width)")
       ->check(finiteFloat())
       ->capture_default_str();
-  command->add_option("--line-width", job.lineWidth, "the field lines' width in pixels")
+  command->add_option("--line-width", job.slice.lineWidth, "the field lines' width in pixels")
       ->check(finiteFloat())
       ->capture_default_str();
-  command->add_flag("--lic", job.lic,
+  command->add_flag("--lic", job.slice.lic,
                     "shade the figure with a line integral convolution of the in-plane vector "
                     "(grey, with --background none)");
   command
-      ->add_option("--lic-length", job.licLength,
+      ->add_option("--lic-length", job.slice.licLength,
                    "how far the LIC kernel reaches along the field each way, in the plane's "
                    "coordinates (0: 1/50 of the window's width)")
       ->check(finiteFloat())

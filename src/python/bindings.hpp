@@ -13,6 +13,7 @@ namespace amrstream::python {
 void bindDataset(pybind11::module_& m);
 void bindSeeding(pybind11::module_& m);
 void bindTracing(pybind11::module_& m);
+void bindSlicing(pybind11::module_& m);
 
 // Traces as Python holds them (amrstream.Traces): with the files they were traced from, which
 // their writers refuse to replace, as the command line refuses an output that is an input.

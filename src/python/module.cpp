@@ -41,4 +41,5 @@ PYBIND11_MODULE(_amrstream, m) {
   amrstream::python::bindDataset(m);
   amrstream::python::bindSeeding(m);
   amrstream::python::bindTracing(m);
+  amrstream::python::bindSlicing(m);
 }

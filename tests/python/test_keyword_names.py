@@ -68,3 +68,12 @@ def test_seeding_keywords_are_the_seeding_options(function):
     keyword_only = function.__doc__.splitlines()[0].split("*,")[1]
     for name in re.findall(r"(\w+): ", keyword_only):
         assert name in options or "seed_" + name in options, f"{function.__name__}: {name}"
+
+
+def test_slice_keywords_are_the_slice_commands_options():
+    options = cli_options("slice")
+    names = keywords(_amrstream._slice) - {"field"} - PYTHON_ONLY
+    for name in names:
+        assert name in options or "no_" + name in options, name
+    wrapper = {"vector", "frame_velocity", "point_data", "periodic", "interpolant"}
+    assert wrapper <= options

@@ -1,0 +1,68 @@
+"""amrstream.slice against the reconstruction and the command line: the background holds what
+Field.resample samples at the pixel centres, the figure is the one `amrstream slice` writes, the
+lines stay in the window, and quantities convert."""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import amrstream
+
+SMALL = dict(levels=3, root_blocks=2, target_cells=20000)
+
+
+@pytest.fixture(scope="module")
+def cloud():
+    return amrstream.load("builtin:cloud", length_unit="m", **SMALL)
+
+
+def test_the_background_is_the_reconstruction_at_the_pixel_centres(cloud):
+    field = amrstream.prepare(cloud)
+    result = amrstream.slice(field, normal="z", point=(0.5, 0.5, 0.3), width=24, progress=None)
+    assert result["background_name"] == "dens"
+    assert result["axes"] == ("x", "y")
+    grid = field.resample((24, 24, 1), box=(0.0, 0.0, 0.29, 1.0, 1.0, 0.31))
+    # resample's arrays are [i, j, k]; the slice's [row from the lower edge, column].
+    expected = grid["dens"][:, :, 0].T
+    assert np.array_equal(result["background"], expected)
+    assert result["lic"] is None
+    for line in result["lines"]:
+        assert line.shape[1] == 2
+        assert np.all(line >= -1e-12) and np.all(line <= 1.0 + 1e-12)
+
+
+def test_the_figure_is_the_command_lines(cloud, tmp_path):
+    cli = os.environ.get("AMRSTREAM_CLI")
+    if not cli:
+        pytest.skip("AMRSTREAM_CLI is not set: run through ctest")
+    import matplotlib.image
+
+    options = ["--normal", "y", "--width", "48", "--lic", "--colour-scale", "log"]
+    subprocess.run([cli, "slice", "builtin:cloud", "--levels", "3", "--root-blocks", "2",
+                    "--target-cells", "20000", *options, "--out", str(tmp_path / "s.png")],
+                   check=True, capture_output=True)
+    written = np.round(matplotlib.image.imread(tmp_path / "s.png") * 255).astype(np.uint8)
+    ds = amrstream.load("builtin:cloud", **SMALL)
+    image = amrstream.slice(ds, normal="y", width=48, lic=True, colour_scale="log",
+                            progress=None)["image"]
+    assert image.shape == written.shape
+    assert np.array_equal(image, written)
+
+
+def test_quantities_and_bad_keywords(cloud):
+    unyt = pytest.importorskip("unyt")
+    plain = amrstream.slice(cloud, width=16, point=(0.5, 0.5, 0.25), window=(0.2, 0.2, 0.6, 0.6),
+                            line_separation=0.05, progress=None)
+    units = amrstream.slice(cloud, width=16, point=unyt.unyt_array([50, 50, 25], "cm"),
+                            window=unyt.unyt_array([20, 20, 60, 60], "cm"),
+                            line_separation=unyt.unyt_quantity(5, "cm"), progress=None)
+    assert np.array_equal(plain["background"], units["background"])
+    assert len(plain["lines"]) == len(units["lines"])
+    with pytest.raises(TypeError, match=r"slice\(\) got an unexpected keyword argument 'widht' "
+                                        r"\(did you mean 'width'\?\)"):
+        amrstream.slice(cloud, widht=3)
+    with pytest.raises(ValueError, match="normal: 'q' is neither x, y, z"):
+        amrstream.slice(cloud, normal="q", progress=None)
+    with pytest.raises(ValueError, match="were chosen when the Field was prepared"):
+        amrstream.slice(amrstream.prepare(cloud), vector="magx,magy,magz")
