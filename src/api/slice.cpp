@@ -36,22 +36,22 @@ std::string lowered(std::string text) {
 }
 
 // The channel the background shows ("magnitude" for the vector's), or empty for none.
-std::string chosenBackground(const SliceOptions& job, const flow::VectorVolume& volume) {
-  if (job.background == "none") return {};
-  if (job.background == "auto") {
+std::string chosenBackground(const SliceOptions& options, const flow::VectorVolume& volume) {
+  if (options.background == "none") return {};
+  if (options.background == "auto") {
     for (const std::string& name : volume.channelNames)
       if (const std::string l = lowered(name); l == "dens" || l == "density" || l == "rho")
         return name;
     return std::string(kMagnitude);
   }
-  if (job.background == kMagnitude) return job.background;
-  if (std::find(volume.channelNames.begin(), volume.channelNames.end(), job.background) ==
+  if (options.background == kMagnitude) return options.background;
+  if (std::find(volume.channelNames.begin(), volume.channelNames.end(), options.background) ==
       volume.channelNames.end())
     throw settingError("background",
                        fmt::format("'{}' is not a channel of the point data ({}); "
                                    "give one, magnitude, auto or none",
-                                   job.background, fmt::join(volume.channelNames, ", ")));
-  return job.background;
+                                   options.background, fmt::join(volume.channelNames, ", ")));
+  return options.background;
 }
 
 std::vector<float> backgroundValues(const std::string& name, const flow::VectorVolume& volume,
@@ -69,12 +69,12 @@ std::vector<float> backgroundValues(const std::string& name, const flow::VectorV
   return values;
 }
 
-render::ColourScale backgroundScale(const SliceOptions& job, const std::vector<float>& values) {
+render::ColourScale backgroundScale(const SliceOptions& options, const std::vector<float>& values) {
   render::ColourScale scale;
-  scale.kind = *render::parseScaleKind(job.colourScale);
-  if (job.range) {
-    scale.min = (*job.range)[0];
-    scale.max = (*job.range)[1];
+  scale.kind = *render::parseScaleKind(options.colourScale);
+  if (options.range) {
+    scale.min = (*options.range)[0];
+    scale.max = (*options.range)[1];
   } else {
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (const float v : values) {
