@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,22 @@ void frameTubes(RenderScene& scene, const flow::VectorVolume& volume, float aspe
 // times of streaklines, else the name; the unit where known.
 void titleColourBar(RenderScene& scene, const RenderOptions& o, const flow::TraceSet& traces,
                     const DatasetInfo& info);
+
+// The finite values a scale of `kind` can show (positive ones for log) among `values`, added to
+// `seen` (start from nothingSeen()).
+render::ValueRange widenSeen(render::ValueRange seen, render::ScaleKind kind,
+                             std::span<const float> values);
+render::ValueRange nothingSeen();
+
+// A colour scale of `kind` over `range` where given, else over the values seen (a range around
+// a lone value; 0..0 or 1..1 widened when none were seen), with symlog's linear width given or
+// its default. Throws InputError naming range (or colour_scale) for a scale checkScale refuses.
+render::ColourScale colourScaleOver(render::ScaleKind kind,
+                                    const std::optional<render::ValueRange>& range,
+                                    render::ValueRange seen, std::optional<double> symlogWidth);
+
+// The library's Image of a raster.
+Image publicImage(render::Image image);
 
 // The scene's colour range (the tubes' scale coordinates) over its whole colour scale.
 void setColourRange(RenderScene& scene);

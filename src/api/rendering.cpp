@@ -107,7 +107,16 @@ render::ScaleKind scaleKindOf(const RenderOptions& o) {
   return *kind;
 }
 
-// The finite values the scale can show (positive ones for log), grown by `values`.
+// The colour field's scale: the kind asked for, over --range or the values seen (the positive
+// values' for a log scale).
+render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange seen) {
+  const std::optional<render::ValueRange> range =
+      o.range.empty() ? std::nullopt : std::optional(parseRange(o.range, "range"));
+  return colourScaleOver(scaleKindOf(o), range, seen, o.symlogWidth);
+}
+
+}  // namespace
+
 render::ValueRange widenSeen(render::ValueRange seen, render::ScaleKind kind,
                              std::span<const float> values) {
   for (const float v : values)
@@ -118,15 +127,13 @@ render::ValueRange widenSeen(render::ValueRange seen, render::ScaleKind kind,
 
 render::ValueRange nothingSeen() { return {INFINITY, -INFINITY}; }
 
-// The colour field's scale: the kind asked for, over --range or the values seen (the positive
-// values' for a log scale).
-render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange seen) {
-  const render::ScaleKind kind = scaleKindOf(o);
+render::ColourScale colourScaleOver(render::ScaleKind kind,
+                                    const std::optional<render::ValueRange>& range,
+                                    render::ValueRange seen, std::optional<double> symlogWidth) {
   render::ColourScale scale;
   scale.kind = kind;
-  if (!o.range.empty()) {
-    const render::ValueRange range = parseRange(o.range, "range");
-    scale.min = range.min, scale.max = range.max;
+  if (range) {
+    scale.min = range->min, scale.max = range->max;
   } else {
     double lo = seen.min, hi = seen.max;
     if (lo > hi) lo = kind == render::ScaleKind::Log ? 1.0 : 0.0, hi = lo;  // nothing to show
@@ -137,14 +144,16 @@ render::ColourScale colourScaleFor(const RenderOptions& o, render::ValueRange se
     scale.min = lo, scale.max = hi;
   }
   if (kind == render::ScaleKind::SymLog)
-    scale.linearWidth = o.symlogWidth.value_or(render::defaultLinearWidth(scale.min, scale.max));
+    scale.linearWidth = symlogWidth.value_or(render::defaultLinearWidth(scale.min, scale.max));
   try {
     render::checkScale(scale);
   } catch (const std::invalid_argument& e) {
-    throw settingError(o.range.empty() ? "colour_scale" : "range", e.what());
+    throw settingError(range ? "range" : "colour_scale", e.what());
   }
   return scale;
 }
+
+namespace {
 
 // The colour values as the tubes carry them: scale coordinates.
 void toCoordinates(const render::ColourScale& scale, std::vector<float>& values) {
@@ -324,11 +333,11 @@ void requireRenderBackend(const BackendRequest& request) {
         "backend", "rendering needs a Vulkan device: choose auto, rayquery, pipeline or compute");
 }
 
-namespace {
-
 Image publicImage(render::Image image) {
   return {image.width, image.height, std::move(image.rgba)};
 }
+
+namespace {
 
 // Host bytes a tube segment takes while the tubes are built: the scene's segment, its box and
 // the renderer's copy in device order.

@@ -70,26 +70,11 @@ std::vector<float> backgroundValues(const std::string& name, const flow::VectorV
 }
 
 render::ColourScale backgroundScale(const SliceOptions& options, const std::vector<float>& values) {
-  render::ColourScale scale;
-  scale.kind = *render::parseScaleKind(options.colourScale);
-  if (options.range) {
-    scale.min = (*options.range)[0];
-    scale.max = (*options.range)[1];
-  } else {
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (const float v : values) {
-      if (!std::isfinite(v) || (scale.kind == render::ScaleKind::Log && v <= 0.0f)) continue;
-      low = std::min(low, double(v));
-      high = std::max(high, double(v));
-    }
-    if (!(low <= high)) low = high = 1.0;
-    if (low == high) high = low == 0.0 ? 1.0 : low + std::abs(low) * 1e-6;
-    scale.min = low;
-    scale.max = high;
-  }
-  if (scale.kind == render::ScaleKind::SymLog)
-    scale.linearWidth = render::defaultLinearWidth(scale.min, scale.max);
-  return scale;
+  const render::ScaleKind kind = *render::parseScaleKind(options.colourScale);
+  std::optional<render::ValueRange> range;
+  if (options.range)
+    range = render::ValueRange{float((*options.range)[0]), float((*options.range)[1])};
+  return colourScaleOver(kind, range, widenSeen(nothingSeen(), kind, values), std::nullopt);
 }
 
 void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePlane& plane,
@@ -209,14 +194,6 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
   return sliced;
 }
 
-Image publicImageOf(const render::Image& image) {
-  Image out;
-  out.width = image.width;
-  out.height = image.height;
-  out.rgba = image.rgba;
-  return out;
-}
-
 }  // namespace
 
 void checkSliceOptions(const SliceOptions& options) {
@@ -252,7 +229,7 @@ SliceFigure makeSlice(const Field& field, const SliceOptions& options, const Rep
   checkSliceOptions(options);
   const Sliced sliced = sliceOnPlane(field, planeOf(volumeOf(field), options), options, reporter);
   SliceFigure figure;
-  figure.image = publicImageOf(slice::drawSliceFigure(sliced.plane, sliced.layers));
+  figure.image = publicImage(slice::drawSliceFigure(sliced.plane, sliced.layers));
   figure.width = sliced.plane.width;
   figure.height = sliced.plane.height;
   figure.window = {sliced.plane.lower.x, sliced.plane.lower.y, sliced.plane.upper.x,
