@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "amrstream/backend.hpp"
 #include "amrstream/field.hpp"
 #include "amrstream/log.hpp"
 #include "amrstream/rendering.hpp"
@@ -34,6 +35,9 @@ struct SliceOptions {
   bool lic = false;
   double licLength = 0.0;  // the LIC kernel's half-length, in the plane's coordinates; 0: 1/50
                            // of the window's width
+  // Where the LIC runs: a GPU backend samples the plane and convolves on the device; `auto` as
+  // for tracing (the CPU where the only device is a software one).
+  BackendRequest backend;
 };
 
 // A slice as drawn: the figure and what it shows, for callers that want the numbers.
@@ -60,7 +64,8 @@ struct SliceJob {
 void checkSliceOptions(const SliceOptions& options);
 
 // Samples the plane in `field`, traces its lines and convolves its LIC as `options` say, and
-// draws the figure. Says the "plane", "lines" and "lic" lines; progress: stage "slicing", rows.
+// draws the figure. Says the "plane", "lines" and "lic" lines (and "backend" for auto with LIC);
+// progress: stage "slicing", rows. Throws vk::ContextError where the device lacks the backend.
 SliceFigure makeSlice(const Field& field, const SliceOptions& options,
                       const Reporter& reporter = {});
 

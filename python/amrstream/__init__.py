@@ -268,8 +268,10 @@ def slice(target: Union[Dataset, Field], *, vector: _VectorRequest = None,
     background='auto' (a channel, 'magnitude', 'none' or 'auto'), colour_map='viridis',
     colour_scale='linear', range=None (min, max), lines=True, line_separation=0.0 (0: 1/30 of
     the window's width), line_width=1.5 (pixels), lic=False, lic_length=0.0 (0: 1/50 of the
-    window's width), progress=None (progress(done, total) over the rows; a bar where someone
-    watches), verbose=False.
+    window's width), backend='auto' (where the LIC runs: rayquery, pipeline or compute sample
+    the plane and convolve on that Vulkan device; cpu; auto as for tracing), device='' (a
+    substring of the Vulkan device's name), validation=False, progress=None (progress(done,
+    total) over the rows; a bar where someone watches), verbose=False.
 
     Returns a dict: 'image' ((H, W, 4) uint8, the figure), 'window' (a0, b0, a1, b1), 'axes'
     (the plane's axes' names), 'background_name', 'background' and 'lic' ((height, width)

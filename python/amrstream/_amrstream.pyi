@@ -166,5 +166,6 @@ def _slice(field: Field, *, normal: str = "z", point: Optional[Sequence[float]] 
            background: str = "auto", colour_map: str = "viridis",
            colour_scale: str = "linear", range: Optional[Sequence[float]] = None,
            lines: bool = True, line_separation: float = 0.0, line_width: float = 1.5,
-           lic: bool = False, lic_length: float = 0.0, progress: _Progress = None,
+           lic: bool = False, lic_length: float = 0.0, backend: str = "auto",
+           device: str = "", validation: bool = False, progress: _Progress = None,
            verbose: bool = False) -> Dict[str, Any]: ...

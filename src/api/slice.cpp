@@ -9,10 +9,12 @@
 
 #include "amrstream/builtin.hpp"
 #include "amrstream/error.hpp"
+#include "api/device.hpp"
 #include "api/handles.hpp"
 #include "api/provenance.hpp"
 #include "api/render_scene.hpp"
 #include "flow/uniform_resample.hpp"
+#include "gpu/plane_lic.hpp"
 #include "output/vti_writer.hpp"
 #include "render/image/colour_map.hpp"
 #include "render/image/png_io.hpp"
@@ -122,6 +124,34 @@ void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePl
   output::writeVti(job.vti, grid, options);
 }
 
+// The LIC of the plane's in-plane vector on the device of `choice`, sampled there.
+std::vector<float> deviceLic(const flow::VectorVolume& volume, const slice::SlicePlane& plane,
+                             const slice::LicOptions& options, const BackendRequest& request,
+                             const BackendChoice& choice, const Log& log) {
+  Stopwatch clock;
+  const vk::Context ctx = createContext(request, choice);
+  gpu::PlaneLic lic(ctx, choice.backend, volume);
+  const double setup = clock.seconds();
+  shared::LicParams params{};
+  params.axisU = glm::vec3(plane.u);
+  params.axisV = glm::vec3(plane.v);
+  params.width = plane.width;
+  params.height = plane.height;
+  params.stepPixels = options.stepPixels;
+  params.stepsEachWay = slice::licStepsEachWay(options);
+  params.noiseSeed = options.noiseSeed;
+  std::vector<float> intensity = lic.convolve(slice::pixelGrid(volume, plane), params);
+  checkValidation(ctx);
+  const gpu::PlaneLic::Times& t = lic.times();
+  say(log, fmt::format("lic device backend {} on {} [device setup {:.2f} s: upload {:.2f} s, "
+                       "structure {:.2f} s, kernels {:.2f} s; sampling and convolving {:.3f} s, "
+                       "read {:.3f} s]",
+                       gpu::backendName(choice.backend), ctx.deviceName(), setup,
+                       lic.setup().uploadSeconds, lic.setup().structureSeconds,
+                       lic.setup().pipelineSeconds, t.deviceSeconds, t.readSeconds));
+  return intensity;
+}
+
 // A slice's plane, samples and layers, before they are drawn or written.
 struct Sliced {
   slice::SlicePlane plane;
@@ -149,9 +179,9 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
   sliced.plane = plane;
   sliced.background = chosenBackground(options, volume);
   Stopwatch clock;
-  sliced.samples = flow::sampleGrid(volume, plane.grid(), [&](std::size_t done) {
-    reporter.advance("slicing", done, plane.height);
-  });
+  sliced.samples = slice::samplePixels(
+      volume, slice::pixelGrid(volume, plane),
+      [&](std::size_t done) { reporter.advance("slicing", done, plane.height); });
   say(log,
       fmt::format("plane      {} x {} pixels across {}, {} with data, background {} "
                   "[{:.2f} s]",
@@ -174,9 +204,19 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
     slice::LicOptions lic;
     const double length = options.licLength > 0.0 ? options.licLength : windowWidth / 50.0;
     lic.halfLengthPixels = float(length / plane.pixelSize().x);
-    layers.lic = slice::lineIntegralConvolution(slice::inPlaneImage(plane, sliced.samples), lic);
-    say(log, fmt::format("lic        kernel {:g} each way ({:.1f} pixels) [{:.2f} s]", length,
-                         lic.halfLengthPixels, clock.seconds()));
+    if (!(lic.halfLengthPixels / lic.stepPixels <= float(slice::kMaxLicStepsEachWay)))
+      throw settingError(
+          "lic_length",
+          fmt::format("{:g} is {:g} pixels each way, more than the {:g} the LIC "
+                      "reaches",
+                      length, lic.halfLengthPixels, slice::kMaxLicStepsEachWay * lic.stepPixels));
+    const BackendChoice choice = chooseBackend(options.backend, BackendUse::Trace, log);
+    layers.lic =
+        choice.backend == gpu::Backend::Cpu
+            ? slice::lineIntegralConvolution(slice::inPlaneImage(plane, sliced.samples), lic)
+            : deviceLic(volume, plane, lic, options.backend, choice, log);
+    say(log, fmt::format("lic        kernel {:g} each way ({:.1f} pixels), {} [{:.2f} s]", length,
+                         lic.halfLengthPixels, gpu::backendName(choice.backend), clock.seconds()));
   }
   if (options.lines) {
     clock.restart();

@@ -31,6 +31,7 @@ void runSlice(SliceOptions& options) {
   if (!options.range.empty())
     job.slice.range = std::array<double, 2>{options.range[0], options.range[1]};
   job.slice.lines = !options.noLines;
+  job.slice.backend.validation = validationRequested();
   checkSliceJob(job);
   RunFiles files;
   files.addInputs(datasetFiles(job.dataset.input));
@@ -111,6 +112,7 @@ void addSliceCommand(CLI::App& app) {
                    "coordinates (0: 1/50 of the window's width)")
       ->check(finiteFloat())
       ->capture_default_str();
+  addBackendOptions(*command, job.slice.backend);
   command->add_option("--out", job.out, "output PNG figure")->capture_default_str();
   command->add_option("--vti", job.vti,
                       "also write the plane's samples (the vector, the point data and LIC) as "

@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "grid_probe_compute_comp.h"
+#include "grid_probe_pipeline_rgen.h"
+#include "grid_probe_rayquery_comp.h"
 #include "locate_probe_compute_comp.h"
 #include "locate_probe_pipeline_rgen.h"
 #include "locate_probe_rayquery_comp.h"
@@ -95,9 +98,35 @@ std::uint32_t residentThreads(Backend backend) {
   return backend == Backend::Pipeline ? 1u << 16 : 1u << 17;
 }
 
+namespace {
+
+// The entry point of `program` for `backend` (not Backend::Cpu).
+std::span<const std::uint32_t> programCode(const vk::Context& ctx, Backend backend,
+                                           KernelProgram program) {
+  switch (program) {
+    case KernelProgram::LocateProbe:
+      return backend == Backend::Compute    ? spirv(amrstream_spirv_locate_probe_compute_comp)
+             : backend == Backend::RayQuery ? spirv(amrstream_spirv_locate_probe_rayquery_comp)
+                                            : spirv(amrstream_spirv_locate_probe_pipeline_rgen);
+    case KernelProgram::GridProbe:
+      return backend == Backend::Compute    ? spirv(amrstream_spirv_grid_probe_compute_comp)
+             : backend == Backend::RayQuery ? spirv(amrstream_spirv_grid_probe_rayquery_comp)
+                                            : spirv(amrstream_spirv_grid_probe_pipeline_rgen);
+    case KernelProgram::Trace:
+      break;
+  }
+  if (backend == Backend::Compute)
+    return VolumeBuffers::addressesDualValues(ctx)
+               ? spirv(amrstream_spirv_trace_compute_comp)
+               : spirv(amrstream_spirv_trace_compute_compact_comp);
+  return backend == Backend::RayQuery ? spirv(amrstream_spirv_trace_rayquery_comp)
+                                      : spirv(amrstream_spirv_trace_pipeline_rgen);
+}
+
+}  // namespace
+
 TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelProgram program,
                               const KernelSettings& settings) {
-  const bool probe = program == KernelProgram::LocateProbe;
   TraceKernel kernel;
   kernel.backend = backend;
   switch (backend) {
@@ -106,28 +135,14 @@ TraceKernel createTraceKernel(const vk::Context& ctx, Backend backend, KernelPro
       kernel.bindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
       kernel.stages = VK_SHADER_STAGE_COMPUTE_BIT;
       createLayouts(ctx, kernel);
-      if (backend == Backend::Compute)
-        createComputePipeline(ctx, kernel,
-                              probe ? spirv(amrstream_spirv_locate_probe_compute_comp)
-                              : VolumeBuffers::addressesDualValues(ctx)
-                                  ? spirv(amrstream_spirv_trace_compute_comp)
-                                  : spirv(amrstream_spirv_trace_compute_compact_comp),
-                              settings);
-      else
-        createComputePipeline(ctx, kernel,
-                              probe ? spirv(amrstream_spirv_locate_probe_rayquery_comp)
-                                    : spirv(amrstream_spirv_trace_rayquery_comp),
-                              settings);
+      createComputePipeline(ctx, kernel, programCode(ctx, backend, program), settings);
       break;
     case Backend::Pipeline:
       kernel.bindPoint = VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR;
       kernel.stages = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR;
       createLayouts(ctx, kernel);
-      createRayTracingPipeline(ctx, kernel,
-                               probe ? spirv(amrstream_spirv_locate_probe_pipeline_rgen)
-                                     : spirv(amrstream_spirv_trace_pipeline_rgen),
-                               settings);
+      createRayTracingPipeline(ctx, kernel, programCode(ctx, backend, program), settings);
       break;
     case Backend::Cpu:
       throw std::invalid_argument("createTraceKernel: the cpu backend has no kernel");

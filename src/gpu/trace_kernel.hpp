@@ -34,9 +34,10 @@ struct TraceKernel {
   ShaderBindingTable bindingTable;  // pipeline backend only
 };
 
-// Which entry point the kernel runs: the tracer, or the point-location probe that tests use to
-// compare each backend's locateRegion() with brute force (shaders/glsl/include/locate_probe.glsl).
-enum class KernelProgram { Trace, LocateProbe };
+// Which entry point the kernel runs: the tracer, the point-location probe that tests use to
+// compare each backend's locateRegion() with brute force and pathlines sample snapshots with, or
+// the grid probe that samples a slice's pixel centres (shaders/glsl/include/locate_probe.glsl).
+enum class KernelProgram { Trace, LocateProbe, GridProbe };
 
 // Choices baked into the pipeline through specialization constants.
 struct KernelSettings {

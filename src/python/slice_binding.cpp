@@ -67,7 +67,8 @@ void bindSlicing(py::module_& m) {
          std::optional<std::array<double, 4>> window, std::uint32_t width, std::string background,
          std::string colourMap, std::string colourScale, std::optional<std::array<double, 2>> range,
          bool lines, double lineSeparation, float lineWidth, bool lic, double licLength,
-         py::object progress, bool verbose) {
+         std::string backend, std::string device, bool validation, py::object progress,
+         bool verbose) {
         SliceOptions options;
         options.normal = std::move(normal);
         options.point = point;
@@ -82,6 +83,9 @@ void bindSlicing(py::module_& m) {
         options.lineWidth = lineWidth;
         options.lic = lic;
         options.licLength = licLength;
+        options.backend.backend = std::move(backend);
+        options.backend.device = std::move(device);
+        options.backend.validation = validation || validationRequested();
         return sliceOf(field, options, progress, verbose);
       },
       py::arg("field"), py::kw_only(), py::arg("normal") = defaults.normal,
@@ -91,8 +95,9 @@ void bindSlicing(py::module_& m) {
       py::arg("range") = py::none(), py::arg("lines") = defaults.lines,
       py::arg("line_separation") = defaults.lineSeparation,
       py::arg("line_width") = defaults.lineWidth, py::arg("lic") = defaults.lic,
-      py::arg("lic_length") = defaults.licLength, py::arg("progress") = py::none(),
-      py::arg("verbose") = false,
+      py::arg("lic_length") = defaults.licLength, py::arg("backend") = defaults.backend.backend,
+      py::arg("device") = defaults.backend.device, py::arg("validation") = false,
+      py::arg("progress") = py::none(), py::arg("verbose") = false,
       "A prepared Field's slice figure, as `amrstream slice` draws it (amrstream.slice is the "
       "public call).");
 }

@@ -13,8 +13,6 @@
 namespace amrstream::slice {
 namespace {
 
-constexpr double kMaxStepsEachWay = 1 << 20;
-
 // Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT 9(3), 2020: the PCG RXS-M-XS hash.
 std::uint32_t pcgHash(std::uint32_t value) {
   const std::uint32_t state = value * 747796405u + 2891336453u;
@@ -57,10 +55,13 @@ class StreamlineStepper {
   std::optional<glm::vec2> direction(glm::vec2 p) const {
     if (!insideValidPixel(p)) return std::nullopt;
     const glm::vec2 v = vectorAt(p);
-    // In double, so no float vector's squares overflow or vanish.
-    const double length = std::sqrt(double(v.x) * v.x + double(v.y) * v.y);
-    if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
-    return glm::vec2(float(double(v.x) / length), float(double(v.y) / length));
+    if (!std::isfinite(v.x) || !std::isfinite(v.y)) return std::nullopt;
+    // Scaled by the larger component first, so that no square overflows or vanishes.
+    const float largest = std::max(std::abs(v.x), std::abs(v.y));
+    if (!(largest > 0.0f)) return std::nullopt;
+    const glm::vec2 w = v / largest;
+    const float length = std::sqrt(w.x * w.x + w.y * w.y);
+    return w / length;
   }
 
   std::size_t index(std::uint32_t x, std::uint32_t y) const {
@@ -105,40 +106,55 @@ void checkArguments(const VectorImage& field, const LicOptions& options) {
   if (!positiveFinite(options.halfLengthPixels) || !positiveFinite(options.stepPixels))
     throw std::invalid_argument(
         "LIC: the kernel's half length and step must be positive and finite");
-  if (double(options.halfLengthPixels) / double(options.stepPixels) > kMaxStepsEachWay)
-    throw std::invalid_argument("LIC: the kernel's half length is more than 2^20 steps");
+  if (double(options.halfLengthPixels) / double(options.stepPixels) > kMaxLicStepsEachWay)
+    throw std::invalid_argument("LIC: the kernel's half length is more than 2^15 steps");
 }
 
-std::vector<float> noiseImage(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
-  std::vector<float> noise(std::size_t(width) * height);
+std::uint32_t noiseBits(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
+  return pcgHash(x + pcgHash(y + pcgHash(seed))) >> 16u;
+}
+
+std::vector<std::uint16_t> noiseImage(std::uint32_t width, std::uint32_t height,
+                                      std::uint32_t seed) {
+  std::vector<std::uint16_t> noise(std::size_t(width) * height);
   tbb::parallel_for(std::uint32_t(0), height, [&](std::uint32_t y) {
     for (std::uint32_t x = 0; x < width; ++x)
-      noise[x + std::size_t(width) * y] = licNoise(x, y, seed);
+      noise[x + std::size_t(width) * y] = std::uint16_t(noiseBits(x, y, seed));
   });
   return noise;
+}
+
+// The mean of `count` noise values summing to `sum` 2^-16: the whole quotient, exact in float,
+// plus the remainder's fraction, so that float arithmetic alone gives it (as the device does).
+float noiseMean(std::uint32_t sum, std::uint32_t count) {
+  return (float(sum / count) + float(sum % count) / float(count)) * 0x1p-16f;
 }
 
 }  // namespace
 
 float licNoise(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
-  return float(pcgHash(x + pcgHash(y + pcgHash(seed))) >> 8u) * 0x1p-24f;
+  return float(noiseBits(x, y, seed)) * 0x1p-16f;
+}
+
+std::uint32_t licStepsEachWay(const LicOptions& options) {
+  // The whole steps within the half length, forgiving the rounding of a ratio such as 1 / 0.1.
+  return std::uint32_t(
+      std::floor(double(options.halfLengthPixels) / double(options.stepPixels) * (1.0 + 1e-6)));
 }
 
 std::vector<float> lineIntegralConvolution(const VectorImage& field, const LicOptions& options) {
   checkArguments(field, options);
   const std::uint32_t width = field.width, height = field.height;
-  // The whole steps within the half length, forgiving the rounding of a ratio such as 1 / 0.1.
-  const auto stepsEachWay = std::uint32_t(
-      std::floor(double(options.halfLengthPixels) / double(options.stepPixels) * (1.0 + 1e-6)));
-  const std::vector<float> noise = noiseImage(width, height, options.noiseSeed);
+  const std::uint32_t stepsEachWay = licStepsEachWay(options);
+  const std::vector<std::uint16_t> noise = noiseImage(width, height, options.noiseSeed);
   const StreamlineStepper stepper(field);
   std::vector<float> intensity(noise.size(), std::numeric_limits<float>::quiet_NaN());
   tbb::parallel_for(std::uint32_t(0), height, [&](std::uint32_t y) {
     for (std::uint32_t x = 0; x < width; ++x) {
       const std::size_t n = x + std::size_t(width) * y;
       if (!field.valid[n]) continue;
-      // Noise values are multiples of 2^-24 below 1, so this sum is exact in any order.
-      double sum = noise[n];
+      // At most 2^16 + 1 values below 2^16: the sum fits 32 bits.
+      std::uint32_t sum = noise[n];
       std::uint32_t count = 1;
       const glm::vec2 centre(float(x) + 0.5f, float(y) + 0.5f);
       std::array<Walk, 2> walks{Walk{centre, options.stepPixels},
@@ -156,7 +172,7 @@ std::vector<float> lineIntegralConvolution(const VectorImage& field, const LicOp
           ++count;
         }
       }
-      intensity[n] = float(sum / count);
+      intensity[n] = noiseMean(sum, count);
     }
   });
   return intensity;

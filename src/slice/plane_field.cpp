@@ -1,6 +1,10 @@
 #include "plane_field.hpp"
 
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <memory>
+#include <mutex>
 
 #include "flow/sampler.hpp"
 
@@ -18,15 +22,73 @@ PlaneVectorField exactInPlane(const flow::VectorVolume& volume, const SlicePlane
   };
 }
 
+shared::ProbeGrid pixelGrid(const flow::VectorVolume& volume, const SlicePlane& plane) {
+  const flow::AffineGrid grid = plane.grid();
+  const glm::dvec3 origin = volume.transform.toCellUnits(grid.origin);
+  const glm::dvec3 whole = glm::floor(origin);
+  shared::ProbeGrid g{};
+  g.originAnchor = glm::ivec3(whole);
+  g.originOffset = glm::vec3(origin - whole);
+  g.stepX = glm::vec3(volume.transform.toCellUnits(grid.origin + grid.steps[0]) - origin);
+  g.stepY = glm::vec3(volume.transform.toCellUnits(grid.origin + grid.steps[1]) - origin);
+  g.width = grid.dims[0];
+  g.height = grid.dims[1];
+  return g;
+}
+
+flow::GridSamples samplePixels(const flow::VectorVolume& volume, const shared::ProbeGrid& grid,
+                               const std::function<void(std::size_t)>& progress) {
+  flow::GridSamples samples;
+  const std::size_t width = grid.width, points = width * grid.height;
+  const std::size_t channelCount = volume.channelCount();
+  samples.vectors.assign(points, glm::vec3(0.0f));
+  samples.channels.assign(points * channelCount, 0.0f);
+  samples.valid.assign(points, 0);
+  std::atomic<std::uint64_t> validCount{0};
+  std::size_t rowsDone = 0;
+  std::mutex progressMutex;
+  tbb::parallel_for(std::uint32_t(0), grid.height, [&](std::uint32_t y) {
+    flow::RegionCache cache;
+    std::vector<float> values(channelCount);
+    std::uint64_t rowValid = 0;
+    for (std::uint32_t x = 0; x < grid.width; ++x) {
+      // In float and in this order, as the grid probe computes it.
+      const glm::vec3 along = grid.originOffset + float(x) * grid.stepX + float(y) * grid.stepY;
+      const glm::vec3 whole = glm::floor(along);
+      const flow::CellPoint p = flow::wrapPeriodic(
+          volume, flow::CellPoint(grid.originAnchor + glm::ivec3(whole), along - whole));
+      const flow::VectorSample sample = flow::sampleVector(volume, p, &cache);
+      if (!sample.valid) continue;
+      const std::size_t n = x + width * y;
+      samples.vectors[n] = sample.value;
+      samples.valid[n] = 1;
+      ++rowValid;
+      if (channelCount == 0) continue;
+      flow::sampleChannels(volume, sample.region, p, values);
+      std::copy(values.begin(), values.end(), samples.channels.begin() + n * channelCount);
+    }
+    validCount += rowValid;
+    if (progress) {
+      const std::lock_guard lock(progressMutex);
+      progress(++rowsDone);
+    }
+  });
+  samples.validCount = validCount;
+  return samples;
+}
+
 VectorImage inPlaneImage(const SlicePlane& plane, const flow::GridSamples& samples) {
   VectorImage image;
   image.width = plane.width;
   image.height = plane.height;
   image.valid = samples.valid;
   image.vectors.resize(samples.vectors.size());
+  const glm::vec3 u(plane.u), v(plane.v);
   for (std::size_t n = 0; n < samples.vectors.size(); ++n) {
-    const glm::dvec3 v(samples.vectors[n]);
-    image.vectors[n] = glm::vec2(float(glm::dot(v, plane.u)), float(glm::dot(v, plane.v)));
+    const glm::vec3 s = samples.vectors[n];
+    // In float and in this order, as shaders/glsl/lic.comp projects.
+    image.vectors[n] =
+        glm::vec2(s.x * u.x + s.y * u.y + s.z * u.z, s.x * v.x + s.y * v.y + s.z * v.z);
   }
   return image;
 }

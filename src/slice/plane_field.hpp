@@ -1,7 +1,10 @@
 #pragma once
 // The vector's part in a slice's plane: exactly at any point (what the field lines follow), and
-// at the pixel centres sampled once (what the LIC convolves).
+// at the pixel centres sampled once (what the background shows and the LIC convolves).
 
+#include <functional>
+
+#include "../../shaders/glsl/shared/plane_lic.h"
 #include "even_lines.hpp"
 #include "flow/uniform_resample.hpp"
 #include "flow/vector_volume.hpp"
@@ -15,7 +18,18 @@ namespace amrstream::slice {
 // outlive it.
 PlaneVectorField exactInPlane(const flow::VectorVolume& volume, const SlicePlane& plane);
 
-// The samples of plane.grid() projected on the plane's axes.
+// The plane's pixel centres in `volume`'s finest-cell units: the first centre anchored at its
+// cell, the steps between centres in float.
+shared::ProbeGrid pixelGrid(const flow::VectorVolume& volume, const SlicePlane& plane);
+
+// The vector and the point data at every point of `grid` (x fastest), each point computed in
+// float from the anchored origin as the device's grid probe computes it
+// (shaders/glsl/include/locate_probe.glsl), so that both sample the same points. On all cores;
+// `progress(done)` is called from one thread at a time with the rows done.
+flow::GridSamples samplePixels(const flow::VectorVolume& volume, const shared::ProbeGrid& grid,
+                               const std::function<void(std::size_t)>& progress = {});
+
+// The samples of the plane's pixels projected on the plane's axes.
 VectorImage inPlaneImage(const SlicePlane& plane, const flow::GridSamples& samples);
 
 }  // namespace amrstream::slice

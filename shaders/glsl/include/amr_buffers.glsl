@@ -29,9 +29,13 @@ readonly buffer RegionBuffer { Region regions[]; };
 // that a sample reads a brick in one load rather than its index and then the record.
 layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_REGION_BRICKS)
 readonly buffer RegionBrickBuffer { Brick regionBrickRecords[]; };
-#ifdef AMRSTREAM_PROBE_POINTS  // the probe (locate_probe.glsl): bare points in place of states
+#if defined(AMRSTREAM_PROBE_POINTS)  // the probe (locate_probe.glsl): bare points for states
 layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_PROBE_POINTS)
 readonly buffer ProbePointBuffer { vec3 probePoints[]; };
+#elif defined(AMRSTREAM_PROBE_GRID)  // the grid probe: the grid of points for states
+#include "../shared/plane_lic.h"
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_PROBE_POINTS)
+readonly buffer ProbeGridBuffer { ProbeGrid probeGrid; };
 #else
 layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_STATES_IN)
 readonly buffer StatesInBuffer { LineState statesIn[]; };

@@ -4,8 +4,25 @@
 // (probePoints, cell units, already wrapped; AMRSTREAM_PROBE_POINTS defined before
 // amr_buffers.glsl); the region found (-1 for none) goes to outRegions and the vector to
 // outVectors, NaN where the sample is located but invalid.
+#ifdef AMRSTREAM_PROBE_POINTS
 void probeLocation(uint pointIndex) {
   const VectorSample s = sampleVector(ivec3(0), probePoints[pointIndex]);
   outRegions[pointIndex] = s.located ? s.region : -1;
   outVectors[pointIndex] = s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
 }
+#endif
+
+#ifdef AMRSTREAM_PROBE_GRID
+// The grid probe: the vector at pixel (x, y) of probeGrid, at outVectors[x + width y] (NaN where
+// the sample is not valid); the device twin of flow::sampleGrid over a slice's pixel centres.
+void probeGridPoint(uvec2 pixel) {
+  precise const vec3 along = probeGrid.originOffset + float(pixel.x) * probeGrid.stepX +
+                             float(pixel.y) * probeGrid.stepY;
+  const vec3 whole = floor(along);
+  precise const vec3 offset = along - whole;
+  const ivec3 anchor = wrapPeriodic(probeGrid.originAnchor + ivec3(whole), offset);
+  const VectorSample s = sampleVector(anchor, offset);
+  outVectors[pixel.x + probeGrid.width * pixel.y] =
+      s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
+}
+#endif
