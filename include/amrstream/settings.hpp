@@ -447,15 +447,16 @@ inline constexpr Setting kVolume{
 inline constexpr Setting kVolumeRange{
     .name = "volume_range",
     .help =
-        "MIN,MAX of the transfer function, in log10 unless {linear_volume} [default: the "
-        "median to the 99.9th percentile]",
+        "MIN,MAX of the transfer function, in log10 unless {linear_volume} [default: from the "
+        "value most of the domain holds to the 99.9th percentile of the cells]",
     .least = -kFloatMax,
     .most = kFloatMax};
 inline constexpr Setting kVolumeOpacity{.name = "volume_opacity",
                                         .help =
                                             "extinction per finest cell at the top of the transfer "
-                                            "function",
-                                        .fallback = 0.05,
+                                            "function; 0: chosen so that a ray across the domain "
+                                            "is absorbed to 1 - 1/e on average",
+                                        .fallback = 0,
                                         .least = 0,
                                         .most = kFloatMax};
 inline constexpr Setting kLinearVolume{

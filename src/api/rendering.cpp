@@ -309,9 +309,12 @@ RenderScene prepareScene(const RenderOptions& o, const bricks::AmrField& cells,
     s.volume = true;
     s.logVolume = !o.linearVolume;
     s.volumeRange = o.volumeRange.empty()
-                        ? render::defaultVolumeRange(scene.contextScalars, s.logVolume)
+                        ? render::defaultVolumeRange(volume, scene.contextScalars, s.logVolume)
                         : parseRange(o.volumeRange, "volume_range");
-    s.volumeOpacity = o.volumeOpacity;
+    s.volumeOpacity = o.volumeOpacity > 0.0f
+                          ? o.volumeOpacity
+                          : render::defaultVolumeOpacity(volume, scene.contextScalars, s.logVolume,
+                                                         s.volumeRange);
   }
 
   // Framed without the tubes' radius when the radius follows from the view: the margin holds it.
@@ -412,6 +415,12 @@ RenderedImage renderImage(const BackendRequest& request, const RenderOptions& op
                        "{}, {} frames [setup {:.2f} s]",
                        result.backend, result.device, scene.segments.size(),
                        scene.settings.tubeRadius, o.width, o.height, frames, result.setupSeconds));
+  if (scene.settings.volume)
+    say(log, fmt::format("volume     {}: {} {:.4g} to {:.4g}, opacity {:.3g} per finest cell{}",
+                         o.volume, scene.settings.logVolume ? "log10" : "values",
+                         scene.settings.volumeRange.min, scene.settings.volumeRange.max,
+                         scene.settings.volumeOpacity,
+                         o.volumeOpacity > 0.0f ? "" : " (from the histogram)"));
   clock.restart();
   double kernelSeconds = 0.0;
   for (std::uint32_t f = 0; f < frames; ++f) {
