@@ -31,7 +31,15 @@ struct SliceOptions {
   std::optional<std::array<double, 2>> range;  // of the background; default: its own
   bool lines = true;
   double lineSeparation = 0.0;  // in the plane's coordinates; 0: 1/30 of the window's width
-  float lineWidth = 1.5f;       // pixels
+  float lineWidth = 1.5f;       // pixels; with lineWidthBy, the widest
+  // A channel or "magnitude" (the vector's length) along the lines that colours them, in
+  // lineColourMap on lineColourScale (linear, log or symlog); empty: black lines.
+  std::string lineColourBy;
+  std::string lineColourMap = "plasma";
+  std::string lineColourScale = "linear";
+  // A channel or "magnitude" that the lines' width follows, from a fifth of lineWidth at its
+  // least along the lines to lineWidth at its most; empty: lineWidth throughout.
+  std::string lineWidthBy;
   bool lic = false;
   double licLength = 0.0;  // the LIC kernel's half-length, in the plane's coordinates; 0: 1/50
                            // of the window's width
@@ -50,6 +58,9 @@ struct SliceFigure {
   std::vector<float> background;        // width x height, x fastest, row 0 at b0; NaN: no data
   std::vector<float> lic;               // the same; empty without LIC
   std::vector<std::vector<std::array<double, 2>>> lines;  // in the plane's coordinates
+  // Per line, per point: the values the lines are coloured by and their width follows; empty
+  // when not asked for. NaN where a point has no data.
+  std::vector<std::vector<float>> lineColourValues, lineWidthValues;
 };
 
 struct SliceJob {
@@ -58,6 +69,9 @@ struct SliceJob {
   SliceOptions slice;
   std::string out = "slice.png";
   std::string vti;  // the plane's samples (vector, channels, LIC) as VTK ImageData; empty: none
+  // The field lines as VTK PolyData polylines on the plane (physical coordinates) with the
+  // vector, every point-data channel and the arc length along them; empty: none.
+  std::string vtp;
 };
 
 // Throws InputError naming the option for a value out of its range.

@@ -267,7 +267,10 @@ def slice(target: Union[Dataset, Field], *, vector: _VectorRequest = None,
     window=None (a0, b0, a1, b1 in the plane; default the domain), width=1024 (pixels across),
     background='auto' (a channel, 'magnitude', 'none' or 'auto'), colour_map='viridis',
     colour_scale='linear', range=None (min, max), lines=True, line_separation=0.0 (0: 1/30 of
-    the window's width), line_width=1.5 (pixels), lic=False, lic_length=0.0 (0: 1/50 of the
+    the window's width), line_width=1.5 (pixels; with line_width_by the widest),
+    line_colour_by='' (a channel or 'magnitude' colouring the lines, with a colour bar),
+    line_colour_map='plasma', line_colour_scale='linear', line_width_by='' (a channel or
+    'magnitude' the lines' width follows), lic=False, lic_length=0.0 (0: 1/50 of the
     window's width), backend='auto' (where the LIC runs: rayquery, pipeline or compute sample
     the plane and convolve on that Vulkan device; cpu; auto as for tracing), device='' (a
     substring of the Vulkan device's name), validation=False, progress=None (progress(done,
@@ -275,8 +278,10 @@ def slice(target: Union[Dataset, Field], *, vector: _VectorRequest = None,
 
     Returns a dict: 'image' ((H, W, 4) uint8, the figure), 'window' (a0, b0, a1, b1), 'axes'
     (the plane's axes' names), 'background_name', 'background' and 'lic' ((height, width)
-    float32 over the window, row 0 at b0, NaN without data; None when not drawn) and 'lines'
-    ((n, 2) arrays in the plane's coordinates).
+    float32 over the window, row 0 at b0, NaN without data; None when not drawn), 'lines'
+    ((n, 2) arrays in the plane's coordinates), and 'line_colour_values' and
+    'line_width_values' (one float32 array per line, the values at its points; None when not
+    asked for).
     """
     if isinstance(target, Field):
         if any(v is not None for v in (vector, frame_velocity, point_data, periodic,

@@ -166,6 +166,7 @@ def _slice(field: Field, *, normal: str = "z", point: Optional[Sequence[float]] 
            background: str = "auto", colour_map: str = "viridis",
            colour_scale: str = "linear", range: Optional[Sequence[float]] = None,
            lines: bool = True, line_separation: float = 0.0, line_width: float = 1.5,
-           lic: bool = False, lic_length: float = 0.0, backend: str = "auto",
+           line_colour_by: str = "", line_colour_map: str = "plasma",
+           line_colour_scale: str = "linear", line_width_by: str = "", lic: bool = False, lic_length: float = 0.0, backend: str = "auto",
            device: str = "", validation: bool = False, progress: _Progress = None,
            verbose: bool = False) -> Dict[str, Any]: ...

@@ -15,11 +15,13 @@
 #include "api/render_scene.hpp"
 #include "flow/uniform_resample.hpp"
 #include "gpu/plane_lic.hpp"
+#include "output/polyline_writer.hpp"
 #include "output/vti_writer.hpp"
 #include "render/image/colour_map.hpp"
 #include "render/image/png_io.hpp"
 #include "slice/even_lines.hpp"
 #include "slice/lic.hpp"
+#include "slice/line_samples.hpp"
 #include "slice/plane_field.hpp"
 #include "slice/slice_figure.hpp"
 #include "slice/slice_plane.hpp"
@@ -54,6 +56,19 @@ std::string chosenBackground(const SliceOptions& options, const flow::VectorVolu
                                    "give one, magnitude, auto or none",
                                    options.background, fmt::join(volume.channelNames, ", ")));
   return options.background;
+}
+
+// The index of the channel `name` names in the point data, or -1 for "magnitude" (the vector's
+// length); InputError naming `option` for any other name.
+int channelIndexOf(const std::string& name, const flow::VectorVolume& volume,
+                   std::string_view option) {
+  if (name == kMagnitude) return -1;
+  const auto found = std::find(volume.channelNames.begin(), volume.channelNames.end(), name);
+  if (found == volume.channelNames.end())
+    throw settingError(option, fmt::format("'{}' is not a channel of the point data ({}); give "
+                                           "one or magnitude",
+                                           name, fmt::join(volume.channelNames, ", ")));
+  return int(found - volume.channelNames.begin());
 }
 
 std::vector<float> backgroundValues(const std::string& name, const flow::VectorVolume& volume,
@@ -124,6 +139,40 @@ void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePl
   output::writeVti(job.vti, grid, options);
 }
 
+// The lines of at least 2 points as polylines with the samples along them and their arc length.
+void writeLinesVtp(const SliceJob& job, const Field& field, const slice::SliceLayers& layers,
+                   const slice::LineSamples& samples) {
+  const flow::VectorVolume& volume = volumeOf(field);
+  const std::size_t count = volume.channelCount();
+  output::Polylines lines;
+  output::PolylineArray vector{volume.vectorName, 3, {}}, arc{"ArcLength", 1, {}};
+  std::vector<output::PolylineArray> channels;
+  for (const std::string& name : volume.channelNames) channels.push_back({name, 1, {}});
+  for (std::size_t line = 0; line < layers.lines.size(); ++line) {
+    const std::vector<glm::dvec2>& points = layers.lines[line].points;
+    if (points.size() < 2) continue;
+    double length = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const std::uint64_t n = samples.offsets[line] + k;
+      if (k > 0) length += glm::distance(points[k - 1], points[k]);
+      lines.points.push_back(glm::vec3(samples.positions[n]));
+      const glm::vec3 v = samples.vectors[n];
+      vector.values.insert(vector.values.end(), {v.x, v.y, v.z});
+      arc.values.push_back(float(length));
+      for (std::size_t c = 0; c < count; ++c)
+        channels[c].values.push_back(samples.channels[n * count + c]);
+    }
+    lines.offsets.push_back(lines.points.size());
+  }
+  lines.pointData = {std::move(vector), std::move(arc)};
+  for (output::PolylineArray& channel : channels) lines.pointData.push_back(std::move(channel));
+  lines.scalars = "ArcLength";
+  lines.vectors = volume.vectorName;
+  output::PolylineWriteOptions options;
+  options.fieldData = datasetProvenance(field.source(), field.info(), volume);
+  output::writePolylines(job.vtp, lines, options);
+}
+
 // The LIC of the plane's in-plane vector on the device of `choice`, sampled there.
 std::vector<float> deviceLic(const flow::VectorVolume& volume, const slice::SlicePlane& plane,
                              const slice::LicOptions& options, const BackendRequest& request,
@@ -157,8 +206,39 @@ struct Sliced {
   slice::SlicePlane plane;
   flow::GridSamples samples;
   slice::SliceLayers layers;
+  slice::LineSamples lineSamples;
   std::string background;
 };
+
+// The lines' colours and widths by the channels `options` name, from the samples along them.
+void styleLines(const Field& field, const SliceOptions& options, Sliced& sliced) {
+  const flow::VectorVolume& volume = volumeOf(field);
+  slice::SliceLayers& layers = sliced.layers;
+  const std::size_t count = volume.channelCount();
+  if (!options.lineColourBy.empty()) {
+    const int channel = channelIndexOf(options.lineColourBy, volume, "line_colour_by");
+    layers.lineColourValues = slice::valuesAlongLines(sliced.lineSamples, count, channel);
+    std::vector<float> all;
+    for (const std::vector<float>& line : layers.lineColourValues)
+      all.insert(all.end(), line.begin(), line.end());
+    const render::ScaleKind kind = *render::parseScaleKind(options.lineColourScale);
+    render::ColourBar& bar = layers.lineColours;
+    bar.map = *render::parseColourMap(options.lineColourMap);
+    bar.scale =
+        colourScaleOver(kind, std::nullopt, widenSeen(nothingSeen(), kind, all), std::nullopt);
+    bar.label = channel < 0 ? "|" + volume.vectorName + "|" : options.lineColourBy;
+    bar.unit = unitOf(field.info(), channel < 0 ? volume.vectorName : options.lineColourBy);
+  }
+  if (!options.lineWidthBy.empty()) {
+    const int channel = channelIndexOf(options.lineWidthBy, volume, "line_width_by");
+    layers.lineWidthValues = slice::valuesAlongLines(sliced.lineSamples, count, channel);
+    float low = std::numeric_limits<float>::infinity(), high = -low;
+    for (const std::vector<float>& line : layers.lineWidthValues)
+      for (const float v : line)
+        if (std::isfinite(v)) low = std::min(low, v), high = std::max(high, v);
+    layers.lineWidthRange = {low, high};
+  }
+}
 
 slice::SlicePlane planeOf(const flow::VectorVolume& volume, const SliceOptions& options) {
   slice::SliceRequest request;
@@ -225,6 +305,8 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
     even.upper = plane.upper;
     even.separation = options.lineSeparation > 0.0 ? options.lineSeparation : windowWidth / 30.0;
     layers.lines = slice::evenlySpacedLines(slice::exactInPlane(volume, plane), even);
+    sliced.lineSamples = slice::sampleAlongLines(volume, plane, layers.lines);
+    styleLines(field, options, sliced);
     std::size_t points = 0;
     for (const slice::PlaneLine& line : layers.lines) points += line.points.size();
     say(log,
@@ -243,6 +325,13 @@ void checkSliceOptions(const SliceOptions& options) {
   if (!render::parseScaleKind(options.colourScale))
     throw settingError("colour_scale",
                        fmt::format("'{}' is not linear, log or symlog", options.colourScale));
+  if (!render::parseColourMap(options.lineColourMap))
+    throw settingError(
+        "line_colour_map",
+        fmt::format("'{}' is not one of {}", options.lineColourMap, render::colourMapNames()));
+  if (!render::parseScaleKind(options.lineColourScale))
+    throw settingError("line_colour_scale",
+                       fmt::format("'{}' is not linear, log or symlog", options.lineColourScale));
   if (options.range) {
     const auto [low, high] = *options.range;
     if (!std::isfinite(low) || !std::isfinite(high) || !(low < high))
@@ -263,6 +352,8 @@ void checkSliceOptions(const SliceOptions& options) {
 void checkSliceJob(const SliceJob& job) {
   if (job.dataset.input.starts_with("builtin:")) checkBuiltinSize(job.dataset.builtin);
   checkSliceOptions(job.slice);
+  if (!job.vtp.empty() && !job.slice.lines)
+    throw settingError("vtp", "there are no field lines to write without lines (--no-lines)");
 }
 
 SliceFigure makeSlice(const Field& field, const SliceOptions& options, const Reporter& reporter) {
@@ -278,6 +369,8 @@ SliceFigure makeSlice(const Field& field, const SliceOptions& options, const Rep
   figure.backgroundName = sliced.background;
   figure.background = sliced.layers.background;
   figure.lic = sliced.layers.lic;
+  figure.lineColourValues = sliced.layers.lineColourValues;
+  figure.lineWidthValues = sliced.layers.lineWidthValues;
   for (const slice::PlaneLine& line : sliced.layers.lines) {
     std::vector<std::array<double, 2>>& points = figure.lines.emplace_back();
     for (const glm::dvec2& p : line.points) points.push_back({p.x, p.y});
@@ -308,8 +401,10 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
   clock.restart();
   render::writePng(job.out, slice::drawSliceFigure(plane, sliced.layers));
   if (!job.vti.empty()) writeSliceVti(job, field, plane, sliced.samples, sliced.layers.lic);
-  say(log, fmt::format("output     {}{} [{:.2f} s]", job.out, job.vti.empty() ? "" : ", " + job.vti,
-                       clock.seconds()));
+  if (!job.vtp.empty()) writeLinesVtp(job, field, sliced.layers, sliced.lineSamples);
+  say(log,
+      fmt::format("output     {}{}{} [{:.2f} s]", job.out, job.vti.empty() ? "" : ", " + job.vti,
+                  job.vtp.empty() ? "" : ", " + job.vtp, clock.seconds()));
 }
 
 }  // namespace amrstream

@@ -41,6 +41,10 @@ void runSlice(SliceOptions& options) {
     files.addOutput("--vti", job.vti);
     requireOutputExtension("--vti", job.vti, {".vti"}, "VTK XML ImageData");
   }
+  if (!job.vtp.empty()) {
+    files.addOutput("--vtp", job.vtp);
+    requireOutputExtension("--vtp", job.vtp, {".vtp"}, "VTK XML PolyData");
+  }
   const Console console;
   runSliceJob(job, console);
 }
@@ -100,9 +104,22 @@ void addSliceCommand(CLI::App& app) {
                    "coordinates (0: 1/30 of the window's width)")
       ->check(finiteFloat())
       ->capture_default_str();
-  command->add_option("--line-width", job.slice.lineWidth, "the field lines' width in pixels")
+  command
+      ->add_option("--line-width", job.slice.lineWidth,
+                   "the field lines' width in pixels (with --line-width-by, the widest)")
       ->check(finiteFloat())
       ->capture_default_str();
+  command->add_option("--line-colour-by", job.slice.lineColourBy,
+                      "colour the field lines by a channel along them, or magnitude (the "
+                      "vector's length), with a colour bar of their own");
+  command->add_option("--line-colour-map", job.slice.lineColourMap, colourMapNames())
+      ->capture_default_str();
+  command->add_option("--line-colour-scale", job.slice.lineColourScale, "linear, log or symlog")
+      ->check(CLI::IsMember({"linear", "log", "symlog"}))
+      ->capture_default_str();
+  command->add_option("--line-width-by", job.slice.lineWidthBy,
+                      "make the field lines wider where a channel (or magnitude) is larger: "
+                      "from a fifth of --line-width at its least to --line-width at its most");
   command->add_flag("--lic", job.slice.lic,
                     "shade the figure with a line integral convolution of the in-plane vector "
                     "(grey, with --background none)");
@@ -117,6 +134,9 @@ void addSliceCommand(CLI::App& app) {
   command->add_option("--vti", job.vti,
                       "also write the plane's samples (the vector, the point data and LIC) as "
                       "VTK ImageData");
+  command->add_option("--vtp", job.vtp,
+                      "also write the field lines as VTK PolyData, on the plane, with the "
+                      "vector, the point data and ArcLength along them");
   command->callback([options] { runSlice(*options); });
 }
 

@@ -23,6 +23,18 @@ py::object planeArray(const std::vector<float>& values, std::uint32_t width, std
   return array;
 }
 
+// One float32 array per line; None when not asked for.
+py::object lineArrays(const std::vector<std::vector<float>>& values) {
+  if (values.empty()) return py::none();
+  py::list arrays;
+  for (const std::vector<float>& line : values) {
+    py::array_t<float> array(py::ssize_t(line.size()));
+    std::copy(line.begin(), line.end(), array.mutable_data());
+    arrays.append(array);
+  }
+  return arrays;
+}
+
 py::dict sliceOf(const Field& field, const SliceOptions& options, py::object progress,
                  bool verbose) {
   const Reporter reporter{pythonLog(verbose), throttled(progress)};
@@ -54,6 +66,8 @@ py::dict sliceOf(const Field& field, const SliceOptions& options, py::object pro
   result["background"] = planeArray(figure.background, figure.width, figure.height);
   result["lic"] = planeArray(figure.lic, figure.width, figure.height);
   result["lines"] = lines;
+  result["line_colour_values"] = lineArrays(figure.lineColourValues);
+  result["line_width_values"] = lineArrays(figure.lineWidthValues);
   return result;
 }
 
@@ -66,9 +80,10 @@ void bindSlicing(py::module_& m) {
       [](const Field& field, std::string normal, std::optional<std::array<double, 3>> point,
          std::optional<std::array<double, 4>> window, std::uint32_t width, std::string background,
          std::string colourMap, std::string colourScale, std::optional<std::array<double, 2>> range,
-         bool lines, double lineSeparation, float lineWidth, bool lic, double licLength,
-         std::string backend, std::string device, bool validation, py::object progress,
-         bool verbose) {
+         bool lines, double lineSeparation, float lineWidth, std::string lineColourBy,
+         std::string lineColourMap, std::string lineColourScale, std::string lineWidthBy, bool lic,
+         double licLength, std::string backend, std::string device, bool validation,
+         py::object progress, bool verbose) {
         SliceOptions options;
         options.normal = std::move(normal);
         options.point = point;
@@ -81,6 +96,10 @@ void bindSlicing(py::module_& m) {
         options.lines = lines;
         options.lineSeparation = lineSeparation;
         options.lineWidth = lineWidth;
+        options.lineColourBy = std::move(lineColourBy);
+        options.lineColourMap = std::move(lineColourMap);
+        options.lineColourScale = std::move(lineColourScale);
+        options.lineWidthBy = std::move(lineWidthBy);
         options.lic = lic;
         options.licLength = licLength;
         options.backend.backend = std::move(backend);
@@ -94,7 +113,10 @@ void bindSlicing(py::module_& m) {
       py::arg("colour_map") = defaults.colourMap, py::arg("colour_scale") = defaults.colourScale,
       py::arg("range") = py::none(), py::arg("lines") = defaults.lines,
       py::arg("line_separation") = defaults.lineSeparation,
-      py::arg("line_width") = defaults.lineWidth, py::arg("lic") = defaults.lic,
+      py::arg("line_width") = defaults.lineWidth, py::arg("line_colour_by") = defaults.lineColourBy,
+      py::arg("line_colour_map") = defaults.lineColourMap,
+      py::arg("line_colour_scale") = defaults.lineColourScale,
+      py::arg("line_width_by") = defaults.lineWidthBy, py::arg("lic") = defaults.lic,
       py::arg("lic_length") = defaults.licLength, py::arg("backend") = defaults.backend.backend,
       py::arg("device") = defaults.backend.device, py::arg("validation") = false,
       py::arg("progress") = py::none(), py::arg("verbose") = false,

@@ -41,6 +41,18 @@ struct Layout {
   std::uint32_t width = 0, height = 0;  // the whole image
 };
 
+// The colour bars under the axes, the lowest first.
+std::vector<render::ColourBar> colourBars(const SliceLayers& layers) {
+  std::vector<render::ColourBar> bars;
+  if (!layers.background.empty()) bars.push_back(layers.colours);
+  if (!layers.lineColourValues.empty()) bars.push_back(layers.lineColours);
+  for (std::size_t i = 0; i < bars.size(); ++i) {
+    bars[i].stack = int(i);
+    bars[i].light = true;
+  }
+  return bars;
+}
+
 Layout layoutFigure(const SlicePlane& plane, const SliceLayers& layers) {
   const render::Font& font = render::defaultFont();
   Layout layout;
@@ -60,10 +72,11 @@ Layout layoutFigure(const SlicePlane& plane, const SliceLayers& layers) {
   layout.bottom = axesBelow;
   layout.width = std::uint32_t(layout.left + int(plane.width) + layout.right);
   layout.height = std::uint32_t(layout.top + int(plane.height) + layout.bottom);
-  if (layers.background.empty()) return layout;
-  // The colour bar sits at the image's bottom right, below the axes' labels.
+  const std::vector<render::ColourBar> bars = colourBars(layers);
+  if (bars.empty()) return layout;
+  // The colour bars sit at the image's bottom right, below the axes' labels.
   for (int attempt = 0; attempt < 4; ++attempt) {
-    const auto bar = render::layoutColourBar(layout.width, layout.height, layers.colours);
+    const auto bar = render::layoutColourBar(layout.width, layout.height, bars.back());
     if (!bar) break;
     const int wanted = layout.top + int(plane.height) + axesBelow;
     if (bar->panel.y >= wanted) break;
@@ -136,8 +149,29 @@ void drawArrow(Image& image, glm::vec2 tip, glm::vec2 direction, float width, Rg
   render::drawLine(image, tip, tip + length * right, width, colour, render::LineCap::Round);
 }
 
+// The width of the segment from point k - 1 to point k of line `index`.
+float segmentWidth(const SliceLayers& layers, std::size_t index, std::size_t k) {
+  if (layers.lineWidthValues.empty()) return layers.lineWidthPixels;
+  const std::vector<float>& values = layers.lineWidthValues[index];
+  const float value = 0.5f * (values[k - 1] + values[k]);
+  const auto [low, high] = layers.lineWidthRange;
+  const float t = high > low ? std::clamp((value - low) / (high - low), 0.0f, 1.0f) : 1.0f;
+  return layers.lineWidthPixels * (0.2f + 0.8f * (std::isfinite(t) ? t : 0.0f));
+}
+
+Rgba8 segmentColour(const SliceLayers& layers, std::size_t index, std::size_t k) {
+  if (layers.lineColourValues.empty()) return layers.lineColour;
+  const std::vector<float>& values = layers.lineColourValues[index];
+  const double value = 0.5 * (double(values[k - 1]) + double(values[k]));
+  if (!std::isfinite(value)) return layers.lineColour;
+  const render::ColourBar& bar = layers.lineColours;
+  return render::toRgba8(render::sampleColourMap(bar.map, float(bar.scale.position(value))));
+}
+
+// The lines with their arrows; `halo` widens them and draws them all in its colour.
 void drawLinePass(Image& image, const Layout& layout, const SlicePlane& plane,
-                  const std::vector<PlaneLine>& lines, float width, Rgba8 colour) {
+                  const SliceLayers& layers, std::optional<Rgba8> halo) {
+  const std::vector<PlaneLine>& lines = layers.lines;
   const double arrowEvery =
       0.3 * std::min(plane.upper.x - plane.lower.x, plane.upper.y - plane.lower.y);
   for (std::size_t index = 0; index < lines.size(); ++index) {
@@ -149,10 +183,12 @@ void drawLinePass(Image& image, const Layout& layout, const SlicePlane& plane,
     for (std::size_t k = 1; k < line.points.size(); ++k) {
       const glm::vec2 from = toPixel(layout, plane, line.points[k - 1]);
       const glm::vec2 to = toPixel(layout, plane, line.points[k]);
+      const float base = segmentWidth(layers, index, k), width = base + (halo ? 1.0f : 0.0f);
+      const Rgba8 colour = halo ? *halo : segmentColour(layers, index, k);
       render::drawLine(image, from, to, width, colour, render::LineCap::Round);
       arc += glm::distance(line.points[k - 1], line.points[k]);
       const float pixels = glm::distance(from, to);
-      if (arc >= nextArrow && pixels > 0.0f && insideByAnArrow(layout, plane, to, width)) {
+      if (arc >= nextArrow && pixels > 0.0f && insideByAnArrow(layout, plane, to, base)) {
         drawArrow(image, to, (to - from) / pixels, width, colour);
         nextArrow += arrowEvery;
       }
@@ -164,8 +200,8 @@ void drawLinePass(Image& image, const Layout& layout, const SlicePlane& plane,
 // colours as on light ones.
 void drawLines(Image& image, const Layout& layout, const SlicePlane& plane,
                const SliceLayers& layers) {
-  drawLinePass(image, layout, plane, layers.lines, layers.lineWidthPixels + 1.0f, kHalo);
-  drawLinePass(image, layout, plane, layers.lines, layers.lineWidthPixels, layers.lineColour);
+  drawLinePass(image, layout, plane, layers, kHalo);
+  drawLinePass(image, layout, plane, layers, std::nullopt);
 }
 
 void drawAxes(Image& image, const Layout& layout, const SlicePlane& plane,
@@ -243,11 +279,7 @@ render::Image drawSliceFigure(const SlicePlane& plane, const SliceLayers& layers
   drawPixels(image, layout, plane, layers);
   drawLines(image, layout, plane, layers);
   drawAxes(image, layout, plane, layers.lengthUnit);
-  if (!layers.background.empty()) {
-    render::ColourBar bar = layers.colours;
-    bar.light = true;
-    render::drawColourBar(image, bar);
-  }
+  for (const render::ColourBar& bar : colourBars(layers)) render::drawColourBar(image, bar);
   return image;
 }
 

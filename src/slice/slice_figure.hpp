@@ -3,6 +3,7 @@
 // colours shaded by it), the field lines with arrows, a frame with axes in the data's units, and
 // a colour bar below.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,11 +24,20 @@ struct SliceLayers {
   std::vector<PlaneLine> lines;  // in plane coordinates
   float lineWidthPixels = 1.5f;
   render::Rgba8 lineColour{0, 0, 0, 235};
+  // Per line, per point: the values the lines are coloured by, in lineColours (whose bar stacks
+  // above the background's); empty: lineColour throughout. NaN: lineColour there.
+  std::vector<std::vector<float>> lineColourValues;
+  render::ColourBar lineColours;
+  // Per line, per point: the values the lines' width follows, from a fifth of lineWidthPixels at
+  // lineWidthRange[0] to lineWidthPixels at lineWidthRange[1]; empty: lineWidthPixels
+  // throughout.
+  std::vector<std::vector<float>> lineWidthValues;
+  std::array<float, 2> lineWidthRange{0.0f, 1.0f};
   std::string lengthUnit;  // the coordinates', for the axes' names; may be empty
 };
 
-// The window's pixels (plane.width x plane.height) framed by axes, with the colour bar under
-// them when there is a background.
+// The window's pixels (plane.width x plane.height) framed by axes, with the colour bars under
+// them: the background's and the lines' colours'.
 render::Image drawSliceFigure(const SlicePlane& plane, const SliceLayers& layers);
 
 // Where the window's pixel (i, j) lands in drawSliceFigure's image: (left + i, top + height - 1 -

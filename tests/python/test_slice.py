@@ -69,3 +69,24 @@ def test_quantities_and_bad_keywords(cloud):
         amrstream.slice(cloud, normal="q", progress=None)
     with pytest.raises(ValueError, match="were chosen when the Field was prepared"):
         amrstream.slice(amrstream.prepare(cloud), vector="magx,magy,magz")
+
+
+def test_line_values_are_the_reconstruction_along_the_lines():
+    rotation = amrstream.load("builtin:rotation", **SMALL)
+    result = amrstream.slice(rotation, interpolant="linear", point=(0.5, 0.5, 0.45), width=64,
+                             background="none", line_colour_by="magnitude",
+                             line_width_by="magnitude", progress=None)
+    assert result["line_colour_values"] is not None
+    assert len(result["line_colour_values"]) == len(result["lines"]) > 3
+    for line, speeds, widths in zip(result["lines"], result["line_colour_values"],
+                                    result["line_width_values"]):
+        assert speeds.shape == (len(line),)
+        # The solid-body rotation's speed, 2 pi times the distance from the axis through (0.5,
+        # 0.5), which the linear interpolant reconstructs exactly.
+        expected = 2.0 * np.pi * np.hypot(line[:, 0] - 0.5, line[:, 1] - 0.5)
+        known = ~np.isnan(speeds)
+        assert known.mean() > 0.9
+        np.testing.assert_allclose(speeds[known], expected[known], rtol=1e-4, atol=1e-4)
+        np.testing.assert_array_equal(widths, speeds)
+    plain = amrstream.slice(rotation, width=64, background="none", progress=None)
+    assert plain["line_colour_values"] is None and plain["line_width_values"] is None

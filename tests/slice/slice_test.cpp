@@ -10,6 +10,7 @@
 #include "amrstream/error.hpp"
 #include "flow/sampler.hpp"
 #include "slice/even_lines.hpp"
+#include "slice/line_samples.hpp"
 #include "slice/plane_field.hpp"
 #include "slice/slice_figure.hpp"
 #include "slice/slice_plane.hpp"
@@ -105,7 +106,7 @@ TEST(SliceSampling, PixelsHoldTheReconstructionAtTheirCentres) {
   const glm::dvec3 lower = volume.transform.toPhysical(glm::dvec3(volume.domain.lower));
   const glm::dvec3 upper = volume.transform.toPhysical(glm::dvec3(volume.domain.upper));
   const SlicePlane plane = slicePlane(request, lower, upper);
-  const flow::GridSamples samples = flow::sampleGrid(volume, plane.grid());
+  const flow::GridSamples samples = samplePixels(volume, pixelGrid(volume, plane));
   std::size_t checked = 0;
   for (std::uint32_t j = 0; j < plane.height; j += 3) {
     for (std::uint32_t i = 0; i < plane.width; i += 3) {
@@ -115,7 +116,10 @@ TEST(SliceSampling, PixelsHoldTheReconstructionAtTheirCentres) {
       const std::size_t n = i + std::size_t(plane.width) * j;
       ASSERT_EQ(bool(samples.valid[n]), expected.valid) << i << ", " << j;
       if (!expected.valid) continue;
+      // The pixel's point in float, the oracle's in double: the same within a float's rounding.
       EXPECT_NEAR(glm::length(samples.vectors[n] - expected.value), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::length(samples.vectors[n] - rotation(volume.transform.toCellUnits(p))), 0.0f,
+                  1e-4f);
       ++checked;
     }
   }
@@ -147,6 +151,89 @@ TEST(SliceLines, TheInPlaneLinesOfARotationAreCircles) {
     circles += inside;
   }
   EXPECT_GE(circles, 2u);
+}
+
+TEST(SliceLines, SamplesAlongThemAreTheReconstruction) {
+  const flow::VectorVolume volume = rotationVolume();
+  SliceRequest request;
+  request.width = 64;
+  request.point = glm::dvec3(8.0, 8.0, 4.0);
+  const SlicePlane plane =
+      slicePlane(request, volume.transform.toPhysical(glm::dvec3(volume.domain.lower)),
+                 volume.transform.toPhysical(glm::dvec3(volume.domain.upper)));
+  EvenLinesOptions options;
+  options.lower = plane.lower;
+  options.upper = plane.upper;
+  options.separation = (plane.upper.x - plane.lower.x) / 10.0;
+  const std::vector<PlaneLine> lines = evenlySpacedLines(exactInPlane(volume, plane), options);
+  const LineSamples samples = sampleAlongLines(volume, plane, lines);
+  ASSERT_EQ(samples.offsets.size(), lines.size() + 1);
+  const std::vector<std::vector<float>> speeds = valuesAlongLines(samples, 0, -1);
+  std::size_t checked = 0;
+  for (std::size_t line = 0; line < lines.size(); ++line) {
+    ASSERT_EQ(speeds[line].size(), lines[line].points.size());
+    for (std::size_t k = 0; k < lines[line].points.size(); ++k) {
+      const std::uint64_t n = samples.offsets[line] + k;
+      EXPECT_NEAR(glm::distance(samples.positions[n], plane.physical(lines[line].points[k])), 0.0,
+                  1e-12);
+      if (std::isnan(samples.vectors[n].x)) continue;
+      const glm::vec3 expected = rotation(volume.transform.toCellUnits(samples.positions[n]));
+      EXPECT_NEAR(glm::length(samples.vectors[n] - expected), 0.0f, 1e-4f);
+      EXPECT_NEAR(speeds[line][k], glm::length(expected), 1e-4f);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200u);
+}
+
+TEST(SliceFigure, LinesTakeTheColoursAndWidthsOfTheirValues) {
+  SliceRequest request;
+  request.width = 200;
+  const SlicePlane plane = slicePlane(request, kLower, kUpper);
+  SliceLayers layers;
+  const auto across = [&](double b) {
+    PlaneLine line;
+    for (int k = 0; k <= 20; ++k)
+      line.points.push_back({plane.lower.x + (plane.upper.x - plane.lower.x) * k / 20.0, b});
+    return line;
+  };
+  const double b0 = plane.lower.y + 0.25 * (plane.upper.y - plane.lower.y);
+  const double b1 = plane.lower.y + 0.75 * (plane.upper.y - plane.lower.y);
+  layers.lines = {across(b0), across(b1)};
+  layers.lineWidthPixels = 7.0f;
+  const auto row = [&](double b) {
+    const double t = (b - plane.lower.y) / (plane.upper.y - plane.lower.y);
+    return std::uint32_t(sliceFigureFrame(plane, layers).top) + plane.height - 1 -
+           std::uint32_t(t * plane.height);
+  };
+  // The column a third of the way across, away from the arrows.
+  const std::uint32_t x = std::uint32_t(sliceFigureFrame(plane, layers).left) + plane.width / 3;
+
+  SliceLayers coloured = layers;
+  coloured.lineColourValues = {std::vector<float>(21, 2.0f), std::vector<float>(21, 4.0f)};
+  coloured.lineColours.map = render::ColourMap::Plasma;
+  coloured.lineColours.scale.min = 2.0;
+  coloured.lineColours.scale.max = 4.0;
+  const render::Image colours = drawSliceFigure(plane, coloured);
+  EXPECT_EQ(colours.at(x, row(b0)),
+            render::toRgba8(render::sampleColourMap(render::ColourMap::Plasma, 0.0f)));
+  EXPECT_EQ(colours.at(x, row(b1)),
+            render::toRgba8(render::sampleColourMap(render::ColourMap::Plasma, 1.0f)));
+
+  SliceLayers widened = layers;
+  widened.lineWidthValues = {std::vector<float>(21, 10.0f), std::vector<float>(21, 30.0f)};
+  widened.lineWidthRange = {10.0f, 30.0f};
+  const render::Image widths = drawSliceFigure(plane, widened);
+  // The dark pixels of each line in the column: a fifth of 7 pixels, and 7.
+  const auto thickness = [&](std::uint32_t centre) {
+    int count = 0;
+    for (std::uint32_t y = centre - 10; y <= centre + 10; ++y) count += widths.at(x, y).r < 110;
+    return count;
+  };
+  EXPECT_GE(thickness(row(b0)), 1);
+  EXPECT_LE(thickness(row(b0)), 2);
+  EXPECT_GE(thickness(row(b1)), 6);
+  EXPECT_LE(thickness(row(b1)), 8);
 }
 
 TEST(SliceFigure, TheDataSitWhereTheFrameSays) {
