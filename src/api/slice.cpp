@@ -97,9 +97,19 @@ render::ColourScale backgroundScale(const SliceOptions& options, const std::vect
 void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePlane& plane,
                    const flow::GridSamples& samples, const std::vector<float>& lic) {
   const flow::VectorVolume& volume = volumeOf(field);
-  // ImageData's point (i, j, k) runs along x, y, z; the plane's pixels along its (u, v).
-  const int uAxis = plane.axis == 0 ? 1 : plane.axis == 1 ? 2 : 0;
-  const int vAxis = plane.axis == 0 ? 2 : plane.axis == 1 ? 0 : 1;
+  output::VtiWriteOptions options;
+  if (plane.axis < 0) {
+    // The image's i and j run along the plane's u and v: its Direction.
+    output::VtiFrame frame;
+    frame.origin = plane.physical(plane.pixelCentre(0, 0));
+    frame.spacing = glm::dvec3(plane.pixelSize(), 1.0);
+    frame.axes = {plane.u, plane.v, plane.normal};
+    options.frame = frame;
+  }
+  // Across an axis, ImageData's point (i, j, k) runs along x, y, z and the plane's pixels along
+  // its (u, v); any other plane's image runs along (u, v, normal).
+  const int uAxis = plane.axis < 0 ? 0 : plane.axis == 0 ? 1 : plane.axis == 1 ? 2 : 0;
+  const int vAxis = plane.axis < 0 ? 1 : plane.axis == 0 ? 2 : plane.axis == 1 ? 0 : 1;
   flow::UniformGrid grid;
   glm::dvec3 lower = plane.point, upper = plane.point;
   lower[uAxis] = plane.lower.x;
@@ -131,7 +141,6 @@ void writeSliceVti(const SliceJob& job, const Field& field, const slice::SlicePl
       if (!lic.empty()) grid.channels[to * channels + count] = lic[from];
     }
   }
-  output::VtiWriteOptions options;
   options.vectorName = volume.vectorName;
   options.channelNames = volume.channelNames;
   if (!lic.empty()) options.channelNames.push_back("LIC");
@@ -393,10 +402,6 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
                   withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
                   volume.vectorName, clock.seconds()));
   const slice::SlicePlane plane = planeOf(volume, job.slice);
-  if (plane.axis < 0 && !job.vti.empty())
-    throw settingError("vti",
-                       "a slice across a normal that is not x, y or z has no .vti yet "
-                       "(ImageData without a direction holds axis-aligned planes)");
   const Sliced sliced = sliceOnPlane(field, plane, job.slice, reporter);
   clock.restart();
   render::writePng(job.out, slice::drawSliceFigure(plane, sliced.layers));

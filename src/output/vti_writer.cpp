@@ -80,8 +80,19 @@ void writeVti(const std::filesystem::path& path, const flow::UniformGrid& grid,
   const std::string extent =
       fmt::format("0 {} 0 {} 0 {}", spec.dims[0] - 1, spec.dims[1] - 1, spec.dims[2] - 1);
   AppendedFileWriter file("ImageData", options.compression);
-  file.markup(fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{}\" Spacing=\"{}\">\n", extent,
-                          triple(spec.origin()), triple(spec.spacing())));
+  if (options.frame) {
+    const VtiFrame& f = *options.frame;
+    std::string direction;
+    for (int row = 0; row < 3; ++row)
+      for (int column = 0; column < 3; ++column)
+        direction += fmt::format("{}{:.17g}", direction.empty() ? "" : " ", f.axes[column][row]);
+    file.markup(fmt::format(
+        "  <ImageData WholeExtent=\"{}\" Origin=\"{}\" Spacing=\"{}\" Direction=\"{}\">\n", extent,
+        triple(f.origin), triple(f.spacing), direction));
+  } else {
+    file.markup(fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{}\" Spacing=\"{}\">\n",
+                            extent, triple(spec.origin()), triple(spec.spacing())));
+  }
   file.fieldData(options.fieldData, 4);
   file.markup(fmt::format("    <Piece Extent=\"{}\">\n", extent));
   file.markup(fmt::format("      <PointData Vectors=\"{}\">\n", xmlAttribute(options.vectorName)));

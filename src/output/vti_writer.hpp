@@ -5,7 +5,9 @@
 // channel and vtkValidPointMask (UInt8: 1 where the sample is valid), as ParaView's Resample To
 // Image names it. Compressed as VTK does (zlib by default), with optional FieldData.
 
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,8 +17,17 @@
 
 namespace amrstream::output {
 
+// An image whose axes are not x, y and z: point (i, j, k) at origin + i spacing.x axes[0] +
+// j spacing.y axes[1] + k spacing.z axes[2] (VTK's Direction matrix, whose columns are the axes).
+struct VtiFrame {
+  glm::dvec3 origin{0.0}, spacing{1.0};
+  std::array<glm::dvec3, 3> axes{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+};
+
 struct VtiWriteOptions {
   Compression compression = Compression::ZLib;
+  // In place of the grid's box: the image's frame, written with its Direction.
+  std::optional<VtiFrame> frame;
   std::string vectorName = "Vectors";
   std::vector<std::string> channelNames;  // one per channel of the grid
   std::vector<FieldDataArray> fieldData;

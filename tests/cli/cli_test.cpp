@@ -534,7 +534,8 @@ TEST_F(Cli, SliceWritesTheFigureAndThePlaneAndRefusesBadOptions) {
       {"--background nosuch", "--background: 'nosuch' is not a channel of the point data"},
       {"--colour-scale cubic", "--colour-scale"},
       {"--range 2,1", "--range"},
-      {"--normal 1,1,1", "--vti: a slice across a normal"},
+      {"--line-colour-by nosuch", "--line-colour-by: 'nosuch' is not a channel"},
+      {"--lic --lic-length 1000", "--lic-length: 1000 is 32000 pixels each way"},
   };
   for (const auto& c : cases) {
     const Outcome r = run("slice builtin:cloud" + kSmall + " --width 32 " + c.options + out);

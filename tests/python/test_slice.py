@@ -90,3 +90,43 @@ def test_line_values_are_the_reconstruction_along_the_lines():
         np.testing.assert_array_equal(widths, speeds)
     plain = amrstream.slice(rotation, width=64, background="none", progress=None)
     assert plain["line_colour_values"] is None and plain["line_width_values"] is None
+
+
+def test_an_oblique_planes_vti_lies_on_the_plane_with_the_reconstruction(tmp_path):
+    cli = os.environ.get("AMRSTREAM_CLI")
+    if not cli:
+        pytest.skip("AMRSTREAM_CLI is not set: run through ctest")
+    vtk_xml = pytest.importorskip("vtkmodules.vtkIOXML")
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    normal, point = np.array([1.0, 2.0, 3.0]), np.array([0.45, 0.5, 0.55])
+    vti = tmp_path / "oblique.vti"
+    subprocess.run([cli, "slice", "builtin:cloud", "--levels", "3", "--root-blocks", "2",
+                    "--target-cells", "20000", "--normal", "1,2,3", "--point", "0.45,0.5,0.55",
+                    "--width", "40", "--lic", "--vti", str(vti), "--out",
+                    str(tmp_path / "oblique.png")], check=True, capture_output=True)
+    reader = vtk_xml.vtkXMLImageDataReader()
+    reader.SetFileName(str(vti))
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, depth = image.GetDimensions()
+    assert width == 40 and depth == 1
+    unit = normal / np.linalg.norm(normal)
+    dens = vtk_to_numpy(image.GetPointData().GetArray("dens"))
+    assert image.GetPointData().GetArray("LIC") is not None
+    field = amrstream.prepare(amrstream.load("builtin:cloud", **SMALL))
+    checked = 0
+    for i, j in ((0, 0), (39, 0), (0, height - 1), (20, height // 2), (7, 31), (33, 9)):
+        physical = [0.0, 0.0, 0.0]
+        image.TransformIndexToPhysicalPoint(i, j, 0, physical)
+        p = np.array(physical)
+        assert abs(np.dot(p - point, unit)) < 1e-9, "the image's point is off the plane"
+        n = i + width * j
+        if np.isnan(dens[n]):
+            continue
+        # The reconstruction at p: the centre of a one-point resample box around it.
+        box = tuple(p - 1e-7) + tuple(p + 1e-7)
+        expected = field.resample((1, 1, 1), box=box)["dens"][0, 0, 0]
+        np.testing.assert_allclose(dens[n], expected, rtol=1e-5)
+        checked += 1
+    assert checked >= 4
