@@ -376,3 +376,10 @@ def from_yt(ds: Any, vector: _Sequence[Union[str, Tuple[str, str]]] = DEFAULT_YT
     cells["units"] = {name: unit for name, unit in cells.pop("field_units", {}).items()
                       if unit not in ("", "dimensionless")}
     return from_arrays(**cells)
+
+
+try:
+    from . import yt_callbacks as _yt_callbacks  # registers yt's annotate_amrstream_lines, _lic
+except ModuleNotFoundError as _missing:  # without yt there is nothing to register them with
+    if (_missing.name or "").split(".")[0] not in ("yt", "unyt", "matplotlib"):
+        raise
