@@ -91,6 +91,7 @@ struct CellArrays {
   std::optional<double> lengthUnitCentimetres;            // where the length unit is known
   std::map<std::string, std::string, std::less<>> units;  // a channel's unit, by its name
   std::optional<std::array<bool, 3>> periodic;            // unset: the source says nothing
+  int dimensions = 3;  // 2: planar data held as a slab across z = 0 (DatasetInfo::dimensions)
 };
 
 // Throws InputError (naming `source`) for levels out of range and everything a Dataset rejects:

@@ -20,7 +20,10 @@ struct DatasetInfo {
   std::string lengthUnit;      // unit of the physical coordinates, e.g. "cm", "m", "code units (1
                                // = 3.1e24 cm)"; empty: unknown
   std::array<bool, 3> periodic{};  // axes the file declares periodic
-  bool periodicKnown = false;      // whether the file says anything about periodicity
+  // 2 for planar data (x, y), held as a slab across z = 0 one coarsest leaf cell thick with finer
+  // cells repeated up it, so that the reconstruction does not vary across it; else 3.
+  int dimensions = 3;
+  bool periodicKnown = false;  // whether the file says anything about periodicity
   // The file's own level numbers: internal level L (0 = finest, see Dataset::levels) is the file's
   // level finestFileLevel - L when levelsCountDown, else finestFileLevel + L (ExaBricks: 0 + L).
   int finestFileLevel = 0;

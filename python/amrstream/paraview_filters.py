@@ -163,7 +163,7 @@ def dataset_of(amr):
     cells = vtk_amr.leaf_cells(amr)
     described = vtk_amr.described(amr)
     described.setdefault("source", "ParaView vtkOverlappingAMR")
-    return amrstream.from_arrays(format="vtkOverlappingAMR", **cells, **described)
+    return amrstream.from_arrays(format="vtkOverlappingAMR", **{**cells, **described})
 
 
 class AmrstreamReader(VTKPythonAlgorithmBase):

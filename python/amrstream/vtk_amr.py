@@ -7,7 +7,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy
 
-from .yt_cells import stacked_into_a_slab
+from .yt_cells import slab_bottom, stacked_into_a_slab
 
 # A cell of an overlapping AMR block that is no leaf: one covered by finer cells, one hidden, or a
 # ghost copy of a neighbour's (vtkDataSetAttributes' REFINEDCELL, HIDDENCELL, DUPLICATECELL).
@@ -20,6 +20,7 @@ SOURCE_ARRAY = "amrstream Source"
 PERIODIC_ARRAY = "amrstream Periodic"
 LENGTH_UNIT_ARRAY = "amrstream LengthUnit"
 LENGTH_UNIT_CM_ARRAY = "amrstream LengthUnitCentimetres"
+DIMENSIONS_ARRAY = "amrstream Dimensions"
 COMPONENT_SUFFIXES = ("_X", "_Y", "_Z")
 
 
@@ -64,9 +65,11 @@ def leaf_cells(amr: Any) -> Dict[str, Any]:
     if planar:  # as load() makes a slab of a 2D FLASH file
         all_corners, all_levels, fields = stacked_into_a_slab("the 2D AMR input", all_corners,
                                                               all_levels, fields, finest)
+        origin[2] = slab_bottom(all_levels, finest, finest_width[2])
     return {"corners": all_corners, "levels": all_levels, "fields": fields,
             "origin": tuple(float(x) for x in origin),
-            "finest_width": tuple(float(x) for x in finest_width)}
+            "finest_width": tuple(float(x) for x in finest_width),
+            "dimensions": 2 if planar else 3}
 
 
 def _block_leaves(grid: Any, level: int, finest: int, origin: Any, finest_width: List[float],
@@ -189,6 +192,8 @@ def _describe(amr: Any, dataset: Any) -> None:
         number.SetName(LENGTH_UNIT_CM_ARRAY)
         number.InsertNextValue(dataset.length_unit_cm)
         amr.GetFieldData().AddArray(number)
+    if dataset.dimensions == 2:  # the slab's blocks are 3D: say that the data are not
+        text(DIMENSIONS_ARRAY, "2")
     if dataset.periodic is not None:
         text(PERIODIC_ARRAY, ",".join(axis for axis, on in zip("xyz", dataset.periodic) if on)
              or "none")
@@ -210,4 +215,6 @@ def described(amr: Any) -> Dict[str, Any]:
         elif name == PERIODIC_ARRAY:
             axes = array.GetValue(0)
             found["periodic"] = tuple(axis in axes.split(",") for axis in "xyz")
+        elif name == DIMENSIONS_ARRAY:
+            found["dimensions"] = int(array.GetValue(0))
     return found

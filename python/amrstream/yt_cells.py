@@ -78,16 +78,19 @@ def leaf_cells_from_yt(ds, vector=None, fields=None):
     values = {name: np.ascontiguousarray(np.concatenate(parts), dtype=np.float32)
               for name, parts in value_parts.items()}
     periodic = tuple(bool(p) for p in ds.periodicity)
+    origin = tuple(float(x) for x in domain_left)
     if planar:
         corners, levels, values = stacked_into_a_slab(ds, corners, levels, values, max_level)
         periodic = periodic[:2] + (False,)
+        origin = origin[:2] + (slab_bottom(levels, max_level, finest_width[2]),)
 
     return {
         "corners": corners,
         "levels": levels,
         "fields": values,
         "field_units": field_units,
-        "origin": domain_left,
+        "origin": origin,
+        "dimensions": 2 if planar else 3,
         "finest_width": finest_width,
         "periodic": periodic,
         "time": float(ds.current_time.to_value("code_time")),
@@ -277,6 +280,12 @@ def _check_leaf_volume(ds, levels, max_level, planar):
         warnings.warn(
             f"leaf cells of {ds} cover {leaf_volume} of the domain's {domain_volume} "
             "finest cells: part of the domain has no data", stacklevel=3)
+
+
+def slab_bottom(levels, max_level, finest_depth):
+    """The z of a slab's lower face: its middle, the data's plane, is z = 0 (as load() puts a 2D
+    FLASH file's)."""
+    return -0.5 * finest_depth * 2.0 ** (max_level - int(levels.min()))
 
 
 def stacked_into_a_slab(ds, corners, levels, values, max_level):

@@ -54,16 +54,23 @@ BackendChoice chooseBackend(const BackendRequest& request, BackendUse use, const
     }
     std::string why;
     const vk::DeviceReport* device = autoDevice(devices, request.device);
-    if (use == BackendUse::Trace && request.device.empty() && device &&
+    if (use != BackendUse::Render && request.device.empty() && device &&
         device->type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
       say(log, fmt::format("backend    auto: cpu ({} is a software Vulkan device, slower than the "
-                           "CPU reference; name {{backend}} rayquery, pipeline or compute to trace "
+                           "CPU reference; name {{backend}} rayquery, pipeline or compute to {} "
                            "on it)",
-                           device->name));
+                           device->name, use == BackendUse::Slice ? "make the LIC" : "trace"));
       return choice;
     }
     choice.backend = gpu::chooseBackend(device, why);
     if (device) choice.deviceFilter = device->name;
+    if (use == BackendUse::Slice && device && choice.backend != gpu::Backend::Cpu) {
+      choice.backend = gpu::Backend::Compute;
+      why = fmt::format(
+          "compute on {} (the LIC's one dispatch runs as fast on every backend, and "
+          "compute sets up soonest; name {{backend}} to choose another)",
+          device->name);
+    }
     // autoDevice() gives only devices that run the compute backend.
     if (use == BackendUse::Render && device && device->type == VK_PHYSICAL_DEVICE_TYPE_CPU &&
         choice.backend != gpu::Backend::Compute) {

@@ -89,6 +89,7 @@ Dataset fromCells(CellArrays cells) {
 
   DatasetInfo info;
   info.format = cells.format;
+  info.dimensions = cells.dimensions;
   info.time = cells.time;
   info.timeUnit = cells.timeUnit;
   info.lengthUnit = cells.lengthUnit;

@@ -73,7 +73,7 @@ std::string derivedVectorUnit(const DatasetInfo& info, const flow::VectorChannel
   }
   const std::string component = unitOf(info, vector.channels[0]);
   return unitOf(info, vector.channels[1]) == component &&
-                 unitOf(info, vector.channels[2]) == component
+                 (vector.channels[2].empty() || unitOf(info, vector.channels[2]) == component)
              ? component
              : std::string();
 }

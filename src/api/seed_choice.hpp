@@ -18,6 +18,7 @@ struct Domain {
   glm::dvec3 finestWidth{1.0};
   // When known, random seeds are drawn inside its cells, never in holes of the domain.
   const flow::VectorVolume* volume = nullptr;
+  bool planar = false;  // 2D data: seeds go onto the plane in the middle of the slab
 };
 Domain domainOf(const bricks::AmrField& cells);
 Domain domainOf(const flow::VectorVolume& volume);

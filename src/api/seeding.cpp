@@ -69,11 +69,13 @@ void checkSeedCount(double count, const std::string& option) {
 Domain domainOf(const bricks::AmrField& cells) {
   const WorldTransform& t = cells.transform();
   return {t.toPhysical(glm::dvec3(cells.bounds().lower)),
-          t.toPhysical(glm::dvec3(cells.bounds().upper)), t.spacing};
+          t.toPhysical(glm::dvec3(cells.bounds().upper)), t.spacing, nullptr,
+          cells.info().dimensions == 2};
 }
 
 Domain domainOf(const flow::VectorVolume& volume) {
-  return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing, &volume};
+  return {flow::domainLower(volume), flow::domainUpper(volume), volume.transform.spacing, &volume,
+          volume.planar};
 }
 
 void checkSeedRequest(const SeedRequest& request) {
@@ -85,10 +87,11 @@ void checkSeedRequest(const SeedRequest& request) {
     checkSeedCount(double(request.count), "count");
 }
 
-flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain,
-                           const bricks::AmrField* cells, std::string& description,
-                           const flow::SharedCells* shared) {
-  checkSeedRequest(request);
+namespace {
+
+flow::SeedList seedsAsAsked(const SeedRequest& request, const Domain& domain,
+                            const bricks::AmrField* cells, std::string& description,
+                            const flow::SharedCells* shared) {
   if (!request.points.empty()) {
     description = "given points";
     flow::SeedList seeds;
@@ -131,7 +134,27 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain,
   return flow::randomSeedsInBox(lo, hi, request.count, request.seed);
 }
 
+}  // namespace
+
+flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain,
+                           const bricks::AmrField* cells, std::string& description,
+                           const flow::SharedCells* shared) {
+  checkSeedRequest(request);
+  flow::SeedList seeds = seedsAsAsked(request, domain, cells, description, shared);
+  if (domain.planar) {
+    // 2D data: every seed on the data's plane, the middle of its slab, where lines stay.
+    const double plane = 0.5 * (domain.lower.z + domain.upper.z);
+    for (glm::dvec3& p : seeds.points) p.z = plane;
+    description += ", on the 2D data's plane";
+  }
+  return seeds;
+}
+
 void placeSeeds(const flow::VectorVolume& volume, flow::SeedList& seeds) {
+  if (volume.planar) {  // 2D data: given seeds go onto the plane, as chosen ones do
+    const double plane = 0.5 * (flow::domainLower(volume).z + flow::domainUpper(volume).z);
+    for (glm::dvec3& p : seeds.points) p.z = plane;
+  }
   flow::closeUpperFaces(volume, seeds);
   flow::checkSeedsInDomain(volume, seeds);
 }

@@ -14,6 +14,7 @@
 #include "api/provenance.hpp"
 #include "api/render_scene.hpp"
 #include "flow/uniform_resample.hpp"
+#include "flow/vector_selection.hpp"
 #include "gpu/plane_lic.hpp"
 #include "output/polyline_writer.hpp"
 #include "output/vti_writer.hpp"
@@ -249,7 +250,24 @@ void styleLines(const Field& field, const SliceOptions& options, Sliced& sliced)
   }
 }
 
+// The field's options, with no vector where the figure needs none (no lines, no LIC) and the
+// data have none of the known ones: a channel alone on the plane.
+FieldOptions sliceFieldOptions(const SliceJob& job, const Dataset& cells) {
+  FieldOptions options = job.field;
+  if (job.slice.lines || job.slice.lic || !options.vector.empty()) return options;
+  try {
+    flow::chooseVectorChannels(cellsOf(cells), "");
+  } catch (const InputError&) {
+    options.vector = std::string(flow::kNoVector);
+  }
+  return options;
+}
+
 slice::SlicePlane planeOf(const flow::VectorVolume& volume, const SliceOptions& options) {
+  if (volume.planar && options.normal != "z")
+    throw settingError("normal", fmt::format("'{}': 2D data are sliced across z only, through "
+                                             "their plane",
+                                             options.normal));
   slice::SliceRequest request;
   request.normal = options.normal;
   if (options.point)
@@ -299,7 +317,7 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
           fmt::format("{:g} is {:g} pixels each way, more than the {:g} the LIC "
                       "reaches",
                       length, lic.halfLengthPixels, slice::kMaxLicStepsEachWay * lic.stepPixels));
-    const BackendChoice choice = chooseBackend(options.backend, BackendUse::Trace, log);
+    const BackendChoice choice = chooseBackend(options.backend, BackendUse::Slice, log);
     layers.lic =
         choice.backend == gpu::Backend::Cpu
             ? slice::lineIntegralConvolution(slice::inPlaneImage(plane, sliced.samples), lic)
@@ -395,7 +413,7 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
   clock.restart();
-  const Field field = buildField(cells, job.field, KeepDataset::No);
+  const Field field = buildField(cells, sliceFieldOptions(job, cells), KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);
   say(log,
       fmt::format("structure  {} bricks, {} regions, vector {} [{:.2f} s]",

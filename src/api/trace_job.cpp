@@ -150,8 +150,8 @@ void sayInput(const bricks::AmrField& cells, const flow::VectorChannels& vector,
                        cells.source(), withCommas(cells.cellCount()),
                        cells.info().fileLevel(cells.coarsestLevel()),
                        cells.info().fileLevel(cells.finestLevel()), vector.name, vector.channels[0],
-                       vector.channels[1], vector.channels[2], timeAndUnitsClause(cells.info()),
-                       seconds));
+                       vector.channels[1], vector.channels[2].empty() ? "0" : vector.channels[2],
+                       timeAndUnitsClause(cells.info()), seconds));
 }
 
 void sayStructure(const flow::VectorVolume& volume, const FieldBuildTimes& times, const Log& log) {

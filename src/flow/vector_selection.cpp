@@ -38,7 +38,9 @@ std::string trimSeparators(std::string s) {
 
 // "velx,vely,velz" -> "vel"; "x-velocity,y-velocity,z-velocity" -> "velocity"; Gerris' "U,V,W"
 // (and "u,v,w") -> "velocity"; otherwise the names joined with '_'.
-std::string vectorName(const std::array<std::string, 3>& c) {
+std::string vectorName(const std::array<std::string, 3>& given) {
+  // A 2D vector's name comes from its two channels.
+  const std::array<std::string, 3> c{given[0], given[1], given[2].empty() ? given[1] : given[2]};
   if ((c[0] == "U" && c[1] == "V" && c[2] == "W") || (c[0] == "u" && c[1] == "v" && c[2] == "w"))
     return "velocity";
   const std::size_t shortest = std::min({c[0].size(), c[1].size(), c[2].size()});
@@ -70,7 +72,10 @@ VectorChannels chosenGradient(const ChannelCatalog& field, const GradientRequest
 
 std::vector<std::string> VectorChannels::sourceChannels() const {
   if (isGradient()) return {gradientOf};
-  return {channels.begin(), channels.end()};
+  std::vector<std::string> names;
+  for (const std::string& name : channels)
+    if (!name.empty()) names.push_back(name);
+  return names;
 }
 
 bool ChannelCatalog::has(const std::string& name) const {
@@ -90,7 +95,7 @@ std::string ChannelCatalog::list() const {
 }
 
 ChannelCatalog catalogOf(const bricks::AmrField& field) {
-  ChannelCatalog catalog{field.source(), {}};
+  ChannelCatalog catalog{field.source(), {}, field.info().dimensions};
   for (const Channel& c : field.channels()) catalog.names.push_back(c.name);
   return catalog;
 }
@@ -101,32 +106,41 @@ VectorChannels chooseVectorChannels(const bricks::AmrField& field, const std::st
 
 VectorChannels chooseVectorChannels(const ChannelCatalog& field, const std::string& request) {
   VectorChannels result;
+  const bool planar = field.dimensions == 2;
   if (request.empty()) {
     for (const auto& triplet : kKnownTriplets) {
-      if (field.has(triplet[0]) && field.has(triplet[1]) && field.has(triplet[2])) {
-        result.channels = {triplet[0], triplet[1], triplet[2]};
+      if (field.has(triplet[0]) && field.has(triplet[1]) && (planar || field.has(triplet[2]))) {
+        result.channels = {triplet[0], triplet[1], planar ? "" : triplet[2]};
         result.name = vectorName(result.channels);
         return result;
       }
     }
     throw InputError(field.source,
-                     fmt::format("no velocity or magnetic field channels found; choose three with "
-                                 "{{vector}} a,b,c (channels: {})",
-                                 field.list()));
+                     fmt::format("no velocity or magnetic field channels found; choose {} with "
+                                 "{{vector}} {} (channels: {})",
+                                 planar ? "two" : "three", planar ? "a,b" : "a,b,c", field.list()));
   }
 
+  if (request == kNoVector) {
+    result.name = kNoVector;
+    return result;
+  }
   if (const std::optional<GradientRequest> gradient = parseGradientRequest(request))
     return chosenGradient(field, *gradient);
   std::vector<std::string> names;
   std::istringstream parts(request);
   for (std::string part; std::getline(parts, part, ',');) names.push_back(part);
-  if (names.size() != 3 || request.back() == ',')
-    throw InputError(field.source, fmt::format("{{vector}} '{}' must name exactly three channels "
-                                               "separated by commas, or be grad(NAME) or "
-                                               "-grad(NAME)",
-                                               request));
-  std::copy(names.begin(), names.end(), result.channels.begin());
-  for (const std::string& name : result.channels) field.require(name);
+  const bool counted = planar ? names.size() == 2 || names.size() == 3 : names.size() == 3;
+  if (!counted || request.back() == ',')
+    throw InputError(field.source,
+                     fmt::format("{{vector}} '{}' must name exactly {} separated by commas, or be "
+                                 "grad(NAME) or -grad(NAME)",
+                                 request,
+                                 planar ? "two channels (the data are 2D; a third is left out)"
+                                        : "three channels"));
+  std::copy(names.begin(), names.begin() + 2, result.channels.begin());
+  if (!planar) result.channels[2] = names[2];
+  for (const std::string& name : result.sourceChannels()) field.require(name);
   result.name = vectorName(result.channels);
   return result;
 }

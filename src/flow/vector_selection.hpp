@@ -13,6 +13,7 @@ namespace amrstream::flow {
 
 struct VectorChannels {
   // The components' names: the dataset's channels, or a gradient's "d(T)/dx", "d(T)/dy", ...
+  // The third is empty for a 2D dataset's vector (ChannelCatalog::dimensions 2): zero.
   std::array<std::string, 3> channels;
   std::string name;  // the name of the vector in outputs, e.g. "vel" for velx,vely,velz
   // Set for grad(NAME) and -grad(NAME): the scalar channel NAME, whose gradient per physical
@@ -22,7 +23,8 @@ struct VectorChannels {
   glm::dvec3 frameVelocity{0.0};  // subtracted from every value: a frame moving at it
 
   bool isGradient() const { return !gradientOf.empty(); }
-  // The dataset's channels the vector is made of: its three, or the gradient's scalar.
+  // The dataset's channels the vector is made of: its three (two in 2D), or the gradient's
+  // scalar.
   std::vector<std::string> sourceChannels() const;
 };
 
@@ -30,6 +32,7 @@ struct VectorChannels {
 struct ChannelCatalog {
   std::string source;  // prefixes every error
   std::vector<std::string> names;
+  int dimensions = 3;  // DatasetInfo::dimensions
 
   bool has(const std::string& name) const;
   // Throws InputError naming the source and listing the channels when `name` is absent, as
@@ -39,9 +42,14 @@ struct ChannelCatalog {
 };
 ChannelCatalog catalogOf(const bricks::AmrField& field);
 
-// `request` is "a,b,c", grad(NAME), -grad(NAME) or empty. Empty picks the first known velocity
-// triplet, then the first known magnetic-field triplet. Throws InputError naming the source, the
-// missing channel or the available channels; for a gradient, naming {vector}.
+// The request for no vector (zeros everywhere): for slices that show a channel alone.
+inline constexpr std::string_view kNoVector = "none";
+
+// `request` is "a,b,c", grad(NAME), -grad(NAME), "none" or empty. Empty picks the first known
+// velocity triplet, then the first known magnetic-field triplet. For 2D data, whose traces stay in
+// their plane, the vector is (a, b, 0): "a,b" or "a,b,c" (c left out), and empty picks the first
+// known pair (velx, vely, ...). Throws InputError naming the source, the missing channel or the
+// available channels; for a gradient, naming {vector}.
 VectorChannels chooseVectorChannels(const ChannelCatalog& channels, const std::string& request);
 VectorChannels chooseVectorChannels(const bricks::AmrField& field, const std::string& request);
 

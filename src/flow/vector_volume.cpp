@@ -174,7 +174,9 @@ VectorVolume buildCellLayout(const bricks::AmrField& field, const VolumeOptions&
   const CentredCells centred = centreCells(field, brickSet.bricks);
   if (options.keepAround)
     keepAround(brickSet, *options.keepAround, centred.domain, options.periodic);
-  return finishLayout(std::move(brickSet), centred, options, clock, times);
+  VectorVolume volume = finishLayout(std::move(brickSet), centred, options, clock, times);
+  volume.planar = field.info().dimensions == 2;
+  return volume;
 }
 
 VectorVolume cropCellLayout(const VectorVolume& whole, const VolumeOptions& options,
@@ -185,7 +187,10 @@ VectorVolume cropCellLayout(const VectorVolume& whole, const VolumeOptions& opti
                          whole.bricks.begin() + std::ptrdiff_t(whole.originalBrickCount));
   brickSet.cellIds = whole.cellIds;
   if (options.keepAround) keepAround(brickSet, *options.keepAround, whole.domain, options.periodic);
-  return finishLayout(std::move(brickSet), {whole.domain, whole.transform}, options, clock, times);
+  VectorVolume volume =
+      finishLayout(std::move(brickSet), {whole.domain, whole.transform}, options, clock, times);
+  volume.planar = whole.planar;
+  return volume;
 }
 
 VectorVolume buildVectorVolume(const bricks::AmrField& field, const VectorChannels& vector,
@@ -249,6 +254,11 @@ void gatherVector(VectorVolume& volume, const VectorChannels& vector, const std:
   }
   for (int c = 0; c < 3; ++c) {
     const std::string& name = vector.channels[c];
+    if (name.empty()) {  // a 2D dataset's third component
+      tbb::parallel_for(std::size_t(0), slots,
+                        [&](std::size_t slot) { volume.values[slot][c] = 0.0f; });
+      continue;
+    }
     channels(name, [&](std::span<const float> values) {
       checkCount(cells, name, values);
       checkChannelRange(values, source, name, kMaxVectorComponent, "the vector component");

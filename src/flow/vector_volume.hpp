@@ -58,6 +58,8 @@ struct VectorVolume {
   PeriodicAxes periodic{};
   WorldTransform transform;
   std::string vectorName;
+  // Planar data (DatasetInfo::dimensions 2): a slab across its plane, in which seeds are placed.
+  bool planar = false;
   // The velocity of the frame the values are relative to, subtracted from the vector's values
   // (frame_velocity.hpp); zero for none.
   glm::dvec3 frameVelocity{0.0};

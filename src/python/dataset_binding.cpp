@@ -189,7 +189,8 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
                                     Given<std::optional<double>> time, std::string timeUnit,
                                     std::string lengthUnit, std::optional<double> lengthUnitCm,
                                     std::string source, std::string format,
-                                    std::optional<std::map<std::string, std::string>> units) {
+                                    std::optional<std::map<std::string, std::string>> units,
+                                    int dimensions) {
   const py::array givenCorners =
       realArray(corners, "corners", "an (N, 3) array of integer cell indices", 2);
   if (givenCorners.shape(1) != 3)
@@ -221,6 +222,9 @@ std::shared_ptr<Dataset> fromArrays(py::handle corners, py::handle levels, py::d
     if (!unit.empty()) cells.units[name] = unit;
   cells.source = std::move(source);
   cells.format = std::move(format);
+  if (dimensions != 2 && dimensions != 3)
+    throw py::value_error(fmt::format("dimensions must be 2 or 3, not {}", dimensions));
+  cells.dimensions = dimensions;
   py::gil_scoped_release unlocked;
   return std::make_shared<Dataset>(fromCells(std::move(cells)));
 }
@@ -300,6 +304,9 @@ void bindDatasetClass(py::module_& m) {
       .def_property_readonly(
           "origin", [](const Dataset& d) { return tuple3(d.transform().origin); },
           "physical position of corner (0, 0, 0)")
+      .def_property_readonly(
+          "dimensions", [](const Dataset& d) { return d.info().dimensions; },
+          "2 for planar data, held as a slab across z = 0 whose vector is two channels; else 3")
       .def_property_readonly(
           "finest_width", [](const Dataset& d) { return tuple3(d.transform().spacing); },
           "(dx, dy, dz): the physical widths of a finest cell")
@@ -408,10 +415,11 @@ void bindDataset(py::module_& m) {
         py::arg("finest_width") = py::make_tuple(1.0, 1.0, 1.0), py::arg("periodic") = py::none(),
         py::arg("time") = py::none(), py::arg("time_unit") = "", py::arg("length_unit") = "",
         py::arg("length_unit_cm") = py::none(), py::arg("source") = "arrays",
-        py::arg("format") = "arrays", py::arg("units") = py::none(),
+        py::arg("format") = "arrays", py::arg("units") = py::none(), py::arg("dimensions") = 3,
         "A dataset from leaf cells: corners (N, 3) in finest cells from `origin`, levels (N,) "
         "with 0 the coarsest, fields {name: (N,) values}, units {name: unit} of the fields; "
-        "length_unit_cm: the centimetres in a unit of length_unit, where it is code units.");
+        "length_unit_cm: the centimetres in a unit of length_unit, where it is code units; "
+        "dimensions 2: planar data held as a slab across z = 0, whose vector is (a, b, 0).");
 
   m.def(
       "prepare",

@@ -295,13 +295,17 @@ TEST_F(FlashReader, TwoDimensionalMixedLevelsFormAUniformSlab) {
   writeFlash(path, 2, makeTree(2, kLo, kHi));
   const bricks::AmrField field = readFlash(path);
 
-  // 3 coarse leaves (level 1) once, 4 fine leaves (level 0) stacked twice: slab 2 cells thick.
+  // 3 coarse leaves (level 1) once, 4 fine leaves (level 0) stacked twice: slab 2 cells thick,
+  // across z = 0, the 2D dataset's plane.
   EXPECT_EQ(field.cellCount(), 3u * 16u + 4u * 16u * 2u);
   EXPECT_EQ(field.bounds().lower.z, 0);
   EXPECT_EQ(field.bounds().upper.z, 2);
   EXPECT_EQ(field.transform().spacing.z, field.transform().spacing.x);
   expectNear(glm::dvec3(field.transform().toPhysical(glm::dvec3(field.bounds().upper))),
-             glm::dvec3(kHi.x, kHi.y, kLo.z + 2 * field.transform().spacing.x), 1e-12);
+             glm::dvec3(kHi.x, kHi.y, field.transform().spacing.x), 1e-12);
+  EXPECT_EQ(field.transform().toPhysical(glm::dvec3(field.bounds().lower)).z,
+            -field.transform().spacing.x);
+  EXPECT_EQ(field.info().dimensions, 2);
   const auto& values = field.channel("velx").values;
   for (std::size_t c = 0; c < field.cellCount(); ++c) {
     const glm::dvec3 centre = cellCentre(field, c);

@@ -378,7 +378,9 @@ def test_planar_cells_become_a_slab_as_load_makes_of_2d_flash():
     # Level l repeats 2**l times: the coarsest leaves (level 0) set the slab's thickness.
     assert adapter_counts(cells) == {level: n * 2**level for level, n in leaves.items()}
     np.testing.assert_array_equal(cells["finest_width"], [0.0625, 0.0625, 0.0625])
-    np.testing.assert_array_equal(cells["origin"], [-1.0, 0.0, 0.0])
+    # The slab, 4 finest cells thick, across z = 0 as load() puts a 2D FLASH file's.
+    np.testing.assert_array_equal(cells["origin"], [-1.0, 0.0, -0.125])
+    assert cells["dimensions"] == 2
     assert cells["periodic"] == (True, False, False)
     # The slab is one root cell (4 finest cells) thick and tiled exactly once.
     assert_exact_tiling(cells, max_level, [8, 8, 1])

@@ -97,7 +97,10 @@ double fastestOverRanks(const MpiWorld& world, const TraceJob& job,
     const flow::VectorChannels vector = flow::chooseVectorChannels(part, job.field.vector);
     const std::vector<float>& x = part.channel(vector.channels[0]).values;
     const std::vector<float>& y = part.channel(vector.channels[1]).values;
-    const std::vector<float>& z = part.channel(vector.channels[2]).values;
+    // A 2D dataset's vector has no third channel: zeros.
+    const std::vector<float> zeros(vector.channels[2].empty() ? x.size() : 0, 0.0f);
+    const std::vector<float>& z =
+        vector.channels[2].empty() ? zeros : part.channel(vector.channels[2]).values;
     const glm::dvec3 frame = parseFrameVelocity(job.field.frameVelocity).velocity;
     double fastest = 0.0;  // as stepReach finds it over a whole volume's values
     for (std::size_t c = 0; c < x.size(); ++c)

@@ -63,6 +63,7 @@ DatasetInfo readFlashInfo(const FlashFile& file, int finestLeafRefineLevel, int 
                           const std::vector<std::string>& variables) {
   DatasetInfo info;
   info.format = "FLASH";
+  info.dimensions = dimensionality;
   info.time = readFlashTime(file);
 
   const auto parameters = stringParameters(file);

@@ -352,7 +352,10 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
   for (const std::string& name : names) sink.addChannel(name);
   sink.reserve(layout.total);
   const CellsRead cells = addCells(sink, layout, leaves, windowed);
-  const WorldTransform transform{grid.domainLo, grid.dxf};
+  glm::dvec3 origin = grid.domainLo;
+  // A 2D file's plane is z = 0, in the middle of its slab (as VTK's FLASH reader puts it).
+  if (layout.axes() == 2) origin.z = -0.5 * std::ldexp(grid.dxf.z, layout.coarsest);
+  const WorldTransform transform{origin, grid.dxf};
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     file.fail("bounding box", "the leaves cannot be placed: " + *problem);
   setValues(file, sink, names, layout, cells, windowed);
