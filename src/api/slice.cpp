@@ -191,15 +191,8 @@ std::vector<float> deviceLic(const flow::VectorVolume& volume, const slice::Slic
   const vk::Context ctx = createContext(request, choice);
   gpu::PlaneLic lic(ctx, choice.backend, volume);
   const double setup = clock.seconds();
-  shared::LicParams params{};
-  params.axisU = glm::vec3(plane.u);
-  params.axisV = glm::vec3(plane.v);
-  params.width = plane.width;
-  params.height = plane.height;
-  params.stepPixels = options.stepPixels;
-  params.stepsEachWay = slice::licStepsEachWay(options);
-  params.noiseSeed = options.noiseSeed;
-  std::vector<float> intensity = lic.convolve(slice::pixelGrid(volume, plane), params);
+  std::vector<float> intensity =
+      lic.convolve(slice::pixelGrid(volume, plane), slice::licParams(plane, options));
   checkValidation(ctx);
   const gpu::PlaneLic::Times& t = lic.times();
   say(log, fmt::format("lic device backend {} on {} [device setup {:.2f} s: upload {:.2f} s, "

@@ -55,29 +55,26 @@ UniformGridSpec uniformGridSpec(const VectorVolume& volume, std::span<const std:
   return spec;
 }
 
-GridSamples sampleGrid(const VectorVolume& volume, const AffineGrid& grid,
+GridSamples sampleRows(const VectorVolume& volume, std::size_t rowLength, std::size_t rows,
+                       const std::function<CellPoint(std::size_t, std::size_t)>& pointAt,
                        const std::function<void(std::size_t)>& progress) {
   GridSamples samples;
-  const std::size_t points = grid.pointCount(), channelCount = volume.channelCount();
+  const std::size_t points = rowLength * rows, channelCount = volume.channelCount();
   samples.vectors.assign(points, glm::vec3(0.0f));
   samples.channels.assign(points * channelCount, 0.0f);
   samples.valid.assign(points, 0);
-  const std::size_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   std::atomic<std::uint64_t> validCount{0};
   std::size_t rowsDone = 0;
   std::mutex progressMutex;
-  tbb::parallel_for(std::size_t(0), nz * ny, [&](std::size_t row) {
-    const std::size_t j = row % ny, k = row / ny;
-    const glm::dvec3 rowStart = grid.origin + grid.steps[1] * double(j) + grid.steps[2] * double(k);
+  tbb::parallel_for(std::size_t(0), rows, [&](std::size_t row) {
     RegionCache cache;
     std::vector<float> values(channelCount);
     std::uint64_t rowValid = 0;
-    for (std::size_t i = 0; i < nx; ++i) {
-      const glm::dvec3 physical = rowStart + grid.steps[0] * double(i);
-      const CellPoint p = wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(physical)));
+    for (std::size_t i = 0; i < rowLength; ++i) {
+      const CellPoint p = pointAt(i, row);
       const VectorSample sample = sampleVector(volume, p, &cache);
       if (!sample.valid) continue;
-      const std::size_t n = i + nx * row;
+      const std::size_t n = i + rowLength * row;
       samples.vectors[n] = sample.value;
       samples.valid[n] = 1;
       ++rowValid;
@@ -93,6 +90,20 @@ GridSamples sampleGrid(const VectorVolume& volume, const AffineGrid& grid,
   });
   samples.validCount = validCount;
   return samples;
+}
+
+GridSamples sampleGrid(const VectorVolume& volume, const AffineGrid& grid,
+                       const std::function<void(std::size_t)>& progress) {
+  const std::size_t ny = grid.dims[1];
+  return sampleRows(
+      volume, grid.dims[0], ny * grid.dims[2],
+      [&](std::size_t i, std::size_t row) {
+        const std::size_t j = row % ny, k = row / ny;
+        const glm::dvec3 physical = grid.origin + grid.steps[1] * double(j) +
+                                    grid.steps[2] * double(k) + grid.steps[0] * double(i);
+        return wrapPeriodic(volume, toCellPoint(volume.transform.toCellUnits(physical)));
+      },
+      progress);
 }
 
 UniformGrid resampleUniform(const VectorVolume& volume, const UniformGridSpec& spec,

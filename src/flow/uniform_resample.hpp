@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "cell_point.hpp"
 #include "vector_volume.hpp"
 
 namespace amrstream::flow {
@@ -56,6 +57,13 @@ struct GridSamples {
 struct UniformGrid : GridSamples {
   UniformGridSpec spec;
 };
+
+// `volume` sampled at pointAt(i, row) for i below rowLength and row below rows, into point
+// i + rowLength row, on all cores, a row at a time; `progress(done)` is called from one thread at
+// a time with the number of rows done.
+GridSamples sampleRows(const VectorVolume& volume, std::size_t rowLength, std::size_t rows,
+                       const std::function<CellPoint(std::size_t, std::size_t)>& pointAt,
+                       const std::function<void(std::size_t)>& progress = {});
 
 // Samples `volume` at every point of `grid` on all cores; `progress(done)` is called from one
 // thread at a time with the number of rows of points done (of dims[1] * dims[2]).

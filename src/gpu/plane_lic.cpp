@@ -9,6 +9,7 @@
 #include "flow/trace_options.hpp"
 #include "lic_comp.h"
 #include "util/stopwatch.hpp"
+#include "vector_probe.hpp"
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
 #include "vk/descriptor_writes.hpp"
@@ -58,22 +59,7 @@ void PlaneLic::reserve(std::size_t pixels) {
   pool_ = std::make_unique<vk::DescriptorPool>(*ctx_, 2, sizes);
   probeSet_ = pool_->allocate(probe_.setLayout.get());
   licSet_ = pool_->allocate(licSetLayout_.get());
-  vk::DescriptorWrites("slice probe", AMRSTREAM_TRACE_BINDING_COUNT)
-      .set(AMRSTREAM_BINDING_TRACE_PARAMS, vk::uniformTarget(params_))
-      .set(AMRSTREAM_BINDING_TRACE_BRICKS, device_.bricks)
-      .set(AMRSTREAM_BINDING_TRACE_VALUES, device_.values)
-      .set(AMRSTREAM_BINDING_TRACE_REGIONS, device_.regions)
-      .set(AMRSTREAM_BINDING_TRACE_REGION_BRICKS, device_.regionBricks)
-      .set(AMRSTREAM_BINDING_TRACE_PROBE_POINTS, grid_)
-      .set(AMRSTREAM_BINDING_TRACE_STATES_OUT, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_LINE_ROUNDS, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_POSITIONS, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_TIMES, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_VECTORS, vectors_)
-      .set(AMRSTREAM_BINDING_TRACE_REGION_IDS, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_LOCATE, device_.locateTarget())
-      .set(AMRSTREAM_BINDING_TRACE_LINEAR_CELLS, device_.vectorGradients)
-      .write(*ctx_, probeSet_);
+  writeProbeSet(*ctx_, probeSet_, device_, params_, grid_, vectors_, unused_, unused_);
   vk::DescriptorWrites("lic", AMRSTREAM_LIC_BINDING_COUNT)
       .set(AMRSTREAM_BINDING_LIC_VECTORS, vectors_)
       .set(AMRSTREAM_BINDING_LIC_INTENSITY, intensity_)

@@ -24,6 +24,27 @@ constexpr std::size_t kPointsPerDispatch = std::size_t(1) << 20;
 
 }  // namespace
 
+void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
+                   const vk::Buffer& params, const vk::Buffer& points, const vk::Buffer& vectors,
+                   const vk::Buffer& regions, const vk::Buffer& unused) {
+  vk::DescriptorWrites("probe", AMRSTREAM_TRACE_BINDING_COUNT)
+      .set(AMRSTREAM_BINDING_TRACE_PARAMS, vk::uniformTarget(params))
+      .set(AMRSTREAM_BINDING_TRACE_BRICKS, device.bricks)
+      .set(AMRSTREAM_BINDING_TRACE_VALUES, device.values)
+      .set(AMRSTREAM_BINDING_TRACE_REGIONS, device.regions)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_BRICKS, device.regionBricks)
+      .set(AMRSTREAM_BINDING_TRACE_PROBE_POINTS, points)
+      .set(AMRSTREAM_BINDING_TRACE_STATES_OUT, unused)
+      .set(AMRSTREAM_BINDING_TRACE_LINE_ROUNDS, unused)
+      .set(AMRSTREAM_BINDING_TRACE_POSITIONS, unused)
+      .set(AMRSTREAM_BINDING_TRACE_TIMES, unused)
+      .set(AMRSTREAM_BINDING_TRACE_VECTORS, vectors)
+      .set(AMRSTREAM_BINDING_TRACE_REGION_IDS, regions)
+      .set(AMRSTREAM_BINDING_TRACE_LOCATE, device.locateTarget())
+      .set(AMRSTREAM_BINDING_TRACE_LINEAR_CELLS, device.vectorGradients)
+      .write(ctx, set);
+}
+
 VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
                          const flow::VectorVolume& volume)
     : ctx_(&ctx), volume_(&volume), kernel_(&kernel) {
@@ -62,23 +83,7 @@ void VectorProbe::reserve(std::size_t points) {
 }
 
 void VectorProbe::writeSet() {
-  const VolumeBuffers& device = *device_;
-  vk::DescriptorWrites("probe", AMRSTREAM_TRACE_BINDING_COUNT)
-      .set(AMRSTREAM_BINDING_TRACE_PARAMS, vk::uniformTarget(params_))
-      .set(AMRSTREAM_BINDING_TRACE_BRICKS, device.bricks)
-      .set(AMRSTREAM_BINDING_TRACE_VALUES, device.values)
-      .set(AMRSTREAM_BINDING_TRACE_REGIONS, device.regions)
-      .set(AMRSTREAM_BINDING_TRACE_REGION_BRICKS, device.regionBricks)
-      .set(AMRSTREAM_BINDING_TRACE_PROBE_POINTS, points_)
-      .set(AMRSTREAM_BINDING_TRACE_STATES_OUT, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_LINE_ROUNDS, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_POSITIONS, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_TIMES, unused_)
-      .set(AMRSTREAM_BINDING_TRACE_VECTORS, vectors_)
-      .set(AMRSTREAM_BINDING_TRACE_REGION_IDS, regions_)
-      .set(AMRSTREAM_BINDING_TRACE_LOCATE, device.locateTarget())
-      .set(AMRSTREAM_BINDING_TRACE_LINEAR_CELLS, device.vectorGradients)
-      .write(*ctx_, set_);
+  writeProbeSet(*ctx_, set_, *device_, params_, points_, vectors_, regions_, unused_);
 }
 
 void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out) {

@@ -21,6 +21,13 @@
 
 namespace amrstream::gpu {
 
+// The tracing kernels' bindings (shared/trace_bindings.h) as a probe uses them: `points` (or a
+// grid) where the line states are read, `vectors` and `regions` written, `unused` bound for the
+// outputs it does not write.
+void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
+                   const vk::Buffer& params, const vk::Buffer& points, const vk::Buffer& vectors,
+                   const vk::Buffer& regions, const vk::Buffer& unused);
+
 class VectorProbe {
  public:
   // The kernel: createTraceKernel(ctx, backend, KernelProgram::LocateProbe), shared by the probes

@@ -1,10 +1,6 @@
 #include "plane_field.hpp"
 
-#include <tbb/parallel_for.h>
-
-#include <atomic>
 #include <memory>
-#include <mutex>
 
 #include "flow/sampler.hpp"
 
@@ -38,43 +34,28 @@ shared::ProbeGrid pixelGrid(const flow::VectorVolume& volume, const SlicePlane& 
 
 flow::GridSamples samplePixels(const flow::VectorVolume& volume, const shared::ProbeGrid& grid,
                                const std::function<void(std::size_t)>& progress) {
-  flow::GridSamples samples;
-  const std::size_t width = grid.width, points = width * grid.height;
-  const std::size_t channelCount = volume.channelCount();
-  samples.vectors.assign(points, glm::vec3(0.0f));
-  samples.channels.assign(points * channelCount, 0.0f);
-  samples.valid.assign(points, 0);
-  std::atomic<std::uint64_t> validCount{0};
-  std::size_t rowsDone = 0;
-  std::mutex progressMutex;
-  tbb::parallel_for(std::uint32_t(0), grid.height, [&](std::uint32_t y) {
-    flow::RegionCache cache;
-    std::vector<float> values(channelCount);
-    std::uint64_t rowValid = 0;
-    for (std::uint32_t x = 0; x < grid.width; ++x) {
-      // In float and in this order, as the grid probe computes it.
-      const glm::vec3 along = grid.originOffset + float(x) * grid.stepX + float(y) * grid.stepY;
-      const glm::vec3 whole = glm::floor(along);
-      const flow::CellPoint p = flow::wrapPeriodic(
-          volume, flow::CellPoint(grid.originAnchor + glm::ivec3(whole), along - whole));
-      const flow::VectorSample sample = flow::sampleVector(volume, p, &cache);
-      if (!sample.valid) continue;
-      const std::size_t n = x + width * y;
-      samples.vectors[n] = sample.value;
-      samples.valid[n] = 1;
-      ++rowValid;
-      if (channelCount == 0) continue;
-      flow::sampleChannels(volume, sample.region, p, values);
-      std::copy(values.begin(), values.end(), samples.channels.begin() + n * channelCount);
-    }
-    validCount += rowValid;
-    if (progress) {
-      const std::lock_guard lock(progressMutex);
-      progress(++rowsDone);
-    }
-  });
-  samples.validCount = validCount;
-  return samples;
+  return flow::sampleRows(
+      volume, grid.width, grid.height,
+      [&](std::size_t x, std::size_t y) {
+        // In float and in this order, as the grid probe computes it.
+        const glm::vec3 along = grid.originOffset + float(x) * grid.stepX + float(y) * grid.stepY;
+        const glm::vec3 whole = glm::floor(along);
+        return flow::wrapPeriodic(
+            volume, flow::CellPoint(grid.originAnchor + glm::ivec3(whole), along - whole));
+      },
+      progress);
+}
+
+shared::LicParams licParams(const SlicePlane& plane, const LicOptions& options) {
+  shared::LicParams params{};
+  params.axisU = glm::vec3(plane.u);
+  params.axisV = glm::vec3(plane.v);
+  params.width = plane.width;
+  params.height = plane.height;
+  params.stepPixels = options.stepPixels;
+  params.stepsEachWay = licStepsEachWay(options);
+  params.noiseSeed = options.noiseSeed;
+  return params;
 }
 
 VectorImage inPlaneImage(const SlicePlane& plane, const flow::GridSamples& samples) {

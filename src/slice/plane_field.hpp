@@ -29,6 +29,9 @@ shared::ProbeGrid pixelGrid(const flow::VectorVolume& volume, const SlicePlane& 
 flow::GridSamples samplePixels(const flow::VectorVolume& volume, const shared::ProbeGrid& grid,
                                const std::function<void(std::size_t)>& progress = {});
 
+// The LIC kernel's parameters (shaders/glsl/lic.comp) for the plane's pixels and `options`.
+shared::LicParams licParams(const SlicePlane& plane, const LicOptions& options);
+
 // The samples of the plane's pixels projected on the plane's axes.
 VectorImage inPlaneImage(const SlicePlane& plane, const flow::GridSamples& samples);
 

@@ -49,15 +49,8 @@ Comparison compareLic(const vk::Context& ctx, Backend backend, const flow::Vecto
       options);
 
   PlaneLic lic(ctx, backend, volume);
-  shared::LicParams params{};
-  params.axisU = glm::vec3(plane.u);
-  params.axisV = glm::vec3(plane.v);
-  params.width = plane.width;
-  params.height = plane.height;
-  params.stepPixels = options.stepPixels;
-  params.stepsEachWay = slice::licStepsEachWay(options);
-  params.noiseSeed = options.noiseSeed;
-  const std::vector<float> got = lic.convolve(slice::pixelGrid(volume, plane), params);
+  const std::vector<float> got =
+      lic.convolve(slice::pixelGrid(volume, plane), slice::licParams(plane, options));
 
   Comparison c;
   c.pixels = expected.size();
