@@ -56,7 +56,11 @@ PlotHeader parseHeader(const fs::path& path) {
   const int ncomp = in.smallInt("the number of variables", 1, 100000);
   for (int c = 0; c < ncomp; ++c) h.names.push_back(in.line("a variable name"));
   const int dim = in.smallInt("the dimension", 1, 3);
-  if (dim != 3) in.fail(fmt::format("the plotfile is {}D; amrstream reads 3D plotfiles", dim));
+  if (dim != 3)
+    in.fail(
+        fmt::format("the plotfile is {}D; amrstream reads 3D plotfiles itself, and 2D ones "
+                    "through yt (amrstream.from_yt(yt.load(PATH)) in Python)",
+                    dim));
   h.time = in.real("(the time)");
   h.finestLevel = in.smallInt("finest_level", 0, bricks::kMaxLevel);
   const int levels = h.finestLevel + 1;

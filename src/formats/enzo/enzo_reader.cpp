@@ -105,7 +105,9 @@ Domain readParameters(const EnzoParameters& parameters) {
       throw InputError(file, fmt::format("RefineBy {} is not supported (only 2)", refineBy));
   }
   if (kv.contains("TopGridRank") && need("TopGridRank") != "3")
-    throw InputError(file, "only 3D data (TopGridRank 3) is supported");
+    throw InputError(file,
+                     "only 3D data (TopGridRank 3) is read here; read 2D data through yt "
+                     "(amrstream.from_yt(yt.load(PATH)) in Python)");
   return d;
 }
 
