@@ -89,6 +89,13 @@ void checkSeedRequest(const SeedRequest& request) {
 
 namespace {
 
+// 2D data: every seed on the data's plane, the middle of its slab [lower, upper], where lines
+// stay.
+void ontoPlane(const glm::dvec3& lower, const glm::dvec3& upper, flow::SeedList& seeds) {
+  const double plane = 0.5 * (lower.z + upper.z);
+  for (glm::dvec3& p : seeds.points) p.z = plane;
+}
+
 flow::SeedList seedsAsAsked(const SeedRequest& request, const Domain& domain,
                             const bricks::AmrField* cells, std::string& description,
                             const flow::SharedCells* shared) {
@@ -142,19 +149,14 @@ flow::SeedList chooseSeeds(const SeedRequest& request, const Domain& domain,
   checkSeedRequest(request);
   flow::SeedList seeds = seedsAsAsked(request, domain, cells, description, shared);
   if (domain.planar) {
-    // 2D data: every seed on the data's plane, the middle of its slab, where lines stay.
-    const double plane = 0.5 * (domain.lower.z + domain.upper.z);
-    for (glm::dvec3& p : seeds.points) p.z = plane;
+    ontoPlane(domain.lower, domain.upper, seeds);
     description += ", on the 2D data's plane";
   }
   return seeds;
 }
 
 void placeSeeds(const flow::VectorVolume& volume, flow::SeedList& seeds) {
-  if (volume.planar) {  // 2D data: given seeds go onto the plane, as chosen ones do
-    const double plane = 0.5 * (flow::domainLower(volume).z + flow::domainUpper(volume).z);
-    for (glm::dvec3& p : seeds.points) p.z = plane;
-  }
+  if (volume.planar) ontoPlane(flow::domainLower(volume), flow::domainUpper(volume), seeds);
   flow::closeUpperFaces(volume, seeds);
   flow::checkSeedsInDomain(volume, seeds);
 }

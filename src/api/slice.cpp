@@ -40,6 +40,19 @@ std::string lowered(std::string text) {
   return text;
 }
 
+// The index of the channel `name` names in the point data, or -1 for "magnitude" (the vector's
+// length); InputError naming `option` for any other name, offering `others` beside the channels.
+int channelIndexOf(const std::string& name, const flow::VectorVolume& volume,
+                   std::string_view option, std::string_view others = "magnitude") {
+  if (name == kMagnitude) return -1;
+  const auto found = std::find(volume.channelNames.begin(), volume.channelNames.end(), name);
+  if (found == volume.channelNames.end())
+    throw settingError(option, fmt::format("'{}' is not a channel of the point data ({}); give "
+                                           "one, {}",
+                                           name, fmt::join(volume.channelNames, ", "), others));
+  return int(found - volume.channelNames.begin());
+}
+
 // The channel the background shows ("magnitude" for the vector's), or empty for none.
 std::string chosenBackground(const SliceOptions& options, const flow::VectorVolume& volume) {
   if (options.background == "none") return {};
@@ -49,40 +62,20 @@ std::string chosenBackground(const SliceOptions& options, const flow::VectorVolu
         return name;
     return std::string(kMagnitude);
   }
-  if (options.background == kMagnitude) return options.background;
-  if (std::find(volume.channelNames.begin(), volume.channelNames.end(), options.background) ==
-      volume.channelNames.end())
-    throw settingError("background",
-                       fmt::format("'{}' is not a channel of the point data ({}); "
-                                   "give one, magnitude, auto or none",
-                                   options.background, fmt::join(volume.channelNames, ", ")));
+  channelIndexOf(options.background, volume, "background", "magnitude, auto or none");
   return options.background;
 }
 
-// The index of the channel `name` names in the point data, or -1 for "magnitude" (the vector's
-// length); InputError naming `option` for any other name.
-int channelIndexOf(const std::string& name, const flow::VectorVolume& volume,
-                   std::string_view option) {
-  if (name == kMagnitude) return -1;
-  const auto found = std::find(volume.channelNames.begin(), volume.channelNames.end(), name);
-  if (found == volume.channelNames.end())
-    throw settingError(option, fmt::format("'{}' is not a channel of the point data ({}); give "
-                                           "one or magnitude",
-                                           name, fmt::join(volume.channelNames, ", ")));
-  return int(found - volume.channelNames.begin());
-}
-
-std::vector<float> backgroundValues(const std::string& name, const flow::VectorVolume& volume,
+// Per pixel, channel `channel` of the samples (or the vector's length where it is negative);
+// NaN where the sample is not valid.
+std::vector<float> backgroundValues(int channel, const flow::VectorVolume& volume,
                                     const flow::GridSamples& samples) {
   const std::size_t points = samples.valid.size(), count = volume.channelCount();
   std::vector<float> values(points, std::numeric_limits<float>::quiet_NaN());
-  const auto channel = std::find(volume.channelNames.begin(), volume.channelNames.end(), name);
   for (std::size_t n = 0; n < points; ++n) {
     if (!samples.valid[n]) continue;
-    values[n] =
-        name == kMagnitude
-            ? glm::length(samples.vectors[n])
-            : samples.channels[n * count + std::size_t(channel - volume.channelNames.begin())];
+    values[n] = channel < 0 ? glm::length(samples.vectors[n])
+                            : samples.channels[n * count + std::size_t(channel)];
   }
   return values;
 }
@@ -291,7 +284,8 @@ Sliced sliceOnPlane(const Field& field, const slice::SlicePlane& plane, const Sl
   layers.lengthUnit = shortLengthUnit(field.info());
   layers.lineWidthPixels = options.lineWidth;
   if (!sliced.background.empty()) {
-    layers.background = backgroundValues(sliced.background, volume, sliced.samples);
+    layers.background = backgroundValues(channelIndexOf(sliced.background, volume, "background"),
+                                         volume, sliced.samples);
     layers.colours.map = *render::parseColourMap(options.colourMap);
     layers.colours.scale = backgroundScale(options, layers.background);
     const bool magnitude = sliced.background == kMagnitude;

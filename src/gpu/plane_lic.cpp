@@ -1,8 +1,5 @@
 #include "plane_lic.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
