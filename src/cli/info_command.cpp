@@ -47,13 +47,21 @@ void printLevels(const Dataset& dataset) {
 }
 
 // The finest cell's size, said anisotropic where its sides differ, and the axes one cell thick.
-void printShape(const CellBox& box, glm::dvec3 finest) {
+void printShape(const CellBox& box, glm::dvec3 finest, int declaredDimensions) {
   const double shortest = std::min({finest.x, finest.y, finest.z});
   const double longest = std::max({finest.x, finest.y, finest.z});
   printLine(fmt::format("finest     cell {:g} x {:g} x {:g}{}", finest.x, finest.y, finest.z,
                         longest > shortest * (1.0 + 1e-6)
                             ? fmt::format(" (anisotropic: {:.3g} to 1)", longest / shortest)
                             : ""));
+  if (declaredDimensions == 2) {
+    const int thickness = box.upper.z - box.lower.z;
+    printLine(
+        fmt::format("dimensions 2: planar data, held as a slab {} finest cell{} thick across "
+                    "z = 0",
+                    thickness, thickness == 1 ? "" : "s"));
+    return;
+  }
   std::string flat;
   int dimensions = 3;
   for (int axis = 0; axis < 3; ++axis)
@@ -99,7 +107,7 @@ void runInfo(const DatasetRequest& request) {
                         box.upper.z));
   printLine(fmt::format("           physical [{:g}, {:g}] x [{:g}, {:g}] x [{:g}, {:g}]", lo.x,
                         hi.x, lo.y, hi.y, lo.z, hi.z));
-  printShape(box, (hi - lo) / glm::dvec3(box.upper - box.lower));
+  printShape(box, (hi - lo) / glm::dvec3(box.upper - box.lower), info.dimensions);
   const DatasetSummary summary = summarize(dataset);
   printLine(fmt::format("channels   {}", summary.channels.size()));
   for (const DatasetSummary::ChannelRange& c : summary.channels) {

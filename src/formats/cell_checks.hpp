@@ -19,6 +19,11 @@ namespace amrstream::formats {
 inline constexpr double kMaxPositionMagnitude = 1e37;
 inline constexpr double kMinSpacing = std::numeric_limits<float>::min();
 
+// 2D data is held as a slab across z = 0 as thick as its coarsest leaf cell: a finer cell repeats
+// along z. At most this many cells per leaf cell of the file (leaves 8 levels finer than the
+// coarsest, at most), so that the cells stay within a small multiple of the data stored.
+inline constexpr std::size_t kMaxSlabGrowth = 256;
+
 // Why `value` cannot be a float channel value ("not a number", "infinite", "beyond the float
 // range"), or nullopt when it can.
 std::optional<std::string> unusableFieldValue(double value);

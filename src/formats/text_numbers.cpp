@@ -71,25 +71,52 @@ double parseFinite(std::string_view text, const std::string& where, const std::s
   return value;
 }
 
+namespace {
+
+std::vector<std::string_view> axisWords(std::string_view text, const std::string& where,
+                                        const std::string& what, int axes, const char* kind) {
+  std::vector<std::string_view> words = splitWords(text);
+  const bool fits = words.size() == 3 || (axes == 2 && words.size() == 2);
+  if (!fits)
+    throw InputError(where, fmt::format("{} needs {} {}, got '{}'", what,
+                                        axes == 2 ? "2 (or 3)" : "3", kind, excerpt(text)));
+  return words;
+}
+
+}  // namespace
+
+std::array<std::int64_t, 3> parseAxisIntegers(std::string_view text, const std::string& where,
+                                              const std::string& what, std::int64_t low,
+                                              std::int64_t high, int axes, std::int64_t z) {
+  const std::vector<std::string_view> words = axisWords(text, where, what, axes, "integers");
+  std::array<std::int64_t, 3> values{0, 0, z};
+  for (std::size_t a = 0; a < words.size(); ++a) {
+    const std::int64_t value = parseInteger(words[a], where, what, low, high);
+    if (int(a) < axes) values[a] = value;
+  }
+  return values;
+}
+
+std::array<double, 3> parseAxisFinite(std::string_view text, const std::string& where,
+                                      const std::string& what, int axes, double z) {
+  const std::vector<std::string_view> words = axisWords(text, where, what, axes, "numbers");
+  std::array<double, 3> values{0.0, 0.0, z};
+  for (std::size_t a = 0; a < words.size(); ++a) {
+    const double value = parseFinite(words[a], where, what);
+    if (int(a) < axes) values[a] = value;
+  }
+  return values;
+}
+
 std::array<std::int64_t, 3> parseThreeIntegers(std::string_view text, const std::string& where,
                                                const std::string& what, std::int64_t low,
                                                std::int64_t high) {
-  const std::vector<std::string_view> words = splitWords(text);
-  if (words.size() != 3)
-    throw InputError(where, fmt::format("{} needs 3 integers, got '{}'", what, excerpt(text)));
-  std::array<std::int64_t, 3> values{};
-  for (int a = 0; a < 3; ++a) values[a] = parseInteger(words[a], where, what, low, high);
-  return values;
+  return parseAxisIntegers(text, where, what, low, high, 3, 0);
 }
 
 std::array<double, 3> parseThreeFinite(std::string_view text, const std::string& where,
                                        const std::string& what) {
-  const std::vector<std::string_view> words = splitWords(text);
-  if (words.size() != 3)
-    throw InputError(where, fmt::format("{} needs 3 numbers, got '{}'", what, excerpt(text)));
-  std::array<double, 3> values{};
-  for (int a = 0; a < 3; ++a) values[a] = parseFinite(words[a], where, what);
-  return values;
+  return parseAxisFinite(text, where, what, 3, 0.0);
 }
 
 }  // namespace amrstream::formats

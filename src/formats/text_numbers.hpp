@@ -31,4 +31,13 @@ std::array<std::int64_t, 3> parseThreeIntegers(std::string_view text, const std:
 std::array<double, 3> parseThreeFinite(std::string_view text, const std::string& where,
                                        const std::string& what);
 
+// One value per axis of `axes`-dimensional data (2 or 3). With 2 axes a third value may follow
+// (some writers pad to three); it is checked as the others and replaced by `z`, as it is when
+// absent.
+std::array<std::int64_t, 3> parseAxisIntegers(std::string_view text, const std::string& where,
+                                              const std::string& what, std::int64_t low,
+                                              std::int64_t high, int axes, std::int64_t z);
+std::array<double, 3> parseAxisFinite(std::string_view text, const std::string& where,
+                                      const std::string& what, int axes, double z);
+
 }  // namespace amrstream::formats

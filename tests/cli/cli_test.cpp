@@ -197,7 +197,8 @@ TEST_F(Cli, InfoSaysTheShapeOfTheCellsAndTheLevelsUnderFinerOnes) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("finest     cell 7.8125e-07 x 7.8125e-06 x 7.8125e-07 "
                                   "(anisotropic: 10 to 1)\n"));
-  EXPECT_THAT(r.output, HasSubstr("dimensions 2: one finest cell thick in z\n"));
+  EXPECT_THAT(r.output, HasSubstr("dimensions 2: planar data, held as a slab 1 finest cell thick "
+                                  "across z = 0\n"));
   EXPECT_THAT(r.output, HasSubstr("levels     1 hold leaf cells (the file's levels 1 to 4 lie "
                                   "wholly under finer cells)"));
   r = run("info " + amrex.string());

@@ -379,7 +379,7 @@ TEST_F(AmrexReader, RejectsAMalformedPeriodicLineNamingJobInfoAndTheLine) {
 TEST(AmrexInfo, RatiosOtherThanTwoNumberEachLevel) {
   // Three levels with ratios 4 and 4: cell widths 16, 4 and 1 finest cells.
   const DatasetInfo info =
-      readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile", 0.0, {4, 2, 0});
+      readAmrexInfo(fs::temp_directory_path() / "no-such-plotfile", 0.0, {4, 2, 0}, 3);
   EXPECT_EQ(info.fileLevel(0), 2);
   EXPECT_EQ(info.fileLevel(2), 1);
   EXPECT_EQ(info.fileLevel(4), 0);

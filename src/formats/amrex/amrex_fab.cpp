@@ -80,7 +80,8 @@ std::string formatName(const RealFormat& format) {
 }  // namespace
 
 std::vector<double> readFab(const std::filesystem::path& file, std::uint64_t offset,
-                            std::optional<std::uint64_t> nextFab, const Box& stored, int ncomp) {
+                            std::optional<std::uint64_t> nextFab, const Box& stored, int ncomp,
+                            int axes) {
   const std::string source = file.string();
   std::ifstream in;
   const std::uint64_t fileSize = openRegularFile(in, file, "the FAB data file (Cell_D)");
@@ -99,7 +100,7 @@ std::vector<double> readFab(const std::filesystem::path& file, std::uint64_t off
                                         kMaxFabHeaderBytes));
   Cursor header(head.substr(4, newline - 4), where, static_cast<long long>(offset) + 4);
   const RealFormat format = readRealFormat(header);
-  const Box box = readBox(header, "the FAB box");
+  const Box box = readBox(header, "the FAB box", axes);
   const long long comps = header.integer("(the FAB component count)");
   if (!header.atEnd()) header.fail("unexpected text after the FAB component count");
   if (!(box == stored))

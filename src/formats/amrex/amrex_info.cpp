@@ -28,7 +28,8 @@ fs::path findJobInfo(const fs::path& directory) {
   return candidates.empty() ? fs::path() : candidates.front();
 }
 
-void readPeriodicity(const fs::path& jobInfo, DatasetInfo& info) {
+// One 0/1 flag per axis of the plotfile (two in 2D; the slab's z is not periodic).
+void readPeriodicity(const fs::path& jobInfo, int axes, DatasetInfo& info) {
   std::istringstream in(readWholeFile(jobInfo, "the job_info file"));
   const std::string key = "geometry.is_periodic";
   std::string line;
@@ -37,12 +38,13 @@ void readPeriodicity(const fs::path& jobInfo, DatasetInfo& info) {
     if (start == std::string::npos || line.compare(start, key.size(), key) != 0) continue;
     std::istringstream words(line.substr(start + key.size()));
     std::string equals, extra;
-    int flags[3] = {-1, -1, -1};
-    if (!(words >> equals) || equals != "=" || !(words >> flags[0] >> flags[1] >> flags[2]) ||
-        (words >> extra) || std::ranges::any_of(flags, [](int f) { return f != 0 && f != 1; }))
+    int flags[3] = {0, 0, 0};
+    bool read = static_cast<bool>(words >> equals) && equals == "=";
+    for (int a = 0; a < axes; ++a) read = read && (words >> flags[a]) && (flags[a] & ~1) == 0;
+    if (!read || (words >> extra))
       throw InputError(fmt::format("{}:{}", jobInfo.string(), number),
-                       fmt::format("'{}' is not '{} = X Y Z' with 0 or 1 for each axis",
-                                   excerpt(line.substr(start)), key));
+                       fmt::format("'{}' is not '{} = {}' with 0 or 1 for each axis",
+                                   excerpt(line.substr(start)), key, axes == 2 ? "X Y" : "X Y Z"));
     info.periodicKnown = true;
     for (int a = 0; a < 3; ++a) info.periodic[a] = flags[a] == 1;
   }
@@ -51,9 +53,10 @@ void readPeriodicity(const fs::path& jobInfo, DatasetInfo& info) {
 }  // namespace
 
 DatasetInfo readAmrexInfo(const fs::path& directory, double time,
-                          const std::vector<int>& internalLevels) {
+                          const std::vector<int>& internalLevels, int dimensions) {
   DatasetInfo info;
   info.format = "AMReX";
+  info.dimensions = dimensions;
   info.time = time;
   const int finest = static_cast<int>(internalLevels.size()) - 1;
   info.finestFileLevel = finest;
@@ -67,7 +70,7 @@ DatasetInfo readAmrexInfo(const fs::path& directory, double time,
     for (int l = 0; l <= finest; ++l) info.fileLevelOfInternal[internalLevels[l]] = l;
   }
   if (const fs::path jobInfo = findJobInfo(directory); !jobInfo.empty())
-    readPeriodicity(jobInfo, info);
+    readPeriodicity(jobInfo, dimensions, info);
   return info;
 }
 

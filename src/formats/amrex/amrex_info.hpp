@@ -15,9 +15,10 @@
 
 namespace amrstream::formats {
 
-// `internalLevels[l]`: our level of plotfile level l (log2 of its cell width in finest cells).
-// Throws InputError naming the job_info file and line when its is_periodic line is malformed.
+// `internalLevels[l]`: our level of plotfile level l (log2 of its cell width in finest cells);
+// `dimensions`: 2 or 3. Throws InputError naming the job_info file and line when its is_periodic
+// line is malformed.
 DatasetInfo readAmrexInfo(const std::filesystem::path& directory, double time,
-                          const std::vector<int>& internalLevels);
+                          const std::vector<int>& internalLevels, int dimensions);
 
 }  // namespace amrstream::formats

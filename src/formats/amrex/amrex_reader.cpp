@@ -36,6 +36,7 @@ using amrex::readBox;
 constexpr int kMaxGhostCells = 1024;
 
 struct PlotHeader {
+  int axes = 3;  // 2 for a 2D plotfile, whose boxes are one cell thick in z at every level
   std::vector<std::string> names;
   double time = 0.0;
   int finestLevel = 0;
@@ -55,29 +56,26 @@ PlotHeader parseHeader(const fs::path& path) {
     in.fail(fmt::format("version '{}' is not a HyperCLaw plotfile", excerpt(version)));
   const int ncomp = in.smallInt("the number of variables", 1, 100000);
   for (int c = 0; c < ncomp; ++c) h.names.push_back(in.line("a variable name"));
-  const int dim = in.smallInt("the dimension", 1, 3);
-  if (dim != 3)
-    in.fail(
-        fmt::format("the plotfile is {}D; amrstream reads 3D plotfiles itself, and 2D ones "
-                    "through yt (amrstream.from_yt(yt.load(PATH)) in Python)",
-                    dim));
+  h.axes = in.smallInt("the dimension", 1, 3);
+  if (h.axes == 1) in.fail("the plotfile is 1D; amrstream reads 2D and 3D plotfiles");
   h.time = in.real("(the time)");
   h.finestLevel = in.smallInt("finest_level", 0, bricks::kMaxLevel);
   const int levels = h.finestLevel + 1;
-  for (int axis = 0; axis < 3; ++axis) h.probLo[axis] = in.real("in prob_lo");
-  for (int axis = 0; axis < 3; ++axis) h.probHi[axis] = in.real("in prob_hi");
-  if (glm::any(glm::lessThanEqual(h.probHi, h.probLo))) in.fail("prob_hi is not above prob_lo");
+  for (int axis = 0; axis < h.axes; ++axis) h.probLo[axis] = in.real("in prob_lo");
+  for (int axis = 0; axis < h.axes; ++axis) h.probHi[axis] = in.real("in prob_hi");
+  for (int axis = 0; axis < h.axes; ++axis)
+    if (!(h.probHi[axis] > h.probLo[axis])) in.fail("prob_hi is not above prob_lo");
   for (int l = 0; l < h.finestLevel; ++l) {
     const int ratio = in.smallInt("a refinement ratio", 1, 1 << 20);
     if (!std::has_single_bit(static_cast<unsigned>(ratio)))
       in.fail(fmt::format("refinement ratio {} is not a power of two", ratio));
     h.ratios.push_back(ratio);
   }
-  for (int l = 0; l < levels; ++l) h.domains.push_back(readBox(in, "a level domain box"));
+  for (int l = 0; l < levels; ++l) h.domains.push_back(readBox(in, "a level domain box", h.axes));
   for (int l = 0; l < levels; ++l) in.integer("(a level step)");
   for (int l = 0; l < levels; ++l) {
-    glm::dvec3 dx;
-    for (int axis = 0; axis < 3; ++axis) dx[axis] = in.real("in a level's dx");
+    glm::dvec3 dx(0.0);
+    for (int axis = 0; axis < h.axes; ++axis) dx[axis] = in.real("in a level's dx");
     h.dx.push_back(dx);
   }
   if (in.smallInt("coord_sys", 0, 2) != 0) in.fail("only Cartesian plotfiles (coord_sys 0)");
@@ -87,7 +85,7 @@ PlotHeader parseHeader(const fs::path& path) {
     h.gridCounts.push_back(in.smallInt("a level's grid count", 1, 1 << 30));
     in.real("(the level time)");
     in.integer("(the level step)");
-    for (long long g = 0; g < h.gridCounts.back() * 3LL; ++g) {
+    for (long long g = 0; g < h.gridCounts.back() * static_cast<long long>(h.axes); ++g) {
       in.real("(a grid's lower extent)");
       in.real("(a grid's upper extent)");
     }
@@ -110,9 +108,10 @@ PlotHeader parseHeader(const fs::path& path) {
                                      (std::int64_t{1} << bricks::kMaxExtentBits) - 1));
     if (l == 0) continue;
     const std::int64_t ratio = h.ratios[l - 1];
-    const glm::i64vec3 lo = glm::i64vec3(h.domains[l - 1].lo) * ratio;
-    const glm::i64vec3 hi =
+    glm::i64vec3 lo = glm::i64vec3(h.domains[l - 1].lo) * ratio;
+    glm::i64vec3 hi =
         (glm::i64vec3(h.domains[l - 1].hi) + std::int64_t{1}) * ratio - std::int64_t{1};
+    if (h.axes == 2) lo.z = hi.z = 0;
     if (lo != glm::i64vec3(h.domains[l].lo) || hi != glm::i64vec3(h.domains[l].hi))
       throw InputError(
           path.string(),
@@ -135,7 +134,7 @@ struct LevelLayout {
 };
 
 LevelLayout parseCellHeader(const fs::path& path, int ncomp, int gridCount, const Box& domain,
-                            int level) {
+                            int level, int axes) {
   Cursor in(readWholeFile(path, "the level header (Cell_H)"), path.string());
   in.integer("(the version)");
   in.integer("(how)");
@@ -152,7 +151,7 @@ LevelLayout parseCellHeader(const fs::path& path, int ncomp, int gridCount, cons
   in.integer("(the BoxArray tag)");
   // Entries are added as they are read: the declared count allocates nothing.
   for (long long b = 0; b < boxes; ++b) {
-    const Box box = readBox(in, "a BoxArray box");
+    const Box box = readBox(in, "a BoxArray box", axes);
     if (!domain.contains(box))
       in.fail(fmt::format("box {} {} lies outside the level-{} domain {}", b, boxText(box), level,
                           boxText(domain)));
@@ -236,11 +235,12 @@ std::vector<int> levelWidths(const PlotHeader& h, const fs::path& headerPath) {
   return widths;
 }
 
-// World positions of the finest cells, checked against the finest level's dx.
-WorldTransform finestTransform(const PlotHeader& h, const fs::path& headerPath) {
+// World positions of the finest cells, checked against the finest level's dx. A 2D plotfile's
+// slab, `slabCells` finest cells thick, has cubic cells and its middle at z = 0.
+WorldTransform finestTransform(const PlotHeader& h, const fs::path& headerPath, int slabCells) {
   const Box& finestDomain = h.domains[h.finestLevel];
-  const glm::dvec3 spacing = (h.probHi - h.probLo) / glm::dvec3(finestDomain.size());
-  for (int axis = 0; axis < 3; ++axis) {
+  glm::dvec3 spacing = (h.probHi - h.probLo) / glm::dvec3(finestDomain.size());
+  for (int axis = 0; axis < h.axes; ++axis) {
     if (!std::isnormal(spacing[axis]))
       throw InputError(headerPath.string(),
                        fmt::format("prob_lo {} to prob_hi {} over {} cells along axis {} gives "
@@ -252,8 +252,15 @@ WorldTransform finestTransform(const PlotHeader& h, const fs::path& headerPath) 
                        fmt::format("finest dx {} differs from (prob_hi - prob_lo) / cells = {}",
                                    h.dx[h.finestLevel][axis], spacing[axis]));
   }
-  const WorldTransform transform{h.probLo, spacing};
-  const glm::ivec3 domainCorners[] = {glm::ivec3(0), glm::ivec3(finestDomain.size()) - 1};
+  glm::dvec3 origin = h.probLo;
+  glm::ivec3 cells(finestDomain.size());
+  if (h.axes == 2) {
+    spacing.z = spacing.x;
+    origin.z = -0.5 * slabCells * spacing.z;
+    cells.z = slabCells;
+  }
+  const WorldTransform transform{origin, spacing};
+  const glm::ivec3 domainCorners[] = {glm::ivec3(0), cells - 1};
   const std::uint8_t finestLevels[] = {0, 0};
   if (const auto problem = unrepresentablePositions(transform, domainCorners, finestLevels))
     throw InputError(headerPath.string(),
@@ -266,6 +273,9 @@ struct Plotfile {
   fs::path directory;
   PlotHeader header;
   std::vector<int> widths = {};
+  // A 2D plotfile becomes a slab this many finest cells thick (the coarsest leaf's width): each
+  // cell repeated along z as often as it fits.
+  int slabCells = 1;
   std::vector<LevelLayout> layouts = {};
   std::vector<std::map<std::string, std::vector<long long>>> offsets = {};  // per level and file
   std::vector<std::vector<Box>> coverings = {};  // per level: the finer level's boxes, coarsened
@@ -276,8 +286,12 @@ struct Plotfile {
     return (directory / header.levelPaths[l]).parent_path() / fab.file;
   }
   Box stored(int l, const FabEntry& fab) const {
-    return {fab.box.lo - layouts[l].nghost, fab.box.hi + layouts[l].nghost};
+    glm::ivec3 ghost(layouts[l].nghost);
+    if (planar()) ghost.z = 0;
+    return {fab.box.lo - ghost, fab.box.hi + ghost};
   }
+  bool planar() const { return header.axes == 2; }
+  int copies(int l) const { return planar() ? slabCells / widths[l] : 1; }
 };
 
 // The finer level's boxes coarsened to level l; each must cover whole level-l cells.
@@ -285,9 +299,10 @@ std::vector<Box> coveringBoxes(const Plotfile& plot, int l) {
   std::vector<Box> covering;
   if (l == plot.header.finestLevel) return covering;
   const int ratio = plot.header.ratios[l];
+  const glm::ivec3 axes(1, 1, plot.planar() ? 0 : 1);
   for (const FabEntry& fine : plot.layouts[l + 1].fabs) {
-    if (glm::any(glm::notEqual(fine.box.lo % ratio, glm::ivec3(0))) ||
-        glm::any(glm::notEqual((fine.box.hi + 1) % ratio, glm::ivec3(0))))
+    if (glm::any(glm::notEqual(fine.box.lo % ratio * axes, glm::ivec3(0))) ||
+        glm::any(glm::notEqual((fine.box.hi + 1) % ratio * axes, glm::ivec3(0))))
       throw InputError((plot.directory / (plot.header.levelPaths[l + 1] + "_H")).string(),
                        fmt::format("box {} does not cover whole level-{} cells (ratio {})",
                                    boxText(fine.box), l, ratio));
@@ -303,7 +318,7 @@ void readLevelHeaders(Plotfile& plot) {
     const fs::path cellH = plot.directory / (h.levelPaths[l] + "_H");
     requireFile(cellH, fmt::format("missing level-{} header", l));
     plot.layouts.push_back(
-        parseCellHeader(cellH, plot.components(), h.gridCounts[l], h.domains[l], l));
+        parseCellHeader(cellH, plot.components(), h.gridCounts[l], h.domains[l], l, h.axes));
   }
 }
 
@@ -328,38 +343,64 @@ std::uint64_t coveredCells(const std::vector<Box>& covering, const Box& box) {
   return covered;
 }
 
-// The boxes that have leaves (a box that finer boxes cover, as they are disjoint, has none: its
-// data is not read), in the cells' order; `total` is their cell count. Fills the plotfile's
-// coverings and FAB offsets, level after level.
-std::vector<FabPlan> planFabs(Plotfile& plot, const ValueWindow* window, WindowedRead* read,
-                              bool skipsPieces, std::size_t& total) {
+// Per level and box, how many of its cells are leaves (not covered by the finer level). Fills
+// the plotfile's coverings and FAB offsets, and the slab's thickness of a 2D plotfile.
+std::vector<std::vector<std::uint64_t>> countLeaves(Plotfile& plot) {
   const PlotHeader& h = plot.header;
-  std::vector<FabPlan> plans;
-  total = 0;
+  std::vector<std::vector<std::uint64_t>> leaves;
+  int coarsestWithLeaves = -1;
   for (int l = 0; l <= h.finestLevel; ++l) {
     plot.coverings.push_back(coveringBoxes(plot, l));
     plot.offsets.push_back(fabOffsets(plot.layouts[l]));
-    const int width = plot.widths[l];
+    leaves.emplace_back();
     for (const FabEntry& fab : plot.layouts[l].fabs) {
-      const fs::path file = plot.fabFile(l, fab);
-      requireFile(file, fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
-      const std::uint64_t covered = coveredCells(plot.coverings[std::size_t(l)], fab.box);
-      const glm::i64vec3 boxCells =
-          glm::i64vec3(fab.box.hi) - glm::i64vec3(fab.box.lo) + std::int64_t(1);
+      requireFile(plot.fabFile(l, fab),
+                  fmt::format("missing FAB data file named in {}_H", h.levelPaths[l]));
+      const glm::i64vec3 boxCells = fab.box.size();
       const std::uint64_t cells = std::uint64_t(boxCells.x * boxCells.y * boxCells.z);
-      const glm::ivec3 lower = fab.box.lo * width - plot.finestDomain().lo;
-      const glm::ivec3 upper = (fab.box.hi + 1) * width - plot.finestDomain().lo;
-      const bool wanted = covered < cells && (!window || window->meets(lower, upper, width));
+      leaves.back().push_back(cells - coveredCells(plot.coverings[std::size_t(l)], fab.box));
+      if (leaves.back().back() > 0 && coarsestWithLeaves < 0) coarsestWithLeaves = l;
+    }
+  }
+  if (plot.planar()) plot.slabCells = plot.widths[std::size_t(std::max(coarsestWithLeaves, 0))];
+  return leaves;
+}
+
+// The boxes that have leaves (a box that finer boxes cover, as they are disjoint, has none: its
+// data is not read), in the cells' order; `total` is their cell count, a 2D plotfile's cells
+// repeated through the slab.
+std::vector<FabPlan> planFabs(Plotfile& plot, const ValueWindow* window, WindowedRead* read,
+                              bool skipsPieces, std::size_t& total) {
+  const std::vector<std::vector<std::uint64_t>> leaves = countLeaves(plot);
+  std::vector<FabPlan> plans;
+  total = 0;
+  std::uint64_t leafCells = 0;
+  for (int l = 0; l <= plot.header.finestLevel; ++l) {
+    const int width = plot.widths[l];
+    for (std::size_t f = 0; f < plot.layouts[l].fabs.size(); ++f) {
+      const FabEntry& fab = plot.layouts[l].fabs[f];
+      const std::uint64_t cells = leaves[std::size_t(l)][f];
+      glm::ivec3 lower = fab.box.lo * width - plot.finestDomain().lo;
+      glm::ivec3 upper = (fab.box.hi + 1) * width - plot.finestDomain().lo;
+      if (plot.planar()) lower.z = 0, upper.z = plot.slabCells;
+      const bool wanted = cells > 0 && (!window || window->meets(lower, upper, width));
       if (read) {
         ++read->pieces;
         read->piecesRead += wanted;
       }
-      if (covered == cells) continue;
+      if (cells == 0) continue;
       // The box's cells are laid out before any FAB is read: its FAB must hold them.
-      requireFabBytes(file, fab, plot.offsets[std::size_t(l)].at(fab.file), plot.stored(l, fab),
-                      plot.components());
+      requireFabBytes(plot.fabFile(l, fab), fab, plot.offsets[std::size_t(l)].at(fab.file),
+                      plot.stored(l, fab), plot.components());
       if (wanted || !skipsPieces) plans.push_back({l, &fab, total, wanted});
-      total += cells - covered;
+      total += cells * std::uint64_t(plot.copies(l));
+      leafCells += cells;
+      if (total > kMaxSlabGrowth * leafCells)
+        throw InputError(plot.directory.string(),
+                         fmt::format("the 2D plotfile's cells become more than {} times as many "
+                                     "when stacked into a slab of uniform thickness: its finest "
+                                     "level is too many levels below the coarsest leaves",
+                                     kMaxSlabGrowth));
     }
   }
   return plans;
@@ -393,34 +434,42 @@ void readFabCells(const Plotfile& plot, const FabPlan& plan, CellSink& sink) {
       plan.wanted
           ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
                            nextFabOffset(plot.offsets[std::size_t(l)].at(fab.file), fab.offset),
-                           stored, ncomp)
+                           stored, ncomp, plot.header.axes)
           : std::vector<double>();
   const std::vector<bool> covered = coveredMask(plot, l, fab.box, file.string());
   const int width = plot.widths[l];
   const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(width)));
   const glm::ivec3 size(fab.box.size()), storedSize(stored.size());
+  const glm::ivec3 ghost = fab.box.lo - stored.lo;
   const std::size_t points = amrex::cellCount(stored, file.string());
+  const int copies = plot.copies(l);
   std::size_t index = 0, at = plan.at;
   for (int k = 0; k < size.z; ++k)
     for (int j = 0; j < size.y; ++j)
       for (int i = 0; i < size.x; ++i, ++index) {
         if (covered[index]) continue;
         const glm::ivec3 cell = fab.box.lo + glm::ivec3(i, j, k);
-        sink.place(at, cell * width - plot.finestDomain().lo, ourLevel);
-        const glm::ivec3 s = glm::ivec3(i, j, k) + plot.layouts[l].nghost;
+        const glm::ivec3 s = glm::ivec3(i, j, k) + ghost;
         const std::size_t point =
             (static_cast<std::size_t>(s.z) * storedSize.y + s.y) * storedSize.x + s.x;
-        for (int c = 0; plan.wanted && c < ncomp; ++c) {
-          const double value = values[c * points + point];
-          if (const auto problem = unusableFieldValue(value))
-            throw InputError(file.string(),
-                             fmt::format("FAB at byte {}: variable '{}' at level-{} cell "
-                                         "({}, {}, {}) is {} ({})",
-                                         fab.offset, plot.header.names[c], l, cell.x, cell.y,
-                                         cell.z, *problem, value));
-          sink.set(std::size_t(c), at, static_cast<float>(value));
+        for (int copy = 0; copy < copies; ++copy, ++at) {
+          glm::ivec3 lower = cell * width - plot.finestDomain().lo;
+          if (plot.planar()) lower.z = copy * width;
+          sink.place(at, lower, ourLevel);
+          for (int c = 0; plan.wanted && c < ncomp; ++c) {
+            const double value = values[c * points + point];
+            if (const auto problem = unusableFieldValue(value))
+              throw InputError(
+                  file.string(),
+                  fmt::format("FAB at byte {}: variable '{}' at level-{} cell "
+                              "{} is {} ({})",
+                              fab.offset, plot.header.names[c], l,
+                              plot.planar() ? fmt::format("({}, {})", cell.x, cell.y)
+                                            : fmt::format("({}, {}, {})", cell.x, cell.y, cell.z),
+                              *problem, value));
+            sink.set(std::size_t(c), at, static_cast<float>(value));
+          }
         }
-        ++at;
       }
 }
 
@@ -431,13 +480,14 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
   const fs::path headerPath = plotfileHeader(directory);
   Plotfile plot{directory, parseHeader(headerPath)};
   plot.widths = levelWidths(plot.header, headerPath);
-  const WorldTransform transform = finestTransform(plot.header, headerPath);
+  finestTransform(plot.header, headerPath, 1);  // the header's own numbers, before the boxes
   readLevelHeaders(plot);
 
   CellSink sink(window, directory.string(), read);
   for (const std::string& name : plot.header.names) sink.addChannel(name);
   std::size_t total = 0;
   const std::vector<FabPlan> plans = planFabs(plot, window, read, sink.skipsPieces(), total);
+  const WorldTransform transform = finestTransform(plot.header, headerPath, plot.slabCells);
   sink.presize(total);
   std::vector<std::exception_ptr> failures(plans.size());
   tbb::parallel_for(std::size_t(0), plans.size(), [&](std::size_t p) {
@@ -455,7 +505,7 @@ bricks::AmrField readAmrexPlotfile(const fs::path& directory, const ValueWindow*
   std::vector<int> internalLevels;
   for (int width : plot.widths)
     internalLevels.push_back(std::countr_zero(static_cast<unsigned>(width)));
-  field.setInfo(readAmrexInfo(directory, plot.header.time, internalLevels));
+  field.setInfo(readAmrexInfo(directory, plot.header.time, internalLevels, plot.header.axes));
   return field;
 }
 

@@ -84,11 +84,11 @@ double Cursor::real(const char* what) {
   return value;
 }
 
-glm::ivec3 Cursor::intVector(const char* what) {
-  glm::ivec3 v;
+glm::ivec3 Cursor::intVector(const char* what, int axes) {
+  glm::ivec3 v(0);
   const std::string where = fmt::format("in {}", what);
   expect('(', where.c_str());
-  for (int axis = 0; axis < 3; ++axis) {
+  for (int axis = 0; axis < axes; ++axis) {
     if (axis > 0) expect(',', where.c_str());
     v[axis] = smallInt(where.c_str(), -kMaxBoxCoordinate, kMaxBoxCoordinate);
   }
@@ -108,13 +108,13 @@ std::string boxText(const Box& box) {
                      box.hi.z);
 }
 
-Box readBox(Cursor& in, const char* what) {
+Box readBox(Cursor& in, const char* what, int axes) {
   Box box;
   const std::string where = fmt::format("in {}", what);
   in.expect('(', where.c_str());
-  box.lo = in.intVector(what);
-  box.hi = in.intVector(what);
-  const glm::ivec3 type = in.intVector(what);
+  box.lo = in.intVector(what, axes);
+  box.hi = in.intVector(what, axes);
+  const glm::ivec3 type = in.intVector(what, axes);
   in.expect(')', where.c_str());
   if (type != glm::ivec3(0))
     in.fail(fmt::format("{} is not cell-centred (index type ({},{},{}))", what, type.x, type.y,

@@ -28,8 +28,9 @@ class Cursor {
   std::string line(const char* what);
   long long integer(const char* what);
   int smallInt(const char* what, long long low, long long high);
-  double real(const char* what);           // finite
-  glm::ivec3 intVector(const char* what);  // (a,b,c), each within +-kMaxBoxCoordinate
+  double real(const char* what);  // finite
+  // (a,b,c), each within +-kMaxBoxCoordinate; with `axes` 2, (a,b) and z = 0.
+  glm::ivec3 intVector(const char* what, int axes = 3);
 
  private:
   std::string text_;
@@ -52,6 +53,7 @@ std::uint64_t cellCount(const Box& box, const std::string& source);
 
 std::string boxText(const Box& box);  // "(lo.x,lo.y,lo.z)-(hi.x,hi.y,hi.z)"
 
-Box readBox(Cursor& in, const char* what);  // ((lo) (hi) (type)), cell-centred, not empty
+// ((lo) (hi) (type)), cell-centred, not empty; with `axes` 2, a 2D box, held as one cell in z.
+Box readBox(Cursor& in, const char* what, int axes = 3);
 
 }  // namespace amrstream::formats::amrex

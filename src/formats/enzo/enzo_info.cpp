@@ -17,8 +17,8 @@ constexpr double kMegaparsecCm = 3.0856775814913673e24;
 constexpr double kHubble100PerSecond = 1e7 / kMegaparsecCm;  // 100 km/s/Mpc in 1/s
 
 void readPeriodicity(const EnzoParameters& p, DatasetInfo& info) {
-  const auto left = p.threeNumbers("LeftFaceBoundaryCondition");
-  const auto right = p.threeNumbers("RightFaceBoundaryCondition");
+  const auto left = p.threeNumbers("LeftFaceBoundaryCondition", info.dimensions);
+  const auto right = p.threeNumbers("RightFaceBoundaryCondition", info.dimensions);
   if (!left || !right) return;
   info.periodicKnown = true;
   for (int a = 0; a < 3; ++a)
@@ -91,9 +91,10 @@ void readFieldUnits(const EnzoParameters& p, DatasetInfo& info) {
 
 }  // namespace
 
-DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel) {
+DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel, int dimensions) {
   DatasetInfo info;
   info.format = "Enzo";
+  info.dimensions = dimensions;
   info.finestFileLevel = finestLevel;
   info.levelsCountDown = true;
   info.levelName = "Enzo level (0 = root grid)";

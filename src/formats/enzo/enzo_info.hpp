@@ -24,8 +24,9 @@
 
 namespace amrstream::formats {
 
-// `parameters` may be null (no parameter file); `finestLevel` is the finest Enzo level present.
-DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel);
+// `parameters` may be null (no parameter file); `finestLevel` is the finest Enzo level present;
+// `dimensions` the data's (2 or 3).
+DatasetInfo readEnzoInfo(const EnzoParameters* parameters, int finestLevel, int dimensions = 3);
 
 // The snapshot's time alone (InitialTime; nullopt when absent).
 std::optional<double> readEnzoTime(const EnzoParameters& parameters);

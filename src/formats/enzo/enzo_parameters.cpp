@@ -46,10 +46,11 @@ std::optional<double> EnzoParameters::number(const std::string& key) const {
   return value;
 }
 
-std::optional<std::array<double, 3>> EnzoParameters::threeNumbers(const std::string& key) const {
+std::optional<std::array<double, 3>> EnzoParameters::threeNumbers(const std::string& key,
+                                                                  int axes) const {
   const auto it = values_.find(key);
   if (it == values_.end()) return std::nullopt;
-  return parseThreeFinite(it->second, file_.string(), key);
+  return parseAxisFinite(it->second, file_.string(), key, axes, 0.0);
 }
 
 }  // namespace amrstream::formats

@@ -18,10 +18,10 @@ class EnzoParameters {
   const std::filesystem::path& file() const { return file_; }
   const std::map<std::string, std::string>& values() const { return values_; }
 
-  // Absent keys give nullopt; a value that is not exactly one finite number (or three) throws,
-  // naming the file, the key and the text.
+  // Absent keys give nullopt; a value that is not exactly one finite number (or one per axis of
+  // `axes`-dimensional data, parseAxisFinite) throws, naming the file, the key and the text.
   std::optional<double> number(const std::string& key) const;
-  std::optional<std::array<double, 3>> threeNumbers(const std::string& key) const;
+  std::optional<std::array<double, 3>> threeNumbers(const std::string& key, int axes = 3) const;
 
  private:
   std::filesystem::path file_;

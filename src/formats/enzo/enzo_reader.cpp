@@ -50,6 +50,7 @@ struct Grid {
 struct Domain {
   glm::dvec3 left{0.0}, right{1.0};
   glm::ivec3 topDims{0};
+  int axes = 3;  // 2: planar data, whose grids are one zone thick (z is then unused)
 };
 
 std::string trim(std::string s) {
@@ -95,19 +96,18 @@ Domain readParameters(const EnzoParameters& parameters) {
     return it->second;
   };
   Domain d;
-  d.topDims = toIvec3(parseThreeIntegers(need("TopGridDimensions"), file, "TopGridDimensions", 1,
-                                         kMaxZonesPerAxis));
-  d.left = toDvec3(parseThreeFinite(need("DomainLeftEdge"), file, "DomainLeftEdge"));
-  d.right = toDvec3(parseThreeFinite(need("DomainRightEdge"), file, "DomainRightEdge"));
+  if (kv.contains("TopGridRank"))
+    d.axes = static_cast<int>(parseInteger(need("TopGridRank"), file, "TopGridRank", 1, 3));
+  if (d.axes == 1) throw InputError(file, "TopGridRank is 1: 1D data is not read (2D and 3D are)");
+  d.topDims = toIvec3(parseAxisIntegers(need("TopGridDimensions"), file, "TopGridDimensions", 1,
+                                        kMaxZonesPerAxis, d.axes, 1));
+  d.left = toDvec3(parseAxisFinite(need("DomainLeftEdge"), file, "DomainLeftEdge", d.axes, 0.0));
+  d.right = toDvec3(parseAxisFinite(need("DomainRightEdge"), file, "DomainRightEdge", d.axes, 1.0));
   if (const auto it = kv.find("RefineBy"); it != kv.end()) {
     const std::int64_t refineBy = parseInteger(it->second, file, "RefineBy", 1, 1 << 30);
     if (refineBy != 2)
       throw InputError(file, fmt::format("RefineBy {} is not supported (only 2)", refineBy));
   }
-  if (kv.contains("TopGridRank") && need("TopGridRank") != "3")
-    throw InputError(file,
-                     "only 3D data (TopGridRank 3) is read here; read 2D data through yt "
-                     "(amrstream.from_yt(yt.load(PATH)) in Python)");
   return d;
 }
 
@@ -132,8 +132,9 @@ bool parsePointer(std::string_view key, std::string_view value, const std::strin
   return true;
 }
 
-// The text hierarchy: blocks `Grid = N` of `Key = value` lines, then `Pointer:` lines.
-std::vector<Grid> readHierarchy(const fs::path& file) {
+// The text hierarchy: blocks `Grid = N` of `Key = value` lines, then `Pointer:` lines. `axes`:
+// the grids' rank (GridRank, 2 or 3, the same for all); a 2D grid is one zone thick.
+std::vector<Grid> readHierarchy(const fs::path& file, int& axes) {
   const std::string source = file.string();
   const std::string text = readWholeFile(file, "the hierarchy file");
   std::vector<std::map<std::string, std::string>> blocks;
@@ -185,18 +186,22 @@ std::vector<Grid> readHierarchy(const fs::path& file) {
       if (!pointers.contains({id, which}))
         throw InputError(
             source, fmt::format("grid {} lacks its NextGrid{} pointer (truncated?)", id, which));
-    if (trim(need("GridRank")) != "3")
-      throw InputError(source, fmt::format("grid {}: only GridRank 3 is supported", id));
     Grid g;
     g.id = id;
     const std::string what = fmt::format("grid {} ", id);
+    const int rank =
+        static_cast<int>(parseInteger(need("GridRank"), source, what + "GridRank", 2, 3));
+    if (i > 0 && rank != axes)
+      throw InputError(
+          source, fmt::format("grid {}: GridRank {} differs from grid 1's {}", id, rank, axes));
+    axes = rank;
     const std::int64_t kIntMax = std::numeric_limits<std::int32_t>::max();
-    const auto start =
-        parseThreeIntegers(need("GridStartIndex"), source, what + "GridStartIndex", 0, kIntMax);
+    const auto start = parseAxisIntegers(need("GridStartIndex"), source, what + "GridStartIndex", 0,
+                                         kIntMax, rank, 0);
     const auto end =
-        parseThreeIntegers(need("GridEndIndex"), source, what + "GridEndIndex", 0, kIntMax);
-    const auto total =
-        parseThreeIntegers(need("GridDimension"), source, what + "GridDimension", 1, kIntMax);
+        parseAxisIntegers(need("GridEndIndex"), source, what + "GridEndIndex", 0, kIntMax, rank, 0);
+    const auto total = parseAxisIntegers(need("GridDimension"), source, what + "GridDimension", 1,
+                                         kIntMax, rank, 1);
     glm::i64vec3 dims;
     for (int a = 0; a < 3; ++a) {
       if (end[a] >= total[a] || end[a] < start[a])
@@ -206,8 +211,10 @@ std::vector<Grid> readHierarchy(const fs::path& file) {
       dims[a] = end[a] - start[a] + 1;
     }
     g.dims = requireGridSize(id, dims, source);
-    g.left = toDvec3(parseThreeFinite(need("GridLeftEdge"), source, what + "GridLeftEdge"));
-    g.right = toDvec3(parseThreeFinite(need("GridRightEdge"), source, what + "GridRightEdge"));
+    g.left =
+        toDvec3(parseAxisFinite(need("GridLeftEdge"), source, what + "GridLeftEdge", rank, 0.0));
+    g.right =
+        toDvec3(parseAxisFinite(need("GridRightEdge"), source, what + "GridRightEdge", rank, 1.0));
     if (const auto it = b.find("Level"); it != b.end())
       g.level = static_cast<int>(parseInteger(it->second, source, what + "Level", 0, kIntMax));
     // An absolute path from the machine that wrote it: only the basename is meaningful.
@@ -278,8 +285,10 @@ std::vector<Grid> readHarrays(const fs::path& file) {
 // per axis, so the cells' integer arithmetic cannot overflow.
 glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::path& table) {
   const auto src = table.string();
-  const glm::dvec3 topDx = (domain.right - domain.left) / glm::dvec3(domain.topDims);
-  for (int a = 0; a < 3; ++a)
+  const int axes = domain.axes;
+  glm::dvec3 topDx = (domain.right - domain.left) / glm::dvec3(domain.topDims);
+  if (axes == 2) topDx.z = topDx.x;  // the slab's cells are cubes
+  for (int a = 0; a < axes; ++a)
     if (!std::isnormal(topDx[a]) || !(topDx[a] > 0))
       throw InputError(
           src, fmt::format("the domain [{}, {}] along axis {} over {} top-grid "
@@ -287,7 +296,8 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
                            domain.left[a], domain.right[a], "xyz"[a], domain.topDims[a], topDx[a]));
   int finest = 0;
   for (auto& g : grids) {
-    for (int a = 0; a < 3; ++a)
+    if (axes == 2) g.dims.z = 1;  // z is unused: its edges and zones are not checked
+    for (int a = 0; a < axes; ++a)
       if (!std::isfinite(g.left[a]) || !std::isfinite(g.right[a]) || !(g.right[a] > g.left[a]))
         throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}", g.id, g.left[a],
                                           g.right[a], "xyz"[a]));
@@ -298,7 +308,7 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
                                         "1/2^L for a level L in 0..{}",
                                         g.id, ratio.x, bricks::kMaxLevel));
     const int level = static_cast<int>(std::lround(log2Ratio));
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < axes; ++a)
       if (!(std::abs(ratio[a] / std::ldexp(1.0, level) - 1.0) < 1e-6))
         throw InputError(src, fmt::format("grid {}: cell size is not the top-grid cell size / 2^L "
                                           "(edges and dimensions disagree)",
@@ -311,7 +321,7 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
   }
   const glm::dvec3 finestDx = topDx / std::ldexp(1.0, finest);
   const glm::i64vec3 domainCells = glm::i64vec3(domain.topDims) << std::int64_t(finest);
-  for (int a = 0; a < 3; ++a)
+  for (int a = 0; a < axes; ++a)
     if (domainCells[a] >= kMaxZonesPerAxis)
       throw InputError(src, fmt::format("the domain spans {} finest cells along axis {} ({} "
                                         "top-grid cells refined {} times); at most {} are "
@@ -322,7 +332,8 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
     g.width = 1 << (finest - g.level);
     const glm::dvec3 lo = (g.left - domain.left) / finestDx;
     const glm::dvec3 hi = (g.right - domain.left) / finestDx;
-    for (int a = 0; a < 3; ++a) {
+    g.lower.z = 0;
+    for (int a = 0; a < axes; ++a) {
       const std::int64_t upper = std::int64_t{g.dims[a]} * g.width;
       if (!(lo[a] > -0.5 && lo[a] + upper < domainCells[a] + 0.5))
         throw InputError(src, fmt::format("grid {} spans [{}, {}] along axis {}, outside the "
@@ -341,15 +352,16 @@ glm::dvec3 placeGrids(std::vector<Grid>& grids, const Domain& domain, const fs::
 
 // Marks the cells of `g` covered by grids one level finer. Those align with g's cells; deeper grids
 // nest inside them (a violation shows up as an overlap in AmrField).
-std::vector<bool> coveredCells(const Grid& g, const std::vector<Grid>& grids,
-                               const fs::path& table) {
+std::vector<bool> coveredCells(const Grid& g, const std::vector<Grid>& grids, const fs::path& table,
+                               int axes) {
   const glm::ivec3 n = g.dims;
   std::vector<bool> covered(std::size_t(n.x) * n.y * n.z, false);
   const glm::ivec3 gUpper = g.lower + n * g.width;
   for (const auto& h : grids) {
     if (h.level != g.level + 1) continue;
-    const glm::ivec3 lo = glm::max(g.lower, h.lower) - g.lower;
-    const glm::ivec3 hi = glm::min(gUpper, h.lower + h.dims * h.width) - g.lower;
+    glm::ivec3 lo = glm::max(g.lower, h.lower) - g.lower;
+    glm::ivec3 hi = glm::min(gUpper, h.lower + h.dims * h.width) - g.lower;
+    if (axes == 2) lo.z = 0, hi.z = g.width;  // planar grids cover along x and y only
     if (glm::any(glm::lessThanEqual(hi, lo))) continue;
     for (int a = 0; a < 3; ++a)
       if (lo[a] % g.width != 0 || hi[a] % g.width != 0)
@@ -371,20 +383,26 @@ herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out) {
 // One field of a grid, as stored (read as float64 so that no value is rounded before it is
 // checked).
 std::vector<double> readField(hid_t group, const fs::path& file, const std::string& groupName,
-                              const std::string& name, glm::ivec3 dims) {
+                              const std::string& name, glm::ivec3 dims, int axes) {
   const auto what = fmt::format("{}/{}", groupName, name);
   if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
     throw InputError(file.string(), fmt::format("dataset {} is missing", what));
   const auto ds = checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, file,
                           fmt::format("open dataset {}", what));
   const std::vector<hsize_t> expected{hsize_t(dims.z), hsize_t(dims.y), hsize_t(dims.x)};
+  const std::vector<hsize_t> planar{hsize_t(dims.y), hsize_t(dims.x)};
   const auto shape = shapeOf(ds.get(), file, what);
-  if (shape != expected) {
+  if (shape != expected && !(axes == 2 && shape == planar)) {
     std::string got;
     for (auto s : shape) got += fmt::format("{}{}", got.empty() ? "" : ",", s);
-    throw InputError(file.string(), fmt::format("dataset {} has shape ({}), expected ({},{},{}) "
-                                                "= (nz,ny,nx) active zones",
-                                                what, got, dims.z, dims.y, dims.x));
+    throw InputError(file.string(),
+                     axes == 2
+                         ? fmt::format("dataset {} has shape ({}), expected ({},{}) = (ny,nx) "
+                                       "active zones",
+                                       what, got, dims.y, dims.x)
+                         : fmt::format("dataset {} has shape ({}), expected ({},{},{}) = "
+                                       "(nz,ny,nx) active zones",
+                                       what, got, dims.z, dims.y, dims.x));
   }
   const auto type = checked(H5Dget_type(ds.get()), H5Tclose, file, "get the type of " + what);
   if (H5Tget_class(type.get()) != H5T_FLOAT)
@@ -427,6 +445,7 @@ Siblings findSiblings(const fs::path& file) {
 struct GridTable {
   std::vector<Grid> grids;
   fs::path table;
+  int axes = 3;  // the hierarchy's GridRank; 3 without a hierarchy
 };
 
 GridTable readGridTable(const fs::path& file, const Siblings& sib) {
@@ -440,7 +459,8 @@ GridTable readGridTable(const fs::path& file, const Siblings& sib) {
   std::vector<Grid> grids;
   fs::path table;
   std::vector<Grid> text;
-  if (hasHierarchy) text = readHierarchy(sib.hierarchy);
+  int axes = 3;
+  if (hasHierarchy) text = readHierarchy(sib.hierarchy, axes);
   if (hasHarrays) {
     table = sib.harrays;
     grids = readHarrays(sib.harrays);
@@ -454,24 +474,54 @@ GridTable readGridTable(const fs::path& file, const Siblings& sib) {
     table = sib.hierarchy;
     grids = std::move(text);
   }
-  return {std::move(grids), std::move(table)};
+  return {std::move(grids), std::move(table), axes};
 }
 
 // The domain from the parameter file, read into `parameters`, when there is one.
-Domain readDomain(const Siblings& sib, const std::vector<Grid>& grids,
+Domain readDomain(const Siblings& sib, const GridTable& table,
                   std::optional<EnzoParameters>& parameters) {
   Domain domain;
   std::error_code ec;
   if (present(sib.parameter) && !fs::is_directory(sib.parameter, ec)) {
     parameters.emplace(sib.parameter);
     domain = readParameters(*parameters);
+    if (present(sib.hierarchy) && domain.axes != table.axes)
+      throw InputError(sib.hierarchy.string(),
+                       fmt::format("its grids have GridRank {}, but {} says TopGridRank {}",
+                                   table.axes, sib.parameter.filename().string(), domain.axes));
   } else {
     // Without the parameter file, the first grid is the root grid spanning the domain.
-    domain.left = grids[0].left;
-    domain.right = grids[0].right;
-    domain.topDims = grids[0].dims;
+    domain.left = table.grids[0].left;
+    domain.right = table.grids[0].right;
+    domain.topDims = table.grids[0].dims;
+    domain.axes = table.axes;
   }
   return domain;
+}
+
+// The thickness, in finest cells, of the slab that holds 2D data: its coarsest leaf cell's
+// width. Refused when repeating the finer cells through it multiplies them by more than
+// kMaxSlabGrowth.
+int slabThickness(const std::vector<Grid>& grids, const fs::path& table) {
+  int thickest = 1;
+  std::vector<std::size_t> leaves(grids.size());
+  for (std::size_t n = 0; n < grids.size(); ++n) {
+    const auto covered = coveredCells(grids[n], grids, table, 2);
+    leaves[n] = std::size_t(std::count(covered.begin(), covered.end(), false));
+    if (leaves[n] > 0) thickest = std::max(thickest, grids[n].width);
+  }
+  std::size_t leafCells = 0, cells = 0;
+  for (std::size_t n = 0; n < grids.size(); ++n) {
+    leafCells += leaves[n];
+    cells += leaves[n] * std::size_t(thickest / grids[n].width);
+  }
+  if (cells > kMaxSlabGrowth * leafCells)
+    throw InputError(table.string(),
+                     fmt::format("the 2D data's {} leaf cells become {} when stacked into a slab "
+                                 "of uniform thickness, more than {} times as many: its finest "
+                                 "level is too many levels below the coarsest leaves",
+                                 leafCells, cells, kMaxSlabGrowth));
+  return thickest;
 }
 
 // Reading the grids' cells into a sink: the field files, each opened once, and the channels,
@@ -481,6 +531,8 @@ struct GridReading {
   const fs::path& table;
   const fs::path& dir;
   int finest;
+  int axes;
+  int slabCells;  // 2D data: each cell repeats along z up to this many finest cells
   CellSink& sink;
   std::vector<std::string> channels;
   std::map<std::string, Handle> files;
@@ -503,20 +555,28 @@ void addCells(GridReading& r, const Grid& g, bool wanted,
               const std::vector<std::vector<double>>& fields, const std::vector<bool>& covered,
               const fs::path& path, const std::string& groupName) {
   const auto level = static_cast<std::uint8_t>(r.finest - g.level);
+  const int copies = r.axes == 2 ? r.slabCells / g.width : 1;
   std::size_t index = 0;
   for (int k = 0; k < g.dims.z; ++k)
     for (int j = 0; j < g.dims.y; ++j)
       for (int i = 0; i < g.dims.x; ++i, ++index) {
         if (covered[index]) continue;
-        const std::size_t at = r.sink.cell(g.lower + glm::ivec3(i, j, k) * g.width, level);
-        for (std::size_t c = 0; wanted && c < r.channels.size(); ++c) {
-          const double value = fields[c][index];
-          if (const auto problem = unusableFieldValue(value))
-            throw InputError(path.string(),
-                             fmt::format("dataset {}/{}: value {} at zone (i, j, k) = ({}, {}, "
-                                         "{}) is {}",
-                                         groupName, r.channels[c], value, i, j, k, *problem));
-          r.sink.set(c, at, static_cast<float>(value));
+        for (int copy = 0; copy < copies; ++copy) {
+          glm::ivec3 lower = g.lower + glm::ivec3(i, j, k) * g.width;
+          if (r.axes == 2) lower.z = copy * g.width;
+          const std::size_t at = r.sink.cell(lower, level);
+          for (std::size_t c = 0; wanted && c < r.channels.size(); ++c) {
+            const double value = fields[c][index];
+            if (const auto problem = unusableFieldValue(value))
+              throw InputError(
+                  path.string(),
+                  fmt::format("dataset {}/{}: value {} at zone {} is {}", groupName, r.channels[c],
+                              value,
+                              r.axes == 2 ? fmt::format("(i, j) = ({}, {})", i, j)
+                                          : fmt::format("(i, j, k) = ({}, {}, {})", i, j, k),
+                              *problem));
+            r.sink.set(c, at, static_cast<float>(value));
+          }
         }
       }
 }
@@ -539,8 +599,8 @@ void readGrid(GridReading& r, const Grid& g, bool wanted) {
   std::vector<std::vector<double>> fields;
   if (wanted)
     for (const std::string& name : r.channels)
-      fields.push_back(readField(group.get(), path, groupName, name, g.dims));
-  const auto covered = coveredCells(g, r.grids, r.table);
+      fields.push_back(readField(group.get(), path, groupName, name, g.dims, r.axes));
+  const auto covered = coveredCells(g, r.grids, r.table, r.axes);
 
   addCells(r, g, wanted, fields, covered, path, groupName);
 }
@@ -550,34 +610,44 @@ void readGrid(GridReading& r, const Grid& g, bool wanted) {
 bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, WindowedRead* read) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const auto sib = findSiblings(file);
-  auto [grids, table] = readGridTable(file, sib);
+  GridTable gridTable = readGridTable(file, sib);
+  std::vector<Grid>& grids = gridTable.grids;
+  const fs::path& table = gridTable.table;
 
   std::optional<EnzoParameters> parameters;
-  const Domain domain = readDomain(sib, grids, parameters);
+  const Domain domain = readDomain(sib, gridTable, parameters);
   const glm::dvec3 finestDx = placeGrids(grids, domain, table);
+  const int axes = domain.axes;
+  const int slabCells = axes == 2 ? slabThickness(grids, table) : 1;
 
   CellSink sink(window, file.string(), read);
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;
-  GridReading reading{grids, table, sib.dir, finest, sink, {}, {}};
+  GridReading reading{grids, table, sib.dir, finest, axes, slabCells, sink, {}, {}};
 
   for (const auto& g : grids) {
-    const bool wanted = !window || window->meets(g.lower, g.lower + g.dims * g.width, g.width);
+    glm::ivec3 upper = g.lower + g.dims * g.width;
+    if (axes == 2) upper.z = slabCells;
+    const bool wanted = !window || window->meets(g.lower, upper, g.width);
     if (read) {
       ++read->pieces;
       read->piecesRead += wanted;
     }
     if (!wanted && sink.skipsPieces() && !reading.channels.empty()) {
-      const auto covered = coveredCells(g, grids, table);
-      sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)));
+      const auto covered = coveredCells(g, grids, table, axes);
+      const int copies = axes == 2 ? slabCells / g.width : 1;
+      sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)) *
+                std::size_t(copies));
       continue;
     }
     readGrid(reading, g, wanted);
   }
-  const WorldTransform transform{domain.left, finestDx};
+  glm::dvec3 origin = domain.left;
+  if (axes == 2) origin.z = -0.5 * slabCells * finestDx.z;  // the plane is z = 0
+  const WorldTransform transform{origin, finestDx};
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     throw InputError(table.string(), "the grids cannot be placed: " + *problem);
   bricks::AmrField field = sink.finish(transform);
-  DatasetInfo info = readEnzoInfo(parameters ? &*parameters : nullptr, finest);
+  DatasetInfo info = readEnzoInfo(parameters ? &*parameters : nullptr, finest, axes);
   if (field.findChannel("Temperature")) info.units.emplace("Temperature", "K");  // Enzo writes K
   field.setInfo(std::move(info));
   return field;

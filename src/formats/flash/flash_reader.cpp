@@ -29,10 +29,6 @@ using flash::Handle;
 
 constexpr int kMaxCellsPerBlockAxis = 4096;
 constexpr std::size_t kMaxCells = std::size_t{1} << 31;
-// A 2D slab repeats a fine leaf cell 2^(levels below the coarsest leaf) times along z: at most
-// this many cells per leaf cell in the file (leaves 8 levels finer than the coarsest, at most),
-// so that the cells stay within a small multiple of the data the file stores.
-constexpr std::size_t kMaxSlabGrowth = 256;
 
 std::string shapeText(const std::vector<hsize_t>& dims) {
   return fmt::format("[{}]", fmt::join(dims, ", "));
