@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "amrstream/stage_clock.hpp"
+
 namespace amrstream {
 
 using Log = std::function<void(const std::string& line)>;
@@ -28,6 +30,12 @@ std::string withCommas(std::uint64_t n);
 struct Reporter {
   Log log;
   StageProgress progress;
+  StageClock* clock = nullptr;  // where a command's stages are timed, when one is
+
+  // Closes the stage under way on the clock (StageClock::lap), if there is one.
+  void lap(std::string_view stage, std::initializer_list<StageClock::Part> parts = {}) const {
+    if (clock) clock->lap(stage, parts);
+  }
 
   void say(const std::string& line) const { amrstream::say(log, line); }
   void advance(std::string_view stage, std::size_t done, std::size_t total) const {

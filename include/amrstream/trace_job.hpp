@@ -121,9 +121,23 @@ class TracedLines {
 TracedLines trace(PreparedJob& job, const TraceRunOptions& options = {},
                   const Reporter& reporter = {});
 
+// What a trace job did: what it read, traced and wrote, and where (TraceReport).
+struct TraceJobSummary {
+  std::string input;
+  std::uint64_t cells = 0, seeds = 0, lines = 0, steps = 0, pointsWritten = 0;
+  TraceReport report;
+};
+
 // `amrstream trace` in one process: prepare (the dataset released once the field holds what
 // tracing reads), trace (`store` for the points), write, then the host memory's peak ("memory").
-void runTraceJob(const TraceJob& job, const TraceOutput& output, TraceStore store,
-                 const Reporter& reporter = {});
+// With a clock on `reporter`, its stages are lapped as they end (input, layout, bricks, regions,
+// seeds, values, the device's setup, tracing, output, freeing) and the "wall" line ends the run.
+TraceJobSummary runTraceJob(const TraceJob& job, const TraceOutput& output, TraceStore store,
+                            const Reporter& reporter = {});
+
+// Writes the summary and the clock's stages to `path` as JSON, whole or not at all; throws
+// std::runtime_error naming the path when it cannot.
+void writeTraceJson(const std::filesystem::path& path, const TraceJobSummary& summary,
+                    const StageClock& clock);
 
 }  // namespace amrstream

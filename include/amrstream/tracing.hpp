@@ -21,10 +21,15 @@ class Field;
 // What ran a trace and where its time went: creating the device context, uploading the volume
 // and building its point-location structure and kernels (0 on the CPU), then tracing proper.
 struct TraceReport {
-  std::string backend;  // "compute", "cpu", ...
-  std::string device;   // the Vulkan device's name, or the CPU's thread count
-  double setupSeconds = 0.0;
+  std::string backend;            // "compute", "cpu", ...
+  std::string device;             // the Vulkan device's name, or the CPU's thread count
+  double chooseSeconds = 0.0;     // choosing the backend (listing the devices for auto)
+  double setupSeconds = 0.0;      // opening the device with the volume on it, all of:
+  double uploadSeconds = 0.0;     //   the volume's buffers
+  double structureSeconds = 0.0;  //   the region tree or acceleration structure
+  double kernelSeconds = 0.0;     //   compiling the kernels (pipelines)
   double traceSeconds = 0.0;
+  std::uint64_t lines = 0, steps = 0;  // traced
 };
 
 // The ReasonForTermination's name, e.g. "out of domain".

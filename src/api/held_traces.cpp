@@ -45,6 +45,9 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const Back
   t.backend = gpu::backendName(choice.backend);
   t.device = session->ctx.deviceName();
   const gpu::TracerSetup& setup = session->tracer.setup();
+  t.uploadSeconds = setup.uploadSeconds;
+  t.structureSeconds = setup.structureSeconds;
+  t.kernelSeconds = setup.pipelineSeconds;
   say(log,
       fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
                   "{:.2f} s, kernels {:.2f} s]",
@@ -126,7 +129,9 @@ flow::StoredTraces traceSeeds(const BackendRequest& request, flow::VectorVolume&
                               HostValues hostValues, const Log& log) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
+  Stopwatch choosing;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  t.chooseSeconds = choosing.seconds();
   checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return traceOnTheCpu(volume, seeds, options, progress, t, log);
@@ -141,7 +146,9 @@ std::unique_ptr<HeldTraces> traceForWriting(
     TraceReport* report, HostValues hostValues, const Log& log) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
+  Stopwatch choosing;
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  t.chooseSeconds = choosing.seconds();
   // Before the device may free the volume's host values, which the check's sample reads.
   checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)

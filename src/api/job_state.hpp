@@ -23,7 +23,8 @@ struct PreparedJob::Impl {
   std::string seedDescription;
   flow::TraceOptions options;  // as checked against the field
   BackendRequest backend;
-  TraceReport report;  // filled by tracing
+  TraceReport report;           // filled by tracing
+  std::uint64_t cellCount = 0;  // of the input (the field's volume may hold periodic images)
 
   flow::VectorVolume& volume() { return volumeOf(field); }
   // The dataset; InputError-free: callers ask only where it was kept.
@@ -52,8 +53,9 @@ WrittenLines writeLines(const flow::TraceView& traces, const TraceOutput& output
 // The "output" line of a written .vtp.
 std::string outputLine(const std::filesystem::path& path, const WrittenLines& written);
 
-// The "steps", "reasons" and "time" lines of a trace.
-void sayTraceSummary(const flow::TraceSet& lines, const TraceReport& report, const Log& log);
+// The "steps", "reasons" and "time" lines of a trace, whose lines and steps it counts into
+// `report`.
+void sayTraceSummary(const flow::TraceSet& lines, TraceReport& report, const Log& log);
 
 // "out of domain (1): 12, max steps (5): 244": how many lines ended for each reason.
 std::string reasonHistogram(std::span<const std::int32_t> reasons);

@@ -45,9 +45,12 @@ std::string reasonHistogram(std::span<const std::int32_t> reasons) {
   return histogram;
 }
 
-void sayTraceSummary(const flow::TraceSet& traces, const TraceReport& report, const Log& log) {
+// Counts the lines and their steps into `report` and says them.
+void sayTraceSummary(const flow::TraceSet& traces, TraceReport& report, const Log& log) {
   std::uint64_t steps = 0;
   for (const std::uint32_t lineSteps : traces.steps) steps += lineSteps;
+  report.lines = traces.lineCount();
+  report.steps = steps;
   say(log, fmt::format("steps      {} taken in {} lines, {:.1f} per line", withCommas(steps),
                        withCommas(traces.lineCount()),
                        double(steps) / double(std::max<std::size_t>(1, traces.lineCount()))));
@@ -223,7 +226,7 @@ void chooseJobSeeds(const TraceJob& job, DeferredDataset& data, bool deferred,
 // values were read, or built here), the seeds where they are chosen here, then the values, read
 // from the cells or, deferred, from the channels' files once the cells are freed.
 Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, InputShare* share,
-                    JobSeeds& seeding) {
+                    JobSeeds& seeding, const Reporter& reporter) {
   DeferredDataset& data = read.data;
   const bricks::AmrField& cells = *data.cells;
   const std::string source = cells.source();
@@ -237,7 +240,9 @@ Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, Input
   } else {
     volume = flow::buildCellLayout(cells, plan.volume, &times);
   }
+  reporter.lap("layout", {{"bricks", times.bricks}, {"regions", times.regions}});
   if (seeding.here) chooseJobSeeds(job, data, read.deferred, volume, seeding);
+  reporter.lap("seeds");
   if (plan.frame.automatic) {
     // A share holds part of the values: its ranks read the whole input for auto's mean.
     if (share) throw std::logic_error("frame_velocity auto needs every rank to read the whole");
@@ -245,14 +250,20 @@ Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, Input
         seedingRegion(job.seeds, seeding.seeds.points, volume, seeding.frameRegion);
   }
   std::optional<Dataset> dataset;
+  const double gathered = times.gather, differentiated = times.gradients;
   if (read.deferred) {
     data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
+    reporter.lap("freeing");
     flow::fillVolumeValues(volume, plan.vector, plan.volume, source, data.channels, &times);
   } else {
     flow::fillVolumeValues(volume, cells, plan.vector, plan.volume, &times);
     dataset = datasetOf(std::move(*data.cells));
   }
   data.cells.reset();
+  // Deferred, what is not gathering is reading the channels' values from their files.
+  reporter.lap(
+      read.deferred ? "values read" : "values",
+      {{"gathers", times.gather - gathered}, {"gradients", times.gradients - differentiated}});
   return fieldOf(std::move(volume), plan.vector, source, info, times, std::move(dataset));
 }
 
@@ -266,12 +277,15 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
   named.push_back(plan.vector.name);
   declareInputUnits(*read.data.cells, job.dataset.units, named);
   sayInput(*read.data.cells, plan.vector, read.seconds, log);
+  reporter.lap("input");
 
   JobSeeds seeding;
   seeding.here = options.seeds && !share;
+  const std::uint64_t cellCount = read.data.cells->cellCount();
   auto prepared =
-      std::make_unique<PreparedJob::Impl>(buildJobField(job, read, plan, share, seeding));
+      std::make_unique<PreparedJob::Impl>(buildJobField(job, read, plan, share, seeding, reporter));
   PreparedJob::Impl& p = *prepared;
+  p.cellCount = cellCount;
   p.backend = job.backend;
   p.seeds = std::move(seeding.seeds);
   p.seedDescription = std::move(seeding.description);
@@ -298,7 +312,9 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
       fmt::format("seeds      {} from {}{}", withCommas(p.seeds.points.size()), p.seedDescription,
                   job.seedsOut.empty() ? "" : ", written to " + job.seedsOut));
   sayStepping(job.trace, p.options, log);
+  reporter.lap("seeds");
   if (options.dataset == KeepDataset::No && !share) p.releaseDataset();
+  reporter.lap("freeing");
   return PreparedJob(std::move(prepared));
 }
 
@@ -359,6 +375,13 @@ TracedLines trace(PreparedJob& job, const TraceRunOptions& options, const Report
   auto traced = std::make_unique<TracedLines::Impl>(p.field);
   traced->held = traceForWriting(p.backend, p.volume(), p.seeds.points, p.options, options.store,
                                  progress, &p.report, options.hostValues, reporter.log);
+  const TraceReport& r = p.report;
+  reporter.lap("tracing",
+               {{"backend choice", r.chooseSeconds},
+                {"device", r.setupSeconds - r.uploadSeconds - r.structureSeconds - r.kernelSeconds},
+                {"upload", r.uploadSeconds},
+                {"structure", r.structureSeconds},
+                {"kernels", r.kernelSeconds}});
   sayTraceSummary(traced->held->view().lines(), p.report, reporter.log);
   traced->provenance = jobProvenance(p);
   traced->report = p.report;
@@ -378,16 +401,31 @@ std::string memoryLine(bool stagePeak, std::optional<std::uint64_t> tracingPeak)
                      stages);
 }
 
-void runTraceJob(const TraceJob& job, const TraceOutput& output, TraceStore store,
-                 const Reporter& reporter) {
-  PreparedJob prepared = prepare(job, {true, KeepDataset::No}, reporter);
-  const bool stagePeak = resetStagePeak();
-  // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
-  const TracedLines traced = trace(prepared, {store, HostValues::Release}, reporter);
-  const std::uint64_t tracingPeak = stagePeakResidentBytes();
-  resetStagePeak();
-  traced.write(output, reporter.log);
-  say(reporter.log, memoryLine(stagePeak, tracingPeak));
+TraceJobSummary runTraceJob(const TraceJob& job, const TraceOutput& output, TraceStore store,
+                            const Reporter& reporter) {
+  TraceJobSummary summary;
+  {
+    PreparedJob prepared = prepare(job, {true, KeepDataset::No}, reporter);
+    const bool stagePeak = resetStagePeak();
+    // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
+    const TracedLines traced = trace(prepared, {store, HostValues::Release}, reporter);
+    const std::uint64_t tracingPeak = stagePeakResidentBytes();
+    resetStagePeak();
+    const WrittenLines written = traced.write(output, reporter.log);
+    reporter.lap("output");
+    say(reporter.log, memoryLine(stagePeak, tracingPeak));
+    const PreparedJob::Impl& p = prepared.impl();
+    summary.input = p.field.source();
+    summary.cells = p.cellCount;
+    summary.seeds = p.seeds.points.size();
+    summary.report = traced.report();
+    summary.lines = summary.report.lines;
+    summary.steps = summary.report.steps;
+    summary.pointsWritten = written.points;
+  }
+  reporter.lap("freeing");
+  if (reporter.clock) say(reporter.log, reporter.clock->line());
+  return summary;
 }
 
 }  // namespace amrstream

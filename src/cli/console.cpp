@@ -37,7 +37,8 @@ void printLine(const std::string& line) {
   std::fflush(stdout);
 }
 
-Console::Console() : stages_(std::make_shared<Stages>()) {
+Console::Console() : stages_(std::make_shared<Stages>()), clock_(std::make_unique<StageClock>()) {
+  reporter_.clock = clock_.get();
   reporter_.log = [stages = stages_](const std::string& line) {
     stages->clear();
     printLine(spellSettings(line, cliFlag));

@@ -8,7 +8,8 @@
 
 namespace amrstream::cli {
 
-// A Reporter printing to the console; its progress lines end when it is destroyed.
+// A Reporter printing to the console, with a clock of the command's stages started when the
+// console is made; its progress lines end when it is destroyed.
 class Console {
  public:
   Console();
@@ -19,10 +20,12 @@ class Console {
   operator const Reporter&() const { return reporter_; }
   // Prints a line of the command's own, taking a progress line off the terminal first.
   void say(const std::string& line) const { reporter_.say(line); }
+  const StageClock& clock() const { return *clock_; }
 
  private:
   struct Stages;
   std::shared_ptr<Stages> stages_;
+  std::unique_ptr<StageClock> clock_;
   Reporter reporter_;
 };
 

@@ -9,6 +9,7 @@
 
 #include "amrstream/dataset.hpp"
 #include "amrstream/log.hpp"
+#include "amrstream/stage_clock.hpp"
 #include "console.hpp"
 #include "dataset_options.hpp"
 
@@ -84,10 +85,12 @@ void printStructure(const Dataset& dataset, const DatasetSummary& s) {
                   s.largestRegionBricks, withCommas(s.treeNodes), s.regionsSeconds));
 }
 
-void runInfo(const DatasetRequest& request) {
-  if (request.input.starts_with("builtin:")) checkBuiltinSize(request.builtin);
+// Describes the dataset and says how long each stage took (the "structure" summary's bricks
+// and regions are built here to be counted).
+void describe(const DatasetRequest& request, StageClock& clock) {
   const auto start = std::chrono::steady_clock::now();
   const Dataset dataset = load(request.input, request.builtin, request.units);
+  clock.lap("input");
   const DatasetInfo& info = dataset.info();
   printLine(
       fmt::format("input      {} [{:.2f} s]", dataset.source(),
@@ -108,7 +111,9 @@ void runInfo(const DatasetRequest& request) {
   printLine(fmt::format("           physical [{:g}, {:g}] x [{:g}, {:g}] x [{:g}, {:g}]", lo.x,
                         hi.x, lo.y, hi.y, lo.z, hi.z));
   printShape(box, (hi - lo) / glm::dvec3(box.upper - box.lower), info.dimensions);
+  clock.lap("describing");
   const DatasetSummary summary = summarize(dataset);
+  clock.lap("summary", {{"bricks", summary.bricksSeconds}, {"regions", summary.regionsSeconds}});
   printLine(fmt::format("channels   {}", summary.channels.size()));
   for (const DatasetSummary::ChannelRange& c : summary.channels) {
     const std::string unit = unitOf(info, c.name);
@@ -116,6 +121,14 @@ void runInfo(const DatasetRequest& request) {
                           unit.empty() ? "" : " ", unit));
   }
   printStructure(dataset, summary);
+}
+
+void runInfo(const DatasetRequest& request) {
+  if (request.input.starts_with("builtin:")) checkBuiltinSize(request.builtin);
+  StageClock clock;
+  describe(request, clock);
+  clock.lap("freeing");
+  printLine(clock.line());
 }
 
 }  // namespace

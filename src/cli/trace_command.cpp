@@ -24,6 +24,7 @@ struct TraceCommandOptions {
   bool endpointsOnly = false;
   DistributedTrace distributed;
   std::string traceStore = "auto";
+  std::string json;
 };
 
 TraceStore traceStoreNamed(const std::string& name) {
@@ -50,15 +51,25 @@ void addOutputs(RunFiles& files, const TraceCommandOptions& o, int ranks) {
 void runTrace(TraceCommandOptions o, const MpiWorld& world) {
   o.job.trace.keepHistory = !o.endpointsOnly;
   checkDistributedTrace(o.job, o.distributed);
+  const bool distributed =
+      world.size() > 1 || o.distributed.pieces || o.distributed.distribute == "data";
+  if (distributed && !o.json.empty())
+    throw InputError("--json",
+                     "is written by a trace in one process (not under mpirun, with "
+                     "--pieces or --distribute data)");
   const auto checkFiles = [&] {
     RunFiles files = jobFiles(o.job);
     addOutputs(files, o, world.size());
+    if (!o.json.empty()) {
+      files.addOutput("--json", o.json);
+      requireOutputExtension("--json", o.json, {".json"}, "JSON");
+    }
   };
   const Console console;
-  if (world.size() > 1 || o.distributed.pieces || o.distributed.distribute == "data")
-    return traceDistributed(world, o.job, o.out, o.distributed, checkFiles, console);
+  if (distributed) return traceDistributed(world, o.job, o.out, o.distributed, checkFiles, console);
   checkFiles();
-  runTraceJob(o.job, o.out, traceStoreNamed(o.traceStore), console);
+  const TraceJobSummary summary = runTraceJob(o.job, o.out, traceStoreNamed(o.traceStore), console);
+  if (!o.json.empty()) writeTraceJson(o.json, summary, console.clock());
 }
 
 }  // namespace
@@ -100,6 +111,9 @@ void addTraceCommand(CLI::App& app, const MpiWorld& world) {
                    "ranks' live lines between rounds (0: the seeds are split once, at the start)")
       ->capture_default_str()
       ->check(countIn(0, 1u << 30));
+  command->add_option("--json", options->json,
+                      "also write what the run did and where its wall time went (every stage, "
+                      "adding up to the whole) to this .json file");
   command->add_flag("--pieces", options->distributed.pieces,
                     "each rank writes its lines as a piece beside the .pvtp that --out names, "
                     "which lists them (ParaView opens it); without it rank 0 writes one .vtp");

@@ -106,7 +106,7 @@ class MpiTraceTest : public testing::TempDirTest {
         EXPECT_THAT(run.output, HasSubstr("ranks      " + std::to_string(ranks) + " "));
       }
       // Rank 0 alone prints: one summary.
-      EXPECT_EQ(run.output.find("input "), run.output.rfind("input "));
+      EXPECT_EQ(run.output.find("input      "), run.output.rfind("input      "));
       expectSameTraces(one, output::readVtpTraces(out));
     }
     return last;

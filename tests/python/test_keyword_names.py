@@ -20,6 +20,8 @@ OPTIONS_ELSEWHERE = {
     "seed_density", "seed_percentile", "seed_weighted",
     # Output layout choices of the .vtp file, which Traces.to_vtp() and the arrays make moot.
     "endpoints_only", "periodic_lines", "trace_store",
+    # The run's record as a file: a Python caller has the Traces' report and times instead.
+    "json",
 }
 
 
