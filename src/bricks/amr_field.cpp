@@ -72,6 +72,11 @@ class ConcurrentKeySet {
     }
   }
 
+  // Starts loading the key's first slot: a later insert or contains then waits less for memory.
+  void prefetch(std::uint64_t key) const {
+    asm volatile("prefetcht0 %0" : : "m"(slots_[slotOf(key)]));
+  }
+
   bool contains(std::uint64_t key) const {
     for (std::size_t i = slotOf(key);; i = next(i)) {
       const std::uint64_t current =
@@ -126,6 +131,11 @@ class LevelCornerSet {
     Shard& shard = shards_[shardOf(corner)];
     const std::lock_guard lock(shard.mutex);
     return shard.corners.insert(corner).second;
+  }
+
+  // Starts loading where an insert or contains of the corner will look (hashed keys only).
+  void prefetch(glm::ivec3 corner) const {
+    if (keys_ && glm::all(glm::greaterThanEqual(corner, lower_))) keys_->prefetch(key(corner));
   }
 
   // Whether a corner aligned to the level's grid is present.
@@ -398,7 +408,13 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     if (perLevel[level] > 0)
       sets[level] = std::make_unique<LevelCornerSet>(perLevel[level], int(level),
                                                      boxes.lower[level], boxes.upper[level]);
-  const auto duplicated = [&](std::size_t i) { return !sets[levels_[i]]->insert(lowers_[i]); };
+  // The sets are far larger than the caches: each cell's slots are fetched some cells ahead
+  // (__builtin_prefetch is dropped here by GCC 12, hence the instruction itself).
+  constexpr std::size_t kAhead = 16;
+  const auto duplicated = [&](std::size_t i) {
+    if (i + kAhead < n) sets[levels_[i + kAhead]]->prefetch(lowers_[i + kAhead]);
+    return !sets[levels_[i]]->insert(lowers_[i]);
+  };
   if (std::size_t i = firstFailing(n, duplicated); i < n)
     throw InputError(
         source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
@@ -416,8 +432,22 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     }
     return -1;
   };
-  if (std::size_t i = firstFailingWith<AbsentCorners>(
-          n, [&](AbsentCorners& absent, std::size_t i) { return insideCoarser(absent, i) >= 0; });
+  // The coarser corners a cell some cells ahead will look up, unless known to be absent.
+  const auto prefetchCoarser = [&](const AbsentCorners& absent, std::size_t i) {
+    for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
+      if (!sets[level]) continue;
+      const int mask = ~(cellWidth(int(level)) - 1);
+      const glm::ivec3 aligned =
+          glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
+      if (!absent.holds(level, aligned)) sets[level]->prefetch(aligned);
+    }
+  };
+  if (std::size_t i = firstFailingWith<AbsentCorners>(n,
+                                                      [&](AbsentCorners& absent, std::size_t i) {
+                                                        if (i + kAhead < n)
+                                                          prefetchCoarser(absent, i + kAhead);
+                                                        return insideCoarser(absent, i) >= 0;
+                                                      });
       i < n) {
     AbsentCorners none;
     const int level = insideCoarser(none, i);

@@ -1,7 +1,10 @@
 #include "brick_splitter.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/concurrent_vector.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -21,8 +24,12 @@ using U64 = std::uint64_t;
 
 // Nodes with at least this many cells split their two sides in parallel.
 constexpr std::size_t kParallelCells = 16384;
+// Nodes with at least this many cells are bounded and partitioned on all cores, in blocks of
+// kBlockCells: the top of a level's tree would otherwise pass over its cells on one core.
+constexpr std::size_t kParallelPassCells = std::size_t(1) << 20;
+constexpr std::size_t kBlockCells = std::size_t(1) << 16;
 
-GridBounds boundsOf(std::span<const GridCell> cells) {
+GridBounds boundsOfSerial(std::span<const GridCell> cells) {
   int lo[3] = {INT_MAX, INT_MAX, INT_MAX}, hi[3] = {INT_MIN, INT_MIN, INT_MIN};
   for (const GridCell& c : cells)
     for (int a = 0; a < 3; ++a) {
@@ -30,6 +37,20 @@ GridBounds boundsOf(std::span<const GridCell> cells) {
       hi[a] = std::max(hi[a], c.g[a]);
     }
   return {glm::ivec3(lo[0], lo[1], lo[2]), glm::ivec3(hi[0], hi[1], hi[2]) + 1};
+}
+
+GridBounds boundsOf(std::span<const GridCell> cells) {
+  if (cells.size() < kParallelPassCells) return boundsOfSerial(cells);
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, cells.size(), kBlockCells),
+      GridBounds{glm::ivec3(INT_MAX), glm::ivec3(INT_MIN)},
+      [&](const tbb::blocked_range<std::size_t>& range, GridBounds b) {
+        const GridBounds part = boundsOfSerial(cells.subspan(range.begin(), range.size()));
+        return GridBounds{glm::min(b.lower, part.lower), glm::max(b.upper, part.upper)};
+      },
+      [](const GridBounds& a, const GridBounds& b) {
+        return GridBounds{glm::min(a.lower, b.lower), glm::max(a.upper, b.upper)};
+      });
 }
 
 U64 volume(glm::ivec3 e) { return U64(e.x) * U64(e.y) * U64(e.z); }
@@ -44,7 +65,7 @@ int longestAxis(glm::ivec3 e) {
 // Branchless Lomuto partition (the split predicate is unpredictable); returns the size of the
 // part for which `lower` holds. The result depends only on the input order.
 template <typename Predicate>
-std::size_t partitionCells(std::span<GridCell> cells, Predicate lower) {
+std::size_t partitionSerial(std::span<GridCell> cells, Predicate lower) {
   std::size_t count = 0;
   for (GridCell& c : cells) {
     const GridCell moving = c;
@@ -53,6 +74,71 @@ std::size_t partitionCells(std::span<GridCell> cells, Predicate lower) {
     count += lower(moving) ? 1 : 0;
   }
   return count;
+}
+
+// The cells in order of position of one kind of misplaced run: per block, the run [from, to).
+struct Runs {
+  std::vector<std::size_t> from, to, before;  // before: cells in the runs of earlier blocks
+
+  // Calls move(position) for the cells of rank [first, last) among all runs' cells.
+  template <typename Move>
+  void each(std::size_t first, std::size_t last, Move move) const {
+    std::size_t run =
+        std::size_t(std::upper_bound(before.begin(), before.end(), first) - before.begin()) - 1;
+    for (std::size_t rank = first; rank < last; ++run) {
+      const std::size_t begin = from[run] + (rank - before[run]);
+      const std::size_t count = std::min(to[run] - begin, last - rank);
+      for (std::size_t k = 0; k < count; ++k) move(begin + k);
+      rank += count;
+    }
+  }
+};
+
+// The partition of a large node on all cores: each block is partitioned on its own, then the
+// upper cells that lie below the split point trade places with the lower cells above it. The
+// result depends only on the input order (the blocks are fixed, whatever the cores).
+template <typename Predicate>
+std::size_t partitionCells(std::span<GridCell> cells, Predicate lower) {
+  const std::size_t n = cells.size();
+  if (n < kParallelPassCells) return partitionSerial(cells, lower);
+  const std::size_t blocks = (n + kBlockCells - 1) / kBlockCells;
+  std::vector<std::size_t> lowers(blocks);
+  tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+    const std::size_t begin = b * kBlockCells, end = std::min(n, begin + kBlockCells);
+    lowers[b] = partitionSerial(cells.subspan(begin, end - begin), lower);
+  });
+  std::size_t split = 0;
+  for (const std::size_t count : lowers) split += count;
+  // Upper cells below `split` and lower cells at or above it, block by block.
+  Runs uppers, lows;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = b * kBlockCells, end = std::min(n, begin + kBlockCells);
+    const std::size_t middle = begin + lowers[b];
+    if (middle < std::min(end, split)) {
+      uppers.before.push_back(
+          uppers.before.empty() ? 0 : uppers.before.back() + uppers.to.back() - uppers.from.back());
+      uppers.from.push_back(middle);
+      uppers.to.push_back(std::min(end, split));
+    }
+    if (std::max(begin, split) < middle) {
+      lows.before.push_back(
+          lows.before.empty() ? 0 : lows.before.back() + lows.to.back() - lows.from.back());
+      lows.from.push_back(std::max(begin, split));
+      lows.to.push_back(middle);
+    }
+  }
+  const std::size_t misplaced =
+      uppers.before.empty() ? 0 : uppers.before.back() + uppers.to.back() - uppers.from.back();
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, misplaced, kBlockCells), [&](const auto& range) {
+        std::vector<std::size_t> targets;
+        targets.reserve(range.size());
+        lows.each(range.begin(), range.end(), [&](std::size_t at) { targets.push_back(at); });
+        std::size_t k = 0;
+        uppers.each(range.begin(), range.end(),
+                    [&](std::size_t at) { std::swap(cells[at], cells[targets[k++]]); });
+      });
+  return split;
 }
 
 // How to split a node; the sides' bounds when they are known without another pass.

@@ -105,6 +105,19 @@ TEST(BuildBricks, BlockStructuredLayoutKeepsTheBlocks) {
   }
 }
 
+// Levels of more than 2^20 cells are bounded and partitioned on all cores, block by block (a
+// split's two sides then come in another order): the bricks are as valid, the blocks stay whole,
+// and one core builds the same bricks.
+TEST(BuildBricks, LargeLevelsSplitOnAllCoresAsOnOne) {
+  const BlockLayout layout = blockStructured(5, 14, glm::ivec3(-64, 0, 32));
+  ASSERT_GT(layout.field.cellsPerLevel()[0], std::size_t(1) << 20);
+  const BrickSet set = buildBricks(layout.field, {8});
+  EXPECT_TRUE(bricksAreValid(layout.field, set, 8));
+  EXPECT_EQ(set.bricks.size(), layout.blocks);
+  tbb::global_control serial(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_TRUE(identical(set, buildBricks(layout.field, {8})));
+}
+
 TEST(BuildBricks, LevelJumpOfThreeAcrossAFace) {
   const auto field = levelJumpOfThree();
   const BrickSet set = buildBricks(field, {8});

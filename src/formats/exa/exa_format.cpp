@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <span>
@@ -18,6 +20,7 @@
 #include "formats/cell_checks.hpp"
 #include "formats/file_set_writer.hpp"
 #include "formats/input_bytes.hpp"
+#include "formats/piece_reads.hpp"
 #include "formats/text_numbers.hpp"
 #include "util/first_failing.hpp"
 
@@ -153,7 +156,7 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
 }
 
 // The cells file: int32 x, y, z, level per cell, checked before they become a field; read in
-// pieces, so that the records never sit in memory beside the whole field.
+// pieces on all cores, so that the records never sit in memory beside the whole field.
 void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lowers,
                std::vector<std::uint8_t>& levels) {
   std::ifstream in;
@@ -170,29 +173,32 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
   refuseHoles(path, size, "the cells file");
   lowers.resize(n);
   levels.resize(n);
-  constexpr std::size_t kPiece = std::size_t(1) << 20;  // cells
-  std::vector<std::int32_t> records(4 * std::min<std::uint64_t>(n, kPiece));
-  for (std::size_t first = 0; first < n; first += kPiece) {
-    const std::size_t count = std::min<std::size_t>(kPiece, n - first);
-    readExactly(in, path, first * kCellBytes, reinterpret_cast<char*>(records.data()),
-                count * kCellBytes, "the cells file");
-    // Unpacked in parallel; the first cell with a level out of range is named.
-    const std::size_t bad = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, count), count,
-        [&](const tbb::blocked_range<std::size_t>& range, std::size_t firstBad) {
-          for (std::size_t k = range.begin(); k != range.end(); ++k) {
-            const std::int32_t* cell = &records[4 * k];
-            if (cell[3] < 0 || cell[3] > bricks::kMaxLevel) firstBad = std::min(firstBad, k);
-            lowers[first + k] = glm::ivec3(cell[0], cell[1], cell[2]);
-            levels[first + k] = static_cast<std::uint8_t>(cell[3]);
-          }
-          return firstBad;
-        },
-        [](std::size_t a, std::size_t b) { return std::min(a, b); });
-    if (bad < count)
-      throw InputError(path.string(),
-                       fmt::format("cell {} has level {}; levels must be in 0..{}", first + bad,
-                                   records[4 * bad + 3], bricks::kMaxLevel));
+  constexpr std::size_t kPiece = std::size_t(1) << 18;  // cells
+  // The first cell with a level out of range is named, whichever piece comes first.
+  std::atomic<std::size_t> firstBad{n};
+  forEachPiece(path, 0, size, kPiece * kCellBytes, "the cells file",
+               [&](std::uint64_t offset, std::span<const char> bytes) {
+                 const std::size_t first = offset / kCellBytes;
+                 const std::size_t count = bytes.size() / kCellBytes;
+                 for (std::size_t k = 0; k < count; ++k) {
+                   std::int32_t cell[4];
+                   std::memcpy(cell, bytes.data() + k * kCellBytes, kCellBytes);
+                   lowers[first + k] = glm::ivec3(cell[0], cell[1], cell[2]);
+                   levels[first + k] = static_cast<std::uint8_t>(cell[3]);
+                   if (cell[3] < 0 || cell[3] > bricks::kMaxLevel) {
+                     std::size_t seen = firstBad.load();
+                     while (first + k < seen && !firstBad.compare_exchange_weak(seen, first + k)) {
+                     }
+                     break;
+                   }
+                 }
+               });
+  if (const std::size_t bad = firstBad.load(); bad < n) {
+    std::int32_t cell[4];
+    readExactly(in.seekg(std::streamoff(bad * kCellBytes)), path, bad * kCellBytes,
+                reinterpret_cast<char*>(cell), kCellBytes, "the cells file");
+    throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
+                                                bad, cell[3], bricks::kMaxLevel));
   }
   requireCellsWithinExtent(lowers, levels, path.string());
 }
@@ -215,8 +221,9 @@ std::vector<float> readScalars(const std::string& name, const std::filesystem::p
                                std::span<const glm::ivec3> lowers) {
   std::ifstream in;
   const std::uint64_t size = openScalars(in, path, cells, cellsPath);
+  in.close();
   std::vector<float> values(cells);
-  readExactly(in, path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
+  readInPieces(path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
   const std::size_t i =
       firstFailing(cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
   if (i < cells) {
