@@ -378,8 +378,7 @@ def from_yt(ds: Any, vector: _Sequence[Union[str, Tuple[str, str]]] = DEFAULT_YT
     return from_arrays(**cells)
 
 
-try:
-    from . import yt_callbacks as _yt_callbacks  # registers yt's annotate_amrstream_lines, _lic
-except ModuleNotFoundError as _missing:  # without yt there is nothing to register them with
-    if (_missing.name or "").split(".")[0] not in ("yt", "unyt", "matplotlib"):
-        raise
+# yt's annotate_amrstream_lines and _lic, registered once yt's plots are imported.
+from . import _yt_hook
+
+_yt_hook.install()

@@ -334,3 +334,25 @@ def test_amrex_plotfile_lines():
     origin = ((low[2] + high[2]) / 2, (low[0] + high[0]) / 2)
     assert_same_lines(lines, in_plot_units(expected["lines"], origin,
                                            code_length_in(ds, "cm")), 1e-9)
+
+
+@pytest.mark.parametrize("order", ["amrstream first", "yt first"])
+def test_the_callbacks_are_registered_whichever_comes_first_and_yt_is_not_imported_for_them(order):
+    """A fresh interpreter: importing amrstream alone leaves yt unimported (it takes 0.6 s);
+    yt's plots get both callbacks once yt is imported, before or after amrstream."""
+    import subprocess
+    import sys
+    imports = "import amrstream\nimport yt" if order == "amrstream first" else \
+        "import yt\nimport amrstream"
+    script = f"""
+import sys
+{imports.splitlines()[0]}
+before = "yt" in sys.modules
+{imports.splitlines()[1]}
+from yt.visualization.plot_window import PWViewerMPL
+print(before, all(hasattr(PWViewerMPL, name)
+                  for name in ("annotate_amrstream_lines", "annotate_amrstream_lic")))
+"""
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == (["False", "True"] if order == "amrstream first" else ["True", "True"])
