@@ -240,13 +240,19 @@ const Channel& AmrField::channel(std::string_view name) const {
                                didYouMean(name, candidates), names.empty() ? "none" : names));
 }
 
-int AmrField::coarsestLevel() const { return *std::max_element(levels_.begin(), levels_.end()); }
-int AmrField::finestLevel() const { return *std::min_element(levels_.begin(), levels_.end()); }
-
 std::vector<std::size_t> AmrField::cellsPerLevel() const {
-  std::vector<std::size_t> counts(coarsestLevel() + 1, 0);
-  for (std::uint8_t level : levels_) ++counts[level];
-  return counts;
+  using Counts = std::array<std::size_t, kMaxLevel + 1>;
+  const Counts all = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, levels_.size()), Counts{},
+      [&](const tbb::blocked_range<std::size_t>& range, Counts counts) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) ++counts[levels_[i]];
+        return counts;
+      },
+      [](Counts a, const Counts& b) {
+        for (std::size_t level = 0; level < a.size(); ++level) a[level] += b[level];
+        return a;
+      });
+  return std::vector<std::size_t>(all.begin(), all.begin() + coarsestLevel() + 1);
 }
 
 // Physical positions and widths are written as float32: the transform must map the cells into
@@ -308,6 +314,10 @@ void AmrField::validate(const CheckedCells* checked) {
 
   const LevelBoxes boxes = levelBoxes();
   bounds_ = checkedBounds(boxes);
+  for (int level = kMaxLevel; level >= 0; --level)
+    if (boxes.lower[level].x <= boxes.upper[level].x) finest_ = level;
+  for (int level = 0; level <= kMaxLevel; ++level)
+    if (boxes.lower[level].x <= boxes.upper[level].x) coarsest_ = level;
   validateTransform();
 
   if (checked) {

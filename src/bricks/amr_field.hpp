@@ -78,8 +78,8 @@ class AmrField {
   void setInfo(DatasetInfo info) { info_ = std::move(info); }
 
   CellBox bounds() const { return bounds_; }  // bounding box of all cells
-  int coarsestLevel() const;
-  int finestLevel() const;
+  int coarsestLevel() const { return coarsest_; }
+  int finestLevel() const { return finest_; }
   std::vector<std::size_t> cellsPerLevel() const;  // indexed by level, up to coarsestLevel()
 
  private:
@@ -89,7 +89,8 @@ class AmrField {
   // Per level, the box of its cells' corners (defined in amr_field.cpp).
   struct LevelBoxes;
 
-  void validate(const CheckedCells* checked = nullptr);  // also sets bounds_
+  // Also sets bounds_, coarsest_ and finest_.
+  void validate(const CheckedCells* checked = nullptr);
   // The steps of validate(), in its order: the counts of cells and levels and the channels'
   // shapes and names; the cells' levels and alignment; the levels' boxes, then all cells' box
   // within the supported extent; no two cells overlapping.
@@ -108,6 +109,7 @@ class AmrField {
   WorldTransform transform_;
   std::string source_;
   CellBox bounds_;
+  int coarsest_ = 0, finest_ = 0;  // the levels of the widest and narrowest cells
   DatasetInfo info_;
 };
 

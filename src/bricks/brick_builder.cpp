@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -17,9 +18,11 @@ using detail::GridCell;
 
 // Cells grouped by level (a stable counting sort, in parallel over fixed blocks so that the
 // order never depends on scheduling), in each level's grid. levelBegin has one entry per level
-// plus an end.
+// plus an end. The cells are not zeroed first: the sort's threads write each one (one thread
+// zeroing a large input's 16 bytes a cell took 0.4 s of an H100 host's bricks).
 struct CellsByLevel {
-  std::vector<GridCell> cells;
+  std::unique_ptr<GridCell[]> cells;
+  std::size_t count = 0;
   std::vector<std::size_t> levelBegin;
 };
 
@@ -37,7 +40,8 @@ CellsByLevel sortByLevel(const AmrField& field) {
     for (std::size_t i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i)
       ++offsets[block * levelCount + levels[i]];
   });
-  CellsByLevel out{std::vector<GridCell>(n), std::vector<std::size_t>(levelCount + 1, 0)};
+  CellsByLevel out{std::make_unique_for_overwrite<GridCell[]>(n), n,
+                   std::vector<std::size_t>(levelCount + 1, 0)};
   std::size_t next = 0;
   for (std::size_t level = 0; level < levelCount; ++level) {
     out.levelBegin[level] = next;
@@ -87,7 +91,7 @@ BrickSet buildBricks(const AmrField& field, const BrickBuildOptions& options) {
   std::vector<std::vector<GridBox>> boxes(levelCount);
   tbb::parallel_for(std::size_t(0), levelCount, [&](std::size_t level) {
     const std::size_t begin = sorted.levelBegin[level];
-    const std::span<GridCell> cells(sorted.cells.data() + begin,
+    const std::span<GridCell> cells(sorted.cells.get() + begin,
                                     sorted.levelBegin[level + 1] - begin);
     boxes[level] = detail::splitIntoBoxes(cells, options.maxBrickSide);
   });
@@ -100,7 +104,7 @@ BrickSet buildBricks(const AmrField& field, const BrickBuildOptions& options) {
       set.bricks.push_back({box.lower * width, int(level), box.size,
                             std::uint32_t(sorted.levelBegin[level] + box.begin)});
   }
-  set.cellIds.resize(sorted.cells.size());
+  set.cellIds.resize(sorted.count);
   tbb::parallel_for(std::size_t(0), set.bricks.size(), [&](std::size_t b) {
     const shared::Brick& brick = set.bricks[b];
     const glm::ivec3 lower = brick.lower >> brick.level;
