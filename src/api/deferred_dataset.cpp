@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "flow/column.hpp"
 #include "formats/exa/exa_format.hpp"
 #include "formats/load_input.hpp"
 
@@ -21,7 +22,9 @@ DeferredDataset loadDeferred(const std::string& input, const BuiltinOptions& bui
           std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.name == name; });
       if (file == files.end())
         throw std::logic_error("loadDeferred: no channel '" + name + "' was listed");
-      use(formats::readExaChannel(*file));
+      flow::Column<float> values(file->cellCount);  // not zeroed: every value is read into it
+      formats::readExaChannelInto(*file, values);
+      use(values);
     };
     return deferred;
   }

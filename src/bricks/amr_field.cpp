@@ -18,6 +18,7 @@
 #include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
 #include "util/first_failing.hpp"
+#include "util/huge_pages.hpp"
 
 namespace amrstream::bricks {
 
@@ -57,6 +58,7 @@ class ConcurrentKeySet {
       : count_(std::max<std::size_t>(16, expected + expected / 2)),
         slots_(static_cast<std::uint64_t*>(std::calloc(count_, sizeof(std::uint64_t)))) {
     if (!slots_) throw std::bad_alloc();
+    adviseHugePages(slots_.get(), count_ * sizeof(std::uint64_t));
   }
 
   // False when the key was already present.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "brick_splitter.hpp"
+#include "util/huge_pages.hpp"
 
 namespace amrstream::bricks {
 
@@ -42,6 +43,7 @@ CellsByLevel sortByLevel(const AmrField& field) {
   });
   CellsByLevel out{std::make_unique_for_overwrite<GridCell[]>(n), n,
                    std::vector<std::size_t>(levelCount + 1, 0)};
+  adviseHugePages(out.cells.get(), n * sizeof(GridCell));
   std::size_t next = 0;
   for (std::size_t level = 0; level < levelCount; ++level) {
     out.levelBegin[level] = next;

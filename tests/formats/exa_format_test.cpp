@@ -418,7 +418,13 @@ TEST_F(ExaFormat, CellsFirstThenChannelsOneAtATimeGiveReadExasField) {
   for (std::size_t c = 0; c < cells.channels.size(); ++c) {
     EXPECT_EQ(cells.channels[c].name, whole.channels()[c].name);
     EXPECT_EQ(readExaChannel(cells.channels[c]), whole.channels()[c].values);
+    std::vector<float> into(cells.field.cellCount(), -1.0f);
+    readExaChannelInto(cells.channels[c], into);
+    EXPECT_EQ(into, whole.channels()[c].values);
   }
+  std::vector<float> tooShort(cells.field.cellCount() - 1);
+  EXPECT_THAT(testing::inputErrorOf([&] { readExaChannelInto(cells.channels[0], tooShort); }),
+              HasSubstr("values asked for of a channel of"));
 
   poke(dir_ / "sample.vz.scalars", 3, std::numeric_limits<float>::infinity());
   const ExaCells poked = readExaCells(config);  // values are not read yet

@@ -23,6 +23,7 @@
 #include "formats/piece_reads.hpp"
 #include "formats/text_numbers.hpp"
 #include "util/first_failing.hpp"
+#include "util/huge_pages.hpp"
 
 namespace amrstream::formats {
 
@@ -171,6 +172,10 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
     throw InputError(path.string(),
                      fmt::format("holds {} cells, more than the {} accepted", n, kMaxCells));
   refuseHoles(path, size, "the cells file");
+  lowers.reserve(n);
+  levels.reserve(n);
+  adviseHugePages(lowers.data(), n * sizeof(glm::ivec3));  // before resize() touches them
+  adviseHugePages(levels.data(), n);
   lowers.resize(n);
   levels.resize(n);
   constexpr std::size_t kPiece = std::size_t(1) << 18;  // cells
@@ -216,13 +221,15 @@ std::uint64_t openScalars(std::ifstream& in, const std::filesystem::path& path, 
 
 // One float32 per cell; the size is checked before anything is allocated. Errors give the
 // cell's lower corner when `lowers` holds the cells.
-std::vector<float> readScalars(const std::string& name, const std::filesystem::path& path,
-                               const std::filesystem::path& cellsPath, std::size_t cells,
-                               std::span<const glm::ivec3> lowers) {
+void readScalarsInto(const std::string& name, const std::filesystem::path& path,
+                     const std::filesystem::path& cellsPath, std::size_t cells,
+                     std::span<const glm::ivec3> lowers, std::span<float> values) {
   std::ifstream in;
   const std::uint64_t size = openScalars(in, path, cells, cellsPath);
   in.close();
-  std::vector<float> values(cells);
+  if (values.size() != cells)
+    throw InputError(path.string(), fmt::format("{} values asked for of a channel of {} cells",
+                                                values.size(), cells));
   readInPieces(path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
   const std::size_t i =
       firstFailing(cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
@@ -235,6 +242,13 @@ std::vector<float> readScalars(const std::string& name, const std::filesystem::p
                                        "{}) is {}",
                                        name, i, lowers[i].x, lowers[i].y, lowers[i].z, problem));
   }
+}
+
+std::vector<float> readScalars(const std::string& name, const std::filesystem::path& path,
+                               const std::filesystem::path& cellsPath, std::size_t cells,
+                               std::span<const glm::ivec3> lowers) {
+  std::vector<float> values(cells);
+  readScalarsInto(name, path, cellsPath, cells, lowers, values);
   return values;
 }
 
@@ -276,6 +290,10 @@ ExaCells readExaCells(const std::filesystem::path& config) {
 
 std::vector<float> readExaChannel(const ExaChannelFile& channel) {
   return readScalars(channel.name, channel.path, channel.cellsPath, channel.cellCount, {});
+}
+
+void readExaChannelInto(const ExaChannelFile& channel, std::span<float> into) {
+  readScalarsInto(channel.name, channel.path, channel.cellsPath, channel.cellCount, {}, into);
 }
 
 bricks::AmrField readExa(const std::filesystem::path& config) {

@@ -55,6 +55,9 @@ ExaCells readExaCells(const std::filesystem::path& config);
 // One channel's values, one per cell in .cells order, checked as readExa checks them (the error
 // names the cell by its index).
 std::vector<float> readExaChannel(const ExaChannelFile& channel);
+// The same into `into` (channel.cellCount values; InputError naming the file otherwise), memory
+// the caller made: a std::vector's zeroing by one thread took longer than the reading.
+void readExaChannelInto(const ExaChannelFile& channel, std::span<float> into);
 
 // The `time` line's value (nullopt without one), reading only the config: its lines are checked
 // as readExa checks them, but the cells and scalar files are not opened.
