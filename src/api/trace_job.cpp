@@ -250,7 +250,7 @@ Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, Input
         seedingRegion(job.seeds, seeding.seeds.points, volume, seeding.frameRegion);
   }
   std::optional<Dataset> dataset;
-  const double gathered = times.gather, differentiated = times.gradients;
+  times.gather = times.gradients = 0.0;  // what fillVolumeValues sets is this stage's
   if (read.deferred) {
     data.cells.reset();  // the cells' corners and levels, and the channels loaded for the seeds
     reporter.lap("freeing");
@@ -261,9 +261,8 @@ Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, Input
   }
   data.cells.reset();
   // Deferred, what is not gathering is reading the channels' values from their files.
-  reporter.lap(
-      read.deferred ? "values read" : "values",
-      {{"gathers", times.gather - gathered}, {"gradients", times.gradients - differentiated}});
+  reporter.lap(read.deferred ? "values read" : "values",
+               {{"gathers", times.gather}, {"gradients", times.gradients}});
   return fieldOf(std::move(volume), plan.vector, source, info, times, std::move(dataset));
 }
 
