@@ -62,6 +62,12 @@ ContextBuilder& ContextBuilder::debugNames(bool enabled) {
   return *this;
 }
 
+ContextBuilder& ContextBuilder::pipelineCacheDirectory(
+    std::optional<std::filesystem::path> directory) {
+  pipelineCacheDirectory_ = std::move(directory);
+  return *this;
+}
+
 ContextBuilder& ContextBuilder::presentation(std::vector<std::string> instanceExtensions,
                                              SurfaceFactory createSurface) {
   presentation_ = PresentationRequest{std::move(instanceExtensions), std::move(createSurface)};

@@ -13,6 +13,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@
 #include "vk/device_report.hpp"
 #include "vk/device_support.hpp"
 #include "vk/memory_ledger.hpp"
+#include "vk/pipeline_cache.hpp"
 #include "vk/presentation.hpp"
 #include "vk/unique_handle.hpp"
 #include "vk/validation_log.hpp"
@@ -61,6 +63,9 @@ class Context {
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return properties_.memory; }
   std::vector<VkDeviceSize> memoryHeapSizes() const;
   VkDeviceSize maxMemoryAllocationSize() const { return properties_.maxMemoryAllocationSize; }
+  // Every pipeline is created through this cache, which keeps compiled kernels on disk.
+  VkPipelineCache pipelineCache() const { return pipelineCache_->handle(); }
+  const PipelineCache& pipelineCacheFile() const { return *pipelineCache_; }
   // Every buffer's memory is charged here (see memory_ledger.hpp for the optional limit).
   MemoryLedger& memoryLedger() const { return *memoryLedger_; }
 
@@ -98,6 +103,7 @@ class Context {
   bool bufferDeviceAddress_ = false;
   bool debugUtils_ = false;
   UniqueHandle<VkDevice> device_;
+  std::unique_ptr<PipelineCache> pipelineCache_;
   DeviceFunctions functions_;
   uint32_t queueFamilyIndex_ = 0;
   VkQueue queue_ = VK_NULL_HANDLE;
@@ -122,6 +128,9 @@ class ContextBuilder {
   ContextBuilder& synchronizationValidation(bool enabled);
   // Object names for debuggers (RenderDoc, Nsight) without validation; on with validation.
   ContextBuilder& debugNames(bool enabled);
+  // Where the pipeline cache's file lies (none: in memory only); by default
+  // cacheDirectoryFromEnvironment().
+  ContextBuilder& pipelineCacheDirectory(std::optional<std::filesystem::path> directory);
   // Presentation to a window: `instanceExtensions` are enabled on the instance (throws
   // ContextError at build() when the loader lacks one), `createSurface` is called once with the
   // new instance and the context takes the surface. Only devices with VK_KHR_swapchain and a
@@ -143,6 +152,7 @@ class ContextBuilder {
   bool validation_ = false;
   bool synchronizationValidation_ = false;
   bool debugNames_ = false;
+  std::optional<std::filesystem::path> pipelineCacheDirectory_ = cacheDirectoryFromEnvironment();
   std::optional<PresentationRequest> presentation_;
 };
 

@@ -253,6 +253,8 @@ Context ContextBuilder::build() const {
       DeviceFunctions::load(ctx.device(), capabilities.contains(Capability::AccelerationStructure),
                             capabilities.contains(Capability::RayTracingPipeline));
   vkGetDeviceQueue(ctx.device(), ctx.queueFamilyIndex_, 0, &ctx.queue_);
+  ctx.pipelineCache_ =
+      std::make_unique<PipelineCache>(ctx.device(), ctx.properties(), pipelineCacheDirectory_);
 
   ctx.commandPool_ = createCommandPool(ctx.device(), ctx.queueFamilyIndex_);
   return ctx;

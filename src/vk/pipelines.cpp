@@ -74,7 +74,7 @@ UniqueHandle<VkPipeline> createComputePipeline(const Context& ctx, VkPipelineLay
   info.layout = layout;
   VkPipeline pipeline;
   AMRSTREAM_VK_CHECK(
-      vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+      vkCreateComputePipelines(ctx.device(), ctx.pipelineCache(), 1, &info, nullptr, &pipeline));
   setDebugName(ctx, pipeline, std::string(name));
   return {ctx.device(), pipeline};
 }
@@ -115,7 +115,7 @@ RayTracingPipeline createProceduralRayTracingPipeline(
   info.layout = layout;
   VkPipeline rawPipeline;
   AMRSTREAM_VK_CHECK(ctx.functions().vkCreateRayTracingPipelinesKHR(
-      ctx.device(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr, &rawPipeline));
+      ctx.device(), VK_NULL_HANDLE, ctx.pipelineCache(), 1, &info, nullptr, &rawPipeline));
   RayTracingPipeline result;
   result.pipeline = {ctx.device(), rawPipeline};
   setDebugName(ctx, rawPipeline, base);
