@@ -194,7 +194,14 @@ std::uint64_t GpuRounds::deviceBytes() const {
   return bytes;
 }
 
-void GpuRounds::submitRound(std::uint32_t steps) {
+void GpuRounds::compileByDispatch() {
+  if (live_ != 0) throw std::logic_error("GpuRounds: kernels are compiled on no lines");
+  submitRound(1, true);
+  round_.wait();
+  parity_ ^= 1;
+}
+
+void GpuRounds::submitRound(std::uint32_t steps, bool everyKernel) {
   const std::size_t lines = live_;
   params_.lineCount = static_cast<std::uint32_t>(lines);
   params_.laneShift = 0;
@@ -223,35 +230,40 @@ void GpuRounds::submitRound(std::uint32_t steps) {
   const shared::PointDataParams pointData{
       params_.cellsPerPhysical, static_cast<std::uint32_t>(volume_->channelCount()),
       options_.vorticity ? 1u : 0u, params_.linearInterpolant, params_.deepPositions};
+  const auto groupsOf = [everyKernel](std::size_t threads, std::uint32_t groupSize) {
+    return std::max(groups(threads, groupSize), everyKernel ? 1u : 0u);
+  };
+  const auto rays = static_cast<std::uint32_t>(std::max<std::size_t>(invocations, everyKernel));
+  const bool timed = !everyKernel;
   round_.submit([&](VkCommandBuffer cmd) {
     // The previous round's compaction wrote the states this round starts from. Its copy to the
     // host is left out of this dependency, so that this round's tracing may overlap it.
     vk::memoryBarrier(cmd, compute, {traceAccess.stages | compute.stages, traceAccess.access});
-    if (traceTimer_) traceTimer_->start(cmd);
+    if (traceTimer_ && timed) traceTimer_->start(cmd);
     vkCmdBindPipeline(cmd, trace_->bindPoint, trace_->pipeline.get());
     vkCmdBindDescriptorSets(cmd, trace_->bindPoint, trace_->pipelineLayout.get(), 0, 1,
                             &traceSets_[parity], 0, nullptr);
     if (pipeline) {
       const ShaderBindingTable& sbt = trace_->bindingTable;
       ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
-                                          static_cast<std::uint32_t>(invocations), 1, 1);
+                                          rays, 1, 1);
     } else {
-      vkCmdDispatch(cmd, groups(invocations, trace_->workgroupSize), 1, 1);
+      vkCmdDispatch(cmd, groupsOf(invocations, trace_->workgroupSize), 1, 1);
     }
-    if (traceTimer_) traceTimer_->stop(cmd);
+    if (traceTimer_ && timed) traceTimer_->stop(cmd);
 
     // The compaction overwrites the dense arrays the previous round's copy reads.
     vk::memoryBarrier(
         cmd, {traceAccess.stages | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
         compute);
-    if (compactionTimer_) compactionTimer_->start(cmd);
+    if (compactionTimer_ && timed) compactionTimer_->start(cmd);
     const VkPipelineLayout layout = kernels_->compactionLayout.get();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1,
                             &compactionSets_[parity], 0, nullptr);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(compaction),
                        &compaction);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernels_->scanLines.get());
-    vkCmdDispatch(cmd, groups(lines, AMRSTREAM_COMPACTION_GROUP), 1, 1);
+    vkCmdDispatch(cmd, groupsOf(lines, AMRSTREAM_COMPACTION_GROUP), 1, 1);
     vk::memoryBarrier(cmd, compute, compute);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernels_->scanBlocks.get());
     vkCmdDispatch(cmd, 1, 1, 1);
@@ -259,7 +271,7 @@ void GpuRounds::submitRound(std::uint32_t steps) {
                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
                        compute.access | VK_ACCESS_INDIRECT_COMMAND_READ_BIT});
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernels_->compact.get());
-    vkCmdDispatch(cmd, groups(lines, AMRSTREAM_COMPACTION_GROUP), 1, 1);
+    vkCmdDispatch(cmd, groupsOf(lines, AMRSTREAM_COMPACTION_GROUP), 1, 1);
     if (pointData.channelCount > 0 || pointData.computeVorticity != 0) {
       vk::memoryBarrier(cmd, compute, compute);
       const VkPipelineLayout pointLayout = kernels_->pointDataLayout.get();
@@ -268,10 +280,13 @@ void GpuRounds::submitRound(std::uint32_t steps) {
       vkCmdPushConstants(cmd, pointLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pointData),
                          &pointData);
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernels_->pointData.get());
-      vkCmdDispatchIndirect(cmd, buffers_.summary.handle(),
-                            offsetof(shared::RoundSummary, pointGroups));
+      if (everyKernel)
+        vkCmdDispatch(cmd, 1, 1, 1);  // the compaction counted no points: the kernel returns
+      else
+        vkCmdDispatchIndirect(cmd, buffers_.summary.handle(),
+                              offsetof(shared::RoundSummary, pointGroups));
     }
-    if (compactionTimer_) compactionTimer_->stop(cmd);
+    if (compactionTimer_ && timed) compactionTimer_->stop(cmd);
 
     vk::memoryBarrier(cmd, compute, vk::access::kTransferRead);
     copyRange(cmd, buffers_.summary, 0, buffers_.summaryOut, 0, sizeof(shared::RoundSummary));

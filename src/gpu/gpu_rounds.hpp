@@ -88,8 +88,15 @@ class GpuRounds final : public flow::RoundTracer {
   const RoundTimes& times() const { return times_; }
   std::uint64_t deviceBytes() const;
 
+  // Runs each kernel of a round once, on no lines, and waits: a driver that compiles a pipeline
+  // at its first dispatch (lavapipe) compiles it here, in the tracer's setup, not in the first
+  // round. The rounds must have no lines.
+  void compileByDispatch();
+
  private:
-  void submitRound(std::uint32_t steps);
+  // With `everyKernel`, each kernel gets one workgroup at least, and the point data kernel (run
+  // when the volume has channels) its own rather than the compaction's count.
+  void submitRound(std::uint32_t steps, bool everyKernel = false);
   shared::RoundSummary finishRound();
   // Copies the round submitted last to the host through the staging ring and unpacks it into a
   // block of `lines` lines; calls `afterLastCopy` once every piece's copy is submitted.

@@ -132,6 +132,8 @@ class GpuTracer {
   void setStaging(std::size_t slots, std::uint64_t slotBytes);
 
  private:
+  // Runs each kernel once on no lines (GpuRounds::compileByDispatch).
+  void compileByDispatch();
   // What a round costs, and the automatic budget's bounds on this device.
   flow::RoundCosts roundCosts(const flow::TraceOptions& options) const;
   // The lines of a trace of `seeds`; resets lastRun() and times the planning.
