@@ -386,6 +386,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   PathlineResult result;
   PathlineReport& report = result.report;
   std::optional<GpuSampling> gpu = openSampling(job.backend, report, log);
+  reporter.lap("device");
   const flow::PathlineOptions options = pathlineOptions(series, job.settings);
   report.stepSize = options.stepSize;
   report.startTime = options.startTime;
@@ -409,6 +410,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   a->cells.reset();
   report.seedCount = seeds.points.size();
   say(log, fmt::format("seeds      {} from {}", seeds.points.size(), report.seedDescription));
+  reporter.lap("first snapshot and seeds");
   checkReleases(options, seeds.points.size(), report.channelNames.size());
   flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
   say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
@@ -418,6 +420,10 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   report.steps = tracer.stepCount();
   report.particleCount = tracer.particleCount();
   report.wallSeconds = wall.seconds();
+  // The next snapshots are read and built while an interval is traced: the wait for them is
+  // what reading costs the run.
+  reporter.lap("intervals",
+               {{"tracing", report.traceSeconds}, {"waiting for snapshots", report.waitSeconds}});
   sayPathlineSummary(tracer, report, log);
 
   result.streaklines = options.releaseEvery > 0.0;
@@ -434,6 +440,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
 void runPathlineJob(const PathlineJob& job, const TraceOutput& output, const Reporter& reporter) {
   const PathlineResult result = tracePathlines(job, reporter);
   const WrittenLines written = result.lines.write(output);
+  reporter.lap("output");
   say(reporter.log,
       fmt::format("output     {} ({} {}, {} points) [{:.2f} s]", output.path,
                   withCommas(written.lines), result.streaklines ? "streaklines" : "pathlines",

@@ -26,11 +26,13 @@ std::string channelList(const flow::VectorVolume& volume) {
 }
 
 // Loads the dataset and builds the field; the cells go once the field holds what sampling reads.
-Field loadField(const ResampleJob& job, const Log& log) {
+Field loadField(const ResampleJob& job, const Reporter& reporter) {
+  const Log& log = reporter.log;
   Stopwatch clock;
   const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
+  reporter.lap("input");
   clock.restart();
   Field field = buildField(cells, job.field, KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);
@@ -40,6 +42,7 @@ Field loadField(const ResampleJob& job, const Log& log) {
                   withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
                   volume.vectorName, relativeToFrame(volume), channelList(volume),
                   interpolantName(volume.interpolant), clock.seconds()));
+  reporter.lap("structure");
   return field;
 }
 
@@ -56,7 +59,7 @@ void runResampleJob(const ResampleJob& job, const Reporter& reporter) {
   if (!compression)
     throw settingError("compression",
                        fmt::format("'{}' is not zlib, lz4 or none", job.compression));
-  const Field field = loadField(job, log);
+  const Field field = loadField(job, reporter);
   const flow::VectorVolume& volume = volumeOf(field);
   const flow::UniformGridSpec spec = flow::uniformGridSpec(volume, job.dims, job.box);
   Stopwatch clock;
@@ -64,6 +67,7 @@ void runResampleJob(const ResampleJob& job, const Reporter& reporter) {
   const flow::UniformGrid grid = flow::resampleUniform(
       volume, spec, [&](std::size_t done) { reporter.advance("resampling", done, rows); });
   const double seconds = clock.seconds();
+  reporter.lap("resampling");
   const glm::dvec3 spacing = spec.spacing();
   say(log, fmt::format("grid       {} x {} x {} points, spacing {:g} x {:g} x {:g}, {} valid "
                        "({:.1f} %) [{:.2f} s, {:.3g} samples/s]",
@@ -78,6 +82,7 @@ void runResampleJob(const ResampleJob& job, const Reporter& reporter) {
   writeOptions.channelNames = volume.channelNames;
   writeOptions.fieldData = datasetProvenance(field.source(), field.info(), volume);
   output::writeVti(job.out, grid, writeOptions);
+  reporter.lap("output");
   say(log, fmt::format("output     {} [{:.2f} s]", job.out, clock.seconds()));
 }
 

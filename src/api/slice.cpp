@@ -399,6 +399,7 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
   const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
+  reporter.lap("input");
   clock.restart();
   const Field field = buildField(cells, sliceFieldOptions(job, cells), KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);
@@ -406,8 +407,10 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
       fmt::format("structure  {} bricks, {} regions, vector {} [{:.2f} s]",
                   withCommas(volume.originalBrickCount), withCommas(volume.regions.regions.size()),
                   volume.vectorName, clock.seconds()));
+  reporter.lap("structure");
   const slice::SlicePlane plane = planeOf(volume, job.slice);
   const Sliced sliced = sliceOnPlane(field, plane, job.slice, reporter);
+  reporter.lap("slicing");
   clock.restart();
   render::writePng(job.out, slice::drawSliceFigure(plane, sliced.layers));
   if (!job.vti.empty()) writeSliceVti(job, field, plane, sliced.samples, sliced.layers.lic);
@@ -415,6 +418,7 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
   say(log,
       fmt::format("output     {}{}{} [{:.2f} s]", job.out, job.vti.empty() ? "" : ", " + job.vti,
                   job.vtp.empty() ? "" : ", " + job.vtp, clock.seconds()));
+  reporter.lap("output");
 }
 
 }  // namespace amrstream

@@ -49,6 +49,11 @@ Console::Console() : stages_(std::make_shared<Stages>()), clock_(std::make_uniqu
   };
 }
 
+void Console::sayStages() const {
+  clock_->lap("freeing");
+  say(clock_->line());
+}
+
 Console::~Console() {
   std::lock_guard lock(stages_->mutex);
   stages_->progress.reset();

@@ -3,6 +3,7 @@
 // the terminal first, and the progress of each stage on stderr (progress.hpp).
 
 #include <memory>
+#include <string_view>
 
 #include "amrstream/log.hpp"
 
@@ -21,6 +22,11 @@ class Console {
   // Prints a line of the command's own, taking a progress line off the terminal first.
   void say(const std::string& line) const { reporter_.say(line); }
   const StageClock& clock() const { return *clock_; }
+  // Closes the stage under way on the command's clock.
+  void lap(std::string_view stage) const { clock_->lap(stage); }
+  // Closes the last stage, "freeing" (what the command's scope let go), and prints the clock's
+  // line: every stage and the wall time.
+  void sayStages() const;
 
  private:
   struct Stages;

@@ -30,6 +30,7 @@ void runPathlines(PathlinesOptions o) {
   requireOutputExtension("--out", o.out.path, {".vtp"}, "VTK XML PolyData");
   const Console console;
   runPathlineJob(o.job, o.out, console);
+  console.sayStages();
 }
 
 }  // namespace

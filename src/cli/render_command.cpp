@@ -32,20 +32,26 @@ void runRender(const RenderCommandOptions& o) {
   files.addOutput("--out", o.out);
   requireOutputExtension("--out", o.out, {".png"}, "a PNG image");
   const Console console;
-  const bool tracing = o.traces.empty();
-  PreparedJob job = prepare(o.job, {tracing, KeepDataset::Yes}, console);
-  Traces traces;
-  if (tracing) {
-    traces = trace(job, {}, console).assemble();
-  } else {
-    traces = readTraces(o.traces);
-    checkTracesInDomain(o.traces, traces, job.field(), console.reporter().log);
+  {
+    const bool tracing = o.traces.empty();
+    PreparedJob job = prepare(o.job, {tracing, KeepDataset::Yes}, console);
+    Traces traces;
+    if (tracing) {
+      traces = trace(job, {}, console).assemble();
+    } else {
+      traces = readTraces(o.traces);
+      checkTracesInDomain(o.traces, traces, job.field(), console.reporter().log);
+      console.lap("traces read");
+    }
+    const RenderedImage rendered = renderImage(o.job.backend, o.look, job.field(), traces, console);
+    console.lap("rendering");
+    writePng(o.out, rendered.image);
+    console.lap("output");
+    console.say(fmt::format("time       {:.2f} s, {:.1f} ms per frame on the device",
+                            rendered.renderSeconds, 1e3 * rendered.kernelSecondsPerFrame));
+    console.say("output     " + o.out);
   }
-  const RenderedImage rendered = renderImage(o.job.backend, o.look, job.field(), traces, console);
-  writePng(o.out, rendered.image);
-  console.say(fmt::format("time       {:.2f} s, {:.1f} ms per frame on the device",
-                          rendered.renderSeconds, 1e3 * rendered.kernelSecondsPerFrame));
-  console.say("output     " + o.out);
+  console.sayStages();
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ void runResample(const ResampleJob& job) {
   requireOutputExtension("--out", job.out, {".vti"}, "VTK XML ImageData");
   const Console console;
   runResampleJob(job, console);
+  console.sayStages();
 }
 
 }  // namespace

@@ -47,6 +47,7 @@ void runSlice(SliceOptions& options) {
   }
   const Console console;
   runSliceJob(job, console);
+  console.sayStages();
 }
 
 }  // namespace
