@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <vector>
 
 #include "amrstream/builtin.hpp"
 #include "amrstream/dataset.hpp"
+#include "amrstream/dataset_writing.hpp"
 #include "amrstream/error.hpp"
 #include "amrstream/run_files.hpp"
 #include "console.hpp"
@@ -28,6 +30,7 @@ struct GenOptions {
   std::vector<double> centre;  // kind nest: x,y,z; empty: NestOptions' default
   int series = 0;              // snapshots; 0: one dataset named by --out alone
   double interval = 0.1;       // time between snapshots
+  std::string format = "exa";  // writableFormats()
 };
 
 bool isNest(const GenOptions& o) { return o.kind == "nest"; }
@@ -47,6 +50,13 @@ Dataset generate(const GenOptions& o, double time) {
   return generateBuiltin(o.kind, generator);
 }
 
+// What is written beside the path gen names, per format.
+std::string companionsOf(const std::string& format) {
+  if (format == "exa") return " and its .cells/.scalars files";
+  if (format == "enzo") return " and its .hierarchy/.cpuNNNN files";
+  return "";
+}
+
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -56,11 +66,11 @@ void writeOne(const GenOptions& o, double time, const std::string& out) {
   const Dataset dataset = generate(o, time);
   const double generateSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  const std::filesystem::path exa = writeExaBricks(dataset, out);
+  const std::filesystem::path written = writeDataset(dataset, out, o.format);
   printLine(fmt::format("generated  {}: {} cells, levels {}..{} [{:.2f} s]", dataset.source(),
                         withCommas(dataset.cellCount()), dataset.finestLevel(),
                         dataset.coarsestLevel(), generateSeconds));
-  printLine(fmt::format("wrote      {} and its .cells/.scalars files [{:.2f} s]", exa.string(),
+  printLine(fmt::format("wrote      {}{} [{:.2f} s]", written.string(), companionsOf(o.format),
                         secondsSince(start)));
 }
 
@@ -89,8 +99,14 @@ void checkOutputs(const GenOptions& o) {
     checkGeneratedCells(nestCellCount(nestOptions(o, o.generator.time)), "--root-cells");
   else
     checkBuiltinSize(o.generator);
-  const std::string first = o.series == 0 ? o.out + ".exa" : fmt::format("{}_0000.exa", o.out);
-  RunFiles().checkOutput("--out", first);
+  const std::filesystem::path first =
+      writtenPath(o.series == 0 ? o.out : fmt::format("{}_0000", o.out), o.format);
+  if (o.format != "amrex") return RunFiles().checkOutput("--out", first);
+  // A plotfile is a folder, replaced whole: its parent must be one.
+  std::error_code error;
+  const std::filesystem::path parent = first.parent_path().empty() ? "." : first.parent_path();
+  if (!std::filesystem::is_directory(parent, error))
+    throw InputError("--out", fmt::format("{} is not a folder", parent.string()));
 }
 
 void runGen(const CLI::App& command, const GenOptions& o) {
@@ -107,10 +123,17 @@ void addGenCommand(CLI::App& app) {
   auto options = std::make_shared<GenOptions>();
   std::string kinds;
   for (const std::string& k : builtinKinds()) kinds += (kinds.empty() ? "" : ", ") + k;
-  CLI::App* command = app.add_subcommand("gen", "write a synthetic dataset as ExaBricks files");
+  CLI::App* command = app.add_subcommand(
+      "gen", "write a synthetic dataset as ExaBricks, FLASH, Enzo or AMReX files");
   command->add_option("kind", options->kind, "dataset kind: " + kinds)->required();
   command->add_option("--out", options->out, "output prefix: writes PREFIX.exa, PREFIX.cells, ...")
       ->required();
+  command
+      ->add_option("--format", options->format,
+                   "exa: PREFIX.exa with .cells/.scalars; flash: PREFIX.h5; enzo: PREFIX, "
+                   "PREFIX.hierarchy, PREFIX.cpuNNNN; amrex: the plotfile folder PREFIX.plt")
+      ->capture_default_str()
+      ->check(CLI::IsMember(writableFormats()));
   addGeneratorOptions(*command, options->generator, "--seed", kMaxNestLevels);
   command
       ->add_option("--root-cells", options->nest.rootCells,

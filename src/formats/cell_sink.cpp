@@ -49,6 +49,11 @@ void CellSink::set(std::size_t channel, std::size_t cell, float value) {
   if (!channels_.empty()) channels_[channel].values[cell] = value;
 }
 
+std::span<float> CellSink::values(std::size_t channel) {
+  if (channels_.empty()) return {};
+  return channels_[channel].values;
+}
+
 std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
   if (checked_) {
     if (at_ >= checked_->lowers.size() || checked_->lowers[at_] != lower ||

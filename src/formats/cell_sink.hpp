@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ class CellSink {
   // The next cell's index; on a second read, InputError unless it is the first read's.
   std::size_t cell(glm::ivec3 lower, std::uint8_t level);
   void set(std::size_t channel, std::size_t cell, float value);
+  // A channel's values, one per cell, to be filled in place from any thread (after presize or
+  // the cells' cell() calls); empty when the sink keeps no channels (ValueWindow::withChannels).
+  std::span<float> values(std::size_t channel);
   // On a second read: the next `count` cells, of a piece not read.
   void skip(std::size_t count) { at_ += count; }
 

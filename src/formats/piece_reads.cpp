@@ -1,17 +1,13 @@
 #include "formats/piece_reads.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <vector>
 
-#include "amrstream/error.hpp"
+#include "formats/read_only_file.hpp"
 
 namespace amrstream::formats {
 
@@ -19,41 +15,6 @@ namespace {
 
 // Pieces of reads straight into memory: large enough that a read's cost is the copy.
 constexpr std::uint64_t kPieceBytes = std::uint64_t(8) << 20;
-
-class ReadOnlyFile {
- public:
-  ReadOnlyFile(const std::filesystem::path& path, const std::string& what)
-      : path_(path), what_(what), fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
-    if (fd_ < 0)
-      throw InputError(path.string(),
-                       fmt::format("cannot open {}: {}", what, std::strerror(errno)));
-  }
-  ~ReadOnlyFile() { ::close(fd_); }
-  ReadOnlyFile(const ReadOnlyFile&) = delete;
-  ReadOnlyFile& operator=(const ReadOnlyFile&) = delete;
-
-  void readExactly(std::uint64_t offset, char* into, std::uint64_t count) const {
-    std::uint64_t got = 0;
-    while (got < count) {
-      const ssize_t n = ::pread(fd_, into + got, count - got, off_t(offset + got));
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0)
-        throw InputError(path_.string(), fmt::format("{}: reading {} bytes from byte {} failed: {}",
-                                                     what_, count, offset, std::strerror(errno)));
-      if (n == 0)
-        throw InputError(path_.string(),
-                         fmt::format("{}: read {} of {} bytes from byte {}; the file is shorter "
-                                     "than it was a moment ago (changed while being read?)",
-                                     what_, got, count, offset));
-      got += std::uint64_t(n);
-    }
-  }
-
- private:
-  std::filesystem::path path_;
-  std::string what_;
-  int fd_;
-};
 
 }  // namespace
 

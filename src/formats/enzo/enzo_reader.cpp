@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -17,6 +19,7 @@
 #include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
 #include "formats/cell_sink.hpp"
+#include "formats/enzo/enzo_fields.hpp"
 #include "formats/enzo/enzo_info.hpp"
 #include "formats/enzo/enzo_parameters.hpp"
 #include "formats/hdf5_checks.hpp"
@@ -64,6 +67,8 @@ std::string trim(std::string s) {
 // machine's memory.
 constexpr std::int64_t kMaxZonesPerAxis = std::int64_t{1} << bricks::kMaxExtentBits;
 constexpr std::int64_t kMaxZonesPerGrid = std::int64_t{1} << 31;
+// Active zones in all grids, covered ones included: a hierarchy claiming more is not laid out.
+constexpr std::uint64_t kMaxTotalZones = std::uint64_t{1} << 32;
 
 glm::ivec3 toIvec3(const std::array<std::int64_t, 3>& v) {
   return glm::ivec3(static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]));
@@ -380,39 +385,6 @@ herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out) {
   return 0;
 }
 
-// One field of a grid, as stored (read as float64 so that no value is rounded before it is
-// checked).
-std::vector<double> readField(hid_t group, const fs::path& file, const std::string& groupName,
-                              const std::string& name, glm::ivec3 dims, int axes) {
-  const auto what = fmt::format("{}/{}", groupName, name);
-  if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
-    throw InputError(file.string(), fmt::format("dataset {} is missing", what));
-  const auto ds = checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, file,
-                          fmt::format("open dataset {}", what));
-  const std::vector<hsize_t> expected{hsize_t(dims.z), hsize_t(dims.y), hsize_t(dims.x)};
-  const std::vector<hsize_t> planar{hsize_t(dims.y), hsize_t(dims.x)};
-  const auto shape = shapeOf(ds.get(), file, what);
-  if (shape != expected && !(axes == 2 && shape == planar)) {
-    std::string got;
-    for (auto s : shape) got += fmt::format("{}{}", got.empty() ? "" : ",", s);
-    throw InputError(file.string(),
-                     axes == 2
-                         ? fmt::format("dataset {} has shape ({}), expected ({},{}) = (ny,nx) "
-                                       "active zones",
-                                       what, got, dims.y, dims.x)
-                         : fmt::format("dataset {} has shape ({}), expected ({},{},{}) = "
-                                       "(nz,ny,nx) active zones",
-                                       what, got, dims.z, dims.y, dims.x));
-  }
-  const auto type = checked(H5Dget_type(ds.get()), H5Tclose, file, "get the type of " + what);
-  if (H5Tget_class(type.get()) != H5T_FLOAT)
-    throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
-  std::vector<double> values(requireStoredValues(ds.get(), file.string(), what));
-  if (H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-    throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", what));
-  return values;
-}
-
 struct Siblings {
   fs::path dir, parameter, hierarchy, harrays;
 };
@@ -550,40 +522,38 @@ void listChannels(GridReading& r, hid_t group, const fs::path& path, const std::
   for (const std::string& name : r.channels) r.sink.addChannel(name);
 }
 
-// The cells of `g` that no finer grid covers, with their values from `fields` when `wanted`.
-void addCells(GridReading& r, const Grid& g, bool wanted,
-              const std::vector<std::vector<double>>& fields, const std::vector<bool>& covered,
-              const fs::path& path, const std::string& groupName) {
-  const auto level = static_cast<std::uint8_t>(r.finest - g.level);
-  const int copies = r.axes == 2 ? r.slabCells / g.width : 1;
-  std::size_t index = 0;
-  for (int k = 0; k < g.dims.z; ++k)
-    for (int j = 0; j < g.dims.y; ++j)
-      for (int i = 0; i < g.dims.x; ++i, ++index) {
-        if (covered[index]) continue;
-        for (int copy = 0; copy < copies; ++copy) {
-          glm::ivec3 lower = g.lower + glm::ivec3(i, j, k) * g.width;
-          if (r.axes == 2) lower.z = copy * g.width;
-          const std::size_t at = r.sink.cell(lower, level);
-          for (std::size_t c = 0; wanted && c < r.channels.size(); ++c) {
-            const double value = fields[c][index];
-            if (const auto problem = unusableFieldValue(value))
-              throw InputError(
-                  path.string(),
-                  fmt::format("dataset {}/{}: value {} at zone {} is {}", groupName, r.channels[c],
-                              value,
-                              r.axes == 2 ? fmt::format("(i, j) = ({}, {})", i, j)
-                                          : fmt::format("(i, j, k) = ({}, {}, {})", i, j, k),
-                              *problem));
-            r.sink.set(c, at, static_cast<float>(value));
-          }
-        }
-      }
+// Per grid: its zones that finer grids cover, whether its values are read (it meets the window,
+// if any) and where its cells begin; `total` cells in all.
+struct GridCells {
+  std::vector<std::vector<bool>> covered;
+  std::vector<char> wanted;
+  std::vector<std::size_t> first;
+  std::size_t total = 0;
+};
+
+GridCells gridCells(const GridReading& r, const ValueWindow* window) {
+  std::uint64_t zones = 0;
+  for (const Grid& g : r.grids) zones += std::uint64_t(g.dims.x) * g.dims.y * g.dims.z;
+  if (zones > kMaxTotalZones)
+    throw InputError(r.table.string(), fmt::format("the grids hold {} active zones, more than "
+                                                   "the {} accepted",
+                                                   zones, kMaxTotalZones));
+  GridCells cells;
+  for (const Grid& g : r.grids) {
+    glm::ivec3 upper = g.lower + g.dims * g.width;
+    if (r.axes == 2) upper.z = r.slabCells;
+    cells.wanted.push_back(!window || window->meets(g.lower, upper, g.width));
+    cells.covered.push_back(coveredCells(g, r.grids, r.table, r.axes));
+    const auto& covered = cells.covered.back();
+    const int copies = r.axes == 2 ? r.slabCells / g.width : 1;
+    cells.first.push_back(cells.total);
+    cells.total += std::size_t(std::count(covered.begin(), covered.end(), false)) * copies;
+  }
+  return cells;
 }
 
-// One grid a window does not skip: its field file and group, the channels if not yet known, its
-// fields when `wanted`, its cells.
-void readGrid(GridReading& r, const Grid& g, bool wanted) {
+// The grid's group in its field file, opened once.
+Handle openGroup(GridReading& r, const Grid& g) {
   const fs::path path = r.dir / g.file;
   auto it = r.files.find(g.file);
   if (it == r.files.end()) {
@@ -592,17 +562,56 @@ void readGrid(GridReading& r, const Grid& g, bool wanted) {
     it = r.files.emplace(g.file, openHdf5(path)).first;
   }
   const auto groupName = fmt::format("/Grid{:08d}", g.id);
-  const auto group = checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose,
-                             path, fmt::format("open group {}", groupName));
-  if (r.channels.empty()) listChannels(r, group.get(), path, groupName);
-  // The fields first: their storage bounds the grid's size before anything else is allocated.
-  std::vector<std::vector<double>> fields;
-  if (wanted)
-    for (const std::string& name : r.channels)
-      fields.push_back(readField(group.get(), path, groupName, name, g.dims, r.axes));
-  const auto covered = coveredCells(g, r.grids, r.table, r.axes);
+  return checked(H5Gopen2(it->second.get(), groupName.c_str(), H5P_DEFAULT), H5Gclose, path,
+                 fmt::format("open group {}", groupName));
+}
 
-  addCells(r, g, wanted, fields, covered, path, groupName);
+// The values of the grids read, each channel's: a grid whose zones are its cells, one to one,
+// straight into them; any other into `staged` (channel after channel), to be spread over its
+// cells by placeCells.
+void readValues(GridReading& r, const GridCells& cells, std::vector<std::vector<float>>& staged) {
+  enzo::FieldReads fields(r.channels);
+  std::vector<float*> into(r.channels.size());
+  for (std::size_t n = 0; n < r.grids.size(); ++n) {
+    const Grid& g = r.grids[n];
+    if (!cells.wanted[n] && r.sink.skipsPieces()) continue;
+    const Handle group = openGroup(r, g);  // a grid's file and group must be there, read or not
+    if (!cells.wanted[n] || r.sink.values(0).empty()) continue;
+    const std::size_t zones = cells.covered[n].size();
+    const bool oneToOne = std::ranges::none_of(cells.covered[n], std::identity()) &&
+                          (r.axes == 3 || r.slabCells == g.width);
+    if (!oneToOne) staged[n].resize(zones * r.channels.size());
+    for (std::size_t c = 0; c < r.channels.size(); ++c)
+      into[c] = oneToOne ? r.sink.values(c).data() + cells.first[n] : staged[n].data() + c * zones;
+    fields.add(group.get(), r.dir / g.file, fmt::format("/Grid{:08d}", g.id), g.dims, r.axes, into);
+  }
+  fields.run();
+}
+
+// Places every grid's cells that no finer grid covers, on all cores (a second read: those of the
+// grids it reads), with their staged values.
+void placeCells(GridReading& r, const GridCells& cells,
+                const std::vector<std::vector<float>>& staged) {
+  tbb::parallel_for(std::size_t(0), r.grids.size(), [&](std::size_t n) {
+    if (!cells.wanted[n] && r.sink.skipsPieces()) return;
+    const Grid& g = r.grids[n];
+    const auto level = static_cast<std::uint8_t>(r.finest - g.level);
+    const int copies = r.axes == 2 ? r.slabCells / g.width : 1;
+    const std::size_t zones = cells.covered[n].size();
+    std::size_t index = 0, at = cells.first[n];
+    for (int k = 0; k < g.dims.z; ++k)
+      for (int j = 0; j < g.dims.y; ++j)
+        for (int i = 0; i < g.dims.x; ++i, ++index) {
+          if (cells.covered[n][index]) continue;
+          for (int copy = 0; copy < copies; ++copy, ++at) {
+            glm::ivec3 lower = g.lower + glm::ivec3(i, j, k) * g.width;
+            if (r.axes == 2) lower.z = copy * g.width;
+            r.sink.place(at, lower, level);
+            for (std::size_t c = 0; !staged[n].empty() && c < r.channels.size(); ++c)
+              r.sink.values(c)[at] = staged[n][c * zones + index];
+          }
+        }
+  });
 }
 
 }  // namespace
@@ -624,23 +633,20 @@ bricks::AmrField readEnzo(const fs::path& file, const ValueWindow* window, Windo
   const int finest = std::ranges::max(grids, {}, &Grid::level).level;
   GridReading reading{grids, table, sib.dir, finest, axes, slabCells, sink, {}, {}};
 
-  for (const auto& g : grids) {
-    glm::ivec3 upper = g.lower + g.dims * g.width;
-    if (axes == 2) upper.z = slabCells;
-    const bool wanted = !window || window->meets(g.lower, upper, g.width);
-    if (read) {
-      ++read->pieces;
-      read->piecesRead += wanted;
-    }
-    if (!wanted && sink.skipsPieces() && !reading.channels.empty()) {
-      const auto covered = coveredCells(g, grids, table, axes);
-      const int copies = axes == 2 ? slabCells / g.width : 1;
-      sink.skip(std::size_t(std::count(covered.begin(), covered.end(), false)) *
-                std::size_t(copies));
-      continue;
-    }
-    readGrid(reading, g, wanted);
+  const GridCells cells = gridCells(reading, window);
+  if (read) {
+    read->pieces += grids.size();
+    read->piecesRead += std::size_t(std::count(cells.wanted.begin(), cells.wanted.end(), 1));
   }
+  {
+    const Handle first = openGroup(reading, grids.front());
+    listChannels(reading, first.get(), sib.dir / grids.front().file,
+                 fmt::format("/Grid{:08d}", grids.front().id));
+  }
+  sink.presize(cells.total);
+  std::vector<std::vector<float>> staged(grids.size());
+  readValues(reading, cells, staged);
+  placeCells(reading, cells, staged);
   glm::dvec3 origin = domain.left;
   if (axes == 2) origin.z = -0.5 * slabCells * finestDx.z;  // the plane is z = 0
   const WorldTransform transform{origin, finestDx};

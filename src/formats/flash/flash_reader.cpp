@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <hdf5.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -18,6 +20,7 @@
 #include "formats/cell_sink.hpp"
 #include "formats/flash/flash_file.hpp"
 #include "formats/flash/flash_info.hpp"
+#include "formats/flash/flash_values.hpp"
 #include "formats/hdf5_checks.hpp"
 
 namespace amrstream::formats {
@@ -237,89 +240,78 @@ CellLayout cellLayout(const FlashFile& file, const BlockShape& shape,
   return layout;
 }
 
-constexpr std::size_t kNotRead = std::numeric_limits<std::size_t>::max();
-
-// With a window, the leaves meeting it, each at its place (readSlot) in the values read.
-struct BlocksRead {
-  std::vector<std::size_t> blocks, readSlot;
+// Per leaf, whether its values are read (it meets the window, if any) and where its cells begin.
+struct LeafCells {
+  std::vector<char> wanted;
+  std::vector<std::size_t> first;
 };
 
-BlocksRead blocksInWindow(const ValueWindow& window, const CellLayout& layout,
-                          const std::vector<Leaf>& leaves, std::size_t nb) {
-  BlocksRead read;
-  read.readSlot.assign(nb, kNotRead);
+LeafCells leafCells(const ValueWindow* window, const CellLayout& layout,
+                    const std::vector<Leaf>& leaves) {
+  LeafCells cells;
   const glm::ivec3 n(layout.shape.n[0], layout.shape.n[1], layout.shape.n[2]);
+  std::size_t at = 0;
   for (const Leaf& leaf : leaves) {
     const int w = 1 << leaf.level;
     glm::ivec3 upper = leaf.lower + n * w;
     if (layout.axes() == 2) upper.z = 1 << layout.coarsest;
-    if (!window.meets(leaf.lower, upper, w)) continue;
-    read.readSlot[leaf.block] = read.blocks.size();
-    read.blocks.push_back(leaf.block);
-  }
-  return read;
-}
-
-// The cells whose values are read: their indices into a variable's data and, with a window
-// (else they are all the cells, in order), their own.
-struct CellsRead {
-  std::vector<std::size_t> froms, ats;
-};
-
-// Adds the cells in block order, z-y-x within a block (the datasets' [nb][nzb][nyb][nxb] order).
-CellsRead addCells(CellSink& sink, const CellLayout& layout, const std::vector<Leaf>& leaves,
-                   const BlocksRead* window) {
-  const int* n = layout.shape.n;
-  CellsRead cells;
-  cells.froms.reserve(window ? 0 : layout.total);
-  for (const Leaf& leaf : leaves) {
-    const int w = 1 << leaf.level;
-    const int copies = layout.copies(leaf);
-    const bool wanted = !window || window->readSlot[leaf.block] != kNotRead;
-    if (!wanted && sink.skipsPieces()) {
-      sink.skip(layout.perBlock * std::size_t(copies));
-      continue;
-    }
-    for (int k = 0; k < n[2]; ++k)
-      for (int j = 0; j < n[1]; ++j)
-        for (int i = 0; i < n[0]; ++i) {
-          const std::size_t from =
-              leaf.block * layout.perBlock + (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i;
-          for (int c = 0; c < copies; ++c) {
-            const int z = layout.axes() == 2 ? c * w : leaf.lower.z + k * w;
-            const std::size_t at =
-                sink.cell(glm::ivec3(leaf.lower.x + i * w, leaf.lower.y + j * w, z),
-                          static_cast<std::uint8_t>(leaf.level));
-            if (!wanted) continue;
-            cells.froms.push_back(from);
-            if (window) cells.ats.push_back(at);
-          }
-        }
+    cells.wanted.push_back(!window || window->meets(leaf.lower, upper, w));
+    cells.first.push_back(at);
+    at += layout.perBlock * std::size_t(layout.copies(leaf));
   }
   return cells;
 }
 
-void setValues(const FlashFile& file, CellSink& sink, const std::vector<std::string>& names,
-               const CellLayout& layout, const CellsRead& cells, const BlocksRead* window) {
-  const std::size_t perBlock = layout.perBlock;
+// Places the cells on all cores, leaf after leaf, z-y-x within a leaf (the datasets'
+// [nb][nzb][nyb][nxb] order), a 2D cell's copies one after another. A second read places only
+// the leaves whose values it reads.
+void placeCells(CellSink& sink, const CellLayout& layout, const std::vector<Leaf>& leaves,
+                const LeafCells& cells) {
   const int* n = layout.shape.n;
+  sink.presize(layout.total);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
+    if (!cells.wanted[l] && sink.skipsPieces()) return;
+    const Leaf& leaf = leaves[l];
+    const int w = 1 << leaf.level;
+    const int copies = layout.copies(leaf);
+    std::size_t at = cells.first[l];
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+          for (int c = 0; c < copies; ++c, ++at) {
+            const int z = layout.axes() == 2 ? c * w : leaf.lower.z + k * w;
+            sink.place(at, glm::ivec3(leaf.lower.x + i * w, leaf.lower.y + j * w, z),
+                       static_cast<std::uint8_t>(leaf.level));
+          }
+  });
+}
+
+// Every channel's values of the leaves read: a 3D leaf's straight into its cells, a 2D leaf's
+// into `stacked` first, then into each of its cells' copies.
+void setValues(const FlashFile& file, CellSink& sink, const std::vector<std::string>& names,
+               const CellLayout& layout, const std::vector<Leaf>& leaves, const LeafCells& cells) {
+  const std::array<int, 3> n{layout.shape.n[0], layout.shape.n[1], layout.shape.n[2]};
+  const std::size_t perBlock = layout.perBlock;
+  std::vector<std::size_t> read;  // the leaves whose values are read
+  for (std::size_t l = 0; l < leaves.size(); ++l)
+    if (cells.wanted[l]) read.push_back(l);
+  std::vector<float> stacked(layout.axes() == 2 ? read.size() * perBlock : 0);
   for (std::size_t channel = 0; channel < names.size(); ++channel) {
-    const std::string& name = names[channel];
-    const std::vector<double> data =
-        window ? file.readBlocks(name, window->blocks)
-               : file.read<double>(name, " (listed in 'unknown names')").values;
-    for (std::size_t i = 0; i < cells.froms.size(); ++i) {
-      const std::size_t from = cells.froms[i], at = window ? cells.ats[i] : i;
-      const double v =
-          data[window ? window->readSlot[from / perBlock] * perBlock + from % perBlock : from];
-      if (const auto problem = unusableFieldValue(v)) {
-        const std::size_t block = from / perBlock, inBlock = from % perBlock;
-        file.fail(name, fmt::format("value {} of block {} cell (i, j, k) = ({}, {}, {}) is {}", v,
-                                    block, inBlock % n[0], inBlock / n[0] % n[1],
-                                    inBlock / n[0] / n[1], *problem));
-      }
-      sink.set(channel, at, static_cast<float>(v));
-    }
+    const std::span<float> values = sink.values(channel);
+    if (values.empty()) return;  // the cells alone
+    std::vector<flash::BlockValues> blocks;
+    for (std::size_t s = 0; s < read.size(); ++s)
+      blocks.push_back({leaves[read[s]].block, layout.axes() == 2
+                                                   ? stacked.data() + s * perBlock
+                                                   : values.data() + cells.first[read[s]]});
+    flash::readBlockValues(file, names[channel], blocks, n);
+    if (layout.axes() == 3) continue;
+    tbb::parallel_for(std::size_t(0), read.size(), [&](std::size_t s) {
+      const int copies = layout.copies(leaves[read[s]]);
+      float* into = values.data() + cells.first[read[s]];
+      for (std::size_t i = 0; i < perBlock; ++i)
+        std::fill_n(into + i * copies, copies, stacked[s * perBlock + i]);
+    });
   }
 }
 
@@ -336,25 +328,22 @@ bricks::AmrField readFlash(const std::filesystem::path& path, const ValueWindow*
   const std::vector<Leaf> leaves = placeLeaves(file, blocks, shape, grid);
   const CellLayout layout = cellLayout(file, shape, leaves);
 
-  std::optional<BlocksRead> inWindow;
-  if (window) inWindow = blocksInWindow(*window, layout, leaves, blocks.count);
-  const BlocksRead* windowed = inWindow ? &*inWindow : nullptr;
+  const LeafCells cells = leafCells(window, layout, leaves);
   if (read) {
     read->pieces += leaves.size();
-    read->piecesRead += window ? inWindow->blocks.size() : leaves.size();
+    read->piecesRead += std::size_t(std::count(cells.wanted.begin(), cells.wanted.end(), 1));
   }
 
   CellSink sink(window, path.string(), read);
   for (const std::string& name : names) sink.addChannel(name);
-  sink.reserve(layout.total);
-  const CellsRead cells = addCells(sink, layout, leaves, windowed);
+  placeCells(sink, layout, leaves, cells);
   glm::dvec3 origin = grid.domainLo;
   // A 2D file's plane is z = 0, in the middle of its slab (as VTK's FLASH reader puts it).
   if (layout.axes() == 2) origin.z = -0.5 * std::ldexp(grid.dxf.z, layout.coarsest);
   const WorldTransform transform{origin, grid.dxf};
   if (const auto problem = unrepresentablePositions(transform, sink.lowers(), sink.levels()))
     file.fail("bounding box", "the leaves cannot be placed: " + *problem);
-  setValues(file, sink, names, layout, cells, windowed);
+  setValues(file, sink, names, layout, leaves, cells);
 
   bricks::AmrField field = sink.finish(transform);
   field.setInfo(flash::readFlashInfo(file, grid.rmax, shape.dimensionality, names));

@@ -1,0 +1,26 @@
+#pragma once
+// Where an HDF5 dataset's float values lie in its file, when they can be read there directly
+// (float_runs.hpp) rather than through libhdf5, which Debian builds without thread safety: the
+// dataset is stored contiguously, unfiltered, in the file itself (not an external one), its
+// storage is allocated, and its type is the machine's own float32 or float64.
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace amrstream::formats {
+
+struct ContiguousFloats {
+  std::uint64_t offset = 0;  // of the first value's bytes in the file
+  int valueBytes = 4;        // 4: float32, 8: float64
+};
+
+// Dataset `set` (named `name`, of `count` values, in `file`), or nullopt when it must be read
+// with H5Dread. Throws InputError(file, "dataset 'NAME': ...") when its values would run past the
+// end of the file (a truncated file).
+std::optional<ContiguousFloats> contiguousFloats(hid_t set, const std::string& file,
+                                                 const std::string& name, std::uint64_t count);
+
+}  // namespace amrstream::formats
