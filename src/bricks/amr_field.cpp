@@ -17,8 +17,8 @@
 
 #include "amrstream/closest_name.hpp"
 #include "amrstream/error.hpp"
+#include "level_corner_set.hpp"
 #include "util/first_failing.hpp"
-#include "util/huge_pages.hpp"
 
 namespace amrstream::bricks {
 
@@ -45,143 +45,6 @@ class AbsentCorners {
   }
   std::array<std::array<glm::ivec3, 16>, kMaxLevel + 1> corners_;
   std::array<std::uint16_t, kMaxLevel + 1> known_{};
-};
-
-// Open-addressing set of non-zero 64-bit keys, filled concurrently with compare-and-swap.
-class ConcurrentKeySet {
- public:
-  // 1.5 slots a key: at most two thirds full, so probes stay short, in 12 bytes a key (a power
-  // of two would take 16 to 32: the largest transient of loading a big dataset).
-  // The slots come zeroed from calloc: fresh pages, zeroed by the kernel as the threads that
-  // insert first touch them, rather than by one thread up front.
-  explicit ConcurrentKeySet(std::size_t expected)
-      : count_(std::max<std::size_t>(16, expected + expected / 2)),
-        slots_(static_cast<std::uint64_t*>(std::calloc(count_, sizeof(std::uint64_t)))) {
-    if (!slots_) throw std::bad_alloc();
-    adviseHugePages(slots_.get(), count_ * sizeof(std::uint64_t));
-  }
-
-  // False when the key was already present.
-  bool insert(std::uint64_t key) {
-    for (std::size_t i = slotOf(key);; i = next(i)) {
-      std::atomic_ref<std::uint64_t> slot(slots_[i]);
-      std::uint64_t current = slot.load(std::memory_order_relaxed);
-      if (current == key) return false;
-      if (current == 0) {
-        if (slot.compare_exchange_strong(current, key)) return true;
-        if (current == key) return false;
-      }
-    }
-  }
-
-  // Starts loading the key's first slot: a later insert or contains then waits less for memory.
-  // GCC 12 drops __builtin_prefetch from the check's loops; on x86 the instruction is written.
-  void prefetch(std::uint64_t key) const {
-#if defined(__x86_64__) || defined(__i386__)
-    asm volatile("prefetcht0 %0" : : "m"(slots_[slotOf(key)]));
-#else
-    __builtin_prefetch(&slots_[slotOf(key)]);
-#endif
-  }
-
-  bool contains(std::uint64_t key) const {
-    for (std::size_t i = slotOf(key);; i = next(i)) {
-      const std::uint64_t current =
-          std::atomic_ref<std::uint64_t>(slots_[i]).load(std::memory_order_relaxed);
-      if (current == key) return true;
-      if (current == 0) return false;
-    }
-  }
-
- private:
-  static std::uint64_t hash(std::uint64_t x) {  // splitmix64 finaliser
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ull;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-  // The hash scaled onto the slots (Lemire's multiply-shift), any count of slots.
-  std::size_t slotOf(std::uint64_t key) const {
-    return std::size_t((unsigned __int128)hash(key) * count_ >> 64);
-  }
-  std::size_t next(std::size_t i) const { return i + 1 == count_ ? 0 : i + 1; }
-
-  struct Free {
-    void operator()(std::uint64_t* p) const { std::free(p); }
-  };
-  std::size_t count_;
-  std::unique_ptr<std::uint64_t[], Free> slots_;
-};
-
-// The corners of one level's cells, keyed by their index in the level's grid within the box of
-// the level's corners: 64-bit keys in a ConcurrentKeySet when that box holds fewer than 2^62
-// cells, else (a level's cells scattered over a box of more, possible beyond 2^21 finest cells
-// per axis) a set of the corners themselves, split into locked shards.
-class LevelCornerSet {
- public:
-  LevelCornerSet(std::size_t expected, int level, glm::ivec3 lower, glm::ivec3 upper)
-      : level_(level), lower_(lower) {
-    const glm::i64vec3 counts =
-        ((glm::i64vec3(upper) - glm::i64vec3(lower)) >> std::int64_t(level)) + std::int64_t(1);
-    counts_ = counts;
-    const double cells = double(counts.x) * double(counts.y) * double(counts.z);
-    if (cells < 0x1p62)
-      keys_ = std::make_unique<ConcurrentKeySet>(expected);
-    else
-      shards_ = std::make_unique<Shard[]>(kShards);
-  }
-
-  // False when the corner was already present.
-  bool insert(glm::ivec3 corner) {
-    if (keys_) return keys_->insert(key(corner));
-    Shard& shard = shards_[shardOf(corner)];
-    const std::lock_guard lock(shard.mutex);
-    return shard.corners.insert(corner).second;
-  }
-
-  // Starts loading where an insert or contains of the corner will look (hashed keys only).
-  void prefetch(glm::ivec3 corner) const {
-    if (keys_ && glm::all(glm::greaterThanEqual(corner, lower_))) keys_->prefetch(key(corner));
-  }
-
-  // Whether a corner aligned to the level's grid is present.
-  bool contains(glm::ivec3 corner) const {
-    if (glm::any(glm::lessThan(corner, lower_))) return false;
-    const glm::i64vec3 index =
-        (glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_);
-    if (glm::any(glm::greaterThanEqual(index, counts_))) return false;
-    if (keys_) return keys_->contains(key(corner));
-    Shard& shard = shards_[shardOf(corner)];
-    const std::lock_guard lock(shard.mutex);
-    return shard.corners.count(corner) > 0;
-  }
-
- private:
-  struct CornerHash {
-    std::size_t operator()(glm::ivec3 c) const {
-      return std::hash<std::uint64_t>()((std::uint64_t(std::uint32_t(c.x)) << 32) ^
-                                        (std::uint64_t(std::uint32_t(c.y)) << 16) ^
-                                        std::uint32_t(c.z));
-    }
-  };
-  struct Shard {
-    std::mutex mutex;
-    std::unordered_set<glm::ivec3, CornerHash> corners;
-  };
-  static constexpr std::size_t kShards = 64;
-
-  std::uint64_t key(glm::ivec3 corner) const {  // corner within the box
-    const glm::u64vec3 index((glm::i64vec3(corner) - glm::i64vec3(lower_)) >> std::int64_t(level_));
-    return 1 + index.x + std::uint64_t(counts_.x) * (index.y + std::uint64_t(counts_.y) * index.z);
-  }
-  std::size_t shardOf(glm::ivec3 corner) const { return CornerHash()(corner) % kShards; }
-
-  int level_;
-  glm::ivec3 lower_;
-  glm::i64vec3 counts_;
-  std::unique_ptr<ConcurrentKeySet> keys_;
-  std::unique_ptr<Shard[]> shards_;
 };
 
 // Levels as the input numbers them.
@@ -415,23 +278,62 @@ CellBox AmrField::checkedBounds(const LevelBoxes& boxes) const {
   return CellBox{glm::ivec3(lower), glm::ivec3(upper)};
 }
 
-// Overlaps: one hash set of cell corners per level. A duplicate fails the insertion; a cell
-// inside a coarser one finds that cell's aligned corner in the coarser level's set.
+// Per level, the runs of consecutive cells in one tile: at least as many as the tiles occupied.
+std::array<std::size_t, kMaxLevel + 1> AmrField::tileRuns(
+    const std::vector<LevelTiling>& tilings) const {
+  using Counts = std::array<std::size_t, kMaxLevel + 1>;
+  const auto tileOf = [&](std::size_t i) -> std::uint64_t {
+    const LevelTiling& tiling = tilings[levels_[i]];
+    return tiling.tiled() ? tiling.key(lowers_[i]) : i;
+  };
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, lowers_.size()), Counts{},
+      [&](const tbb::blocked_range<std::size_t>& range, Counts counts) {
+        std::size_t level = range.begin() > 0 ? levels_[range.begin() - 1] : kMaxLevel + 1;
+        std::uint64_t tile = range.begin() > 0 ? tileOf(range.begin() - 1) : 0;
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const std::uint64_t next = tileOf(i);
+          if (levels_[i] != level || next != tile) ++counts[levels_[i]];
+          level = levels_[i];
+          tile = next;
+        }
+        return counts;
+      },
+      [](Counts a, const Counts& b) {
+        for (std::size_t level = 0; level < a.size(); ++level) a[level] += b[level];
+        return a;
+      });
+}
+
+// Overlaps: one set of cell corners per level, in tiles of 4 x 4 x 4 cells. A duplicate fails
+// the insertion; a cell inside a coarser one finds that cell's aligned corner in the coarser
+// level's set.
 void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
   const std::size_t n = lowers_.size();
-  const std::vector<std::size_t> perLevel = cellsPerLevel();
-  std::vector<std::unique_ptr<LevelCornerSet>> sets(perLevel.size());
-  for (std::size_t level = 0; level < perLevel.size(); ++level)
-    if (perLevel[level] > 0)
-      sets[level] = std::make_unique<LevelCornerSet>(perLevel[level], int(level),
-                                                     boxes.lower[level], boxes.upper[level]);
-  // The sets are far larger than the caches: each cell's slots are fetched some cells ahead.
+  const std::size_t levels = std::size_t(coarsest_) + 1;
+  std::vector<LevelTiling> tilings;
+  for (std::size_t level = 0; level < levels; ++level)
+    tilings.emplace_back(int(level), boxes.lower[level], boxes.upper[level]);
+  const std::array<std::size_t, kMaxLevel + 1> runs = tileRuns(tilings);
+  std::vector<std::unique_ptr<LevelCornerSet>> sets(levels);
+  for (std::size_t level = 0; level < levels; ++level)
+    if (boxes.lower[level].x <= boxes.upper[level].x)
+      sets[level] = std::make_unique<LevelCornerSet>(tilings[level], runs[level]);
+
+  // The sets are far larger than the caches: each new tile's slot is fetched some cells ahead.
   constexpr std::size_t kAhead = 16;
-  const auto duplicated = [&](std::size_t i) {
-    if (i + kAhead < n) sets[levels_[i + kAhead]]->prefetch(lowers_[i + kAhead]);
-    return !sets[levels_[i]]->insert(lowers_[i]);
+  struct Inserting {
+    std::array<TileHint, kMaxLevel + 1> hints;
+    std::array<std::uint64_t, kMaxLevel + 1> fetched{};
   };
-  if (std::size_t i = firstFailing(n, duplicated); i < n)
+  const auto duplicated = [&](Inserting& state, std::size_t i) {
+    if (i + kAhead < n) {
+      const int ahead = levels_[i + kAhead];
+      sets[ahead]->prefetch(lowers_[i + kAhead], state.fetched[ahead]);
+    }
+    return !sets[levels_[i]]->insert(lowers_[i], state.hints[levels_[i]]);
+  };
+  if (std::size_t i = firstFailingWith<Inserting>(n, duplicated); i < n)
     throw InputError(
         source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
 
@@ -455,7 +357,8 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
       const int mask = ~(cellWidth(int(level)) - 1);
       const glm::ivec3 aligned =
           glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
-      if (!absent.holds(level, aligned)) sets[level]->prefetch(aligned);
+      std::uint64_t any = 0;
+      if (!absent.holds(level, aligned)) sets[level]->prefetch(aligned, any);
     }
   };
   if (std::size_t i = firstFailingWith<AbsentCorners>(n,

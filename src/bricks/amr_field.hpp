@@ -12,6 +12,7 @@
 // periodicity, the file's level numbers), set by the reader; until then it only numbers levels
 // as above.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -39,6 +40,8 @@ struct CheckedCells {
   std::vector<glm::ivec3> lowers;
   std::vector<std::uint8_t> levels;
 };
+
+class LevelTiling;  // level_corner_set.hpp
 
 class AmrField {
  public:
@@ -99,6 +102,7 @@ class AmrField {
   LevelBoxes levelBoxes() const;
   CellBox checkedBounds(const LevelBoxes& boxes) const;
   void checkOverlaps(const LevelBoxes& boxes) const;
+  std::array<std::size_t, kMaxLevel + 1> tileRuns(const std::vector<LevelTiling>& tilings) const;
   void checkChannelShape(const Channel& channel) const;
   void checkChannelValues(const Channel& channel) const;
   void validateTransform() const;

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "amrstream/error.hpp"
+#include "util/huge_pages.hpp"
 
 namespace amrstream::formats {
 
@@ -73,9 +74,9 @@ void CellSink::presize(std::size_t cells) {
     if (cells != checked_->lowers.size()) differs(source_);
     return;
   }
-  lowers_.resize(cells);
-  levels_.resize(cells);
-  for (Channel& channel : channels_) channel.values.resize(cells);
+  resizeInHugePages(lowers_, cells);
+  resizeInHugePages(levels_, cells);
+  for (Channel& channel : channels_) resizeInHugePages(channel.values, cells);
 }
 
 void CellSink::place(std::size_t at, glm::ivec3 lower, std::uint8_t level) {

@@ -18,4 +18,13 @@ inline void adviseHugePages(void* data, std::size_t bytes) {
   if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
+// An empty vector sized to `count` elements whose pages fault in 2 MiB at a time as resize()
+// zeroes them: a single thread's zeroing of a large array is then bound by memory, not faults.
+template <typename Vector>
+void resizeInHugePages(Vector& array, std::size_t count) {
+  array.reserve(count);
+  adviseHugePages(array.data(), count * sizeof(typename Vector::value_type));
+  array.resize(count);
+}
+
 }  // namespace amrstream

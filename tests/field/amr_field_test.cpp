@@ -3,11 +3,14 @@
 
 #include "bricks/amr_field.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "input_error_of.hpp"
 #include "random_amr.hpp"
@@ -15,6 +18,7 @@
 namespace amrstream::bricks {
 namespace {
 
+using ::testing::AnyOf;
 using ::testing::HasSubstr;
 
 AmrField makeField(std::vector<glm::ivec3> lowers, std::vector<std::uint8_t> levels,
@@ -64,6 +68,60 @@ TEST(AmrField, RejectsFineCellInsideCoarseCell) {
   });
   EXPECT_THAT(error, HasSubstr("test.exa"));
   EXPECT_THAT(error, HasSubstr("overlaps the level-2 cell at 4,4,4"));
+}
+
+// Many cells in shuffled order: tiles of a level's set are shared by cells far apart in the
+// input, inserted by different threads. Every added duplicate or nested cell is found, and named
+// as the first failing cell in input order.
+TEST(AmrField, FindsDuplicatesAndNestedCellsAmongManyShuffledCells) {
+  testing::RandomAmrOptions options;
+  options.rootCells = glm::ivec3(6, 5, 4);
+  options.origin = glm::ivec3(-24, 8, -16);
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const AmrField field = testing::randomAmr(seed, options);
+    std::vector<glm::ivec3> lowers(field.lowers().begin(), field.lowers().end());
+    std::vector<std::uint8_t> levels(field.levels().begin(), field.levels().end());
+    std::vector<std::size_t> order(lowers.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::mt19937_64 random(seed);
+    std::shuffle(order.begin(), order.end(), random);
+    std::vector<glm::ivec3> shuffledLowers;
+    std::vector<std::uint8_t> shuffledLevels;
+    for (std::size_t i : order) {
+      shuffledLowers.push_back(lowers[i]);
+      shuffledLevels.push_back(levels[i]);
+    }
+    EXPECT_NO_THROW(makeField(shuffledLowers, shuffledLevels)) << "seed " << seed;
+
+    const std::size_t n = shuffledLowers.size();
+    const std::size_t copied = random() % n;
+    std::vector<glm::ivec3> twice = shuffledLowers;
+    std::vector<std::uint8_t> twiceLevels = shuffledLevels;
+    twice.insert(twice.begin() + n / 2, shuffledLowers[copied]);
+    twiceLevels.insert(twiceLevels.begin() + n / 2, shuffledLevels[copied]);
+    // Either of the two may be the one found already present.
+    const std::size_t original = copied < n / 2 ? copied : copied + 1;
+    const std::string error = testing::inputErrorOf([&] { makeField(twice, twiceLevels); });
+    EXPECT_THAT(error, HasSubstr("appears twice"));
+    EXPECT_THAT(error, AnyOf(HasSubstr(fmt::format("cell {} ", n / 2)),
+                             HasSubstr(fmt::format("cell {} ", original))))
+        << "seed " << seed;
+
+    std::size_t coarse = 0;
+    while (shuffledLevels[coarse] == 0) ++coarse;
+    const int width = 1 << shuffledLevels[coarse];
+    std::vector<glm::ivec3> nested = shuffledLowers;
+    std::vector<std::uint8_t> nestedLevels = shuffledLevels;
+    nested.push_back(shuffledLowers[coarse] + glm::ivec3(width - 1, 0, width / 2));
+    nestedLevels.push_back(0);
+    const glm::ivec3 at = shuffledLowers[coarse];
+    EXPECT_THAT(testing::inputErrorOf([&] { makeField(nested, nestedLevels); }),
+                HasSubstr(fmt::format("cell {} (level 0, lower corner {},{},{}) overlaps the "
+                                      "level-{} cell at {},{},{}",
+                                      n, at.x + width - 1, at.y, at.z + width / 2,
+                                      int(shuffledLevels[coarse]), at.x, at.y, at.z)))
+        << "seed " << seed;
+  }
 }
 
 TEST(AmrField, RejectsOverlapAcrossNegativeCoordinates) {

@@ -172,12 +172,8 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
     throw InputError(path.string(),
                      fmt::format("holds {} cells, more than the {} accepted", n, kMaxCells));
   refuseHoles(path, size, "the cells file");
-  lowers.reserve(n);
-  levels.reserve(n);
-  adviseHugePages(lowers.data(), n * sizeof(glm::ivec3));  // before resize() touches them
-  adviseHugePages(levels.data(), n);
-  lowers.resize(n);
-  levels.resize(n);
+  resizeInHugePages(lowers, n);
+  resizeInHugePages(levels, n);
   constexpr std::size_t kPiece = std::size_t(1) << 18;  // cells
   // The first cell with a level out of range is named, whichever piece comes first.
   std::atomic<std::size_t> firstBad{n};
@@ -247,7 +243,8 @@ void readScalarsInto(const std::string& name, const std::filesystem::path& path,
 std::vector<float> readScalars(const std::string& name, const std::filesystem::path& path,
                                const std::filesystem::path& cellsPath, std::size_t cells,
                                std::span<const glm::ivec3> lowers) {
-  std::vector<float> values(cells);
+  std::vector<float> values;
+  resizeInHugePages(values, cells);
   readScalarsInto(name, path, cellsPath, cells, lowers, values);
   return values;
 }
