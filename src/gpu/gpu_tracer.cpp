@@ -96,6 +96,9 @@ GpuTracer::GpuTracer(const vk::Context& ctx, Backend backend, const flow::Vector
       settings_(settings) {
   settings_.deepPositions = volume.deepPositions();
   settings_.dualValues = device_.dualValues.size() > 0;
+  settings_.rk4SampleLoop =
+      backend == Backend::Pipeline ||
+      settings.rk4SampleLoop.value_or(ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
   Stopwatch clock;
   kernel_ = createTraceKernel(ctx, backend, KernelProgram::Trace, settings_);
   const std::uint32_t spread = settings.spreadThreads.value_or(

@@ -44,28 +44,38 @@ void createLayouts(const vk::Context& ctx, TraceKernel& kernel) {
 // The kernels' specialization constants: 0 the workgroup size (compute kernels), 1 whether
 // samples test the previous region first (include/sampler.glsl), 2 the integrator
 // (include/line_round.glsl), 3 deep positions (include/sampler.glsl), 4 dual values
-// (include/sampler.glsl).
+// (include/sampler.glsl), 5 RK4's samples in a loop (include/line_round.glsl).
 struct SpecializationValues {
   std::uint32_t workgroupSize;
   VkBool32 useRegionHint;
   std::int32_t integrator;
   VkBool32 deepPositions;
   VkBool32 dualValues;
+  VkBool32 rk4SampleLoop;
 };
-constexpr std::array<VkSpecializationMapEntry, 5> kSpecializationEntries{
+constexpr std::array<VkSpecializationMapEntry, 6> kSpecializationEntries{
     {{0, offsetof(SpecializationValues, workgroupSize), sizeof(std::uint32_t)},
      {1, offsetof(SpecializationValues, useRegionHint), sizeof(VkBool32)},
      {2, offsetof(SpecializationValues, integrator), sizeof(std::int32_t)},
      {3, offsetof(SpecializationValues, deepPositions), sizeof(VkBool32)},
-     {4, offsetof(SpecializationValues, dualValues), sizeof(VkBool32)}}};
+     {4, offsetof(SpecializationValues, dualValues), sizeof(VkBool32)},
+     {5, offsetof(SpecializationValues, rk4SampleLoop), sizeof(VkBool32)}}};
+
+VkBool32 rk4SampleLoop(const vk::Context& ctx, const KernelSettings& settings) {
+  return settings.rk4SampleLoop.value_or(ctx.properties().deviceType ==
+                                         VK_PHYSICAL_DEVICE_TYPE_CPU);
+}
 
 void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
                            std::span<const std::uint32_t> code, const KernelSettings& settings) {
   kernel.workgroupSize =
       std::min(kPreferredWorkgroupSize, ctx.limits().maxComputeWorkGroupInvocations);
-  const SpecializationValues values{kernel.workgroupSize, settings.useRegionHint,
+  const SpecializationValues values{kernel.workgroupSize,
+                                    settings.useRegionHint,
                                     static_cast<std::int32_t>(settings.integrator),
-                                    settings.deepPositions, settings.dualValues.value_or(false)};
+                                    settings.deepPositions,
+                                    settings.dualValues.value_or(false),
+                                    rk4SampleLoop(ctx, settings)};
   const VkSpecializationInfo specialization{kSpecializationEntries.size(),
                                             kSpecializationEntries.data(), sizeof(values), &values};
   kernel.pipeline = vk::createComputePipeline(
@@ -76,9 +86,12 @@ void createComputePipeline(const vk::Context& ctx, TraceKernel& kernel,
 void createRayTracingPipeline(const vk::Context& ctx, TraceKernel& kernel,
                               std::span<const std::uint32_t> raygen,
                               const KernelSettings& settings) {
-  const SpecializationValues values{0, settings.useRegionHint,
+  const SpecializationValues values{0,
+                                    settings.useRegionHint,
                                     static_cast<std::int32_t>(settings.integrator),
-                                    settings.deepPositions, settings.dualValues.value_or(false)};
+                                    settings.deepPositions,
+                                    settings.dualValues.value_or(false),
+                                    VK_TRUE};
   const VkSpecializationInfo specialization{kSpecializationEntries.size() - 1,
                                             &kSpecializationEntries[1], sizeof(values), &values};
   vk::RayTracingPipeline created = vk::createProceduralRayTracingPipeline(

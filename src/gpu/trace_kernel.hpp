@@ -54,6 +54,10 @@ struct KernelSettings {
   // interpolant, buffer device addresses, and a quarter of the device's memory. Unset: on GPUs
   // only (on a CPU device such as lavapipe they take host memory, 8 times the values).
   std::optional<bool> dualValues;
+  // RK4's samples in one loop instead of written out (include/line_round.glsl): the same sums,
+  // one sample's code for the driver to compile instead of four. Unset: on CPU devices, where
+  // LLVM spends tens of seconds on the written-out step. The pipeline kernel always loops.
+  std::optional<bool> rk4SampleLoop;
   // Rounds of few lines spread them over the subgroups (GpuRounds::spreadLines): at most this
   // many invocations in all. Unset: residentThreads(backend) on GPUs, 0 (one invocation a line)
   // on a CPU device, whose lanes a spread leaves idle.

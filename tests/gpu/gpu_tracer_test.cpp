@@ -236,6 +236,35 @@ TEST_P(GpuTracerTest, DualValuesTraceAsTheCompactLayout) {
   expectGpuMatchesCpu(traces[1], flow::traceStreamlines(volume, seeds.points, options), volume);
 }
 
+// RK4's samples in one loop (the default on CPU devices such as lavapipe) or written out (on
+// GPUs): the same sums in the same order, so the same traces bit for bit, with dual cells as GPUs
+// read them and steps shortened to end on --max-time.
+TEST_P(GpuTracerTest, Rk4SampleLoopTracesAsTheWrittenOutStep) {
+  if (GetParam() == Backend::Pipeline) GTEST_SKIP() << "the pipeline kernel always loops";
+  testing::RandomAmrOptions layout;
+  layout.levels = 3;
+  const bricks::AmrField field = testing::randomAmr(
+      11, layout, [](glm::dvec3 p) { return glm::vec3(0.6 - 0.05 * p.y, 0.3 + 0.04 * p.x, 0.2); });
+  const flow::VectorVolume volume = volumeOf(field);
+  flow::TraceOptions options;
+  options.maxSteps = 150;
+  options.stepMode = flow::StepMode::Time;
+  options.stepSize = 0.3f;
+  options.maxTime = 20.0f;
+  const flow::SeedList seeds = seedsIn(volume, 40);
+  std::array<flow::TraceSet, 2> traces;
+  for (const bool loop : {false, true}) {
+    KernelSettings settings = settings_;
+    settings.rk4SampleLoop = loop;
+    settings.dualValues = true;
+    GpuTracer tracer(ctx(), GetParam(), volume, settings);
+    ASSERT_EQ(tracer.settings().rk4SampleLoop, loop);
+    traces[loop] = tracer.trace(seeds.points, options);
+  }
+  expectSameTraces(traces[1], traces[0]);
+  expectGpuMatchesCpu(traces[0], flow::traceStreamlines(volume, seeds.points, options), volume);
+}
+
 TEST_P(GpuTracerTest, MatchesCpuOnEveryTerminationReason) {
   testing::RandomAmrOptions layout;
   layout.levels = 3;

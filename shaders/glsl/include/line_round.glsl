@@ -91,6 +91,16 @@ struct StepOutcome {
 // its own step's registers.
 layout(constant_id = 2) const int kIntegrator = AMRSTREAM_INTEGRATOR_RK4;
 
+// RK4's samples in one loop (rk4Step) or written out (advanceLine), the same sums in the same
+// order either way. The pipeline kernel always loops (every traceRayEXT is a point the shader
+// resumes from); the compute kernels loop where specialization constant 5 says so: on CPU
+// devices, whose compiler then has one sample's code to compile instead of four.
+#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
+const bool kRk4SampleLoop = true;
+#else
+layout(constant_id = 5) const bool kRk4SampleLoop = false;
+#endif
+
 #include "euler_step.glsl"
 #include "rk2_step.glsl"
 #include "rk45_step.glsl"
@@ -186,7 +196,6 @@ StepPlan planStep(LineProgress line, float sign) {
   return StepPlan(h, scale, endsOnMaxTime);
 }
 
-#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
 // Classic fourth-order Runge-Kutta as one loop over its samples, so that the sampling code
 // (and its traceRayEXT) appears once; the same sums as the written-out form, in its order.
 StepOutcome rk4Step(vec3 x, VectorSample s, float h, float scale) {
@@ -212,13 +221,10 @@ StepOutcome rk4Step(vec3 x, VectorSample s, float h, float scale) {
   }
   return result;
 }
-#endif
 
-// One step of the kernel's integrator from x (the compute kernels' rk4 is in advanceLine).
+// One step of the kernel's integrator from x (rk4 written out is in advanceLine).
 StepOutcome integratorStep(vec3 x, VectorSample s, StepPlan plan) {
-#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
   if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) return rk4Step(x, s, plan.h, plan.scale);
-#endif
   return kIntegrator == AMRSTREAM_INTEGRATOR_EULER ? eulerStep(x, s, plan.h, plan.scale)
          : kIntegrator == AMRSTREAM_INTEGRATOR_RK2 ? rk2Step(x, s, plan.h, plan.scale)
                                                   : dormandPrinceStep(x, s, plan.h, plan.scale);
@@ -265,11 +271,7 @@ void advanceLine(uint thread) {
     if (pausesBeforeStep(line, taken)) break;
     StepPlan plan = planStep(line, sign);
     StepOutcome step;
-#ifdef AMRSTREAM_RK4_SAMPLE_LOOP
-    step = integratorStep(line.x, line.s, plan);
-    if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
-#else
-    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4) {
+    if (kIntegrator == AMRSTREAM_INTEGRATOR_RK4 && !kRk4SampleLoop) {
       // Classic fourth-order Runge-Kutta, the paper's: written out here, as the hot path. As a
       // step function like the others it costs the compute kernels speed
       // (docs/performance-notes.md, "Integrators beside rk4").
@@ -296,7 +298,6 @@ void advanceLine(uint thread) {
       step = integratorStep(line.x, line.s, plan);
       if ((reason = step.reason) != AMRSTREAM_REASON_RUNNING) break;
     }
-#endif
     if (kIntegrator != AMRSTREAM_INTEGRATOR_RK4) {  // rk4 takes h whole and keeps no next step
       line.nextStep = step.nextStep;
       plan.endsOnMaxTime = plan.endsOnMaxTime && step.step == plan.h;
