@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Configures and builds amrstream. Usage: scripts/build.sh [release|sanitize]
 #   release   optimised build in build/ (default)
-#   sanitize  debug build with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
+#   sanitize  debug build with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/,
+#             without the Python module
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=${1:-release}
 case "$mode" in
   release)  dir="$root/build";      flags=(-DCMAKE_BUILD_TYPE=Release) ;;
-  sanitize) dir="$root/build-asan"; flags=(-DCMAKE_BUILD_TYPE=Debug -DAMRSTREAM_SANITIZE=ON) ;;
+  # The Python module's and the ParaView plugin's tests run in the release build only.
+  sanitize) dir="$root/build-asan"; flags=(-DCMAKE_BUILD_TYPE=Debug -DAMRSTREAM_SANITIZE=ON
+                                           -DAMRSTREAM_PYTHON=OFF) ;;
   *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
 esac
 jobs=$(nproc 2>/dev/null || echo 2)
