@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -104,7 +103,8 @@ DeviceTraces::WindowPlan DeviceTraces::planWindow(const std::vector<std::size_t>
     plan.bytes += plan.points * arrayBytes_[array];
   }
 
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<shared::GatherRegion>> groups;
+  // The regions of round r's array arrays[k] are groups[r * arrays.size() + k].
+  std::vector<std::vector<shared::GatherRegion>> groups(rounds_.size() * arrays.size());
   const auto words = [](std::uint64_t bytes) { return static_cast<std::uint32_t>(bytes / 4); };
   for (std::size_t l = line; l < plan.endLine; ++l) {
     std::uint64_t point = offsets[l] - offsets[line];
@@ -112,17 +112,24 @@ DeviceTraces::WindowPlan DeviceTraces::planWindow(const std::vector<std::size_t>
       if (run.count == 0) continue;
       for (std::size_t k = 0; k < arrays.size(); ++k) {
         const std::uint64_t bytes = arrayBytes_[arrays[k]];
-        groups[{run.round, arrays[k]}].push_back({words(run.first * bytes),
-                                                  words(plan.base[k] + point * bytes),
-                                                  words(run.count * bytes), 0});
+        groups[run.round * arrays.size() + k].push_back({words(run.first * bytes),
+                                                         words(plan.base[k] + point * bytes),
+                                                         words(run.count * bytes), 0});
       }
       point += run.count;
     }
   }
-  for (const auto& [source, list] : groups) {
-    plan.groups.push_back({source.first, source.second, std::uint32_t(plan.regions.size()),
-                           std::uint32_t(list.size())});
-    plan.regions.insert(plan.regions.end(), list.begin(), list.end());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].empty()) continue;
+    std::uint32_t words = 0;
+    for (shared::GatherRegion& region : groups[g]) {
+      region.firstWord = words;
+      words += region.words;
+    }
+    plan.groups.push_back({g / arrays.size(), arrays[g % arrays.size()],
+                           std::uint32_t(plan.regions.size()), std::uint32_t(groups[g].size()),
+                           words});
+    plan.regions.insert(plan.regions.end(), groups[g].begin(), groups[g].end());
   }
   return plan;
 }
@@ -167,11 +174,20 @@ void DeviceTraces::gather(Fetcher& fetcher, const WindowPlan& plan) const {
         const WindowPlan::Group& group = plan.groups[g];
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather_->layout.get(), 0, 1,
                                 &sets[g], 0, nullptr);
-        for (std::uint32_t done = 0; done < group.count; done += most) {
-          const shared::GatherParams params{group.first + done};
+        // Per word where the mean run is shorter than a workgroup's words, else per run.
+        const bool perWord = group.words < std::uint64_t(group.count) * AMRSTREAM_GATHER_GROUP;
+        const std::uint64_t workgroups =
+            perWord ? (group.words + AMRSTREAM_GATHER_GROUP - 1) / AMRSTREAM_GATHER_GROUP
+                    : group.count;
+        for (std::uint64_t done = 0; done < workgroups; done += most) {
+          const shared::GatherParams params =
+              perWord
+                  ? shared::GatherParams{group.first, group.count,
+                                         std::uint32_t(done * AMRSTREAM_GATHER_GROUP), group.words}
+                  : shared::GatherParams{group.first + std::uint32_t(done), 0, 0, 0};
           vkCmdPushConstants(cmd, gather_->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                              sizeof(params), &params);
-          vkCmdDispatch(cmd, std::min(most, group.count - done), 1, 1);
+          vkCmdDispatch(cmd, std::uint32_t(std::min<std::uint64_t>(most, workgroups - done)), 1, 1);
         }
       }
       vk::memoryBarrier(cmd, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},

@@ -3,7 +3,8 @@
 // round's points where the tracer kept them (KeptRound), the lines and their runs on the host.
 // column() gathers the points of a window of lines (about windowBytes of one column, or one
 // whole line) from the rounds into pinned memory of the calling thread (gather_kernel.hpp: a
-// line's runs lie in several rounds, and there are too many for copy regions), converts
+// line's runs lie in several rounds, and there are too many for copy regions; one invocation
+// copies one word, whatever the runs' lengths), converts
 // positions to physical coordinates there as the host path does when it unpacks rounds, and
 // serves the window's lines from it; a writer that reads lines in order thus pulls the points
 // through a few pinned buffers instead of holding them all in host memory. Thread-safe: each
@@ -31,7 +32,9 @@ namespace amrstream::gpu {
 
 class DeviceTraces final : public flow::TraceView {
  public:
-  static constexpr std::uint64_t kWindowBytes = std::uint64_t(4) << 20;
+  // The .vtp writer hands its threads 1 MiB of an array's values in turn: a thread's next part
+  // lies far beyond its window, so a larger window would be gathered whole for a part of it.
+  static constexpr std::uint64_t kWindowBytes = std::uint64_t(1) << 20;
 
   // `lines` and `runs` as TraceAccumulator::takeLines gives them, `rounds` in the same order,
   // laid out as `layout` says. The context, the kernel and the volume must outlive the traces.
@@ -67,6 +70,7 @@ class DeviceTraces final : public flow::TraceView {
     struct Group {
       std::size_t round, array;
       std::uint32_t first, count;  // its regions
+      std::uint32_t words;         // theirs, all together
     };
     std::size_t firstLine = 0, endLine = 0;
     std::uint64_t points = 0, bytes = 0;

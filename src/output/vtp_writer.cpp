@@ -1,13 +1,14 @@
 #include "output/vtp_writer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -15,7 +16,6 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "output/buffered_writer.hpp"
 #include "output/vtk_xml_appended.hpp"
 
 namespace amrstream::output {
@@ -74,23 +74,31 @@ std::uint64_t writtenPoints(const Piece& piece) { return piece.count == 1 ? 2 : 
 std::vector<Piece> piecesOf(const flow::TraceView& traces, PeriodicLines periodicLines) {
   const flow::TraceSet& lines = traces.lines();
   const bool split = periodicLines == PeriodicLines::Split && lines.periodic.any();
+  if (!split) {
+    std::vector<Piece> pieces(lines.lineCount());
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, lines.lineCount(), 1 << 14),
+                      [&](const tbb::blocked_range<std::uint32_t>& range) {
+                        for (std::uint32_t line = range.begin(); line < range.end(); ++line)
+                          pieces[line] = {line, 0, lines.pointCount(line), true};
+                      });
+    std::erase_if(pieces, [](const Piece& piece) { return piece.count == 0; });
+    return pieces;
+  }
   std::vector<Piece> pieces;
   std::vector<double> scratch;
   for (std::uint32_t line = 0; line < lines.lineCount(); ++line) {
     const std::uint64_t count = lines.pointCount(line);
     if (count == 0) continue;
     std::uint64_t first = 0;
-    if (split) {
-      const std::span<const double> p = flow::exactPositions(traces, line, scratch);
-      const auto at = [&](std::uint64_t k) {
-        return glm::dvec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]);
-      };
-      for (std::uint64_t k = 1; k < count; ++k)
-        if (lines.periodic.wraps(at(k - 1), at(k))) {
-          pieces.push_back({line, first, k - first, false});
-          first = k;
-        }
-    }
+    const std::span<const double> p = flow::exactPositions(traces, line, scratch);
+    const auto at = [&](std::uint64_t k) {
+      return glm::dvec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]);
+    };
+    for (std::uint64_t k = 1; k < count; ++k)
+      if (lines.periodic.wraps(at(k - 1), at(k))) {
+        pieces.push_back({line, first, k - first, false});
+        first = k;
+      }
     pieces.push_back({line, first, count - first, true});
   }
   return pieces;
@@ -312,19 +320,22 @@ std::vector<AppendedArray> pointDataArrays(const flow::TraceView& traces, const 
   return arrays;
 }
 
-// The point ids of all lines in a row: 0, 1, 2, ...
-AppendedArray connectivityArray(std::uint64_t pointCount) {
-  return {"connectivity",
-          "Int64",
+// An array of `count` values of type T (VTK type `type`), value i being valueAt(i); made in
+// parallel. valueAt must be thread-safe.
+template <typename T, typename ValueAt>
+AppendedArray indexedArray(std::string name, std::string_view type, std::uint64_t count,
+                           ValueAt valueAt) {
+  return {std::move(name),
+          type,
           1,
-          pointCount * sizeof(std::int64_t),
+          count * sizeof(T),
           {},
-          [](std::uint64_t first, std::span<std::byte> out) {
-            // The ids whose bytes the range covers, then the range.
-            const std::uint64_t begin = first / sizeof(std::int64_t);
-            std::vector<std::int64_t> ids((first + out.size() + 7) / 8 - begin);
-            std::iota(ids.begin(), ids.end(), static_cast<std::int64_t>(begin));
-            std::memcpy(out.data(), reinterpret_cast<const std::byte*>(ids.data()) + first % 8,
+          [valueAt](std::uint64_t first, std::span<std::byte> out) {
+            const std::uint64_t begin = first / sizeof(T);
+            std::vector<T> values((first + out.size() + sizeof(T) - 1) / sizeof(T) - begin);
+            for (std::size_t i = 0; i < values.size(); ++i) values[i] = valueAt(begin + i);
+            std::memcpy(out.data(),
+                        reinterpret_cast<const std::byte*>(values.data()) + first % sizeof(T),
                         out.size());
           }};
 }
@@ -350,32 +361,25 @@ VtpCounts writeVtp(const std::filesystem::path& path, const flow::TraceView& tra
   const std::uint64_t lineCount = pieces.size();
   const bool unwrap = options.periodicLines == PeriodicLines::Unwrapped && lines.periodic.any();
 
-  using Out = BufferedWriter&;
   std::string vectorName;
   const std::vector<AppendedArray> pointArrays = pointDataArrays(traces, table, vectorName);
-  const AppendedArray reasons{
-      "ReasonForTermination", "Int32", 1, lineCount * sizeof(std::int32_t), [&](Out out) {
-        for (const Piece& piece : pieces)
-          out.put(piece.last ? lines.reasons[piece.line]
-                             : std::int32_t(AMRSTREAM_REASON_PERIODIC_WRAP));
-      }};
-  const AppendedArray seedIds{"SeedIds", "Int32", 1, lineCount * sizeof(std::int32_t),
-                              [&](Out out) {
-                                for (const Piece& piece : pieces)
-                                  out.put(static_cast<std::int32_t>(lines.seedIds[piece.line]));
-                              }};
+  const AppendedArray reasons =
+      indexedArray<std::int32_t>("ReasonForTermination", "Int32", lineCount, [&](std::uint64_t i) {
+        return pieces[i].last ? lines.reasons[pieces[i].line]
+                              : std::int32_t(AMRSTREAM_REASON_PERIODIC_WRAP);
+      });
+  const AppendedArray seedIds = indexedArray<std::int32_t>(
+      "SeedIds", "Int32", lineCount,
+      [&](std::uint64_t i) { return static_cast<std::int32_t>(lines.seedIds[pieces[i].line]); });
   const AppendedArray points = pointsArray(traces, table, unwrap);
   // Lines as VTK XML stores cells: the point ids of all lines in a row ("connectivity"), and for
   // each line the end of its ids ("offsets"; the first line starts at 0, which is not stored).
-  const AppendedArray connectivity = connectivityArray(pointCount);
-  const AppendedArray offsets{"offsets", "Int64", 1, lineCount * sizeof(std::int64_t),
-                              [&](Out out) {
-                                std::int64_t end = 0;
-                                for (const Piece& piece : pieces) {
-                                  end += static_cast<std::int64_t>(writtenPoints(piece));
-                                  out.put(end);
-                                }
-                              }};
+  const AppendedArray connectivity =
+      indexedArray<std::int64_t>("connectivity", "Int64", pointCount,
+                                 [](std::uint64_t i) { return static_cast<std::int64_t>(i); });
+  const AppendedArray offsets = indexedArray<std::int64_t>(
+      "offsets", "Int64", lineCount,
+      [&](std::uint64_t i) { return static_cast<std::int64_t>(table.firstWritten[i + 1]); });
 
   struct Section {
     std::string open;

@@ -123,6 +123,29 @@ TEST_P(DeviceTracesTest, DeepPositionsReadAsCollected) {
   expectSameTraces(*device, host);
 }
 
+// The endpoints of thousands of lines through whole windows: runs of one point, thousands in a
+// dispatch, copied a word per invocation.
+TEST_P(DeviceTracesTest, EndpointsOfManyLinesReadAsCollected) {
+  testing::RandomAmrOptions layout;
+  layout.levels = 2;
+  const bricks::AmrField field = testing::randomAmr(7, layout, [](glm::dvec3 p) {
+    return glm::vec3(0.2 + 0.01 * p.z, 0.3 * std::sin(0.2 * p.x), 0.1);
+  });
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"});
+  flow::TraceOptions options;
+  options.maxSteps = 40;
+  options.keepHistory = false;
+  const glm::dvec3 lo = flow::domainLower(volume), hi = flow::domainUpper(volume);
+  const flow::SeedList seeds = flow::randomSeedsInBox(lo, hi - 1e-3 * (hi - lo), 3000, 5);
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  const flow::TraceSet host = tracer.trace(seeds.points, options);
+  const std::unique_ptr<DeviceTraces> device = tracer.traceOnDevice(seeds.points, options);
+  ASSERT_NE(device, nullptr);
+  EXPECT_EQ(host.lineCount(), 6000u);
+  EXPECT_LE(host.pointCount(), 2 * host.lineCount());
+  expectSameTraces(*device, host);
+}
+
 // Lines whose every step might not fit the device's memory stay on the host.
 TEST_P(DeviceTracesTest, LinesThatMightNotFitAreNotKept) {
   const bricks::AmrField field =
