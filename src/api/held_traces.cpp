@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <memory>
+#include <thread>
+
 #include "api/device.hpp"
 #include "api/trace_memory.hpp"
 #include "flow/cpu_tracer.hpp"
@@ -18,8 +21,16 @@ namespace {
 struct GpuSession {
   GpuSession(vk::Context context, gpu::Backend backend, flow::VectorVolume& volume)
       : ctx(std::move(context)), tracer(ctx, backend, volume) {}
+  // Writing reads the kept points alone: the driver takes the volume's device memory back
+  // (a quarter of a second for a large one) on a thread of its own meanwhile.
+  void releaseVolumeInBackground() {
+    volumeRelease = std::jthread([volume = std::make_unique<gpu::VolumeBuffers>(
+                                      tracer.releaseVolume())]() mutable { volume.reset(); });
+  }
+
   vk::Context ctx;
   gpu::GpuTracer tracer;
+  std::jthread volumeRelease;  // declared last: joined before the tracer and the device go
 };
 
 // The CPU finishes the last lines of a trace with options.cpuTailLines from the host's values.
@@ -178,6 +189,7 @@ std::unique_ptr<HeldTraces> traceForWriting(
       sayRounds(session->tracer.lastRun(), log);
       say(log, fmt::format("points     kept on the device ({:.2f} GiB), copied out as written",
                            double(kept->deviceBytes()) / 0x1p30));
+      session->releaseVolumeInBackground();
       return std::make_unique<TracesOnDevice>(std::move(session), std::move(kept));
     }
   }

@@ -19,6 +19,7 @@
 #include "vk/commands.hpp"
 #include "vk/context.hpp"
 #include "vk/descriptor_pool.hpp"
+#include "vk/vk_error.hpp"
 
 namespace amrstream::gpu {
 
@@ -231,8 +232,20 @@ void GpuTracer::traceBatches(std::span<const shared::LineState> states,
   }
 }
 
+VolumeBuffers GpuTracer::releaseVolume() {
+  requireVolume();
+  AMRSTREAM_VK_CHECK(vkDeviceWaitIdle(ctx_->device()));
+  volumeReleased_ = true;
+  return std::move(device_);
+}
+
+void GpuTracer::requireVolume() const {
+  if (volumeReleased_) throw std::logic_error("the tracer's volume was released");
+}
+
 flow::LinePlan GpuTracer::planRun(std::span<const glm::dvec3> seeds,
                                   const flow::TraceOptions& options) {
+  requireVolume();
   lastRun_ = {};
   Stopwatch clock;
   flow::LinePlan plan = flow::planLines(*volume_, seeds, options.direction);
@@ -363,6 +376,7 @@ std::unique_ptr<flow::RoundTracer> GpuTracer::startRounds(std::span<const shared
 flow::RoundBlock GpuTracer::advanceRound(std::vector<shared::LineState>& lines,
                                          const flow::TraceOptions& options, std::uint32_t steps,
                                          bool order) {
+  requireVolume();
   if (lines.empty()) return {};
   const std::size_t channels = volume_->channelCount();
   const bool regionIds = volume_->deepPositions();
@@ -409,6 +423,7 @@ void GpuTracer::setStaging(std::size_t slots, std::uint64_t slotBytes) {
 }
 
 std::vector<std::int32_t> GpuTracer::locate(std::span<const glm::vec3> cellPoints) {
+  requireVolume();
   if (!probe_) probe_ = createTraceKernel(*ctx_, kernel_.backend, KernelProgram::LocateProbe);
   VectorProbe probe(*ctx_, *probe_, *volume_, device_);
   std::vector<flow::VectorSample> samples(cellPoints.size());

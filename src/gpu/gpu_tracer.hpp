@@ -108,6 +108,11 @@ class GpuTracer {
   // the domain and in empty space. Used by tests to compare point location with brute force.
   std::vector<std::int32_t> locate(std::span<const glm::vec3> cellPoints);
 
+  // Waits for the device, then hands over the volume's device buffers for the caller to free
+  // (on another thread, say): traces kept on the device stay readable, but the tracer traces and
+  // locates no more (std::logic_error).
+  VolumeBuffers releaseVolume();
+
   Backend backend() const { return kernel_.backend; }
   const TracerSetup& setup() const { return setup_; }
   // The kernels' settings, as the volume allowed them (dual values only where it holds them).
@@ -132,6 +137,8 @@ class GpuTracer {
   void setStaging(std::size_t slots, std::uint64_t slotBytes);
 
  private:
+  // Throws std::logic_error once releaseVolume() has run.
+  void requireVolume() const;
   // Runs each kernel once on no lines (GpuRounds::compileByDispatch).
   void compileByDispatch();
   // What a round costs, and the automatic budget's bounds on this device.
@@ -170,6 +177,7 @@ class GpuTracer {
   bool timeKernels_ = false;
   std::uint64_t traceWindow_ = DeviceTraces::kWindowBytes;
   TraceRunStats lastRun_;
+  bool volumeReleased_ = false;
 };
 
 }  // namespace amrstream::gpu

@@ -146,6 +146,27 @@ TEST_P(DeviceTracesTest, EndpointsOfManyLinesReadAsCollected) {
   expectSameTraces(*device, host);
 }
 
+// Once the tracer's volume is freed (as the command line does while it writes), the kept traces
+// still read as collected, and the tracer refuses to trace.
+TEST_P(DeviceTracesTest, KeptTracesOutliveTheVolumesDeviceBuffers) {
+  const bricks::AmrField field = testing::randomAmr(
+      3, {}, [](glm::dvec3 p) { return glm::vec3(0.3, 0.1 * std::sin(0.4 * p.x), 0.05); });
+  const flow::VectorVolume volume = flow::buildVectorVolume(field, {{"vx", "vy", "vz"}, "v"});
+  flow::TraceOptions options;
+  options.maxSteps = 60;
+  const glm::dvec3 lo = flow::domainLower(volume), hi = flow::domainUpper(volume);
+  const flow::SeedList seeds = flow::randomSeedsInBox(lo, hi - 1e-3 * (hi - lo), 200, 9);
+  GpuTracer tracer(ctx(), GetParam(), volume);
+  tracer.setTraceWindow(400);
+  const flow::TraceSet host = tracer.trace(seeds.points, options);
+  const std::unique_ptr<DeviceTraces> device = tracer.traceOnDevice(seeds.points, options);
+  ASSERT_NE(device, nullptr);
+  { const VolumeBuffers freed = tracer.releaseVolume(); }
+  expectSameTraces(*device, host);
+  EXPECT_THROW(tracer.trace(seeds.points, options), std::logic_error);
+  EXPECT_THROW(tracer.releaseVolume(), std::logic_error);
+}
+
 // Lines whose every step might not fit the device's memory stay on the host.
 TEST_P(DeviceTracesTest, LinesThatMightNotFitAreNotKept) {
   const bricks::AmrField field =
