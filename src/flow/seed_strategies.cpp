@@ -163,8 +163,13 @@ SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::d
                             std::size_t count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   SeedList seeds;
+  seeds.points.reserve(count);
   const std::size_t maxDraws = 1000 * std::max<std::size_t>(count, 1);
   std::size_t draws = 0;
+  // Points are drawn in order and tested in parallel, a batch at a time; the seeds are the first
+  // `count` drawn inside a cell, as if tested one by one.
+  std::vector<glm::dvec3> batch;
+  std::vector<char> inside;
   while (seeds.points.size() < count) {
     if (draws == maxDraws)
       throw InputError("random seeds",
@@ -173,11 +178,21 @@ SeedList randomSeedsInCells(const VectorVolume& volume, glm::dvec3 lower, glm::d
                                    "holes; give a {{seed_box}} around the data or {{seed_density}}",
                                    seeds.points.size(), draws, lower.x, lower.y, lower.z, upper.x,
                                    upper.y, upper.z));
-    ++draws;
-    const glm::dvec3 t(unitRandom(rng), unitRandom(rng), unitRandom(rng));
-    const glm::dvec3 p = lower + t * (upper - lower);
-    if (!insideACell(volume, volume.transform.toCellUnits(p))) continue;
-    seeds.points.push_back(p);
+    const std::size_t missing = count - seeds.points.size();
+    batch.resize(std::min(maxDraws - draws, std::max<std::size_t>(missing + missing / 4, 1024)));
+    for (glm::dvec3& p : batch) {
+      const glm::dvec3 t(unitRandom(rng), unitRandom(rng), unitRandom(rng));
+      p = lower + t * (upper - lower);
+    }
+    inside.resize(batch.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 1024), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i < r.end(); ++i)
+        inside[i] = insideACell(volume, volume.transform.toCellUnits(batch[i]));
+    });
+    for (std::size_t i = 0; i < batch.size() && seeds.points.size() < count; ++i) {
+      ++draws;
+      if (inside[i]) seeds.points.push_back(batch[i]);
+    }
   }
   seeds.origin = [](std::size_t i) { return fmt::format("random seed #{}", i); };
   return seeds;
