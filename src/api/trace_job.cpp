@@ -21,6 +21,8 @@
 #include "output/seed_file_writer.hpp"
 #include "output/vtk_compression.hpp"
 #include "output/vtp_writer.hpp"
+#include "util/huge_pages.hpp"
+#include "util/parallel_copy.hpp"
 #include "util/peak_memory.hpp"
 #include "util/stopwatch.hpp"
 
@@ -215,7 +217,11 @@ void chooseJobSeeds(const TraceJob& job, DeferredDataset& data, bool deferred,
   if (deferred && !density.empty() && !data.cells->findChannel(density)) {
     data.catalog.require(density);  // listing every channel when it is absent
     data.channels(density, [&](std::span<const float> values) {
-      data.cells->addChannel({density, {values.begin(), values.end()}});
+      // A copy on all cores, its pages faulted in 2 MiB at a time.
+      std::vector<float> copy;
+      resizeInHugePages(copy, values.size());
+      copyParallel(std::as_bytes(values), std::as_writable_bytes(std::span(copy)));
+      data.cells->addChannel({density, std::move(copy)});
     });
   }
   seeding.seeds = chooseSeeds(job.seeds, domainOf(layout), data.cells.get(), seeding.description);
