@@ -19,8 +19,10 @@ namespace {
 
 // A GPU backend's device, open with the volume on it.
 struct GpuSession {
-  GpuSession(vk::Context context, gpu::Backend backend, flow::VectorVolume& volume)
-      : ctx(std::move(context)), tracer(ctx, backend, volume) {}
+  GpuSession(vk::Context context, gpu::Backend backend, flow::VectorVolume& volume,
+             std::uint64_t particleSteps)
+      : ctx(std::move(context)),
+        tracer(ctx, backend, volume, gpu::runKernelSettings(backend, volume, particleSteps)) {}
   // Writing reads the kept points alone: the driver takes the volume's device memory back
   // (a quarter of a second for a large one) on a thread of its own meanwhile.
   void releaseVolumeInBackground() {
@@ -38,13 +40,21 @@ HostValues hostValuesFor(const flow::TraceOptions& options, HostValues asked) {
   return options.cpuTailLines > 0 ? HostValues::Keep : asked;
 }
 
-// Opens the device for a GPU backend and uploads the volume, saying so on `log`.
+// The most steps the seeds' lines can take in all.
+std::uint64_t mostParticleSteps(std::size_t seeds, const flow::TraceOptions& options) {
+  const std::uint64_t lines = options.direction == flow::Direction::Both ? 2 * seeds : seeds;
+  return lines * options.maxSteps;
+}
+
+// Opens the device for a GPU backend and uploads the volume for tracing `seeds`, saying so on
+// `log`.
 std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const BackendChoice& choice,
-                                       flow::VectorVolume& volume, TraceReport& t,
+                                       flow::VectorVolume& volume, std::size_t seeds,
+                                       const flow::TraceOptions& options, TraceReport& t,
                                        HostValues hostValues, const Log& log) {
   Stopwatch clock;
-  auto session =
-      std::make_unique<GpuSession>(createContext(request, choice), choice.backend, volume);
+  auto session = std::make_unique<GpuSession>(createContext(request, choice), choice.backend,
+                                              volume, mostParticleSteps(seeds, options));
   if (hostValues == HostValues::Release) {
     decltype(volume.values)().swap(volume.values);
     decltype(volume.channelValues)().swap(volume.channelValues);
@@ -60,10 +70,11 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const Back
   t.structureSeconds = setup.structureSeconds;
   t.kernelSeconds = setup.pipelineSeconds;
   say(log,
-      fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s, structure "
-                  "{:.2f} s, kernels {:.2f} s]",
-                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds, setup.structureSeconds,
-                  setup.pipelineSeconds));
+      fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s{}, "
+                  "structure {:.2f} s, kernels {:.2f} s]",
+                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds,
+                  session->tracer.settings().dualValues.value_or(false) ? " with dual cells" : "",
+                  setup.structureSeconds, setup.pipelineSeconds));
   return session;
 }
 
@@ -146,8 +157,8 @@ flow::StoredTraces traceSeeds(const BackendRequest& request, flow::VectorVolume&
   checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return traceOnTheCpu(volume, seeds, options, progress, t, log);
-  const std::unique_ptr<GpuSession> session =
-      openDevice(request, choice, volume, t, hostValuesFor(options, hostValues), log);
+  const std::unique_ptr<GpuSession> session = openDevice(
+      request, choice, volume, seeds.size(), options, t, hostValuesFor(options, hostValues), log);
   return traceOnHost(session->tracer, session->ctx, seeds, options, progress, t, log);
 }
 
@@ -164,8 +175,8 @@ std::unique_ptr<HeldTraces> traceForWriting(
   checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return std::make_unique<HostTraces>(traceOnTheCpu(volume, seeds, options, progress, t, log));
-  std::unique_ptr<GpuSession> session =
-      openDevice(request, choice, volume, t, hostValuesFor(options, hostValues), log);
+  std::unique_ptr<GpuSession> session = openDevice(request, choice, volume, seeds.size(), options,
+                                                   t, hostValuesFor(options, hostValues), log);
   const bool software = session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool deviceStore = store == TraceStore::Device || (store == TraceStore::Auto && !software);
   if (deviceStore && options.cpuTailLines > 0)

@@ -60,6 +60,13 @@ struct TraceRunStats {
   double tailSeconds = 0.0;
 };
 
+// Each backend's kernel settings for a run of at most `particleSteps` steps in all: dual cells
+// (KernelSettings::dualValues) only where the tracing they save pays for laying them out and
+// freeing them, which takes about 0.6 s for 9 GB on an H100 (docs/performance-notes.md,
+// "2026-12-07 — Dual cells only where they pay").
+KernelSettings runKernelSettings(Backend backend, const flow::VectorVolume& volume,
+                                 std::uint64_t particleSteps);
+
 class GpuTracer {
  public:
   // The context must have requiredCapabilities(backend) and outlive the tracer; `volume` must

@@ -236,6 +236,25 @@ TEST_P(GpuTracerTest, DualValuesTraceAsTheCompactLayout) {
   expectGpuMatchesCpu(traces[1], flow::traceStreamlines(volume, seeds.points, options), volume);
 }
 
+// Dual cells are laid out for a run only where it takes enough steps per byte of them: 10 for
+// the compute kernels, half a step for the ray tracing pipeline, whose samples gain more.
+TEST(RunKernelSettingsTest, DualCellsOnlyWhereTheRunsStepsPayForThem) {
+  const flow::VectorVolume volume = volumeOf(rotationAboutZ(0.02, 0.0));
+  const double bytes = double(VolumeBuffers::dualValueBytes(volume));
+  ASSERT_GT(bytes, 0.0);
+  const auto dualFor = [&](Backend backend, double stepsPerByte) {
+    return runKernelSettings(backend, volume, std::uint64_t(stepsPerByte * bytes)).dualValues;
+  };
+  for (const Backend backend : {Backend::Compute, Backend::RayQuery}) {
+    EXPECT_EQ(dualFor(backend, 0.0), false);
+    EXPECT_EQ(dualFor(backend, 0.6), false);
+    EXPECT_EQ(dualFor(backend, 9.0), false);
+    EXPECT_EQ(dualFor(backend, 11.0), std::nullopt);  // the device's default
+  }
+  EXPECT_EQ(dualFor(Backend::Pipeline, 0.4), false);
+  EXPECT_EQ(dualFor(Backend::Pipeline, 0.6), std::nullopt);
+}
+
 // RK4's samples in one loop (the default on CPU devices such as lavapipe) or written out (on
 // GPUs): the same sums in the same order, so the same traces bit for bit, with dual cells as GPUs
 // read them and steps shortened to end on --max-time.

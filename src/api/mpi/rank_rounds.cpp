@@ -24,7 +24,9 @@ void startRankTracer(RankTracer& tracer, PreparedJob::Impl& input, std::size_t l
   }
   Stopwatch setup;
   tracer.ctx.emplace(createContext(input.backend, choice));
-  tracer.gpu.emplace(*tracer.ctx, choice.backend, input.volume());
+  tracer.gpu.emplace(*tracer.ctx, choice.backend, input.volume(),
+                     gpu::runKernelSettings(choice.backend, input.volume(),
+                                            std::uint64_t(lineCount) * input.options.maxSteps));
   tracer.gpu->timeKernels(true);
   input.report.device = tracer.ctx->deviceName();
   input.report.setupSeconds = setup.seconds();
