@@ -128,10 +128,15 @@ flow::SeedList seedsAsAsked(const SeedRequest& request, const Domain& domain,
   hi = glm::min(hi, domain.upper - 1e-4 * domain.finestWidth);
   if (!request.grid.empty()) {
     if (request.grid.size() != 3) throw settingError("seed_grid", "needs 3 counts NX,NY,NZ");
-    const glm::ivec3 counts(request.grid[0], request.grid[1], request.grid[2]);
+    glm::ivec3 counts(request.grid[0], request.grid[1], request.grid[2]);
     if (glm::any(glm::lessThan(counts, glm::ivec3(1))))
       throw settingError("seed_grid", "every count must be at least 1");
     description = fmt::format("a {}x{}x{} grid in a box", counts.x, counts.y, counts.z);
+    if (domain.planar && counts.z > 1) {
+      // Its layers would all land on the data's plane, each seed NZ times.
+      counts.z = 1;
+      description += " (one layer: the data are 2D)";
+    }
     return flow::seedsOnGrid(lo, hi, counts);
   }
   description = fmt::format("random (seed {}) in {}", request.seed,

@@ -35,6 +35,15 @@ def test_a_planar_rotation_is_traced_along_circles_in_its_plane():
         np.testing.assert_allclose(radius, radius[0], rtol=1e-3)
 
 
+def test_a_seed_grid_on_2d_data_has_one_layer():
+    """Its NZ layers would all land on the plane: each point once, on the plane."""
+    field = amrstream.prepare(planar_rotation(), vector="vx,vy")
+    seeds = amrstream.seeds_grid(field, (4, 5, 3))
+    assert seeds.shape == (20, 3)
+    assert len(np.unique(seeds, axis=0)) == 20
+    assert np.all(seeds[:, 2] == 0.0)
+
+
 def test_a_three_dimensional_vector_needs_three_channels():
     i = np.arange(8)
     corners = np.stack(np.meshgrid(i, i, i, indexing="ij"), axis=-1).reshape(-1, 3)
