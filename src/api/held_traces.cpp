@@ -51,10 +51,12 @@ std::uint64_t mostParticleSteps(std::size_t seeds, const flow::TraceOptions& opt
 std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const BackendChoice& choice,
                                        flow::VectorVolume& volume, std::size_t seeds,
                                        const flow::TraceOptions& options, TraceReport& t,
-                                       HostValues hostValues, const Log& log) {
+                                       HostValues hostValues, const Log& log,
+                                       std::optional<vk::Context> opened = std::nullopt) {
   Stopwatch clock;
-  auto session = std::make_unique<GpuSession>(createContext(request, choice), choice.backend,
-                                              volume, mostParticleSteps(seeds, options));
+  auto session =
+      std::make_unique<GpuSession>(opened ? std::move(*opened) : createContext(request, choice),
+                                   choice.backend, volume, mostParticleSteps(seeds, options));
   if (hostValues == HostValues::Release) {
     decltype(volume.values)().swap(volume.values);
     decltype(volume.channelValues)().swap(volume.channelValues);
@@ -165,18 +167,22 @@ flow::StoredTraces traceSeeds(const BackendRequest& request, flow::VectorVolume&
 std::unique_ptr<HeldTraces> traceForWriting(
     const BackendRequest& request, flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
     const flow::TraceOptions& options, TraceStore store, const flow::TraceProgress& progress,
-    TraceReport* report, HostValues hostValues, const Log& log) {
+    TraceReport* report, HostValues hostValues, const Log& log, DeviceOpening* opening) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
   Stopwatch choosing;
-  const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
+  std::optional<DeviceOpening::Opened> opened;
+  if (opening) opened = opening->take(log);
+  const BackendChoice choice =
+      opened ? opened->choice : chooseBackend(request, BackendUse::Trace, log);
   t.chooseSeconds = choosing.seconds();
   // Before the device may free the volume's host values, which the check's sample reads.
   checkHostTracesFit(volume, seeds, options);
   if (choice.backend == gpu::Backend::Cpu)
     return std::make_unique<HostTraces>(traceOnTheCpu(volume, seeds, options, progress, t, log));
   std::unique_ptr<GpuSession> session = openDevice(request, choice, volume, seeds.size(), options,
-                                                   t, hostValuesFor(options, hostValues), log);
+                                                   t, hostValuesFor(options, hostValues), log,
+                                                   opened ? std::move(opened->ctx) : std::nullopt);
   const bool software = session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool deviceStore = store == TraceStore::Device || (store == TraceStore::Auto && !software);
   if (deviceStore && options.cpuTailLines > 0)

@@ -9,6 +9,7 @@
 #include "amrstream/log.hpp"
 #include "amrstream/trace_job.hpp"
 #include "amrstream/tracing.hpp"
+#include "api/device_opening.hpp"
 #include "flow/stored_traces.hpp"
 #include "flow/trace_options.hpp"
 #include "flow/trace_view.hpp"
@@ -40,10 +41,12 @@ flow::StoredTraces traceSeeds(const BackendRequest& request, flow::VectorVolume&
 
 // As traceSeeds(), the points kept where `store` says: on the device where a GPU backend traces
 // and TraceStore::Device is asked (or Auto, on a GPU) and every line's maxSteps + 1 points fit,
-// else in host memory. `volume` must outlive the result.
+// else in host memory. `volume` must outlive the result. With `opening`, the backend and its
+// device are those it opened for `request`.
 std::unique_ptr<HeldTraces> traceForWriting(
     const BackendRequest& request, flow::VectorVolume& volume, std::span<const glm::dvec3> seeds,
     const flow::TraceOptions& options, TraceStore store, const flow::TraceProgress& progress = {},
-    TraceReport* report = nullptr, HostValues hostValues = HostValues::Keep, const Log& log = {});
+    TraceReport* report = nullptr, HostValues hostValues = HostValues::Keep, const Log& log = {},
+    DeviceOpening* opening = nullptr);
 
 }  // namespace amrstream

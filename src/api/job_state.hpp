@@ -23,7 +23,8 @@ struct PreparedJob::Impl {
   std::string seedDescription;
   flow::TraceOptions options;  // as checked against the field
   BackendRequest backend;
-  TraceReport report;           // filled by tracing
+  std::unique_ptr<DeviceOpening> opening;  // its device, opened while the input was read
+  TraceReport report;                      // filled by tracing
   std::uint64_t cellCount = 0;  // of the input (the field's volume may hold periodic images)
 
   flow::VectorVolume& volume() { return volumeOf(field); }

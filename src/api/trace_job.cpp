@@ -378,8 +378,10 @@ TracedLines trace(PreparedJob& job, const TraceRunOptions& options, const Report
     reporter.advance("tracing", done * seeds / std::max<std::size_t>(1, lines), seeds);
   };
   auto traced = std::make_unique<TracedLines::Impl>(p.field);
-  traced->held = traceForWriting(p.backend, p.volume(), p.seeds.points, p.options, options.store,
-                                 progress, &p.report, options.hostValues, reporter.log);
+  traced->held =
+      traceForWriting(p.backend, p.volume(), p.seeds.points, p.options, options.store, progress,
+                      &p.report, options.hostValues, reporter.log, p.opening.get());
+  p.opening.reset();
   const TraceReport& r = p.report;
   reporter.lap("tracing",
                {{"backend choice", r.chooseSeconds},
@@ -411,7 +413,11 @@ TraceJobSummary runTraceJob(const TraceJob& job, const TraceOutput& output, Trac
   TraceJobSummary summary;
   double tracesFreed = 0.0;
   {
+    // The device opens while the input is read and the volume built.
+    std::unique_ptr<DeviceOpening> opening;
+    if (job.backend.backend != "cpu") opening = std::make_unique<DeviceOpening>(job.backend);
     PreparedJob prepared = prepare(job, {true, KeepDataset::No}, reporter);
+    prepared.impl().opening = std::move(opening);
     const bool stagePeak = resetStagePeak();
     // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
     TracedLines traced = trace(prepared, {store, HostValues::Release}, reporter);
