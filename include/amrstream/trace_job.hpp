@@ -47,6 +47,9 @@ struct PrepareOptions {
   // Whether the field keeps the dataset (rendering and the viewer read its channels). Without
   // it, an .exa's channels are read one at a time as the field takes them.
   KeepDataset dataset = KeepDataset::No;
+  // Whether trace() follows: the tracing backend's device is then opened on a thread of its own
+  // while the input is read and the volume built.
+  bool openDevice = false;
 };
 
 // A job made ready to trace. Move-only.

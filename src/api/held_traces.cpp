@@ -52,7 +52,8 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const Back
                                        flow::VectorVolume& volume, std::size_t seeds,
                                        const flow::TraceOptions& options, TraceReport& t,
                                        HostValues hostValues, const Log& log,
-                                       std::optional<vk::Context> opened = std::nullopt) {
+                                       std::optional<vk::Context> opened = std::nullopt,
+                                       double openedWait = 0.0) {
   Stopwatch clock;
   auto session =
       std::make_unique<GpuSession>(opened ? std::move(*opened) : createContext(request, choice),
@@ -64,7 +65,7 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const Back
     decltype(volume.vectorGradients)().swap(volume.vectorGradients);
     decltype(volume.channelGradients)().swap(volume.channelGradients);
   }
-  t.setupSeconds = clock.seconds();
+  t.setupSeconds = openedWait + clock.seconds();
   t.backend = gpu::backendName(choice.backend);
   t.device = session->ctx.deviceName();
   const gpu::TracerSetup& setup = session->tracer.setup();
@@ -170,19 +171,24 @@ std::unique_ptr<HeldTraces> traceForWriting(
     TraceReport* report, HostValues hostValues, const Log& log, DeviceOpening* opening) {
   TraceReport local;
   TraceReport& t = report ? *report : local;
-  Stopwatch choosing;
+  // The wait for a device opened meanwhile is the device setup's.
+  Stopwatch waiting;
   std::optional<DeviceOpening::Opened> opened;
   if (opening) opened = opening->take(log);
+  const double openedWait = waiting.seconds();
+  Stopwatch choosing;
   const BackendChoice choice =
       opened ? opened->choice : chooseBackend(request, BackendUse::Trace, log);
   t.chooseSeconds = choosing.seconds();
   // Before the device may free the volume's host values, which the check's sample reads.
   checkHostTracesFit(volume, seeds, options);
-  if (choice.backend == gpu::Backend::Cpu)
+  if (choice.backend == gpu::Backend::Cpu) {
+    t.chooseSeconds += openedWait;
     return std::make_unique<HostTraces>(traceOnTheCpu(volume, seeds, options, progress, t, log));
-  std::unique_ptr<GpuSession> session = openDevice(request, choice, volume, seeds.size(), options,
-                                                   t, hostValuesFor(options, hostValues), log,
-                                                   opened ? std::move(opened->ctx) : std::nullopt);
+  }
+  std::unique_ptr<GpuSession> session = openDevice(
+      request, choice, volume, seeds.size(), options, t, hostValuesFor(options, hostValues), log,
+      opened ? std::move(opened->ctx) : std::nullopt, openedWait);
   const bool software = session->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool deviceStore = store == TraceStore::Device || (store == TraceStore::Auto && !software);
   if (deviceStore && options.cpuTailLines > 0)

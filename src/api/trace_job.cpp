@@ -275,6 +275,9 @@ Field buildJobField(const TraceJob& job, ReadInput& read, FieldPlan& plan, Input
 PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, InputShare* share,
                        const Reporter& reporter) {
   const Log& log = reporter.log;
+  std::unique_ptr<DeviceOpening> opening;
+  if (options.openDevice && options.seeds && !share && job.backend.backend != "cpu")
+    opening = std::make_unique<DeviceOpening>(job.backend);
   const bool deferred = options.dataset == KeepDataset::No && options.seeds && !share;
   ReadInput read = readInput(job, deferred, share);
   FieldPlan plan = planField(read.data.catalog, read.data.cells->info(), job.field);
@@ -292,6 +295,7 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
   PreparedJob::Impl& p = *prepared;
   p.cellCount = cellCount;
   p.backend = job.backend;
+  p.opening = std::move(opening);
   p.seeds = std::move(seeding.seeds);
   p.seedDescription = std::move(seeding.description);
   const flow::VectorVolume& volume = p.volume();
@@ -413,11 +417,7 @@ TraceJobSummary runTraceJob(const TraceJob& job, const TraceOutput& output, Trac
   TraceJobSummary summary;
   double tracesFreed = 0.0;
   {
-    // The device opens while the input is read and the volume built.
-    std::unique_ptr<DeviceOpening> opening;
-    if (job.backend.backend != "cpu") opening = std::make_unique<DeviceOpening>(job.backend);
-    PreparedJob prepared = prepare(job, {true, KeepDataset::No}, reporter);
-    prepared.impl().opening = std::move(opening);
+    PreparedJob prepared = prepare(job, {true, KeepDataset::No, true}, reporter);
     const bool stagePeak = resetStagePeak();
     // Nothing after tracing reads the volume's values: a GPU backend may drop the host copy.
     TracedLines traced = trace(prepared, {store, HostValues::Release}, reporter);

@@ -34,7 +34,7 @@ void runRender(const RenderCommandOptions& o) {
   const Console console;
   {
     const bool tracing = o.traces.empty();
-    PreparedJob job = prepare(o.job, {tracing, KeepDataset::Yes}, console);
+    PreparedJob job = prepare(o.job, {tracing, KeepDataset::Yes, tracing}, console);
     Traces traces;
     if (tracing) {
       traces = trace(job, {}, console).assemble();
