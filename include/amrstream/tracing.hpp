@@ -28,6 +28,7 @@ struct TraceReport {
   double uploadSeconds = 0.0;     //   the volume's buffers
   double structureSeconds = 0.0;  //   the region tree or acceleration structure
   double kernelSeconds = 0.0;     //   compiling the kernels (pipelines)
+  bool dualCells = false;         // whether the kernels read the vector as dual cells
   double traceSeconds = 0.0;
   std::uint64_t lines = 0, steps = 0;  // traced
 };

@@ -72,12 +72,12 @@ std::unique_ptr<GpuSession> openDevice(const BackendRequest& request, const Back
   t.uploadSeconds = setup.uploadSeconds;
   t.structureSeconds = setup.structureSeconds;
   t.kernelSeconds = setup.pipelineSeconds;
-  say(log,
-      fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s{}, "
-                  "structure {:.2f} s, kernels {:.2f} s]",
-                  t.backend, t.device, t.setupSeconds, setup.uploadSeconds,
-                  session->tracer.settings().dualValues.value_or(false) ? " with dual cells" : "",
-                  setup.structureSeconds, setup.pipelineSeconds));
+  t.dualCells = session->tracer.settings().dualValues.value_or(false);
+  say(log, fmt::format("tracing    backend {} on {} [device setup {:.2f} s: upload {:.2f} s{}, "
+                       "structure {:.2f} s, kernels {:.2f} s]",
+                       t.backend, t.device, t.setupSeconds, setup.uploadSeconds,
+                       t.dualCells ? " with dual cells" : "", setup.structureSeconds,
+                       setup.pipelineSeconds));
   return session;
 }
 

@@ -31,7 +31,8 @@ void writeTraceJson(const std::filesystem::path& path, const TraceJobSummary& su
                                 {"seconds", r.setupSeconds},
                                 {"upload_seconds", r.uploadSeconds},
                                 {"structure_seconds", r.structureSeconds},
-                                {"kernel_seconds", r.kernelSeconds}}},
+                                {"kernel_seconds", r.kernelSeconds},
+                                {"dual_cells", r.dualCells}}},
                               {"wall_seconds", clock.wallSeconds()},
                               {"stages", stages}};
   const std::string text = doc.dump(2) + "\n";

@@ -17,6 +17,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 namespace fs = std::filesystem;
 
 class TraceJson : public amrstream::testing::TempDirTest {
@@ -59,6 +60,24 @@ TEST_F(TraceJson, TheStagesAddUpToTheWholeCommand) {
   EXPECT_GT(doc.at("steps").get<double>(), 4000.0);
   EXPECT_THAT(r.output, HasSubstr("(4,000 polylines, "));
   EXPECT_THAT(r.output, HasSubstr("\nwall       "));
+}
+
+// On a GPU backend the device setup's parts are there, the device opened while the input was
+// read; lavapipe is a CPU device, whose kernels read compact values, not dual cells.
+TEST_F(TraceJson, AGpuBackendsDeviceSetup) {
+  const amrstream::testing::Outcome r = amrstream::testing::runAmrstream(
+      "trace builtin:rotation --count 64 --backend compute --out " + path("t.vtp") + " --json " +
+      path("t.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(path("t.json"));
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  EXPECT_EQ(doc.at("backend"), "compute");
+  const nlohmann::json& setup = doc.at("device_setup");
+  EXPECT_EQ(setup.at("dual_cells"), false);
+  EXPECT_GE(setup.at("seconds").get<double>(), setup.at("upload_seconds").get<double>() +
+                                                   setup.at("structure_seconds").get<double>() +
+                                                   setup.at("kernel_seconds").get<double>());
+  EXPECT_THAT(r.output, Not(HasSubstr("with dual cells")));
 }
 
 TEST_F(TraceJson, OnlyAJsonFileAndOneProcessAreAccepted) {
