@@ -57,6 +57,10 @@ struct PathlineReport {
   // the device and reading the samples.
   std::size_t probeCalls = 0;
   double probeWriteSeconds = 0.0, probeDeviceSeconds = 0.0, probeReadSeconds = 0.0;
+  // GPU backends, within traceSeconds: the particles' steps on the device, in rounds of
+  // dispatches, waiting for them and storing their points on the host.
+  std::size_t stepRounds = 0, stepDispatches = 0;
+  double stepDeviceSeconds = 0.0, stepCollectSeconds = 0.0;
   std::size_t snapshotsUsed = 0;
   std::uint64_t cellsRead = 0;
   double readSeconds = 0.0, buildSeconds = 0.0, traceSeconds = 0.0, waitSeconds = 0.0;

@@ -21,6 +21,7 @@
 #include "api/traces_impl.hpp"
 #include "flow/pathline_tracer.hpp"
 #include "formats/snapshot_time.hpp"
+#include "gpu/pathline_stepper.hpp"
 #include "gpu/vector_probe.hpp"
 #include "util/host_memory.hpp"
 #include "util/host_threads.hpp"
@@ -87,10 +88,12 @@ std::pair<std::size_t, std::size_t> snapshotsUsed(std::span<const SnapshotFile> 
 struct GpuSampling {
   vk::Context ctx;
   gpu::TraceKernel kernel;
+  gpu::PathlineStepper stepper;
 
   GpuSampling(const BackendRequest& request, const BackendChoice& choice)
       : ctx(createContext(request, choice)),
-        kernel(gpu::createTraceKernel(ctx, choice.backend, gpu::KernelProgram::LocateProbe)) {}
+        kernel(gpu::createTraceKernel(ctx, choice.backend, gpu::KernelProgram::LocateProbe)),
+        stepper(ctx, kernel) {}
 
   std::unique_ptr<gpu::VectorProbe> probe(const flow::VectorVolume& volume,
                                           PathlineReport& report) {
@@ -252,18 +255,19 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
   return options;
 }
 
-// The backend's device and probe kernel, or none for the CPU.
-std::optional<GpuSampling> openSampling(const BackendRequest& request, PathlineReport& report,
-                                        const Log& log) {
+// The backend's device and kernels, or none for the CPU (on the heap: the stepper points at the
+// context and the probe kernel).
+std::unique_ptr<GpuSampling> openSampling(const BackendRequest& request, PathlineReport& report,
+                                          const Log& log) {
   const BackendChoice choice = chooseBackend(request, BackendUse::Trace, log);
-  std::optional<GpuSampling> gpu;
+  std::unique_ptr<GpuSampling> gpu;
   if (choice.backend == gpu::Backend::Cpu) {
     report.backend = "cpu";
     report.device = hostThreadsText();
     return gpu;
   }
   Stopwatch setup;
-  gpu.emplace(request, choice);
+  gpu = std::make_unique<GpuSampling>(request, choice);
   report.backend = gpu::backendName(choice.backend);
   report.device = gpu->ctx.deviceName();
   report.deviceSeconds += setup.seconds();
@@ -279,7 +283,7 @@ void addLoadTimes(const LoadedSnapshot& s, PathlineReport& report) {
 // Traces the particles through the intervals of snapshots first..last, loading each next
 // snapshot on another thread while the current interval is traced.
 void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
-                    std::unique_ptr<LoadedSnapshot> a, std::optional<GpuSampling>& gpu,
+                    std::unique_ptr<LoadedSnapshot> a, std::unique_ptr<GpuSampling>& gpu,
                     flow::PathlineTracer& tracer, PathlineReport& report,
                     const Reporter& reporter) {
   const std::span<const SnapshotFile> series = job.series;
@@ -298,8 +302,10 @@ void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
     if (i + 2 <= last) next = loadAhead(i + 2);
     if (gpu) probeB = gpu->probe(volumeOf(*b->field), report);
     Stopwatch tracing;
+    if (gpu) gpu->stepper.bind(*probeA, *probeB);
     tracer.advance({a->time, &volumeOf(*a->field), samplerOf(probeA.get())},
-                   {b->time, &volumeOf(*b->field), samplerOf(probeB.get())});
+                   {b->time, &volumeOf(*b->field), samplerOf(probeB.get())},
+                   gpu ? &gpu->stepper : nullptr);
     report.traceSeconds += tracing.seconds();
     if (probeA) addProbeTimes(*probeA, report);
     probeA = std::move(probeB);
@@ -307,6 +313,13 @@ void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
     reporter.advance("intervals", i - first + 1, last - first);
   }
   if (probeA) addProbeTimes(*probeA, report);
+  if (gpu) {
+    const gpu::PathlineStepper::Times& t = gpu->stepper.times();
+    report.stepRounds = t.rounds;
+    report.stepDispatches = t.dispatches;
+    report.stepDeviceSeconds = t.deviceSeconds;
+    report.stepCollectSeconds = t.collectSeconds;
+  }
 }
 
 void sayPathlineSummary(const flow::PathlineTracer& tracer, const PathlineReport& report,
@@ -330,11 +343,13 @@ void sayPathlineSummary(const flow::PathlineTracer& tracer, const PathlineReport
                        withCommas(report.cellsRead), report.deviceSeconds, report.traceSeconds,
                        double(report.steps) / std::max(report.traceSeconds, 1e-9),
                        report.waitSeconds, report.wallSeconds / std::max(readBuild, 1e-9)));
-  if (report.probeCalls > 0)
-    say(log, fmt::format("samples    {} batches on the device: writing the points {:.2f} s, "
-                         "the device {:.2f} s, reading the samples {:.2f} s",
-                         withCommas(report.probeCalls), report.probeWriteSeconds,
-                         report.probeDeviceSeconds, report.probeReadSeconds));
+  if (report.stepRounds > 0)
+    say(log, fmt::format(
+                 "steps      {} dispatches in {} rounds on the device: the device {:.2f} "
+                 "s, storing the points {:.2f} s; releases' samples {} batches, {:.2f} s",
+                 withCommas(report.stepDispatches), withCommas(report.stepRounds),
+                 report.stepDeviceSeconds, report.stepCollectSeconds, withCommas(report.probeCalls),
+                 report.probeWriteSeconds + report.probeDeviceSeconds + report.probeReadSeconds));
 }
 
 std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotFile> series,
@@ -385,7 +400,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   Stopwatch wall;
   PathlineResult result;
   PathlineReport& report = result.report;
-  std::optional<GpuSampling> gpu = openSampling(job.backend, report, log);
+  std::unique_ptr<GpuSampling> gpu = openSampling(job.backend, report, log);
   reporter.lap("device");
   const flow::PathlineOptions options = pathlineOptions(series, job.settings);
   report.stepSize = options.stepSize;

@@ -1,15 +1,19 @@
 #include "pathline_tracer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
 #include "amrstream/error.hpp"
+#include "morton_order.hpp"
 #include "sampler.hpp"
+#include "util/huge_pages.hpp"
 
 namespace amrstream::flow {
 
@@ -28,6 +32,53 @@ glm::vec3 cellOf(const VectorVolume& volume, glm::vec3 x) {
 glm::vec3 wrapPhysical(const VectorVolume& volume, glm::vec3 x) {
   if (!(volume.periodic[0] || volume.periodic[1] || volume.periodic[2])) return x;
   return glm::vec3(volume.transform.toPhysical(glm::dvec3(cellOf(volume, x))));
+}
+
+// The step a particle at time t takes toward `until`, and the time the step ends at: dt, or the
+// rest of the interval for its last step.
+struct TimeStep {
+  double h = 0.0, end = 0.0;
+  bool last = false;
+};
+
+TimeStep timeStep(double t, double until, double stepSize) {
+  TimeStep s;
+  s.h = std::min(stepSize, until - t);
+  s.last = until - (t + s.h) < kSliverFraction * stepSize;
+  if (s.last) s.h = until - t;
+  s.end = s.last ? until : t + s.h;
+  return s;
+}
+
+// The weight of snapshot b at time t, as sampleAt() takes it.
+float weightOfB(const Snapshot& a, const Snapshot& b, double t) {
+  return float((t - a.time) / (b.time - a.time));
+}
+
+// The steps the particles at time `start` take through the interval, as move() takes them, and
+// the time each ends at.
+struct GroupSteps {
+  std::vector<shared::PathlineStep> steps;
+  std::vector<double> ends;
+};
+
+GroupSteps planSteps(double start, double until, const PathlineOptions& options, const Snapshot& a,
+                     const Snapshot& b) {
+  GroupSteps plan;
+  double t = start;
+  for (;;) {
+    const TimeStep s = timeStep(t, until, options.stepSize);
+    shared::PathlineStep& step = plan.steps.emplace_back();
+    step.h = float(s.h);
+    step.weightStart = weightOfB(a, b, t);
+    step.weightHalf = weightOfB(a, b, t + 0.5 * s.h);
+    step.weightFull = weightOfB(a, b, t + 1.0 * s.h);
+    step.weightEnd = weightOfB(a, b, s.end);
+    step.taken = 1;
+    plan.ends.push_back(s.end);
+    if (s.end >= options.endTime || !(s.end < until)) return plan;
+    t = s.end;
+  }
 }
 
 // The CPU sampler keeps each particle's last region in the snapshot (`caches`): a particle's
@@ -100,7 +151,7 @@ void PathlineTracer::sampleAt(const Snapshot& a, const Snapshot& b,
     const VectorSample &sa = w.samplesA[i], &sb = w.samplesB[i];
     TimeSample& s = out[i];
     s = {};
-    s.weightB = float((times[i] - a.time) / (b.time - a.time));
+    s.weightB = weightOfB(a, b, times[i]);
     s.cellA = w.cellsA[i];
     s.cellB = w.cellsB[i];
     if (!sa.located || !sb.located) {
@@ -150,30 +201,54 @@ PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
 PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
 PathlineTracer::~PathlineTracer() = default;
 
+namespace {
+
+// An array of `count` uninitialized elements, to be backed by huge pages where it is faulted.
+template <typename T>
+std::unique_ptr<T[]> freshArray(std::size_t count) {
+  auto array = std::make_unique_for_overwrite<T[]>(count);
+  adviseHugePages(array.get(), count * sizeof(T));
+  return array;
+}
+
+}  // namespace
+
 PathlineTracer::PointBlock& PathlineTracer::newBlock(std::size_t slots) {
+  // Every moving particle's point of one step. The slots are marked empty on all cores, which
+  // faults the particles' pages there; the writers fault the rest, also on all cores.
   PointBlock& block = blocks_.emplace_back();
-  block.particles.assign(slots, kNoParticle);
-  block.positions.resize(slots);
-  block.vectors.resize(slots);
-  block.times.resize(slots);
-  block.channels.resize(slots * channelNames_.size());
+  block.slots = slots;
+  block.particles = freshArray<std::uint32_t>(slots);
+  block.positions = freshArray<glm::vec3>(slots);
+  block.vectors = freshArray<glm::vec3>(slots);
+  block.times = freshArray<double>(slots);
+  block.channels = freshArray<float>(slots * channelNames_.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots), [&](const auto& range) {
+    std::fill(block.particles.get() + range.begin(), block.particles.get() + range.end(),
+              kNoParticle);
+  });
   return block;
+}
+
+float* PathlineTracer::placePoint(std::size_t particle, std::size_t blockIndex, std::uint32_t slot,
+                                  glm::vec3 vector) {
+  Particle& p = particles_[particle];
+  PointBlock& block = blocks_[blockIndex];
+  block.particles[slot] = std::uint32_t(particle);
+  block.positions[slot] = p.position;
+  block.times[slot] = p.time;
+  block.vectors[slot] = vector;
+  p.lastBlock = std::uint32_t(blockIndex);
+  p.lastSlot = slot;
+  ++p.points;
+  return block.channels.get() + std::size_t(slot) * channelNames_.size();
 }
 
 void PathlineTracer::storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a,
                                 const Snapshot& b, const TimeSample& s) {
-  Particle& p = particles_[particle];
-  PointBlock& block = blocks_.back();
-  block.particles[slot] = std::uint32_t(particle);
-  block.positions[slot] = p.position;
-  block.times[slot] = p.time;
-  block.vectors[slot] = s.value;
-  p.lastBlock = std::uint32_t(blocks_.size() - 1);
-  p.lastSlot = slot;
-  ++p.points;
+  float* out = placePoint(particle, blocks_.size() - 1, slot, s.value);
   const std::size_t channels = channelNames_.size();
   if (channels == 0) return;
-  float* out = block.channels.data() + std::size_t(slot) * channels;
   if (s.reason != AMRSTREAM_REASON_RUNNING) {
     std::fill(out, out + channels, std::numeric_limits<float>::quiet_NaN());
     return;
@@ -226,9 +301,9 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       const Particle& p = particles_[active[i]];
       x[i] = p.position;
       t[i] = p.time;
-      h[i] = std::min(options_.stepSize, until - p.time);
-      last[i] = until - (p.time + h[i]) < kSliverFraction * options_.stepSize;
-      if (last[i]) h[i] = until - p.time;
+      const TimeStep step = timeStep(p.time, until, options_.stepSize);
+      h[i] = step.h;
+      last[i] = step.last;
     });
     const std::span<const std::size_t> owners(active.data(), n);
     if (!startKnown)
@@ -299,7 +374,71 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
   }
 }
 
-void PathlineTracer::advance(Snapshot a, Snapshot b) {
+void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Snapshot& a,
+                                  const Snapshot& b, double until, IntervalStepper& stepper) {
+  const std::size_t n = moving.size();
+  if (n == 0) return;
+  // Particles at one time take the same steps: one group each.
+  std::map<double, std::uint32_t> groupOfTime;
+  std::vector<std::uint32_t> groups(n);
+  std::vector<glm::vec3> positions(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Particle& p = particles_[moving[i]];
+    groups[i] = groupOfTime.try_emplace(p.time, std::uint32_t(groupOfTime.size())).first->second;
+    positions[i] = p.position;
+  }
+  std::vector<GroupSteps> plans(groupOfTime.size());
+  std::size_t stepCount = 0;
+  for (const auto& [time, group] : groupOfTime) {
+    plans[group] = planSteps(time, until, options_, a, b);
+    stepCount = std::max(stepCount, plans[group].steps.size());
+  }
+  std::vector<shared::PathlineStep> schedule(plans.size() * stepCount, shared::PathlineStep{});
+  for (std::size_t g = 0; g < plans.size(); ++g)
+    std::copy(plans[g].steps.begin(), plans[g].steps.end(), schedule.begin() + g * stepCount);
+
+  const IntervalPlan plan{positions, groups, schedule, std::uint32_t(stepCount)};
+  stepper.move(plan, [&](const StepRows& rows) {
+    if (rows.channelCount != channelNames_.size())
+      throw std::logic_error("pathlines: the device sampled other point-data channels");
+    const std::size_t firstBlock = blocks_.size();
+    for (std::uint32_t r = 0; r < rows.rows; ++r) newBlock(n);
+    const std::size_t channels = rows.channelCount;
+    // Particle by particle through the round's steps: each particle's state is written once.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+        Particle& p = particles_[moving[i]];
+        const GroupSteps& steps = plans[groups[i]];
+        for (std::uint32_t r = 0; r < rows.rows; ++r) {
+          const std::size_t at = std::size_t(r) * n + i;
+          const std::int32_t status = rows.status[at];
+          if (status == AMRSTREAM_PATHLINE_NO_STEP) continue;
+          if (status != AMRSTREAM_REASON_RUNNING) {
+            p.reason = status;
+            break;
+          }
+          const std::uint32_t step = rows.firstStep + r;
+          p.position = rows.positions[at];
+          p.time = steps.ends[step];
+          ++p.steps;
+          float* out = placePoint(moving[i], firstBlock + r, std::uint32_t(i), rows.vectors[at]);
+          const float w = steps.steps[step].weightEnd;
+          for (std::size_t c = 0; c < channels; ++c) {
+            const float va = rows.channelsA[at * channels + c];
+            const float vb = rows.channelsB[at * channels + c];
+            out[c] = va + w * (vb - va);  // as storePoint() blends them
+          }
+          if (p.time >= options_.endTime) {
+            p.reason = options_.endReason;
+            break;
+          }
+        }
+      }
+    });
+  });
+}
+
+void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper) {
   if (!(b.time > a.time))
     throw std::invalid_argument("pathlines: an interval must go forward in time");
   for (const Snapshot* s : {&a, &b}) {
@@ -328,7 +467,20 @@ void PathlineTracer::advance(Snapshot a, Snapshot b) {
     const Particle& p = particles_[i];
     if (p.released && p.reason == AMRSTREAM_REASON_RUNNING && p.time < until) moving.push_back(i);
   }
-  move(moving, a, b, until);
+  if (stepper) {
+    // Neighbouring threads start near each other, and mostly stay so through the interval.
+    std::vector<glm::vec3> starts(moving.size());
+    for (std::size_t i = 0; i < moving.size(); ++i) starts[i] = particles_[moving[i]].position;
+    const std::vector<std::uint32_t> order = mortonOrder(starts);
+    std::vector<std::size_t> unordered = std::move(moving);
+    moving.resize(unordered.size());
+    for (std::size_t i = 0; i < order.size(); ++i) moving[i] = unordered[order[i]];
+    const std::size_t most = stepper->mostParticles();
+    for (std::size_t first = 0; first < moving.size(); first += most)
+      moveOnDevice(std::span(moving).subspan(first, std::min(most, moving.size() - first)), a, b,
+                   until, *stepper);
+  } else
+    move(moving, a, b, until);
   time_ = until;
   if (options_.maxResultBytes > 0) {
     const std::uint64_t bytes = pointCount() * TraceSet::bytesPerPoint(channelNames_.size(), false);
@@ -393,14 +545,14 @@ TraceSet PathlineTracer::pathlines() const {
   // Blocks in the order they were made: each particle's points in order; a particle has at most
   // one slot per block, so a block's slots go in parallel.
   for (const PointBlock& block : blocks_)
-    tbb::parallel_for(std::size_t(0), block.particles.size(), [&](std::size_t slot) {
+    tbb::parallel_for(std::size_t(0), block.slots, [&](std::size_t slot) {
       const std::uint32_t particle = block.particles[slot];
       if (particle == kNoParticle) return;
       const std::uint64_t at = next[particle]++;
       set.positions[at] = block.positions[slot];
       set.times[at] = float(block.times[slot]);
       set.vectors[at] = block.vectors[slot];
-      std::copy_n(block.channels.begin() + slot * channels, channels,
+      std::copy_n(block.channels.get() + slot * channels, channels,
                   set.channels.begin() + at * channels);
     });
   return set;

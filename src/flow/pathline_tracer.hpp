@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "interval_stepper.hpp"
 #include "sampler.hpp"
 #include "trace_set.hpp"
 #include "vector_volume.hpp"
@@ -61,7 +62,9 @@ class PathlineTracer {
   // time to min(b.time, endTime). Intervals come in order of time, each starting where the last
   // ended. The particles advance together, one RK4 stage at a time, each stage's samples of
   // both snapshots taken in one batch by the snapshots' samplers; the rest runs on all cores.
-  void advance(Snapshot a, Snapshot b);
+  // With a `stepper` (holding a and b on its device), the particles' steps run there instead,
+  // and the host only plans them and stores their points.
+  void advance(Snapshot a, Snapshot b, IntervalStepper* stepper = nullptr);
   // Stops the particles still running at the series' end (AMRSTREAM_REASON_SERIES_END).
   void finish();
 
@@ -105,15 +108,19 @@ class PathlineTracer {
   // to consecutive memory instead of one growing array per particle (scattered writes).
   static constexpr std::uint32_t kNoParticle = ~0u;  // a slot whose particle made no point
   struct PointBlock {
-    std::vector<std::uint32_t> particles;
-    std::vector<glm::vec3> positions, vectors;
-    std::vector<double> times;
-    std::vector<float> channels;  // channelNames.size() per slot
+    std::size_t slots = 0;
+    // Not zeroed when made: a slot's arrays are written where its particle is set.
+    std::unique_ptr<std::uint32_t[]> particles;
+    std::unique_ptr<glm::vec3[]> positions, vectors;
+    std::unique_ptr<double[]> times;
+    std::unique_ptr<float[]> channels;  // channelNames.size() per slot
   };
 
   void release(std::span<const std::size_t> due, const Snapshot& a, const Snapshot& b);
   void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
             double until);
+  void moveOnDevice(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
+                    double until, IntervalStepper& stepper);
   struct TimeSample;
   struct SampleScratch;
   // The vector at each (point, time) from the two snapshots bracketing the times, into `out`;
@@ -123,6 +130,10 @@ class PathlineTracer {
                 std::span<TimeSample> out);
   // A new block of `slots` slots, each empty until storePoint() fills it.
   PointBlock& newBlock(std::size_t slots);
+  // Fills the slot of block `blockIndex` with the particle's position and time and `vector`;
+  // returns where its channels go.
+  float* placePoint(std::size_t particle, std::size_t blockIndex, std::uint32_t slot,
+                    glm::vec3 vector);
   void storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a, const Snapshot& b,
                   const TimeSample& s);
   TraceSet emptySet() const;

@@ -117,24 +117,6 @@ void writeCompactionSet(const vk::Context& ctx, VkDescriptorSet set, const Round
       .write(ctx, set);
 }
 
-void writePointDataSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
-                       const RoundBuffers& b) {
-  vk::DescriptorWrites("point data", AMRSTREAM_POINT_DATA_BINDING_COUNT)
-      .set(AMRSTREAM_BINDING_POINT_DATA_BRICKS, device.bricks)
-      .set(AMRSTREAM_BINDING_POINT_DATA_VALUES, device.values)
-      .set(AMRSTREAM_BINDING_POINT_DATA_REGIONS, device.regions)
-      .set(AMRSTREAM_BINDING_POINT_DATA_REGION_BRICKS, device.regionBricks)
-      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNEL_VALUES, device.channelValues)
-      .set(AMRSTREAM_BINDING_POINT_DATA_SUMMARY, b.summary)
-      .set(AMRSTREAM_BINDING_POINT_DATA_POSITIONS, b.densePositions)
-      .set(AMRSTREAM_BINDING_POINT_DATA_REGION_IDS, b.denseRegionIds)
-      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNELS, b.channels)
-      .set(AMRSTREAM_BINDING_POINT_DATA_VORTICITY, b.vorticity)
-      .set(AMRSTREAM_BINDING_POINT_DATA_LINEAR_CELLS, device.vectorGradients)
-      .set(AMRSTREAM_BINDING_POINT_DATA_CHANNEL_GRADIENTS, device.channelGradients)
-      .write(ctx, set);
-}
-
 }  // namespace
 
 GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const RoundKernels& kernels,
@@ -176,7 +158,9 @@ GpuRounds::GpuRounds(const vk::Context& ctx, const TraceKernel& trace, const Rou
     writeCompactionSet(ctx, compactionSets_[parity], buffers_, parity);
   }
   pointDataSet_ = pool_.allocate(kernels.pointDataSetLayout.get());
-  writePointDataSet(ctx, pointDataSet_, device, buffers_);
+  writePointDataSet(ctx, pointDataSet_, device,
+                    {buffers_.summary, buffers_.densePositions, buffers_.denseRegionIds,
+                     buffers_.channels, buffers_.vorticity});
   if (timeKernels) {
     traceTimer_.emplace(ctx);
     compactionTimer_.emplace(ctx);

@@ -9,7 +9,9 @@
 
 #include <cstdint>
 
+#include "vk/buffer.hpp"
 #include "vk/unique_handle.hpp"
+#include "volume_buffers.hpp"
 
 namespace amrstream::vk {
 class Context;
@@ -27,5 +29,27 @@ struct RoundKernels {
 };
 
 RoundKernels createRoundKernels(const vk::Context& ctx);
+
+// The point data kernel alone (pathlines sample their snapshots' channels with it).
+struct PointDataKernel {
+  vk::UniqueHandle<VkDescriptorSetLayout> setLayout;
+  vk::UniqueHandle<VkPipelineLayout> layout;
+  vk::UniqueHandle<VkPipeline> pipeline;
+};
+
+PointDataKernel createPointDataKernel(const vk::Context& ctx);
+
+// What the point data kernel reads besides the volume, and writes.
+struct PointDataTargets {
+  const vk::Buffer& summary;  // shared::RoundSummary: the point count
+  const vk::Buffer& positions;
+  const vk::Buffer& regionIds;
+  const vk::Buffer& channels;
+  const vk::Buffer& vorticity;
+};
+
+// Points the kernel's set at the volume's copy on the device and at `targets`.
+void writePointDataSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
+                       const PointDataTargets& targets);
 
 }  // namespace amrstream::gpu

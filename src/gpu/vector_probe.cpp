@@ -45,6 +45,21 @@ void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuff
       .write(ctx, set);
 }
 
+void recordProbe(const vk::Context& ctx, const TraceKernel& kernel, VkCommandBuffer cmd,
+                 VkDescriptorSet set, std::size_t points) {
+  vkCmdBindPipeline(cmd, kernel.bindPoint, kernel.pipeline.get());
+  vkCmdBindDescriptorSets(cmd, kernel.bindPoint, kernel.pipelineLayout.get(), 0, 1, &set, 0,
+                          nullptr);
+  if (kernel.backend == Backend::Pipeline) {
+    const ShaderBindingTable& sbt = kernel.bindingTable;
+    ctx.functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
+                                      std::uint32_t(points), 1, 1);
+  } else {
+    vkCmdDispatch(cmd, std::uint32_t((points + kernel.workgroupSize - 1) / kernel.workgroupSize), 1,
+                  1);
+  }
+}
+
 VectorProbe::VectorProbe(const vk::Context& ctx, const TraceKernel& kernel,
                          const flow::VectorVolume& volume)
     : ctx_(&ctx), volume_(&volume), kernel_(&kernel) {
@@ -71,7 +86,9 @@ void VectorProbe::reserve(std::size_t points) {
   const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   points_ = vk::Buffer::upload(*ctx_, points * sizeof(glm::vec3), usage, "probe points");
   vectors_ = vk::Buffer::readback(*ctx_, points * sizeof(glm::vec3), usage, "probe vectors");
-  regions_ = vk::Buffer::readback(*ctx_, points * sizeof(std::int32_t), usage, "probe regions");
+  regions_ = vk::Buffer::readback(*ctx_, points * sizeof(std::int32_t),
+                                  usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "probe regions");
+  clearHints_ = true;
   const std::array<VkDescriptorPoolSize, 3> sizes{
       {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, AMRSTREAM_TRACE_BINDING_COUNT},
@@ -105,17 +122,13 @@ void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::
     clock.restart();
     vk::submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
       vk::memoryBarrier(cmd, vk::access::kHostWrite, vk::access::kAny);
-      vkCmdBindPipeline(cmd, kernel_->bindPoint, kernel_->pipeline.get());
-      vkCmdBindDescriptorSets(cmd, kernel_->bindPoint, kernel_->pipelineLayout.get(), 0, 1, &set_,
-                              0, nullptr);
-      if (kernel_->backend == Backend::Pipeline) {
-        const ShaderBindingTable& sbt = kernel_->bindingTable;
-        ctx_->functions().vkCmdTraceRaysKHR(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable,
-                                            std::uint32_t(n), 1, 1);
-      } else {
-        vkCmdDispatch(cmd, std::uint32_t((n + kernel_->workgroupSize - 1) / kernel_->workgroupSize),
-                      1, 1);
+      if (clearHints_) {  // no region hints yet (locate_probe.glsl): later calls start from the
+                          // regions found last
+        vkCmdFillBuffer(cmd, regions_.handle(), 0, VK_WHOLE_SIZE, ~0u);
+        vk::memoryBarrier(cmd, vk::access::kTransferWrite, vk::access::kAny);
+        clearHints_ = false;
       }
+      recordProbe(*ctx_, *kernel_, cmd, set_, n);
       vk::memoryBarrier(cmd, vk::access::kAnyWrite, vk::access::kHostRead);
     });
     times_.deviceSeconds += clock.seconds();

@@ -28,6 +28,10 @@ void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuff
                    const vk::Buffer& params, const vk::Buffer& points, const vk::Buffer& vectors,
                    const vk::Buffer& regions, const vk::Buffer& unused);
 
+// Records the probe kernel over `points` points with `set` bound.
+void recordProbe(const vk::Context& ctx, const TraceKernel& kernel, VkCommandBuffer cmd,
+                 VkDescriptorSet set, std::size_t points);
+
 class VectorProbe {
  public:
   // The kernel: createTraceKernel(ctx, backend, KernelProgram::LocateProbe), shared by the probes
@@ -43,6 +47,8 @@ class VectorProbe {
   void sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out);
 
   const TracerSetup& setup() const { return setup_; }
+  const flow::VectorVolume& volume() const { return *volume_; }
+  const VolumeBuffers& device() const { return *device_; }
 
   // Host time of the calls so far: writing the points, waiting for the device, reading the
   // samples.
@@ -69,6 +75,7 @@ class VectorProbe {
   Times times_;
   const TraceKernel* kernel_;
   std::size_t capacity_ = 0;
+  bool clearHints_ = false;  // the regions' buffer is new: its hints are to be cleared first
   vk::Buffer params_, points_, vectors_, regions_, unused_;
   std::unique_ptr<vk::DescriptorPool> pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

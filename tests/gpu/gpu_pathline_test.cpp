@@ -1,6 +1,7 @@
 // Pathlines with every GPU backend's samples (gpu::VectorProbe) against the CPU reference: the
 // probe's samples equal flow::sampleVector at random points and region faces; pathlines and
-// streaklines through a swirl series whose refinement moves have the CPU's lines, steps and
+// streaklines through a swirl series whose refinement moves, with the host stepping on the
+// probe's samples or the device stepping (gpu::PathlineStepper), have the CPU's lines, steps and
 // reasons, and positions within float rounding, with either interpolant.
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 
 #include "flow/pathline_tracer.hpp"
 #include "flow/sampler.hpp"
+#include "gpu/pathline_stepper.hpp"
 #include "gpu/vector_probe.hpp"
 #include "gpu_test.hpp"
 #include "synth/generators.hpp"
@@ -75,6 +77,7 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
     for (const flow::VectorVolume& v : volumes)
       probes.push_back(std::make_unique<VectorProbe>(ctx(), kernel, v));
 
+    PathlineStepper stepper(ctx(), kernel, GetParam() == Backend::Compute ? 2048 : 1 << 20);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(0.05, 0.95);
     std::vector<glm::dvec3> seeds;
@@ -83,31 +86,42 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
     options.stepSize = 0.01;
     options.releaseEvery = 0.04;
     options.endTime = 0.15;
-    flow::PathlineTracer cpu(seeds, options, "vel", {"temp"}), gpu(seeds, options, "vel", {"temp"});
+    flow::PathlineTracer cpu(seeds, options, "vel", {"temp"}), gpu(seeds, options, "vel", {"temp"}),
+        device(seeds, options, "vel", {"temp"});
     for (std::size_t i = 0; i + 1 < times.size(); ++i) {
       cpu.advance({times[i], &volumes[i], {}}, {times[i + 1], &volumes[i + 1], {}});
       VectorProbe* a = probes[i].get();
       VectorProbe* b = probes[i + 1].get();
-      gpu.advance(
-          {times[i], &volumes[i], [a](auto cells, auto out) { a->sample(cells, out); }},
-          {times[i + 1], &volumes[i + 1], [b](auto cells, auto out) { b->sample(cells, out); }});
+      const flow::Snapshot probedA{times[i], &volumes[i],
+                                   [a](auto cells, auto out) { a->sample(cells, out); }};
+      const flow::Snapshot probedB{times[i + 1], &volumes[i + 1],
+                                   [b](auto cells, auto out) { b->sample(cells, out); }};
+      gpu.advance(probedA, probedB);
+      stepper.bind(*a, *b);
+      device.advance(probedA, probedB, &stepper);
     }
-    for (const bool streaks : {false, true}) {
-      const flow::TraceSet want = streaks ? cpu.streaklines() : cpu.pathlines();
-      const flow::TraceSet got = streaks ? gpu.streaklines() : gpu.pathlines();
-      ASSERT_EQ(got.lineCount(), want.lineCount());
-      EXPECT_EQ(got.reasons, want.reasons);
-      EXPECT_EQ(got.steps, want.steps);
-      ASSERT_EQ(got.offsets, want.offsets);
-      float worst = 0.0f, worstChannel = 0.0f;
-      for (std::uint64_t i = 0; i < want.pointCount(); ++i) {
-        worst = std::max(worst, glm::length(got.positions[i] - want.positions[i]));
-        EXPECT_FLOAT_EQ(got.times[i], want.times[i]);
-        worstChannel = std::max(worstChannel, std::abs(got.channels[i] - want.channels[i]));
+    // Steps on the device, in rounds of one step (compute) or of the whole interval.
+    EXPECT_GT(stepper.times().rounds, 0u);
+    for (const auto& [tracer, what] : {std::pair{&gpu, "samples"}, std::pair{&device, "steps"}})
+      for (const bool streaks : {false, true}) {
+        SCOPED_TRACE(std::string(what) + (streaks ? ", streaklines" : ", pathlines"));
+        const flow::TraceSet want = streaks ? cpu.streaklines() : cpu.pathlines();
+        const flow::TraceSet got = streaks ? tracer->streaklines() : tracer->pathlines();
+        ASSERT_EQ(got.lineCount(), want.lineCount());
+        EXPECT_EQ(got.reasons, want.reasons);
+        EXPECT_EQ(got.steps, want.steps);
+        ASSERT_EQ(got.offsets, want.offsets);
+        float worst = 0.0f, worstVector = 0.0f, worstChannel = 0.0f;
+        for (std::uint64_t i = 0; i < want.pointCount(); ++i) {
+          worst = std::max(worst, glm::length(got.positions[i] - want.positions[i]));
+          worstVector = std::max(worstVector, glm::length(got.vectors[i] - want.vectors[i]));
+          EXPECT_FLOAT_EQ(got.times[i], want.times[i]);
+          worstChannel = std::max(worstChannel, std::abs(got.channels[i] - want.channels[i]));
+        }
+        EXPECT_LT(worst, 1e-5f);
+        EXPECT_LT(worstVector, 1e-4f);
+        EXPECT_LT(worstChannel, 1e-5f);
       }
-      EXPECT_LT(worst, 1e-5f) << (streaks ? "streaklines" : "pathlines");
-      EXPECT_LT(worstChannel, 1e-5f);
-    }
     const flow::TraceSet paths = cpu.pathlines();
     EXPECT_GT(paths.lineCount(), 48u * 3);
     EXPECT_NE(

@@ -50,8 +50,13 @@ layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_TIMES)
 writeonly buffer TimeBuffer { float outTimes[]; };
 layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_VECTORS)
 writeonly buffer VectorBuffer { vec3 outVectors[]; };
+#ifdef AMRSTREAM_PROBE_POINTS  // the probe reads each point's region hint there first
+layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_REGION_IDS)
+buffer RegionIdBuffer { int outRegions[]; };
+#else
 layout(scalar, set = 0, binding = AMRSTREAM_BINDING_TRACE_REGION_IDS)
 writeonly buffer RegionIdBuffer { int outRegions[]; };
+#endif
 #ifdef AMRSTREAM_DUAL_ADDRESS
 // The dual cells (VolumeBuffers::dualValues) read through params.dualValuesAddress rather than a
 // binding, so that they may exceed maxStorageBufferRange: one 128-byte block per dual cell.

@@ -3,9 +3,16 @@
 // stage. It reuses the tracing bindings, AMRSTREAM_BINDING_TRACE_PROBE_POINTS holding the points
 // (probePoints, cell units, already wrapped; AMRSTREAM_PROBE_POINTS defined before
 // amr_buffers.glsl); the region found (-1 for none) goes to outRegions and the vector to
-// outVectors, NaN where the sample is located but invalid.
+// outVectors, NaN where the sample is located but invalid. What outRegions holds when the probe
+// starts (a region of this volume or -1) is each point's region hint (sampler.glsl): a
+// particle's next sample mostly falls in its last region, and the answer is the same either way.
 #ifdef AMRSTREAM_PROBE_POINTS
 void probeLocation(uint pointIndex) {
+  const int hint = outRegions[pointIndex];
+  if (hint >= 0) {
+    cachedRegionId = hint;
+    cachedRegion = regions[hint];
+  }
   const VectorSample s = sampleVector(ivec3(0), probePoints[pointIndex]);
   outRegions[pointIndex] = s.located ? s.region : -1;
   outVectors[pointIndex] = s.valid ? s.value : vec3(uintBitsToFloat(0x7fc00000u));
