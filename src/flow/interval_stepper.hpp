@@ -15,7 +15,7 @@ namespace amrstream::flow {
 
 // The particles moving through an interval, in the order the tracer lists them.
 struct IntervalPlan {
-  std::span<const glm::vec3> positions;  // physical: where each particle is when it starts
+  std::span<const glm::vec3> positions;   // physical: where each particle is when it starts
   std::span<const std::uint32_t> groups;  // each particle's group: its row of the schedule
   // Group-major: group g's step j at g * stepCount + j; steps past a group's last are not taken.
   std::span<const shared::PathlineStep> schedule;

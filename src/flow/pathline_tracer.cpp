@@ -13,7 +13,6 @@
 #include "amrstream/error.hpp"
 #include "morton_order.hpp"
 #include "sampler.hpp"
-#include "util/huge_pages.hpp"
 
 namespace amrstream::flow {
 
@@ -201,30 +200,17 @@ PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
 PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
 PathlineTracer::~PathlineTracer() = default;
 
-namespace {
-
-// An array of `count` uninitialized elements, to be backed by huge pages where it is faulted.
-template <typename T>
-std::unique_ptr<T[]> freshArray(std::size_t count) {
-  auto array = std::make_unique_for_overwrite<T[]>(count);
-  adviseHugePages(array.get(), count * sizeof(T));
-  return array;
-}
-
-}  // namespace
-
 PathlineTracer::PointBlock& PathlineTracer::newBlock(std::size_t slots) {
-  // Every moving particle's point of one step. The slots are marked empty on all cores, which
-  // faults the particles' pages there; the writers fault the rest, also on all cores.
+  // Every moving particle's point of one step. The slots are marked empty on all cores; the
+  // other arrays are left as they are made until the slots are written, also on all cores.
   PointBlock& block = blocks_.emplace_back();
-  block.slots = slots;
-  block.particles = freshArray<std::uint32_t>(slots);
-  block.positions = freshArray<glm::vec3>(slots);
-  block.vectors = freshArray<glm::vec3>(slots);
-  block.times = freshArray<double>(slots);
-  block.channels = freshArray<float>(slots * channelNames_.size());
+  block.particles.resize(slots);
+  block.positions.resize(slots);
+  block.vectors.resize(slots);
+  block.times.resize(slots);
+  block.channels.resize(slots * channelNames_.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots), [&](const auto& range) {
-    std::fill(block.particles.get() + range.begin(), block.particles.get() + range.end(),
+    std::fill(block.particles.begin() + range.begin(), block.particles.begin() + range.end(),
               kNoParticle);
   });
   return block;
@@ -236,12 +222,12 @@ float* PathlineTracer::placePoint(std::size_t particle, std::size_t blockIndex, 
   PointBlock& block = blocks_[blockIndex];
   block.particles[slot] = std::uint32_t(particle);
   block.positions[slot] = p.position;
-  block.times[slot] = p.time;
+  block.times[slot] = float(p.time);
   block.vectors[slot] = vector;
   p.lastBlock = std::uint32_t(blockIndex);
   p.lastSlot = slot;
   ++p.points;
-  return block.channels.get() + std::size_t(slot) * channelNames_.size();
+  return block.channels.data() + std::size_t(slot) * channelNames_.size();
 }
 
 void PathlineTracer::storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a,
@@ -545,14 +531,14 @@ TraceSet PathlineTracer::pathlines() const {
   // Blocks in the order they were made: each particle's points in order; a particle has at most
   // one slot per block, so a block's slots go in parallel.
   for (const PointBlock& block : blocks_)
-    tbb::parallel_for(std::size_t(0), block.slots, [&](std::size_t slot) {
+    tbb::parallel_for(std::size_t(0), block.particles.size(), [&](std::size_t slot) {
       const std::uint32_t particle = block.particles[slot];
       if (particle == kNoParticle) return;
       const std::uint64_t at = next[particle]++;
       set.positions[at] = block.positions[slot];
-      set.times[at] = float(block.times[slot]);
+      set.times[at] = block.times[slot];
       set.vectors[at] = block.vectors[slot];
-      std::copy_n(block.channels.get() + slot * channels, channels,
+      std::copy_n(block.channels.begin() + slot * channels, channels,
                   set.channels.begin() + at * channels);
     });
   return set;

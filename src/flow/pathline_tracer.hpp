@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "column.hpp"
 #include "interval_stepper.hpp"
 #include "sampler.hpp"
 #include "trace_set.hpp"
@@ -108,12 +109,11 @@ class PathlineTracer {
   // to consecutive memory instead of one growing array per particle (scattered writes).
   static constexpr std::uint32_t kNoParticle = ~0u;  // a slot whose particle made no point
   struct PointBlock {
-    std::size_t slots = 0;
-    // Not zeroed when made: a slot's arrays are written where its particle is set.
-    std::unique_ptr<std::uint32_t[]> particles;
-    std::unique_ptr<glm::vec3[]> positions, vectors;
-    std::unique_ptr<double[]> times;
-    std::unique_ptr<float[]> channels;  // channelNames.size() per slot
+    // Columns: made without zeroing, each slot's written where its particle is set.
+    Column<std::uint32_t> particles;
+    Column<glm::vec3> positions, vectors;
+    Column<float> times;     // IntegrationTime, as the lines hold it
+    Column<float> channels;  // channelNames.size() per slot
   };
 
   void release(std::span<const std::size_t> due, const Snapshot& a, const Snapshot& b);

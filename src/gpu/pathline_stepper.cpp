@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "../../shaders/glsl/shared/pathline_stage.h"
-#include "../../shaders/glsl/shared/trace_codes.h"
-#include "flow/trace_options.hpp"
 #include "../../shaders/glsl/shared/round_bindings.h"
 #include "../../shaders/glsl/shared/round_params.h"
+#include "../../shaders/glsl/shared/trace_codes.h"
+#include "flow/trace_options.hpp"
 #include "pathline_stage_comp.h"
 #include "round_kernels.hpp"
 #include "util/stopwatch.hpp"
@@ -25,10 +25,6 @@
 namespace amrstream::gpu {
 
 namespace {
-
-// Particles a move() takes: within every backend's dispatch limits, and state buffers of about
-// half a GB.
-constexpr std::size_t kMostParticles = std::size_t(1) << 22;
 
 // Bytes of one particle's output in one step: its point, its vector, its status and both
 // snapshots' channels.
@@ -85,10 +81,11 @@ struct PathlineStepper::Buffers {
 };
 
 PathlineStepper::PathlineStepper(const vk::Context& ctx, const TraceKernel& probeKernel,
-                                 std::uint64_t roundBytes)
+                                 std::uint64_t roundBytes, std::size_t mostParticles)
     : ctx_(&ctx),
       probeKernel_(&probeKernel),
       roundBytes_(roundBytes),
+      mostParticles_(mostParticles),
       kernel_(std::make_unique<Kernel>()),
       buffers_(std::make_unique<Buffers>()) {
   std::vector<VkDescriptorSetLayoutBinding> bindings =
@@ -98,23 +95,22 @@ PathlineStepper::PathlineStepper(const vk::Context& ctx, const TraceKernel& prob
   kernel_->layout =
       vk::createPipelineLayout(ctx, kernel_->setLayout.get(), sizeof(shared::PathlineStagePush),
                                VK_SHADER_STAGE_COMPUTE_BIT);
-  kernel_->pipeline =
-      vk::createComputePipeline(ctx, kernel_->layout.get(),
-                                vk::spirv(amrstream_spirv_pathline_stage_comp), nullptr,
-                                "pathline stage");
+  kernel_->pipeline = vk::createComputePipeline(ctx, kernel_->layout.get(),
+                                                vk::spirv(amrstream_spirv_pathline_stage_comp),
+                                                nullptr, "pathline stage");
   Buffers& b = *buffers_;
   b.interval = vk::Buffer::upload(ctx, sizeof(shared::PathlineInterval),
                                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "pathline interval");
   for (vk::Buffer* params : {&b.paramsA, &b.paramsB})
     *params = vk::Buffer::upload(ctx, sizeof(shared::TraceParams),
                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "pathline probe params");
-  b.unused = vk::Buffer::deviceLocal(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                     "pathline probe unused");
+  b.unused =
+      vk::Buffer::deviceLocal(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "pathline probe unused");
 }
 
 PathlineStepper::~PathlineStepper() = default;
 
-std::size_t PathlineStepper::mostParticles() const { return kMostParticles; }
+std::size_t PathlineStepper::mostParticles() const { return mostParticles_; }
 
 void PathlineStepper::bind(const VectorProbe& a, const VectorProbe& b) {
   a_ = &a;
@@ -182,8 +178,8 @@ void PathlineStepper::reserve(std::size_t particles, std::size_t rows, std::size
     if (channels > 0) {
       b.scratchA = vk::Buffer::deviceLocal(ctx, scratch, storage | source, "pathline channels");
       b.scratchB = vk::Buffer::deviceLocal(ctx, scratch, storage | source, "pathline channels");
-      b.pointSummary = vk::Buffer::upload(ctx, sizeof(shared::RoundSummary), storage,
-                                          "pathline point count");
+      b.pointSummary =
+          vk::Buffer::upload(ctx, sizeof(shared::RoundSummary), storage, "pathline point count");
     }
     changed = true;
   }
@@ -229,7 +225,7 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
                            const std::function<void(const flow::StepRows&)>& collect) {
   const std::size_t n = plan.positions.size();
   if (n == 0 || plan.stepCount == 0) return;
-  if (n > kMostParticles || !a_ || !b_)
+  if (n > mostParticles_ || !a_ || !b_)
     throw std::logic_error("PathlineStepper::move: too many particles, or no snapshots bound");
   const vk::Context& ctx = *ctx_;
   const std::size_t rows = std::clamp<std::size_t>(
@@ -307,9 +303,9 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
     for (const VkDescriptorSet set : {b.pointSetA, b.pointSetB}) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pointData_->layout.get(), 0, 1,
                               &set, 0, nullptr);
-      vkCmdDispatch(cmd, std::uint32_t((n + AMRSTREAM_POINT_DATA_GROUP - 1) /
-                                       AMRSTREAM_POINT_DATA_GROUP),
-                    1, 1);
+      vkCmdDispatch(
+          cmd, std::uint32_t((n + AMRSTREAM_POINT_DATA_GROUP - 1) / AMRSTREAM_POINT_DATA_GROUP), 1,
+          1);
       times_.dispatches += 1;
     }
     vk::memoryBarrier(cmd, written, vk::access::kTransferRead);
@@ -369,8 +365,7 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
     stepRows.firstStep = firstStep;
     stepRows.rows = roundRows;
     stepRows.status = {reinterpret_cast<const std::int32_t*>(out.status.mapped().data()), slots};
-    stepRows.positions = {reinterpret_cast<const glm::vec3*>(out.positions.mapped().data()),
-                          slots};
+    stepRows.positions = {reinterpret_cast<const glm::vec3*>(out.positions.mapped().data()), slots};
     stepRows.vectors = {reinterpret_cast<const glm::vec3*>(out.vectors.mapped().data()), slots};
     stepRows.channelCount = channels;
     if (channels > 0) {
@@ -393,8 +388,7 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
         [&](VkCommandBuffer cmd) { record(cmd, firstStep, rowsFrom(firstStep), out); });
     ++times_.rounds;
   };
-  const std::uint32_t rounds =
-      std::uint32_t((plan.stepCount + rows - 1) / rows);
+  const std::uint32_t rounds = std::uint32_t((plan.stepCount + rows - 1) / rows);
   submit(0);
   for (std::uint32_t round = 0; round < rounds; ++round) {
     if (round + 1 < rounds) submit(round + 1);

@@ -26,9 +26,11 @@ class PathlineStepper final : public flow::IntervalStepper {
  public:
   // `probeKernel`: createTraceKernel(ctx, backend, KernelProgram::LocateProbe). It and the
   // context must outlive the stepper. A round's output takes at most about `roundBytes` (one
-  // step at least), twice over.
+  // step at least), twice over; a move() takes at most `mostParticles` particles (by default
+  // within every backend's dispatch limits, with state buffers of about half a GB).
   PathlineStepper(const vk::Context& ctx, const TraceKernel& probeKernel,
-                  std::uint64_t roundBytes = std::uint64_t(128) << 20);
+                  std::uint64_t roundBytes = std::uint64_t(128) << 20,
+                  std::size_t mostParticles = std::size_t(1) << 22);
   ~PathlineStepper() override;
   PathlineStepper(const PathlineStepper&) = delete;
   PathlineStepper& operator=(const PathlineStepper&) = delete;
@@ -58,6 +60,7 @@ class PathlineStepper final : public flow::IntervalStepper {
   const vk::Context* ctx_;
   const TraceKernel* probeKernel_;
   std::uint64_t roundBytes_;
+  std::size_t mostParticles_;
   const VectorProbe* a_ = nullptr;
   const VectorProbe* b_ = nullptr;
   std::unique_ptr<Kernel> kernel_;

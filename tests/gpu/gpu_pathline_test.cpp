@@ -77,7 +77,9 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
     for (const flow::VectorVolume& v : volumes)
       probes.push_back(std::make_unique<VectorProbe>(ctx(), kernel, v));
 
-    PathlineStepper stepper(ctx(), kernel, GetParam() == Backend::Compute ? 2048 : 1 << 20);
+    // Rounds of one step and moves of 40 particles (compute), or of the whole interval.
+    const bool small = GetParam() == Backend::Compute;
+    PathlineStepper stepper(ctx(), kernel, small ? 2048 : 1 << 20, small ? 40 : 1 << 22);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(0.05, 0.95);
     std::vector<glm::dvec3> seeds;
@@ -100,7 +102,6 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
       stepper.bind(*a, *b);
       device.advance(probedA, probedB, &stepper);
     }
-    // Steps on the device, in rounds of one step (compute) or of the whole interval.
     EXPECT_GT(stepper.times().rounds, 0u);
     for (const auto& [tracer, what] : {std::pair{&gpu, "samples"}, std::pair{&device, "steps"}})
       for (const bool streaks : {false, true}) {
@@ -128,6 +129,63 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
         std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_OUT_OF_DOMAIN), 0);
     EXPECT_NE(std::count(paths.reasons.begin(), paths.reasons.end(), AMRSTREAM_REASON_MAX_TIME), 0);
   }
+}
+
+// Through a steady periodic field (ABC) whose particles cross the domain's faces: positions wrap
+// into snapshot A's domain, on the device as on the CPU.
+TEST_P(GpuPathlineTest, PeriodicPathlinesOnTheDeviceEqualTheCpus) {
+  std::vector<flow::VectorVolume> volumes;
+  for (int i = 0; i < 3; ++i) {
+    BuiltinOptions g;
+    g.levels = 2;
+    g.rootBlocks = 2;
+    g.targetCells = 6000;
+    flow::VolumeOptions options;
+    options.periodic = {true, true, true};
+    volumes.push_back(flow::buildVectorVolume(synth::generate("abc", g), kVelocity, options));
+  }
+  const TraceKernel kernel = createTraceKernel(ctx(), GetParam(), KernelProgram::LocateProbe);
+  std::vector<std::unique_ptr<VectorProbe>> probes;
+  for (const flow::VectorVolume& v : volumes)
+    probes.push_back(std::make_unique<VectorProbe>(ctx(), kernel, v));
+  PathlineStepper stepper(ctx(), kernel);
+  const glm::dvec3 lower = volumes[0].transform.toPhysical(glm::dvec3(volumes[0].domain.lower));
+  const glm::dvec3 upper = volumes[0].transform.toPhysical(glm::dvec3(volumes[0].domain.upper));
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<glm::dvec3> seeds;
+  for (int i = 0; i < 32; ++i)
+    seeds.push_back(lower + glm::dvec3(u(rng), u(rng), u(rng)) * (upper - lower));
+  flow::PathlineOptions options;
+  options.stepSize = 0.05;
+  options.endTime = 2.0;
+  flow::PathlineTracer cpu(seeds, options, "vel", {}), device(seeds, options, "vel", {});
+  for (std::size_t i = 0; i + 1 < volumes.size(); ++i) {
+    const flow::Snapshot a{double(i), &volumes[i], {}}, b{double(i + 1), &volumes[i + 1], {}};
+    cpu.advance(a, b);
+    VectorProbe* pa = probes[i].get();
+    VectorProbe* pb = probes[i + 1].get();
+    stepper.bind(*pa, *pb);
+    device.advance({a.time, a.volume, [pa](auto cells, auto out) { pa->sample(cells, out); }},
+                   {b.time, b.volume, [pb](auto cells, auto out) { pb->sample(cells, out); }},
+                   &stepper);
+  }
+  const flow::TraceSet want = cpu.pathlines(), got = device.pathlines();
+  ASSERT_EQ(got.offsets, want.offsets);
+  EXPECT_EQ(got.reasons, want.reasons);
+  float worst = 0.0f;
+  std::size_t wraps = 0;
+  const float halfDomain = float(0.5 * (upper.x - lower.x));
+  for (std::size_t line = 0; line < want.lineCount(); ++line)
+    for (std::uint64_t i = want.offsets[line]; i < want.offsets[line + 1]; ++i) {
+      worst = std::max(worst, glm::length(got.positions[i] - want.positions[i]));
+      if (i > want.offsets[line] &&
+          glm::any(glm::greaterThan(glm::abs(want.positions[i] - want.positions[i - 1]),
+                                    glm::vec3(halfDomain))))
+        ++wraps;
+    }
+  EXPECT_LT(worst, 1e-4f);  // the domain is 2 pi wide
+  EXPECT_GT(wraps, 0u);     // particles crossed faces
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GpuPathlineTest,

@@ -68,14 +68,14 @@ struct PathlineStagePush {
 
 #define AMRSTREAM_PATHLINE_GROUP 256
 
-#define AMRSTREAM_BINDING_PATHLINE_INTERVAL 0  // the uniform PathlineInterval
-#define AMRSTREAM_BINDING_PATHLINE_SCHEDULE 1  // PathlineStep[groups * stepCount]
-#define AMRSTREAM_BINDING_PATHLINE_GROUPS 2    // uint per particle
-#define AMRSTREAM_BINDING_PATHLINE_POSITIONS 3  // vec3 per particle: where its step starts
-#define AMRSTREAM_BINDING_PATHLINE_REASONS 4    // int per particle: 0 while it runs
-#define AMRSTREAM_BINDING_PATHLINE_STAGES 5     // per particle k1, k2, k3, the step's end point
+#define AMRSTREAM_BINDING_PATHLINE_INTERVAL 0      // the uniform PathlineInterval
+#define AMRSTREAM_BINDING_PATHLINE_SCHEDULE 1      // PathlineStep[groups * stepCount]
+#define AMRSTREAM_BINDING_PATHLINE_GROUPS 2        // uint per particle
+#define AMRSTREAM_BINDING_PATHLINE_POSITIONS 3     // vec3 per particle: where its step starts
+#define AMRSTREAM_BINDING_PATHLINE_REASONS 4       // int per particle: 0 while it runs
+#define AMRSTREAM_BINDING_PATHLINE_STAGES 5        // per particle k1, k2, k3, the step's end point
 #define AMRSTREAM_BINDING_PATHLINE_STEP_REASONS 6  // int per particle: the step's first failure
-#define AMRSTREAM_BINDING_PATHLINE_CELLS_A 7    // vec3: the next sample's point in A's cells
+#define AMRSTREAM_BINDING_PATHLINE_CELLS_A 7       // vec3: the next sample's point in A's cells
 #define AMRSTREAM_BINDING_PATHLINE_CELLS_B 8
 #define AMRSTREAM_BINDING_PATHLINE_VECTORS_A 9  // vec3: A's sample there (NaN: invalid)
 #define AMRSTREAM_BINDING_PATHLINE_VECTORS_B 10
