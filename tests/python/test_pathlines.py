@@ -13,6 +13,7 @@ import pytest
 
 import amrstream
 
+from shared_data import real_data
 from test_api import Vtp, assert_same_vtp, require_backend, run_cli, write_seeds
 
 GEN = ["--levels", "3", "--root-blocks", "2", "--target-cells", "20000"]
@@ -78,6 +79,34 @@ def test_pathlines_follow_the_closed_form(series, seeds):
     expected = 1.0 + 0.5 * paths.points[:, 2] + 0.25 * times
     assert np.max(np.abs(temp - expected)) < 1e-5
     assert set(paths.reasons) == {9}  # end of series
+
+
+@pytest.mark.parametrize("backend", ["compute", "pipeline", "rayquery"])
+def test_the_real_gerris_series_steps_on_the_device_as_on_the_cpu(backend, tmp_path_factory):
+    """Streaklines through 31 Gerris snapshots whose refinement changes at every step: the
+    particles stepped on the device (both snapshots of each interval resident there) take the
+    CPU's steps, stop for the CPU's reasons and end where the CPU's do, to float rounding."""
+    require_backend(backend)
+    archive = real_data("gerris-ring-series.tar.xz")
+    folder = tmp_path_factory.getbasetemp() / "gerris-ring"
+    if not (folder / "gerris-ring-series").exists():
+        folder.mkdir(exist_ok=True)
+        import tarfile
+        with tarfile.open(archive) as tar:
+            tar.extractall(folder)
+    pattern = str(folder / "gerris-ring-series" / "ring-*.txt")
+    grid = np.stack(np.meshgrid(np.linspace(-0.2, 0.2, 5), np.linspace(-0.2, 0.2, 5),
+                                [-0.35, -0.15], indexing="ij"), axis=-1).reshape(-1, 3)
+    options = dict(release_every=0.1, end_time=0.5)
+    cpu = amrstream.pathlines(pattern, grid, backend="cpu", **options)
+    device = amrstream.pathlines(pattern, grid, backend=backend, **options)
+    assert device.backend == backend
+    assert len(device) == len(cpu) == len(grid)
+    assert np.array_equal(device.offsets, cpu.offsets)
+    assert np.array_equal(device.reasons, cpu.reasons)
+    assert np.array_equal(device.integration_time, cpu.integration_time)
+    assert np.max(np.abs(device.points - cpu.points)) < 1e-6  # the ring is 1 wide
+    assert len(cpu.points) == 5 * len(grid)  # released at 0, 0.1, ..., 0.4
 
 
 def test_streaklines_have_one_line_per_seed(series):
