@@ -36,7 +36,6 @@ shared::PathlineFrame frameOf(const flow::VectorVolume& volume) {
   shared::PathlineFrame f{};
   f.origin = glm::vec3(volume.transform.origin);
   f.spacing = glm::vec3(volume.transform.spacing);
-  f.cellsPerPhysical = glm::vec3(1.0 / volume.transform.spacing);
   for (int a = 0; a < 3; ++a)
     if (volume.periodic[a]) f.periodicAxes |= 1u << a;
   f.domainLower = volume.domain.lower;
@@ -217,8 +216,6 @@ void PathlineStepper::reserve(std::size_t particles, std::size_t rows, std::size
   if (!pointData_) pointData_ = std::make_unique<PointDataKernel>(createPointDataKernel(ctx));
   b.pointSetA = b.pool->allocate(pointData_->setLayout.get());
   b.pointSetB = b.pool->allocate(pointData_->setLayout.get());
-  const shared::RoundSummary summary{std::uint32_t(b.particles), 0, {0, 0, 0}};
-  std::memcpy(b.pointSummary.mapped().data(), &summary, sizeof(summary));
 }
 
 void PathlineStepper::move(const flow::IntervalPlan& plan,
@@ -240,6 +237,8 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
   writeProbeSet(ctx, b.probeSetB, b_->device(), b.paramsB, b.cellsB, b.vectorsB, b.regionsB,
                 b.unused);
   if (channels > 0) {
+    const shared::RoundSummary summary{std::uint32_t(n), 0, {0, 0, 0}};  // the point count
+    std::memcpy(b.pointSummary.mapped().data(), &summary, sizeof(summary));
     writePointDataSet(ctx, b.pointSetA, a_->device(),
                       {b.pointSummary, b.cellsA, b.regionsA, b.scratchA, b.unused});
     writePointDataSet(ctx, b.pointSetB, b_->device(),

@@ -29,12 +29,10 @@ struct PathlineFrame {
   uint periodicAxes;  // bit a set: axis a is periodic
   vec3 spacing;
   float unused0;
-  vec3 cellsPerPhysical;
-  float unused1;
   ivec3 domainLower;
-  uint unused2;
+  uint unused1;
   ivec3 domainUpper;
-  uint unused3;
+  uint unused2;
 };
 
 // The interval (uniform).
@@ -87,8 +85,8 @@ struct PathlineStagePush {
 #define AMRSTREAM_PATHLINE_BINDING_COUNT 16
 
 #ifdef __cplusplus
-static_assert(sizeof(PathlineStep) == 24 && sizeof(PathlineFrame) == 80 &&
-              sizeof(PathlineInterval) == 176 && sizeof(PathlineStagePush) == 12);
+static_assert(sizeof(PathlineStep) == 24 && sizeof(PathlineFrame) == 64 &&
+              sizeof(PathlineInterval) == 144 && sizeof(PathlineStagePush) == 12);
 }  // namespace amrstream::shared
 #endif
 
