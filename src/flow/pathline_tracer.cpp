@@ -368,9 +368,15 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
   std::map<double, std::uint32_t> groupOfTime;
   std::vector<std::uint32_t> groups(n);
   std::vector<glm::vec3> positions(n);
+  double lastTime = std::numeric_limits<double>::quiet_NaN();
+  std::uint32_t lastGroup = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Particle& p = particles_[moving[i]];
-    groups[i] = groupOfTime.try_emplace(p.time, std::uint32_t(groupOfTime.size())).first->second;
+    if (!(p.time == lastTime)) {  // mostly every particle is at one time
+      lastTime = p.time;
+      lastGroup = groupOfTime.try_emplace(p.time, std::uint32_t(groupOfTime.size())).first->second;
+    }
+    groups[i] = lastGroup;
     positions[i] = p.position;
   }
   std::vector<GroupSteps> plans(groupOfTime.size());
@@ -454,13 +460,20 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper) {
     if (p.released && p.reason == AMRSTREAM_REASON_RUNNING && p.time < until) moving.push_back(i);
   }
   if (stepper) {
-    // Neighbouring threads start near each other, and mostly stay so through the interval.
-    std::vector<glm::vec3> starts(moving.size());
-    for (std::size_t i = 0; i < moving.size(); ++i) starts[i] = particles_[moving[i]].position;
-    const std::vector<std::uint32_t> order = mortonOrder(starts);
-    std::vector<std::size_t> unordered = std::move(moving);
-    moving.resize(unordered.size());
-    for (std::size_t i = 0; i < order.size(); ++i) moving[i] = unordered[order[i]];
+    // Neighbouring threads start near each other, and mostly stay so through the interval and
+    // the next: the particles are sorted again only when others join.
+    std::erase_if(deviceOrder_, [&](std::size_t i) {
+      const Particle& p = particles_[i];
+      return p.reason != AMRSTREAM_REASON_RUNNING || !(p.time < until);
+    });
+    if (!due.empty() || deviceOrder_.size() != moving.size()) {
+      std::vector<glm::vec3> starts(moving.size());
+      for (std::size_t i = 0; i < moving.size(); ++i) starts[i] = particles_[moving[i]].position;
+      const std::vector<std::uint32_t> order = mortonOrder(starts);
+      deviceOrder_.resize(moving.size());
+      for (std::size_t i = 0; i < order.size(); ++i) deviceOrder_[i] = moving[order[i]];
+    }
+    moving = deviceOrder_;
     const std::size_t most = stepper->mostParticles();
     for (std::size_t first = 0; first < moving.size(); first += most)
       moveOnDevice(std::span(moving).subspan(first, std::min(most, moving.size() - first)), a, b,

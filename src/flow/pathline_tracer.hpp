@@ -149,6 +149,9 @@ class PathlineTracer {
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;
   std::unique_ptr<StageScratch> stages_;
+  // With a device stepper: the released particles in Morton order of where they were when the
+  // last ones joined.
+  std::vector<std::size_t> deviceOrder_;
 };
 
 }  // namespace amrstream::flow
