@@ -100,8 +100,7 @@ class PathlineTracer {
   static constexpr std::size_t kBytesPerParticle = sizeof(Particle);
   // A stored point's bytes with `channels` point-data channels.
   static constexpr std::size_t bytesPerPoint(std::size_t channels) {
-    return sizeof(std::uint32_t) + 2 * sizeof(glm::vec3) + sizeof(double) +
-           channels * sizeof(float);
+    return sizeof(std::uint32_t) + 2 * sizeof(glm::vec3) + sizeof(float) + channels * sizeof(float);
   }
 
  private:

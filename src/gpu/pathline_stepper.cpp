@@ -11,7 +11,6 @@
 #include "../../shaders/glsl/shared/round_bindings.h"
 #include "../../shaders/glsl/shared/round_params.h"
 #include "../../shaders/glsl/shared/trace_codes.h"
-#include "flow/trace_options.hpp"
 #include "pathline_stage_comp.h"
 #include "round_kernels.hpp"
 #include "util/stopwatch.hpp"
@@ -251,11 +250,8 @@ void PathlineStepper::move(const flow::IntervalPlan& plan,
   interval.particleCount = std::uint32_t(n);
   interval.stepCount = plan.stepCount;
   std::memcpy(b.interval.mapped().data(), &interval, sizeof(interval));
-  flow::TraceOptions options;
-  options.keepHistory = false;
   for (const auto& [params, probe] : {std::pair{&b.paramsA, a_}, std::pair{&b.paramsB, b_}}) {
-    shared::TraceParams p = flow::makeTraceParams(probe->volume(), options);
-    p.lineCount = std::uint32_t(n);
+    const shared::TraceParams p = probeParams(probe->volume(), n);
     std::memcpy(params->mapped().data(), &p, sizeof(p));
   }
   copyInto(b.planPositions, plan.positions);

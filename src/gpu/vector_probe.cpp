@@ -45,6 +45,14 @@ void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuff
       .write(ctx, set);
 }
 
+shared::TraceParams probeParams(const flow::VectorVolume& volume, std::size_t points) {
+  flow::TraceOptions options;
+  options.keepHistory = false;
+  shared::TraceParams params = flow::makeTraceParams(volume, options);
+  params.lineCount = std::uint32_t(points);
+  return params;
+}
+
 void recordProbe(const vk::Context& ctx, const TraceKernel& kernel, VkCommandBuffer cmd,
                  VkDescriptorSet set, std::size_t points) {
   vkCmdBindPipeline(cmd, kernel.bindPoint, kernel.pipeline.get());
@@ -105,9 +113,6 @@ void VectorProbe::writeSet() {
 
 void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::VectorSample> out) {
   reserve(std::min(kPointsPerDispatch, cellPoints.size()));
-  flow::TraceOptions options;
-  options.keepHistory = false;
-  shared::TraceParams params = flow::makeTraceParams(*volume_, options);
   for (std::size_t first = 0; first < cellPoints.size(); first += kPointsPerDispatch) {
     const std::size_t n = std::min(kPointsPerDispatch, cellPoints.size() - first);
     Stopwatch clock;
@@ -116,7 +121,7 @@ void VectorProbe::sample(std::span<const glm::vec3> cellPoints, std::span<flow::
       std::memcpy(points + range.begin(), cellPoints.data() + first + range.begin(),
                   (range.end() - range.begin()) * sizeof(glm::vec3));
     });
-    params.lineCount = static_cast<std::uint32_t>(n);
+    const shared::TraceParams params = probeParams(*volume_, n);
     std::memcpy(params_.mapped().data(), &params, sizeof(params));
     times_.writeSeconds += clock.seconds();
     clock.restart();

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 
+#include "../../shaders/glsl/shared/trace_params.h"
 #include "backend.hpp"
 #include "flow/sampler.hpp"
 #include "flow/vector_volume.hpp"
@@ -27,6 +28,9 @@ namespace amrstream::gpu {
 void writeProbeSet(const vk::Context& ctx, VkDescriptorSet set, const VolumeBuffers& device,
                    const vk::Buffer& params, const vk::Buffer& points, const vk::Buffer& vectors,
                    const vk::Buffer& regions, const vk::Buffer& unused);
+
+// The parameters of the probe kernel sampling `volume` at `points` points.
+shared::TraceParams probeParams(const flow::VectorVolume& volume, std::size_t points);
 
 // Records the probe kernel over `points` points with `set` bound.
 void recordProbe(const vk::Context& ctx, const TraceKernel& kernel, VkCommandBuffer cmd,
