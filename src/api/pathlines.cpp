@@ -17,6 +17,7 @@
 #include "api/field_plan.hpp"
 #include "api/handles.hpp"
 #include "api/job_state.hpp"
+#include "api/pathline_setup.hpp"
 #include "api/seed_choice.hpp"
 #include "api/traces_impl.hpp"
 #include "flow/pathline_tracer.hpp"
@@ -31,58 +32,6 @@
 namespace amrstream {
 
 namespace {
-
-struct LoadedSnapshot {
-  double time = 0.0;
-  std::optional<Field> field;
-  std::optional<Dataset> cells;  // kept for the first only: density seeding reads them
-  std::uint64_t cellCount = 0;
-  double readSeconds = 0.0, buildSeconds = 0.0;
-};
-
-std::unique_ptr<LoadedSnapshot> loadSnapshot(const SnapshotFile& file, const PathlineJob& job,
-                                             bool keepCells) {
-  auto owned = std::make_unique<LoadedSnapshot>();
-  LoadedSnapshot& loaded = *owned;
-  loaded.time = file.time;
-  Stopwatch clock;
-  Dataset cells = load(file.path, {}, job.units);
-  loaded.readSeconds = clock.seconds();
-  loaded.cellCount = cells.cellCount();
-  clock.restart();
-  loaded.field = buildField(cells, job.field, KeepDataset::No);
-  loaded.buildSeconds = clock.seconds();
-  if (keepCells) loaded.cells.emplace(std::move(cells));
-  return owned;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
-  return text.empty() ? "none" : text;
-}
-
-// Every snapshot must offer what the first one traced with.
-void checkLikeTheFirst(const LoadedSnapshot& s, const std::string& path,
-                       const PathlineReport& report) {
-  const flow::VectorVolume& v = volumeOf(*s.field);
-  if (v.vectorName != report.vectorName)
-    throw InputError(path, fmt::format("its vector is '{}', the first snapshot's '{}'",
-                                       v.vectorName, report.vectorName));
-  if (v.channelNames != report.channelNames)
-    throw InputError(path, fmt::format("its point-data channels are {}, the first snapshot's {}",
-                                       joined(v.channelNames), joined(report.channelNames)));
-}
-
-// Indices of the snapshots bracketing [t0, t1].
-std::pair<std::size_t, std::size_t> snapshotsUsed(std::span<const SnapshotFile> series, double t0,
-                                                  double t1) {
-  std::size_t first = 0;
-  while (first + 1 < series.size() && series[first + 1].time <= t0) ++first;
-  std::size_t last = first + 1;
-  while (last + 1 < series.size() && series[last].time < t1) ++last;
-  return {first, last};
-}
 
 // A GPU backend's context and probe kernel, shared by the snapshots' probes.
 struct GpuSampling {
@@ -112,13 +61,6 @@ void addProbeTimes(const gpu::VectorProbe& probe, PathlineReport& report) {
   report.probeReadSeconds += t.readSeconds;
 }
 
-flow::VectorBatchSampler samplerOf(gpu::VectorProbe* probe) {
-  if (!probe) return {};
-  return [probe](std::span<const glm::vec3> cells, std::span<flow::VectorSample> out) {
-    probe->sample(cells, out);
-  };
-}
-
 }  // namespace
 
 std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
@@ -145,115 +87,6 @@ std::vector<SnapshotFile> listSnapshots(std::span<const std::string> patterns) {
 }
 
 namespace {
-
-// Whether a time step of h can be taken at time t: t + h must move by h (to a part in 1000).
-bool resolvableAt(double t, double h) { return std::abs(((t + h) - t) - h) <= 1e-3 * h; }
-
-// A particle steps from the start to the end time: refuses a step it can never finish with, or
-// that the times cannot resolve. `given`: the user set it; else it is a tenth of the shortest
-// interval between the snapshots `closest` (their paths) apart.
-void checkStepCount(const flow::PathlineOptions& options, bool given,
-                    const std::pair<std::string, std::string>& closest) {
-  const double h = options.stepSize;
-  const double steps = std::ceil((options.endTime - options.startTime) / h);
-  const char* const why = given ? "" : " (the default, a tenth of the shortest interval used)";
-  const std::string snapshots =
-      given ? std::string()
-            : fmt::format("; snapshots {} and {} are closest; give {{step_size}}", closest.first,
-                          closest.second);
-  if (!(steps <= settings::kSteps.most))
-    throw settingError("step_size",
-                       fmt::format("{:g}{} needs {:.3g} steps from t = {:g} to {:g}, more than "
-                                   "the {:.0f} a particle may take{}",
-                                   h, why, steps, options.startTime, options.endTime,
-                                   settings::kSteps.most, snapshots));
-  for (const double t : {options.startTime, options.endTime})
-    if (!resolvableAt(t, h))
-      throw settingError("step_size", fmt::format("{:g}{} is too small to step by at t = {:g}, "
-                                                  "whose double precision cannot resolve it{}",
-                                                  h, why, t, snapshots));
-}
-
-// Streaklines release every seed again every `releaseEvery`: refuses more particles than a
-// trace may hold or its memory holds, or an interval the times cannot resolve. `seedCount` 0:
-// the seeds are not chosen yet, and only the releases are checked.
-void checkReleases(const flow::PathlineOptions& options, std::size_t seedCount,
-                   std::size_t channelCount) {
-  if (!(options.releaseEvery > 0.0)) return;
-  const double span = options.endTime - options.startTime;
-  const double releases = std::ceil(span / options.releaseEvery);
-  const double particles = releases * double(std::max<std::size_t>(seedCount, 1));
-  const std::string ofSeeds =
-      seedCount > 0 ? fmt::format(", {:.3g} particles of {} seeds", particles, seedCount) : "";
-  if (!(particles <= settings::kCount.most))
-    throw settingError("release_every",
-                       fmt::format("{:g} releases the seeds {:.3g} times from t = {:g} to {:g}{}, "
-                                   "more than the {:.0f} particles a run may hold",
-                                   options.releaseEvery, releases, options.startTime,
-                                   options.endTime, ofSeeds, settings::kCount.most));
-  if (!resolvableAt(options.startTime, options.releaseEvery) ||
-      !resolvableAt(options.endTime, options.releaseEvery))
-    throw settingError("release_every",
-                       fmt::format("{:g} is too small to release by between t = {:g} and {:g}, "
-                                   "whose double precision cannot resolve it",
-                                   options.releaseEvery, options.startTime, options.endTime));
-  if (seedCount == 0 || options.maxResultBytes == 0) return;
-  // On average a particle lives half the span: its state and a point per step.
-  const double points = particles * (1.0 + 0.5 * std::ceil(span / options.stepSize));
-  const double bytes = particles * double(flow::PathlineTracer::kBytesPerParticle) +
-                       points * double(flow::PathlineTracer::bytesPerPoint(channelCount));
-  if (bytes > double(options.maxResultBytes))
-    throw settingError("release_every",
-                       fmt::format("{:g} makes {:.3g} particles of {} seeds with about {:.3g} "
-                                   "points, which need {:.1f} GB, more than the {:.1f} GB the "
-                                   "result may take",
-                                   options.releaseEvery, particles, seedCount, points, bytes / 1e9,
-                                   double(options.maxResultBytes) / 1e9));
-}
-
-// The tracer's options from the settings and the series, checked.
-flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
-                                      const PathlineSettings& settings) {
-  const double seriesStart = series.front().time, seriesEnd = series.back().time;
-  flow::PathlineOptions options;
-  options.startTime = settings.startTime.value_or(seriesStart);
-  options.endTime = settings.endTime.value_or(seriesEnd);
-  if (options.startTime < seriesStart || options.startTime >= seriesEnd)
-    throw settingError("start_time",
-                       fmt::format("{:g} is outside the series, which runs from {:g} to {:g}",
-                                   options.startTime, seriesStart, seriesEnd));
-  if (!(options.endTime > options.startTime))
-    throw settingError("end_time", fmt::format("{:g} is not after the start time {:g}",
-                                               options.endTime, options.startTime));
-  if (options.endTime > seriesEnd)
-    throw settingError("end_time",
-                       fmt::format("{:g} is after the series, which ends at {:g} ({}): the field "
-                                   "is not known after its last snapshot",
-                                   options.endTime, seriesEnd, series.back().path));
-  if (options.endTime == seriesEnd) options.endReason = AMRSTREAM_REASON_SERIES_END;
-  const auto [first, last] = snapshotsUsed(series, options.startTime, options.endTime);
-  double shortest = seriesEnd - seriesStart;
-  std::pair<std::string, std::string> closest{series.front().path, series.back().path};
-  for (std::size_t i = first; i < last; ++i)
-    if (series[i + 1].time - series[i].time < shortest) {
-      shortest = series[i + 1].time - series[i].time;
-      closest = {series[i].path, series[i + 1].path};
-    }
-  options.stepSize = settings.stepSize.value_or(shortest / 10);
-  if (!(options.stepSize > 0.0) || !std::isfinite(options.stepSize))
-    throw settingError("step_size", fmt::format("{:g} is not a positive time", options.stepSize));
-  checkStepCount(options, settings.stepSize.has_value(), closest);
-  if (settings.releaseEvery < 0.0 || !std::isfinite(settings.releaseEvery))
-    throw settingError("release_every",
-                       fmt::format("{:g} is not a positive time", settings.releaseEvery));
-  options.releaseEvery = settings.releaseEvery;
-  options.maxResultBytes =
-      settings.maxResultBytes > 0
-          ? settings.maxResultBytes
-          : static_cast<std::uint64_t>(kTraceMemoryShare * physicalMemoryBytes());
-  checkReleases(options, 0, 0);
-  return options;
-}
 
 // The backend's device and kernels, or none for the CPU (on the heap: the stepper points at the
 // context and the probe kernel).
@@ -288,7 +121,8 @@ void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
                     const Reporter& reporter) {
   const std::span<const SnapshotFile> series = job.series;
   const auto loadAhead = [&](std::size_t i) {
-    return std::async(std::launch::async, [&, i] { return loadSnapshot(series[i], job, false); });
+    return std::async(std::launch::async,
+                      [&, i] { return loadSnapshot(series[i], job.field, job.units, false); });
   };
   std::future<std::unique_ptr<LoadedSnapshot>> next = loadAhead(first + 1);
   std::unique_ptr<gpu::VectorProbe> probeA, probeB;
@@ -298,13 +132,14 @@ void traceIntervals(const PathlineJob& job, std::size_t first, std::size_t last,
     std::unique_ptr<LoadedSnapshot> b = next.get();
     report.waitSeconds += waiting.seconds();
     addLoadTimes(*b, report);
-    checkLikeTheFirst(*b, series[i + 1].path, report);
+    // a is like the first
+    checkLikeTheFirst(volumeOf(*b->field), series[i + 1].path, volumeOf(*a->field));
     if (i + 2 <= last) next = loadAhead(i + 2);
     if (gpu) probeB = gpu->probe(volumeOf(*b->field), report);
     Stopwatch tracing;
     if (gpu) gpu->stepper.bind(*probeA, *probeB);
-    tracer.advance({a->time, &volumeOf(*a->field), samplerOf(probeA.get())},
-                   {b->time, &volumeOf(*b->field), samplerOf(probeB.get())},
+    tracer.advance({a->time, &volumeOf(*a->field), probeSampler(probeA.get())},
+                   {b->time, &volumeOf(*b->field), probeSampler(probeB.get())},
                    gpu ? &gpu->stepper : nullptr);
     report.traceSeconds += tracing.seconds();
     if (probeA) addProbeTimes(*probeA, report);
@@ -365,7 +200,7 @@ std::vector<output::FieldDataArray> pathlineProvenance(std::span<const SnapshotF
                                      series.back().path)),
       textField("InputFormat", info.format),
       textField("Vector", report.vectorName),
-      textField("PointDataChannels", joined(report.channelNames)),
+      textField("PointDataChannels", joinedNames(report.channelNames)),
       textField("Seeds", fmt::format("{} from {}", report.seedCount, report.seedDescription)),
       textField("Interpolant", report.interpolant),
       textField("StepMode", "time"),
@@ -411,7 +246,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   report.snapshotsUsed = last - first + 1;
 
   // On the heap: a GPU probe points at its snapshot's volume, which must not move.
-  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], job, true);
+  std::unique_ptr<LoadedSnapshot> a = loadSnapshot(series[first], job.field, job.units, true);
   addLoadTimes(*a, report);
   const flow::VectorVolume& firstVolume = volumeOf(*a->field);
   report.vectorName = firstVolume.vectorName;

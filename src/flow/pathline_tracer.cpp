@@ -49,6 +49,12 @@ TimeStep timeStep(double t, double until, double stepSize) {
   return s;
 }
 
+// Whether step s ends by `reach` (to a sliver: float rounding of the times must not hold a step
+// back a frame).
+bool endsBy(const TimeStep& s, double reach, double stepSize) {
+  return s.end <= reach + kSliverFraction * stepSize;
+}
+
 // The weight of snapshot b at time t, as sampleAt() takes it.
 float weightOfB(const Snapshot& a, const Snapshot& b, double t) {
   return float((t - a.time) / (b.time - a.time));
@@ -61,12 +67,13 @@ struct GroupSteps {
   std::vector<double> ends;
 };
 
-GroupSteps planSteps(double start, double until, const PathlineOptions& options, const Snapshot& a,
-                     const Snapshot& b) {
+GroupSteps planSteps(double start, double until, double reach, const PathlineOptions& options,
+                     const Snapshot& a, const Snapshot& b) {
   GroupSteps plan;
   double t = start;
   for (;;) {
     const TimeStep s = timeStep(t, until, options.stepSize);
+    if (!plan.steps.empty() && !endsBy(s, reach, options.stepSize)) return plan;
     shared::PathlineStep& step = plan.steps.emplace_back();
     step.h = float(s.h);
     step.weightStart = weightOfB(a, b, t);
@@ -270,7 +277,7 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
 }
 
 void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
-                          double until) {
+                          double until, double reach) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
   StageScratch& w = *stages_;
@@ -340,7 +347,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
         p.reason = options_.endReason;
         return;
       }
-      goesOn[i] = p.time < until;
+      goesOn[i] = stepsBy(p.time, until, reach);
     });
     // Mostly every particle goes on (all but the interval's last step): no copying then.
     const std::size_t going = std::size_t(std::count(goesOn.begin(), goesOn.begin() + n, 1));
@@ -361,7 +368,8 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
 }
 
 void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Snapshot& a,
-                                  const Snapshot& b, double until, IntervalStepper& stepper) {
+                                  const Snapshot& b, double until, double reach,
+                                  IntervalStepper& stepper) {
   const std::size_t n = moving.size();
   if (n == 0) return;
   // Particles at one time take the same steps: one group each.
@@ -382,7 +390,7 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
   std::vector<GroupSteps> plans(groupOfTime.size());
   std::size_t stepCount = 0;
   for (const auto& [time, group] : groupOfTime) {
-    plans[group] = planSteps(time, until, options_, a, b);
+    plans[group] = planSteps(time, until, reach, options_, a, b);
     stepCount = std::max(stepCount, plans[group].steps.size());
   }
   std::vector<shared::PathlineStep> schedule(plans.size() * stepCount, shared::PathlineStep{});
@@ -430,7 +438,7 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
   });
 }
 
-void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper) {
+void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper, double stopAt) {
   if (!(b.time > a.time))
     throw std::invalid_argument("pathlines: an interval must go forward in time");
   for (const Snapshot* s : {&a, &b}) {
@@ -443,28 +451,39 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper) {
                        "finest cells (streamlines with `trace` can)");
   }
   const double until = std::min(b.time, options_.endTime);
-  const bool aWasB = a.volume == lastB_;  // the caches hold regions of the volumes they name
+  const double reach = std::min(until, stopAt);
+  // The caches hold regions of the volumes they name.
+  const bool sameInterval = a.volume == lastA_ && b.volume == lastB_;
+  const bool aWasB = a.volume == lastB_;
   for (Particle& p : particles_) {
-    p.cacheA = aWasB ? p.cacheB : RegionCache{};
-    p.cacheB = {};
+    if (!sameInterval) {
+      p.cacheA = aWasB ? p.cacheB : RegionCache{};
+      p.cacheB = {};
+    }
+    p.pointsBefore = p.points;
+    p.tailBlock = p.lastBlock;
+    p.tailSlot = p.lastSlot;
   }
+  lastA_ = a.volume;
   lastB_ = b.volume;
+  growthBlock_ = blocks_.size();
   std::vector<std::size_t> due, moving;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    if (!p.released && p.releaseTime >= a.time && p.releaseTime < until) due.push_back(i);
+    if (!p.released && p.releaseTime >= a.time && p.releaseTime < reach) due.push_back(i);
   }
   release(due, a, b);
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    if (p.released && p.reason == AMRSTREAM_REASON_RUNNING && p.time < until) moving.push_back(i);
+    if (p.released && p.reason == AMRSTREAM_REASON_RUNNING && stepsBy(p.time, until, reach))
+      moving.push_back(i);
   }
   if (stepper) {
     // Neighbouring threads start near each other, and mostly stay so through the interval and
     // the next: the particles are sorted again only when others join.
     std::erase_if(deviceOrder_, [&](std::size_t i) {
       const Particle& p = particles_[i];
-      return p.reason != AMRSTREAM_REASON_RUNNING || !(p.time < until);
+      return p.reason != AMRSTREAM_REASON_RUNNING || !stepsBy(p.time, until, reach);
     });
     if (!due.empty() || deviceOrder_.size() != moving.size()) {
       std::vector<glm::vec3> starts(moving.size());
@@ -477,18 +496,22 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper) {
     const std::size_t most = stepper->mostParticles();
     for (std::size_t first = 0; first < moving.size(); first += most)
       moveOnDevice(std::span(moving).subspan(first, std::min(most, moving.size() - first)), a, b,
-                   until, *stepper);
+                   until, reach, *stepper);
   } else
-    move(moving, a, b, until);
-  time_ = until;
+    move(moving, a, b, until, reach);
+  time_ = reach;
   if (options_.maxResultBytes > 0) {
     const std::uint64_t bytes = pointCount() * TraceSet::bytesPerPoint(channelNames_.size(), false);
     if (bytes > options_.maxResultBytes)
       throw InputError("pathlines",
                        fmt::format("the paths take {:.2f} GB by time {}, more than the limit of "
                                    "{:.2f} GB: use fewer seeds, a longer step or a shorter span",
-                                   bytes / 1e9, until, options_.maxResultBytes / 1e9));
+                                   bytes / 1e9, reach, options_.maxResultBytes / 1e9));
   }
+}
+
+bool PathlineTracer::stepsBy(double t, double until, double reach) const {
+  return t < until && endsBy(timeStep(t, until, options_.stepSize), reach, options_.stepSize);
 }
 
 void PathlineTracer::finish() {
@@ -515,6 +538,12 @@ std::uint64_t PathlineTracer::stepCount() const {
   return steps;
 }
 
+std::size_t PathlineTracer::runningCount() const {
+  return std::size_t(std::count_if(particles_.begin(), particles_.end(), [](const Particle& p) {
+    return p.released && p.reason == AMRSTREAM_REASON_RUNNING;
+  }));
+}
+
 TraceSet PathlineTracer::emptySet() const {
   TraceSet set;
   set.vectorName = vectorName_;
@@ -522,38 +551,51 @@ TraceSet PathlineTracer::emptySet() const {
   return set;
 }
 
-TraceSet PathlineTracer::pathlines() const {
+TraceSet PathlineTracer::pathlines() const { return assemble(0, false); }
+
+TraceSet PathlineTracer::lastGrowth() const { return assemble(growthBlock_, true); }
+
+TraceSet PathlineTracer::assemble(std::size_t firstBlock, bool growth) const {
   TraceSet set = emptySet();
   const std::size_t channels = channelNames_.size();
+  const auto copyPoint = [&](const PointBlock& block, std::size_t slot, std::uint64_t at) {
+    set.positions[at] = block.positions[slot];
+    set.times[at] = block.times[slot];
+    set.vectors[at] = block.vectors[slot];
+    std::copy_n(block.channels.begin() + slot * channels, channels,
+                set.channels.begin() + at * channels);
+  };
   std::vector<std::uint64_t> next(particles_.size());  // where each particle's next point goes
+  std::vector<std::size_t> tails;                      // particles whose line starts at a tail
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    if (!p.released) continue;
-    next[i] = set.offsets.back();
+    const std::uint32_t added = growth ? p.points - p.pointsBefore : p.points;
+    if (!p.released || (growth && added == 0)) continue;
+    const bool tail = growth && p.pointsBefore > 0;
+    if (tail) tails.push_back(i);
+    next[i] = set.offsets.back() + (tail ? 1 : 0);
     set.seedIds.push_back(p.seed);
     set.directions.push_back(1.0f);
     set.steps.push_back(p.steps);
     set.reasons.push_back(p.reason);
-    set.offsets.push_back(set.offsets.back() + p.points);
+    set.offsets.push_back(next[i] + added);
   }
   const std::uint64_t points = set.offsets.back();
   set.positions.resize(points);
   set.times.resize(points);
   set.vectors.resize(points);
   set.channels.resize(points * channels);
+  for (const std::size_t i : tails)
+    copyPoint(blocks_[particles_[i].tailBlock], particles_[i].tailSlot, next[i] - 1);
   // Blocks in the order they were made: each particle's points in order; a particle has at most
   // one slot per block, so a block's slots go in parallel.
-  for (const PointBlock& block : blocks_)
+  for (std::size_t b = firstBlock; b < blocks_.size(); ++b) {
+    const PointBlock& block = blocks_[b];
     tbb::parallel_for(std::size_t(0), block.particles.size(), [&](std::size_t slot) {
       const std::uint32_t particle = block.particles[slot];
-      if (particle == kNoParticle) return;
-      const std::uint64_t at = next[particle]++;
-      set.positions[at] = block.positions[slot];
-      set.times[at] = block.times[slot];
-      set.vectors[at] = block.vectors[slot];
-      std::copy_n(block.channels.begin() + slot * channels, channels,
-                  set.channels.begin() + at * channels);
+      if (particle != kNoParticle) copyPoint(block, slot, next[particle]++);
     });
+  }
   return set;
 }
 

@@ -64,8 +64,12 @@ class PathlineTracer {
   // ended. The particles advance together, one RK4 stage at a time, each stage's samples of
   // both snapshots taken in one batch by the snapshots' samplers; the rest runs on all cores.
   // With a `stepper` (holding a and b on its device), the particles' steps run there instead,
-  // and the host only plans them and stores their points.
-  void advance(Snapshot a, Snapshot b, IntervalStepper* stepper = nullptr);
+  // and the host only plans them and stores their points. With `stopAt` before b.time, only
+  // the releases before it and the steps that end by it are taken (a viewer's frame): the next
+  // call, with the same interval or the next, goes on from there, and the lines equal those of
+  // whole intervals.
+  void advance(Snapshot a, Snapshot b, IntervalStepper* stepper = nullptr,
+               double stopAt = std::numeric_limits<double>::infinity());
   // Stops the particles still running at the series' end (AMRSTREAM_REASON_SERIES_END).
   void finish();
 
@@ -76,7 +80,13 @@ class PathlineTracer {
   // (at the seed) to the oldest; IntegrationTime is each particle's age.
   TraceSet streaklines() const;
 
+  // What the last advance() added: one line per particle that gained points, in line order, with
+  // its last point from before (where it had one) and then the new points (the polylines that
+  // extend pathlines()).
+  TraceSet lastGrowth() const;
+
   std::size_t particleCount() const { return particles_.size(); }
+  std::size_t runningCount() const;           // released and not stopped
   std::vector<std::int32_t> reasons() const;  // of the released particles, in line order
   std::uint64_t pointCount() const;
   std::uint64_t stepCount() const;
@@ -93,6 +103,8 @@ class PathlineTracer {
     RegionCache cacheA, cacheB;  // the CPU sampler's last regions in the interval's snapshots
     std::uint32_t points = 0;    // points stored
     std::uint32_t lastBlock = 0, lastSlot = 0;  // where the last of them is
+    // The same before the last advance(): what lastGrowth() joins the new points to.
+    std::uint32_t pointsBefore = 0, tailBlock = 0, tailSlot = 0;
   };
 
  public:
@@ -116,10 +128,11 @@ class PathlineTracer {
   };
 
   void release(std::span<const std::size_t> due, const Snapshot& a, const Snapshot& b);
-  void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
-            double until);
+  // Each particle takes its steps toward `until` that end by `reach`.
+  void move(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b, double until,
+            double reach);
   void moveOnDevice(std::span<const std::size_t> moving, const Snapshot& a, const Snapshot& b,
-                    double until, IntervalStepper& stepper);
+                    double until, double reach, IntervalStepper& stepper);
   struct TimeSample;
   struct SampleScratch;
   // The vector at each (point, time) from the two snapshots bracketing the times, into `out`;
@@ -136,6 +149,12 @@ class PathlineTracer {
   void storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a, const Snapshot& b,
                   const TimeSample& s);
   TraceSet emptySet() const;
+  // Whether a particle at time t steps in this advance: its next step toward `until` ends by
+  // `reach`.
+  bool stepsBy(double t, double until, double reach) const;
+  // The released particles' points in blocks from `firstBlock` on, one line each; with `growth`,
+  // only the particles that have points there, each after its point from before.
+  TraceSet assemble(std::size_t firstBlock, bool growth) const;
 
   PathlineOptions options_;
   std::string vectorName_;
@@ -144,7 +163,9 @@ class PathlineTracer {
   std::vector<Particle> particles_;
   std::vector<PointBlock> blocks_;
   double time_;                          // where the last interval ended
-  const VectorVolume* lastB_ = nullptr;  // the last interval's later snapshot
+  const VectorVolume* lastA_ = nullptr;  // the last interval's snapshots
+  const VectorVolume* lastB_ = nullptr;
+  std::size_t growthBlock_ = 0;  // the first block of the last advance()
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;
   std::unique_ptr<StageScratch> stages_;

@@ -143,17 +143,20 @@ void runViewBenchmark(const ViewJob& o, const Reporter& reporter) {
   if (!o.screenshot.empty())
     throw settingError("screenshot", "{benchmark} has no window to take a screenshot of");
   requireViewerBackend(o.job.backend);
-  RunFiles files = jobFiles(o.job);
+  std::vector<SnapshotFile> series;
+  const TraceJob viewed = viewedJob(o.job, series, log);
+  RunFiles files = jobFiles(viewed);
   if (!o.frameTimes.empty()) {
     files.addOutput("{frame_times}", o.frameTimes);
     requireOutputExtension("{frame_times}", o.frameTimes, {".csv"}, "comma-separated values");
   }
-  PreparedJob job = prepare(o.job, {true, KeepDataset::Yes}, reporter);
+  PreparedJob job = prepare(viewed, {true, KeepDataset::Yes}, reporter);
   const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
   const vk::Context ctx = createContext(o.job.backend, choice);
-  ViewSession session(o, ctx, choice.backend, std::move(job));
+  ViewSession session(o, ctx, choice.backend, std::move(job), std::move(series));
+  sayPlayback(session, log);
   say(log, fmt::format("viewer     benchmark, no window: backend {} on {}, {} x {}, {} frames",
                        gpu::backendName(choice.backend), ctx.deviceName(), o.look.width,
                        o.look.height, o.frames));

@@ -53,15 +53,20 @@ void drawStatus(ViewSession& session, const FrameStats& stats) {
   text(fmt::format("backend {} on {}", gpu::backendName(session.backend()), stats.device));
   text(fmt::format("frame {:.1f} ms, {:.3g} particle-steps/s", 1e3 * stats.frameSeconds,
                    stats.stepsPerSecond));
-  const flow::ProgressiveTraces& traces = session.traces();
+  const flow::GrowingTraces& traces = session.traces();
   text(fmt::format("traces {} running of {}, {} steps", traces.runningCount(), traces.lineCount(),
                    traces.stepsTaken()));
+  if (const SeriesPlayback* series = session.playback())
+    text(fmt::format("pathlines at t = {:.6g}, interval {} of {}", series->time(),
+                     std::min(series->interval() + 1, series->intervalCount()),
+                     series->intervalCount()));
   text(fmt::format("{} tube segments, {} frames accumulated", session.scene().segments.size(),
                    session.renderer().framesAccumulated()));
 }
 
 // The step size and mode; returns whether they changed (the same seeds are then traced again).
 bool drawStepping(ViewSession& session) {
+  if (session.playback()) return false;  // a series steps in time by the dt it started with
   flow::TraceOptions& trace = session.input().options;
   bool changed = false;
   float stepSize = trace.stepSize;

@@ -3,26 +3,52 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "amrstream/error.hpp"
 #include "api/seed_choice.hpp"
 #include "flow/line_plan.hpp"
+#include "flow/progressive_traces.hpp"
 #include "render/middle_range.hpp"
 #include "util/stopwatch.hpp"
 #include "vk/context.hpp"
 
 namespace amrstream::viewer {
 
+TraceJob viewedJob(const TraceJob& job, std::vector<SnapshotFile>& series, const Log& log) {
+  series.clear();
+  const std::string& input = job.dataset.input;
+  if (input.find_first_of("*?[") == std::string::npos || std::filesystem::exists(input)) return job;
+  series = listSnapshots(std::vector<std::string>{input});
+  say(log, fmt::format("series     {} snapshots from t = {:g} ({}) to {:g} ({}): pathlines",
+                       series.size(), series.front().time, series.front().path, series.back().time,
+                       series.back().path));
+  TraceJob first = job;
+  first.dataset.input = series.front().path;
+  return first;
+}
+
+void sayPlayback(const ViewSession& session, const Log& log) {
+  const SeriesPlayback* playback = session.playback();
+  if (!playback) return;
+  const flow::PathlineOptions& o = playback->options();
+  say(log, fmt::format("pathlines  dt = {:g} from t = {:g} to {:g}, {} intervals (for these the "
+                       "stepping line's mode, h and steps do not apply)",
+                       o.stepSize, o.startTime, o.endTime, playback->intervalCount()));
+}
+
 ViewSession::ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Backend backend,
-                         PreparedJob job)
+                         PreparedJob job, std::vector<SnapshotFile> series)
     : options_(options),
       ctx_(&ctx),
       backend_(backend),
       job_(std::move(job)),
       input_(job_.impl()),
-      tracer_(ctx, backend, input_.volume()) {
+      tracer_(ctx, backend, input_.volume()),
+      series_(std::move(series)) {
   startTraces();
-  options_.look.timeUnit = integrationTimeUnit(input_.options.stepMode, input_.field.info());
+  options_.look.timeUnit = integrationTimeUnit(
+      series_.empty() ? input_.options.stepMode : flow::StepMode::Time, input_.field.info());
   scene_ = prepareScene(options_.look, input_.cells(), input_.volume(), traces_->traces(),
                         input_.field.info());
   renderer_ =
@@ -32,13 +58,25 @@ ViewSession::ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Ba
 }
 
 void ViewSession::startTraces() {
+  traces_.reset();
+  playback_ = nullptr;
+  vkQueueWaitIdle(ctx_->queue());
+  if (!series_.empty()) {
+    PathlineSettings settings;
+    if (options_.job.trace.stepSize) settings.stepSize = *options_.job.trace.stepSize;
+    auto playback = std::make_unique<SeriesPlayback>(
+        series_, pathlineOptions(series_, settings), options_.job.field, options_.job.dataset.units,
+        input_.volume(), input_.seeds.points, ctx_, backend_);
+    playback_ = playback.get();
+    traces_ = std::move(playback);
+    return;
+  }
   flow::LinePlan plan =
       flow::planLines(input_.volume(), input_.seeds.points, input_.options.direction);
-  traces_.reset();
-  vkQueueWaitIdle(ctx_->queue());
-  traces_.emplace(tracer_.startRounds(plan.states, input_.options,
-                                      std::max(options_.stepsPerFrame, kPanelMostStepsPerFrame)),
-                  std::move(plan.layout), flow::traceShape(input_.volume(), input_.options));
+  traces_ = std::make_unique<flow::ProgressiveTraces>(
+      tracer_.startRounds(plan.states, input_.options,
+                          std::max(options_.stepsPerFrame, kPanelMostStepsPerFrame)),
+      std::move(plan.layout), flow::traceShape(input_.volume(), input_.options));
 }
 
 void ViewSession::fitColourRange() {

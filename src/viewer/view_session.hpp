@@ -1,16 +1,19 @@
 #pragma once
 // The state of `amrstream view`: the prepared input, traces growing a few steps per frame on the
-// GPU tracer, and the tube renderer; the viewer's controls change it between frames.
+// GPU (streamlines of one snapshot, or pathlines through a series played from its first), and the
+// tube renderer; the viewer's controls change it between frames.
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "amrstream/pathlines.hpp"
 #include "amrstream/viewer.hpp"
 #include "api/job_state.hpp"
 #include "api/render_scene.hpp"
-#include "flow/progressive_traces.hpp"
+#include "api/series_playback.hpp"
+#include "flow/growing_traces.hpp"
 #include "gpu/gpu_tracer.hpp"
 #include "render/tube_renderer.hpp"
 
@@ -36,10 +39,21 @@ struct ViewFrameTimes {
   std::size_t segments = 0;        // tube segments after the frame
 };
 
+// The job of the snapshot the viewer opens: the input's own; or where the input is a glob pattern
+// (not a file's name) matching snapshots of a series, its first, with `series` set to them
+// (listSnapshots': InputError for fewer than two, or one without a time) and a "series" line said.
+TraceJob viewedJob(const TraceJob& job, std::vector<SnapshotFile>& series, const Log& log);
+
+// Says the "pathlines" line of a session that plays a series (its time step and span).
+void sayPlayback(const class ViewSession& session, const Log& log);
+
 class ViewSession {
  public:
-  ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Backend backend,
-              PreparedJob job);
+  // With a `series` (listSnapshots'), `job` is its first snapshot's and the session plays the
+  // series: pathlines from the seeds, time step options.job.trace.stepSize (default a tenth of
+  // the shortest interval).
+  ViewSession(const ViewJob& options, const vk::Context& ctx, gpu::Backend backend, PreparedJob job,
+              std::vector<SnapshotFile> series = {});
 
   // Advances the traces by stepsPerFrame and, if they grew, rebuilds the tubes; renders one frame
   // at this size (with compute, of the tubes before this round, while their BVH grows on the
@@ -75,7 +89,9 @@ class ViewSession {
   const std::optional<render::ValueRange>& middleValues() const { return middleValues_; }
   // Applies middleColours to the scene's colour range (after its tubes changed).
   void fitColourRange();
-  const flow::ProgressiveTraces& traces() const { return *traces_; }
+  const flow::GrowingTraces& traces() const { return *traces_; }
+  // The series being played, or nothing for streamlines of one snapshot.
+  const SeriesPlayback* playback() const { return playback_; }
   const render::TubeRenderer& renderer() const { return *renderer_; }
   gpu::Backend backend() const { return backend_; }
 
@@ -86,7 +102,9 @@ class ViewSession {
   PreparedJob job_;
   PreparedJob::Impl& input_;
   gpu::GpuTracer tracer_;
-  std::optional<flow::ProgressiveTraces> traces_;
+  std::vector<SnapshotFile> series_;
+  std::unique_ptr<flow::GrowingTraces> traces_;
+  SeriesPlayback* playback_ = nullptr;  // traces_, when a series plays
   RenderScene scene_;
   std::unique_ptr<render::TubeRenderer> renderer_;
   ViewFrameTimes times_;

@@ -159,14 +159,16 @@ class WindowLoop {
 void runViewWindow(const ViewJob& o, const Reporter& reporter) {
   const Log& log = reporter.log;
   requireViewerBackend(o.job.backend);
-  RunFiles files = jobFiles(o.job);
+  std::vector<SnapshotFile> series;
+  const TraceJob viewed = viewedJob(o.job, series, log);
+  RunFiles files = jobFiles(viewed);
   if (!o.screenshot.empty()) {
     files.addOutput("{screenshot}", o.screenshot);
     requireOutputExtension("{screenshot}", o.screenshot, {".png"}, "a PNG image");
   }
   // The window first: without a display, say so before loading anything.
   app::Window window({int(o.look.width), int(o.look.height), "amrstream view", true});
-  PreparedJob job = prepare(o.job, {true, KeepDataset::Yes}, reporter);
+  PreparedJob job = prepare(viewed, {true, KeepDataset::Yes}, reporter);
   const BackendChoice choice = chooseBackend(o.job.backend, BackendUse::Render, log);
   if (choice.backend == gpu::Backend::Cpu)
     throw std::runtime_error("the viewer needs a Vulkan device with compute; none was found");
@@ -177,7 +179,8 @@ void runViewWindow(const ViewJob& o, const Reporter& reporter) {
       .presentation(window.requiredInstanceExtensions(), window.surfaceFactory());
   if (!choice.deviceFilter.empty()) builder.deviceName(choice.deviceFilter);
   const vk::Context ctx = builder.build();
-  ViewSession session(o, ctx, choice.backend, std::move(job));
+  ViewSession session(o, ctx, choice.backend, std::move(job), std::move(series));
+  sayPlayback(session, log);
   WindowLoop loop(o, window, ctx, session, files, log);
   say(log, fmt::format("viewer     backend {} on {}", gpu::backendName(choice.backend),
                        ctx.deviceName()));

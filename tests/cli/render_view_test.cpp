@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -336,6 +337,53 @@ TEST(ViewCommand, BenchmarkRunsWithoutAWindowAndPrintsFrameTimes) {
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("--frames: --benchmark needs a number of frames"), std::string::npos)
       << run.output;
+}
+
+// A glob pattern that names a series plays it: pathlines grow a few time steps a frame, stopping
+// at each snapshot, and take the steps `pathlines` takes from the same seeds.
+TEST(ViewCommand, PlaysASeriesAsGrowingPathlines) {
+  const std::filesystem::path dir = outputPath("series.vtp").parent_path() / "series";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string base = (dir / "sw").string();
+  ASSERT_EQ(testing::runAmrstream("gen swirl --levels 3 --root-blocks 2 --target-cells 20000 "
+                                  "--series 3 --interval 0.05 --out " +
+                                  base)
+                .status,
+            0);
+  const std::string seeds = " --count 24 --seed-box 0.2,0.2,0.3,0.8,0.8,0.7 --backend compute";
+  const auto paths = testing::runAmrstream("pathlines '" + base + "_*.exa' --out " +
+                                           outputPath("series.vtp").string() + seeds);
+  ASSERT_EQ(paths.status, 0) << paths.output;
+  const std::smatch steps = [&] {
+    std::smatch m;
+    std::regex_search(paths.output, m, std::regex("particles  24 \\(24 seeds\\), ([0-9,]+) steps"));
+    return m;
+  }();
+  ASSERT_FALSE(steps.empty()) << paths.output;
+  std::string taken = steps[1].str();
+  std::erase(taken, ',');
+  const auto run = testing::runAmrstream("view '" + base +
+                                             "_*.exa' --benchmark --steps-per-frame 4 --frames 9 "
+                                             "--width 32 --height 32" +
+                                             seeds,
+                                         "AMRSTREAM_VALIDATION=1");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("series     3 snapshots from t = 0"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("pathlines  dt = 0.005 from t = 0 to 0.1, 2 intervals"),
+            std::string::npos)
+      << run.output;
+  // 10 steps an interval at 4 a frame: 3 frames each.
+  EXPECT_NE(run.output.find("growing    6 frames while traces ran"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("traces     " + taken + " particle-steps"), std::string::npos)
+      << "pathlines took " << taken << " steps:\n"
+      << run.output;
+
+  const auto lone = testing::runAmrstream("view '" + base + "_0000.e*' --benchmark --frames 1");
+  EXPECT_EQ(lone.status, 2) << lone.output;
+  EXPECT_NE(lone.output.find("a series needs two snapshots or more; 1 given"), std::string::npos)
+      << lone.output;
 }
 
 TEST(ViewCommand, TracesProgressivelyAndShowsTubesUnderXvfb) {

@@ -256,6 +256,78 @@ TEST(Pathlines, CarryPointDataInterpolatedInTime) {
   EXPECT_LT(worst, 1e-5);
 }
 
+// The viewer's frames: each interval in advances of a few steps (a stop inside the interval)
+// makes the lines of whole intervals, bit for bit; what each advance added (lastGrowth), each
+// piece after its line's last point from before, adds up to the lines.
+TEST(Pathlines, AFewStepsAtATimeMakeTheLinesOfWholeIntervals) {
+  const Series series = swirlSeries(0.05, 0.2, Interpolant::Tent, {"temp"});
+  std::vector<glm::dvec3> seeds = seedsAroundTheAxis(30, 13);
+  seeds.push_back({0.6, 0.5, 0.999});  // leaves through the top
+  for (const bool streaks : {false, true}) {
+    SCOPED_TRACE(streaks ? "streaklines" : "pathlines");
+    PathlineOptions o;
+    o.stepSize = 0.01;
+    o.endTime = 0.17;                     // within the last interval
+    if (streaks) o.releaseEvery = 0.015;  // releases between the frames' stops
+    const PathlineTracer whole = traceSeries(series, seeds, o, {"temp"});
+    PathlineTracer frames(seeds, o, "vel", {"temp"});
+    std::vector<std::vector<glm::vec3>> grown(seeds.size());  // pathlines: a seed is a line
+    std::size_t advances = 0;
+    for (std::size_t i = 0; i + 1 < series.times.size() && series.times[i] < o.endTime; ++i) {
+      const Snapshot a{series.times[i], &series.volumes[i]};
+      const Snapshot b{series.times[i + 1], &series.volumes[i + 1]};
+      for (double t = a.time; t < std::min(b.time, o.endTime);) {
+        const double stopAt = t + 3 * o.stepSize;
+        frames.advance(a, b, nullptr,
+                       stopAt >= b.time ? std::numeric_limits<double>::infinity() : stopAt);
+        ++advances;
+        const TraceSet piece = frames.lastGrowth();
+        // The stop holds: the advance took the steps that end by it, and no more.
+        EXPECT_GT(piece.pointCount(), 0u);
+        const float reached = *std::max_element(piece.times.begin(), piece.times.end());
+        EXPECT_LE(reached, float(std::min({stopAt, b.time, o.endTime})));
+        EXPECT_GT(reached + 1e-6f, float(std::min({stopAt, b.time, o.endTime}) - o.stepSize));
+        t = stopAt;
+        for (std::size_t line = 0; !streaks && line < piece.lineCount(); ++line) {
+          std::vector<glm::vec3>& points = grown[piece.seedIds[line]];
+          std::uint64_t first = piece.offsets[line];
+          if (!points.empty()) {
+            EXPECT_EQ(piece.positions[first], points.back()) << "the tail";
+            ++first;
+          }
+          points.insert(points.end(), piece.positions.begin() + std::ptrdiff_t(first),
+                        piece.positions.begin() + std::ptrdiff_t(piece.offsets[line + 1]));
+        }
+      }
+    }
+    frames.finish();
+    EXPECT_EQ(advances, 7u);  // 2 a whole interval, 1 in the last's first 0.02
+    for (const bool streaklines : {false, true}) {
+      const TraceSet want = streaklines ? whole.streaklines() : whole.pathlines();
+      const TraceSet got = streaklines ? frames.streaklines() : frames.pathlines();
+      ASSERT_EQ(got.offsets, want.offsets);
+      EXPECT_EQ(got.reasons, want.reasons);
+      EXPECT_EQ(got.steps, want.steps);
+      EXPECT_EQ(got.seedIds, want.seedIds);
+      for (std::uint64_t i = 0; i < want.pointCount(); ++i) {
+        ASSERT_EQ(got.positions[i], want.positions[i]) << "point " << i;
+        ASSERT_EQ(got.times[i], want.times[i]) << "point " << i;
+        ASSERT_EQ(got.channels[i], want.channels[i]) << "point " << i;
+      }
+    }
+    if (streaks) continue;
+    const TraceSet want = whole.pathlines();
+    EXPECT_NE(std::count(want.reasons.begin(), want.reasons.end(), AMRSTREAM_REASON_OUT_OF_DOMAIN),
+              0);
+    for (std::size_t line = 0; line < want.lineCount(); ++line) {
+      const std::vector<glm::vec3> points(
+          want.positions.begin() + std::ptrdiff_t(want.offsets[line]),
+          want.positions.begin() + std::ptrdiff_t(want.offsets[line + 1]));
+      EXPECT_EQ(grown[want.seedIds[line]], points) << "line " << line;
+    }
+  }
+}
+
 TEST(Pathlines, RejectBadOptions) {
   const std::vector<glm::dvec3> seeds{{0.5, 0.5, 0.5}};
   PathlineOptions o;

@@ -2,7 +2,8 @@
 // probe's samples equal flow::sampleVector at random points and region faces; pathlines and
 // streaklines through a swirl series whose refinement moves, with the host stepping on the
 // probe's samples or the device stepping (gpu::PathlineStepper), have the CPU's lines, steps and
-// reasons, and positions within float rounding, with either interpolant.
+// reasons, and positions within float rounding, with either interpolant; advanced a few steps at a
+// time (the viewer's frames), the device's lines are those of whole intervals.
 
 #include <gtest/gtest.h>
 
@@ -89,7 +90,7 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
     options.releaseEvery = 0.04;
     options.endTime = 0.15;
     flow::PathlineTracer cpu(seeds, options, "vel", {"temp"}), gpu(seeds, options, "vel", {"temp"}),
-        device(seeds, options, "vel", {"temp"});
+        device(seeds, options, "vel", {"temp"}), frames(seeds, options, "vel", {"temp"});
     for (std::size_t i = 0; i + 1 < times.size(); ++i) {
       cpu.advance({times[i], &volumes[i], {}}, {times[i + 1], &volumes[i + 1], {}});
       VectorProbe* a = probes[i].get();
@@ -101,8 +102,19 @@ TEST_P(GpuPathlineTest, PathlinesAndStreaklinesEqualTheCpus) {
       gpu.advance(probedA, probedB);
       stepper.bind(*a, *b);
       device.advance(probedA, probedB, &stepper);
+      // The viewer's frames: two steps at a time.
+      for (double t = times[i]; t < std::min(times[i + 1], options.endTime); t += 0.02)
+        frames.advance(
+            probedA, probedB, &stepper,
+            t + 0.02 >= times[i + 1] ? std::numeric_limits<double>::infinity() : t + 0.02);
     }
     EXPECT_GT(stepper.times().rounds, 0u);
+    // Advanced a few steps at a time, the device makes the lines of whole intervals exactly.
+    const flow::TraceSet whole = device.pathlines(), framed = frames.pathlines();
+    ASSERT_EQ(framed.offsets, whole.offsets);
+    EXPECT_EQ(framed.reasons, whole.reasons);
+    EXPECT_EQ(framed.positions, whole.positions);
+    EXPECT_EQ(framed.channels, whole.channels);
     for (const auto& [tracer, what] : {std::pair{&gpu, "samples"}, std::pair{&device, "steps"}})
       for (const bool streaks : {false, true}) {
         SCOPED_TRACE(std::string(what) + (streaks ? ", streaklines" : ", pathlines"));
