@@ -74,8 +74,9 @@ void checkLikeTheFirst(const flow::VectorVolume& v, const std::string& path,
     throw InputError(path, fmt::format("its vector is '{}', the first snapshot's '{}'",
                                        v.vectorName, first.vectorName));
   if (v.channelNames != first.channelNames)
-    throw InputError(path, fmt::format("its point-data channels are {}, the first snapshot's {}",
-                                       joinedNames(v.channelNames), joinedNames(first.channelNames)));
+    throw InputError(path,
+                     fmt::format("its point-data channels are {}, the first snapshot's {}",
+                                 joinedNames(v.channelNames), joinedNames(first.channelNames)));
 }
 
 std::pair<std::size_t, std::size_t> snapshotsUsed(std::span<const SnapshotFile> series, double t0,
@@ -163,7 +164,6 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
   checkReleases(options, 0, 0);
   return options;
 }
-
 
 flow::VectorBatchSampler probeSampler(gpu::VectorProbe* probe) {
   if (!probe) return {};

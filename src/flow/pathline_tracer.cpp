@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <ranges>
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -207,39 +209,43 @@ PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
 PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
 PathlineTracer::~PathlineTracer() = default;
 
-PathlineTracer::PointBlock& PathlineTracer::newBlock(std::size_t slots) {
-  // Every moving particle's point of one step. The slots are marked empty on all cores; the
-  // other arrays are left as they are made until the slots are written, also on all cores.
-  PointBlock& block = blocks_.emplace_back();
-  block.particles.resize(slots);
-  block.positions.resize(slots);
-  block.vectors.resize(slots);
-  block.times.resize(slots);
-  block.channels.resize(slots * channelNames_.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots), [&](const auto& range) {
-    std::fill(block.particles.begin() + range.begin(), block.particles.begin() + range.end(),
-              kNoParticle);
-  });
-  return block;
+template <typename Capacities>
+PathlineTracer::PointChunk& PathlineTracer::newChunk(std::span<const std::size_t> particles,
+                                                     const Capacities& capacities) {
+  PointChunk& chunk = chunks_.emplace_back();
+  const std::size_t runs = particles.size();
+  chunk.particles.resize(runs);
+  chunk.starts.resize(runs + 1);
+  chunk.filled.assign(runs, 0);
+  chunk.starts[0] = 0;
+  for (std::size_t k = 0; k < runs; ++k) {
+    chunk.particles[k] = std::uint32_t(particles[k]);
+    chunk.starts[k + 1] = chunk.starts[k] + std::uint64_t(capacities[k]);
+  }
+  const std::uint64_t slots = chunk.starts[runs];
+  chunk.positions.resize(slots);
+  chunk.vectors.resize(slots);
+  chunk.times.resize(slots);
+  chunk.channels.resize(slots * channelNames_.size());
+  return chunk;
 }
 
-float* PathlineTracer::placePoint(std::size_t particle, std::size_t blockIndex, std::uint32_t slot,
-                                  glm::vec3 vector) {
-  Particle& p = particles_[particle];
-  PointBlock& block = blocks_[blockIndex];
-  block.particles[slot] = std::uint32_t(particle);
-  block.positions[slot] = p.position;
-  block.times[slot] = float(p.time);
-  block.vectors[slot] = vector;
-  p.lastBlock = std::uint32_t(blockIndex);
+float* PathlineTracer::placePoint(std::size_t run, glm::vec3 vector) {
+  PointChunk& chunk = chunks_.back();
+  Particle& p = particles_[chunk.particles[run]];
+  const std::uint64_t slot = chunk.starts[run] + chunk.filled[run]++;
+  chunk.positions[slot] = p.position;
+  chunk.times[slot] = float(p.time);
+  chunk.vectors[slot] = vector;
+  p.lastChunk = std::uint32_t(chunks_.size() - 1);
   p.lastSlot = slot;
   ++p.points;
-  return block.channels.data() + std::size_t(slot) * channelNames_.size();
+  return chunk.channels.data() + slot * channelNames_.size();
 }
 
-void PathlineTracer::storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a,
-                                const Snapshot& b, const TimeSample& s) {
-  float* out = placePoint(particle, blocks_.size() - 1, slot, s.value);
+void PathlineTracer::storePoint(std::size_t run, const Snapshot& a, const Snapshot& b,
+                                const TimeSample& s) {
+  float* out = placePoint(run, s.value);
   const std::size_t channels = channelNames_.size();
   if (channels == 0) return;
   if (s.reason != AMRSTREAM_REASON_RUNNING) {
@@ -268,9 +274,9 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   }
   std::vector<TimeSample> samples(due.size());
   sampleAt(a, b, points, times, due, samples);
-  newBlock(due.size());
+  newChunk(due, std::vector<std::uint32_t>(due.size(), 1));
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
-    storePoint(due[i], std::uint32_t(i), a, b, samples[i]);
+    storePoint(i, a, b, samples[i]);
     if (samples[i].reason != AMRSTREAM_REASON_RUNNING)
       particles_[due[i]].reason = samples[i].reason;
   });
@@ -280,6 +286,18 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
                           double until, double reach) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
+  // Each particle's run holds the steps it takes toward `reach`; runs[i] is active[i]'s.
+  std::vector<std::uint32_t> capacities(all);
+  tbb::parallel_for(std::size_t(0), all, [&](std::size_t i) {
+    std::uint32_t steps = 0;
+    for (double t = particles_[active[i]].time; stepsBy(t, until, reach) && t < options_.endTime;
+         ++steps)
+      t = timeStep(t, until, options_.stepSize).end;
+    capacities[i] = steps;
+  });
+  newChunk(active, capacities);
+  std::vector<std::size_t> runs(all);
+  std::iota(runs.begin(), runs.end(), std::size_t(0));
   StageScratch& w = *stages_;
   w.resize(all);
   auto &x = w.x, &points = w.points, &k1 = w.k1, &k2 = w.k2, &k3 = w.k3;
@@ -330,7 +348,6 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
     });
     sampleStage();  // at the new points: their output and the next step's first stage
 
-    newBlock(n);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       goesOn[i] = 0;
       Particle& p = particles_[active[i]];
@@ -342,7 +359,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       p.position = points[i];
       p.time = stageTimes[i];
       ++p.steps;
-      storePoint(active[i], std::uint32_t(i), a, b, stage[i]);
+      storePoint(runs[i], a, b, stage[i]);
       if (p.time >= options_.endTime) {
         p.reason = options_.endReason;
         return;
@@ -358,6 +375,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       for (std::size_t i = 0; i < n; ++i)
         if (goesOn[i]) {
           active[kept] = active[i];
+          runs[kept] = runs[i];
           start[kept] = stage[i];
           ++kept;
         }
@@ -398,42 +416,40 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
     std::copy(plans[g].steps.begin(), plans[g].steps.end(), schedule.begin() + g * stepCount);
 
   const IntervalPlan plan{positions, groups, schedule, std::uint32_t(stepCount)};
+  newChunk(moving,
+           std::views::transform(groups, [&](std::uint32_t g) { return plans[g].steps.size(); }));
   stepper.move(plan, [&](const StepRows& rows) {
     if (rows.channelCount != channelNames_.size())
       throw std::logic_error("pathlines: the device sampled other point-data channels");
-    const std::size_t firstBlock = blocks_.size();
-    for (std::uint32_t r = 0; r < rows.rows; ++r) newBlock(n);
     const std::size_t channels = rows.channelCount;
-    // Particle by particle through the round's steps: each particle's state is written once.
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
-      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-        Particle& p = particles_[moving[i]];
-        const GroupSteps& steps = plans[groups[i]];
-        for (std::uint32_t r = 0; r < rows.rows; ++r) {
+    // A tile of particles at a time, step by step: the rows are read in order and each
+    // particle's points go to its run, in order.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+      for (std::uint32_t r = 0; r < rows.rows; ++r)
+        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+          Particle& p = particles_[moving[i]];
           const std::size_t at = std::size_t(r) * n + i;
           const std::int32_t status = rows.status[at];
-          if (status == AMRSTREAM_PATHLINE_NO_STEP) continue;
+          if (status == AMRSTREAM_PATHLINE_NO_STEP || p.reason != AMRSTREAM_REASON_RUNNING)
+            continue;
           if (status != AMRSTREAM_REASON_RUNNING) {
             p.reason = status;
-            break;
+            continue;
           }
+          const GroupSteps& steps = plans[groups[i]];
           const std::uint32_t step = rows.firstStep + r;
           p.position = rows.positions[at];
           p.time = steps.ends[step];
           ++p.steps;
-          float* out = placePoint(moving[i], firstBlock + r, std::uint32_t(i), rows.vectors[at]);
+          float* out = placePoint(i, rows.vectors[at]);
           const float w = steps.steps[step].weightEnd;
           for (std::size_t c = 0; c < channels; ++c) {
             const float va = rows.channelsA[at * channels + c];
             const float vb = rows.channelsB[at * channels + c];
             out[c] = va + w * (vb - va);  // as storePoint() blends them
           }
-          if (p.time >= options_.endTime) {
-            p.reason = options_.endReason;
-            break;
-          }
+          if (p.time >= options_.endTime) p.reason = options_.endReason;
         }
-      }
     });
   });
 }
@@ -461,12 +477,12 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper, d
       p.cacheB = {};
     }
     p.pointsBefore = p.points;
-    p.tailBlock = p.lastBlock;
+    p.tailChunk = p.lastChunk;
     p.tailSlot = p.lastSlot;
   }
   lastA_ = a.volume;
   lastB_ = b.volume;
-  growthBlock_ = blocks_.size();
+  growthChunk_ = chunks_.size();
   std::vector<std::size_t> due, moving;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
@@ -553,16 +569,18 @@ TraceSet PathlineTracer::emptySet() const {
 
 TraceSet PathlineTracer::pathlines() const { return assemble(0, false); }
 
-TraceSet PathlineTracer::lastGrowth() const { return assemble(growthBlock_, true); }
+TraceSet PathlineTracer::lastGrowth() const { return assemble(growthChunk_, true); }
 
-TraceSet PathlineTracer::assemble(std::size_t firstBlock, bool growth) const {
+TraceSet PathlineTracer::assemble(std::size_t firstChunk, bool growth) const {
   TraceSet set = emptySet();
   const std::size_t channels = channelNames_.size();
-  const auto copyPoint = [&](const PointBlock& block, std::size_t slot, std::uint64_t at) {
-    set.positions[at] = block.positions[slot];
-    set.times[at] = block.times[slot];
-    set.vectors[at] = block.vectors[slot];
-    std::copy_n(block.channels.begin() + slot * channels, channels,
+  // `count` points of `chunk` from `slot` to the set's point `at`.
+  const auto copyPoints = [&](const PointChunk& chunk, std::uint64_t slot, std::uint64_t at,
+                              std::uint64_t count) {
+    std::copy_n(chunk.positions.begin() + slot, count, set.positions.begin() + at);
+    std::copy_n(chunk.times.begin() + slot, count, set.times.begin() + at);
+    std::copy_n(chunk.vectors.begin() + slot, count, set.vectors.begin() + at);
+    std::copy_n(chunk.channels.begin() + slot * channels, count * channels,
                 set.channels.begin() + at * channels);
   };
   std::vector<std::uint64_t> next(particles_.size());  // where each particle's next point goes
@@ -586,14 +604,17 @@ TraceSet PathlineTracer::assemble(std::size_t firstBlock, bool growth) const {
   set.vectors.resize(points);
   set.channels.resize(points * channels);
   for (const std::size_t i : tails)
-    copyPoint(blocks_[particles_[i].tailBlock], particles_[i].tailSlot, next[i] - 1);
-  // Blocks in the order they were made: each particle's points in order; a particle has at most
-  // one slot per block, so a block's slots go in parallel.
-  for (std::size_t b = firstBlock; b < blocks_.size(); ++b) {
-    const PointBlock& block = blocks_[b];
-    tbb::parallel_for(std::size_t(0), block.particles.size(), [&](std::size_t slot) {
-      const std::uint32_t particle = block.particles[slot];
-      if (particle != kNoParticle) copyPoint(block, slot, next[particle]++);
+    copyPoints(chunks_[particles_[i].tailChunk], particles_[i].tailSlot, next[i] - 1, 1);
+  // Chunks in the order they were made: each particle's runs in order; a particle has at most
+  // one run per chunk, so a chunk's runs go in parallel.
+  for (std::size_t c = firstChunk; c < chunks_.size(); ++c) {
+    const PointChunk& chunk = chunks_[c];
+    tbb::parallel_for(std::size_t(0), chunk.particles.size(), [&](std::size_t k) {
+      const std::uint32_t count = chunk.filled[k];
+      if (count == 0) return;
+      std::uint64_t& at = next[chunk.particles[k]];
+      copyPoints(chunk, chunk.starts[k], at, count);
+      at += count;
     });
   }
   return set;
@@ -612,12 +633,12 @@ TraceSet PathlineTracer::streaklines() const {
       const Particle& p = particles_[r * seedCount_ + s];
       if (!p.released || p.time < time_) continue;  // not yet released, or stopped before the end
       reason = p.reason;
-      const PointBlock& block = blocks_[p.lastBlock];
-      set.positions.push_back(block.positions[p.lastSlot]);
+      const PointChunk& chunk = chunks_[p.lastChunk];
+      set.positions.push_back(chunk.positions[p.lastSlot]);
       set.times.push_back(float(p.time - p.releaseTime));
-      set.vectors.push_back(block.vectors[p.lastSlot]);
+      set.vectors.push_back(chunk.vectors[p.lastSlot]);
       for (std::size_t c = 0; c < channels; ++c)
-        set.channels.push_back(block.channels[std::size_t(p.lastSlot) * channels + c]);
+        set.channels.push_back(chunk.channels[p.lastSlot * channels + c]);
       ++at;
       ++count;
     }

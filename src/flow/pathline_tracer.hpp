@@ -100,11 +100,13 @@ class PathlineTracer {
     glm::vec3 position{0.0f};
     double time = 0.0;
     std::uint32_t steps = 0;
-    RegionCache cacheA, cacheB;  // the CPU sampler's last regions in the interval's snapshots
-    std::uint32_t points = 0;    // points stored
-    std::uint32_t lastBlock = 0, lastSlot = 0;  // where the last of them is
+    RegionCache cacheA, cacheB;   // the CPU sampler's last regions in the interval's snapshots
+    std::uint32_t points = 0;     // points stored
+    std::uint32_t lastChunk = 0;  // where the last of them is
+    std::uint64_t lastSlot = 0;
     // The same before the last advance(): what lastGrowth() joins the new points to.
-    std::uint32_t pointsBefore = 0, tailBlock = 0, tailSlot = 0;
+    std::uint32_t pointsBefore = 0, tailChunk = 0;
+    std::uint64_t tailSlot = 0;
   };
 
  public:
@@ -112,16 +114,19 @@ class PathlineTracer {
   static constexpr std::size_t kBytesPerParticle = sizeof(Particle);
   // A stored point's bytes with `channels` point-data channels.
   static constexpr std::size_t bytesPerPoint(std::size_t channels) {
-    return sizeof(std::uint32_t) + 2 * sizeof(glm::vec3) + sizeof(float) + channels * sizeof(float);
+    return 2 * sizeof(glm::vec3) + sizeof(float) + channels * sizeof(float);
   }
 
  private:
-  // The points of one release or one step of many particles, slot by slot: each step's points go
-  // to consecutive memory instead of one growing array per particle (scattered writes).
-  static constexpr std::uint32_t kNoParticle = ~0u;  // a slot whose particle made no point
-  struct PointBlock {
-    // Columns: made without zeroing, each slot's written where its particle is set.
-    Column<std::uint32_t> particles;
+  // The points of one release or one move of many particles: a run of slots per particle, as
+  // many as the steps it may take there, so that a particle's points go to consecutive memory
+  // (one growing array per particle would scatter every write, and one block per step scatters
+  // the lines' assembly).
+  struct PointChunk {
+    std::vector<std::uint32_t> particles;  // run k is particles[k]'s,
+    std::vector<std::uint64_t> starts;     // slots [starts[k], starts[k + 1]),
+    std::vector<std::uint32_t> filled;     // of which the first filled[k] are written
+    // Columns: made without zeroing, each slot's written by its particle's thread.
     Column<glm::vec3> positions, vectors;
     Column<float> times;     // IntegrationTime, as the lines hold it
     Column<float> channels;  // channelNames.size() per slot
@@ -140,32 +145,31 @@ class PathlineTracer {
   void sampleAt(const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
                 std::span<const double> times, std::span<const std::size_t> owners,
                 std::span<TimeSample> out);
-  // A new block of `slots` slots, each empty until storePoint() fills it.
-  PointBlock& newBlock(std::size_t slots);
-  // Fills the slot of block `blockIndex` with the particle's position and time and `vector`;
-  // returns where its channels go.
-  float* placePoint(std::size_t particle, std::size_t blockIndex, std::uint32_t slot,
-                    glm::vec3 vector);
-  void storePoint(std::size_t particle, std::uint32_t slot, const Snapshot& a, const Snapshot& b,
-                  const TimeSample& s);
+  // A new chunk with a run for each of `particles` of capacities[k] slots (any span of sizes).
+  template <typename Capacities>
+  PointChunk& newChunk(std::span<const std::size_t> particles, const Capacities& capacities);
+  // Fills the next slot of run `run` of the last chunk with its particle's position and time and
+  // `vector`; returns where its channels go.
+  float* placePoint(std::size_t run, glm::vec3 vector);
+  void storePoint(std::size_t run, const Snapshot& a, const Snapshot& b, const TimeSample& s);
   TraceSet emptySet() const;
   // Whether a particle at time t steps in this advance: its next step toward `until` ends by
   // `reach`.
   bool stepsBy(double t, double until, double reach) const;
-  // The released particles' points in blocks from `firstBlock` on, one line each; with `growth`,
+  // The released particles' points in chunks from `firstChunk` on, one line each; with `growth`,
   // only the particles that have points there, each after its point from before.
-  TraceSet assemble(std::size_t firstBlock, bool growth) const;
+  TraceSet assemble(std::size_t firstChunk, bool growth) const;
 
   PathlineOptions options_;
   std::string vectorName_;
   std::vector<std::string> channelNames_;
   std::size_t seedCount_ = 0;
   std::vector<Particle> particles_;
-  std::vector<PointBlock> blocks_;
+  std::vector<PointChunk> chunks_;
   double time_;                          // where the last interval ended
   const VectorVolume* lastA_ = nullptr;  // the last interval's snapshots
   const VectorVolume* lastB_ = nullptr;
-  std::size_t growthBlock_ = 0;  // the first block of the last advance()
+  std::size_t growthChunk_ = 0;  // the first chunk of the last advance()
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;
   std::unique_ptr<StageScratch> stages_;
