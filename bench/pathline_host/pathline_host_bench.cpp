@@ -3,10 +3,12 @@
 // every particle running, each step a fixed small move) at no device cost, so what is timed is
 // the host alone: planning, releasing, storing the points and assembling the lines.
 //
-//   amrstream_pathline_host_bench [PARTICLES [INTERVALS [STEPS_PER_INTERVAL]]]
+//   amrstream_pathline_host_bench [PARTICLES [INTERVALS [STEPS_PER_INTERVAL [unplanned]]]]
 //
 // Defaults: 1048576 particles, 3 intervals of 10 steps (the swirl benchmark's 2^20 x 30). The
-// snapshots are one small swirl volume; the releases' samples are the CPU sampler's. A benchmark:
+// snapshots are one small swirl volume; the releases' samples are the CPU sampler's. As
+// `pathlines` does, the tracer plans its storage for the series (planStorage) and hands the lines
+// over (takePathlines); `unplanned`: without the plan, each interval adds its runs. A benchmark:
 // nothing is asserted.
 
 #include <fmt/format.h>
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "flow/pathline_tracer.hpp"
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
   const std::size_t particles = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1u << 20;
   const int intervals = argc > 2 ? std::atoi(argv[2]) : 3;
   const int steps = argc > 3 ? std::atoi(argv[3]) : 10;
+  const bool planned = !(argc > 4 && std::string(argv[4]) == "unplanned");
   BuiltinOptions g;
   g.levels = 3;
   g.rootBlocks = 2;
@@ -79,8 +83,12 @@ int main(int argc, char** argv) {
   flow::PathlineOptions options;
   options.stepSize = 1.0 / steps;
   options.endTime = intervals;
+  options.maxResultBytes = std::uint64_t(64) << 30;
   Stopwatch wall;
   flow::PathlineTracer tracer(seeds, options, "vel", {});
+  std::vector<double> times(std::size_t(intervals) + 1);
+  for (std::size_t i = 0; i < times.size(); ++i) times[i] = double(i);
+  if (planned) tracer.planStorage(times);
   StandInStepper stepper;
   fmt::print("| interval | advance (s) | of which storing (s) |\n|---|---|---|\n");
   for (int i = 0; i < intervals; ++i) {
@@ -91,11 +99,12 @@ int main(int argc, char** argv) {
   }
   const double tracing = wall.seconds();
   Stopwatch clock;
-  const flow::TraceSet lines = tracer.pathlines();
+  const std::uint64_t taken = tracer.stepCount();
+  const flow::TraceSet lines = planned ? std::move(tracer).takePathlines() : tracer.pathlines();
   const double assembling = clock.seconds();
-  fmt::print("{} particles x {} steps ({} points): tracing on the host {:.3f} s ({:.3g} "
-             "particle-steps/s), storing {:.3f} s; assembling the lines {:.3f} s\n",
-             particles, tracer.stepCount() / std::max<std::size_t>(particles, 1),
-             lines.pointCount(), tracing, double(tracer.stepCount()) / tracing,
-             stepper.collectSeconds, assembling);
+  fmt::print(
+      "{} particles x {} steps ({} points): tracing on the host {:.3f} s ({:.3g} "
+      "particle-steps/s), storing {:.3f} s; assembling the lines {:.3f} s\n",
+      particles, taken / std::max<std::size_t>(particles, 1), lines.pointCount(), tracing,
+      double(taken) / tracing, stepper.collectSeconds, assembling);
 }

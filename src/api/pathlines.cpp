@@ -263,6 +263,9 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   reporter.lap("first snapshot and seeds");
   checkReleases(options, seeds.points.size(), report.channelNames.size());
   flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
+  std::vector<double> times;
+  for (std::size_t i = first; i <= last; ++i) times.push_back(series[i].time);
+  tracer.planStorage(times);
   say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
   traceIntervals(job, first, last, std::move(a), gpu, tracer, report, reporter);
   tracer.finish();
@@ -278,7 +281,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
 
   result.streaklines = options.releaseEvery > 0.0;
   Traces::Impl lines;
-  lines.lines = result.streaklines ? tracer.streaklines() : tracer.pathlines();
+  lines.lines = result.streaklines ? tracer.streaklines() : std::move(tracer).takePathlines();
   lines.provenance =
       pathlineProvenance(series, report, result.streaklines ? "streaklines" : "pathlines");
   lines.report = {report.backend, report.device, report.deviceSeconds, report.traceSeconds};

@@ -37,6 +37,9 @@ SeriesPlayback::SeriesPlayback(std::vector<SnapshotFile> series,
       time_(options.startTime) {
   std::tie(first_, last_) = snapshotsUsed(series_, options.startTime, options.endTime);
   index_ = first_;
+  std::vector<double> times;
+  for (std::size_t i = first_; i <= last_; ++i) times.push_back(series_[i].time);
+  tracer_.planStorage(times);
   b_ = loadSnapshot(series_[index_ + 1], field_, units_, false);
   checkLikeTheFirst(volumeOf(*b_->field), series_[index_ + 1].path, first);
   if (index_ + 2 <= last_)

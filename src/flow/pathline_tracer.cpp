@@ -3,12 +3,11 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
-#include <ranges>
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -209,43 +208,93 @@ PathlineTracer::PathlineTracer(PathlineTracer&&) noexcept = default;
 PathlineTracer& PathlineTracer::operator=(PathlineTracer&&) noexcept = default;
 PathlineTracer::~PathlineTracer() = default;
 
-template <typename Capacities>
-PathlineTracer::PointChunk& PathlineTracer::newChunk(std::span<const std::size_t> particles,
-                                                     const Capacities& capacities) {
+template <typename Needed>
+void PathlineTracer::reserveRuns(std::span<const std::size_t> particles, const Needed& needed) {
+  std::vector<std::size_t> lacking;
+  std::vector<std::uint64_t> sizes;
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    const Particle& p = particles_[particles[k]];
+    const std::uint64_t want = needed(k);
+    std::uint64_t left = 0;
+    if (p.chunk != kNoChunk) {
+      const PointChunk& c = chunks_[p.chunk];
+      left = c.starts[p.run + 1] - c.starts[p.run] - c.filled[p.run];
+    }
+    if (left < want) {
+      lacking.push_back(particles[k]);
+      sizes.push_back(want);
+    }
+  }
+  if (lacking.empty()) return;
+  const std::uint32_t index = std::uint32_t(chunks_.size());
   PointChunk& chunk = chunks_.emplace_back();
-  const std::size_t runs = particles.size();
+  const std::size_t runs = lacking.size();
   chunk.particles.resize(runs);
   chunk.starts.resize(runs + 1);
   chunk.filled.assign(runs, 0);
+  chunk.firstPoints.resize(runs);
   chunk.starts[0] = 0;
   for (std::size_t k = 0; k < runs; ++k) {
-    chunk.particles[k] = std::uint32_t(particles[k]);
-    chunk.starts[k + 1] = chunk.starts[k] + std::uint64_t(capacities[k]);
+    Particle& p = particles_[lacking[k]];
+    chunk.particles[k] = std::uint32_t(lacking[k]);
+    chunk.starts[k + 1] = chunk.starts[k] + sizes[k];
+    chunk.firstPoints[k] = p.points;
+    p.chunk = index;
+    p.run = std::uint32_t(k);
   }
   const std::uint64_t slots = chunk.starts[runs];
   chunk.positions.resize(slots);
   chunk.vectors.resize(slots);
   chunk.times.resize(slots);
   chunk.channels.resize(slots * channelNames_.size());
-  return chunk;
 }
 
-float* PathlineTracer::placePoint(std::size_t run, glm::vec3 vector) {
-  PointChunk& chunk = chunks_.back();
-  Particle& p = particles_[chunk.particles[run]];
-  const std::uint64_t slot = chunk.starts[run] + chunk.filled[run]++;
+float* PathlineTracer::placePoint(std::size_t particle, glm::vec3 vector) {
+  Particle& p = particles_[particle];
+  PointChunk& chunk = chunks_[p.chunk];
+  const std::uint64_t slot = chunk.starts[p.run] + chunk.filled[p.run]++;
   chunk.positions[slot] = p.position;
   chunk.times[slot] = float(p.time);
   chunk.vectors[slot] = vector;
-  p.lastChunk = std::uint32_t(chunks_.size() - 1);
+  p.lastChunk = p.chunk;
   p.lastSlot = slot;
   ++p.points;
   return chunk.channels.data() + slot * channelNames_.size();
 }
 
-void PathlineTracer::storePoint(std::size_t run, const Snapshot& a, const Snapshot& b,
+std::uint64_t PathlineTracer::plannedSteps(std::size_t particle) {
+  if (plannedTimes_.empty()) return 0;
+  std::uint64_t& known = releaseSteps_[particle / std::max<std::size_t>(seedCount_, 1)];
+  if (known != ~std::uint64_t(0)) return known;
+  double t = particles_[particle].releaseTime;
+  std::uint64_t steps = 0;
+  // As advance() steps it: through each interval to its end or the end time.
+  for (std::size_t i = 0; i + 1 < plannedTimes_.size() && t < options_.endTime; ++i) {
+    if (plannedTimes_[i + 1] <= t) continue;
+    const double until = std::min(plannedTimes_[i + 1], options_.endTime);
+    for (; t < until; ++steps) t = timeStep(t, until, options_.stepSize).end;
+  }
+  return known = steps;
+}
+
+void PathlineTracer::planStorage(std::span<const double> snapshotTimes) {
+  plannedTimes_.assign(snapshotTimes.begin(), snapshotTimes.end());
+  const std::size_t releases = particles_.size() / std::max<std::size_t>(seedCount_, 1);
+  releaseSteps_.assign(releases, ~std::uint64_t(0));
+  // The first release steps longest: a bound on every particle's points.
+  const double bytes = particles_.empty()
+                           ? 0.0
+                           : double(particles_.size()) * double(1 + plannedSteps(0)) *
+                                 double(bytesPerPoint(channelNames_.size()));
+  if (options_.maxResultBytes == 0 || bytes > double(options_.maxResultBytes)) {
+    plannedTimes_.clear();
+    releaseSteps_.clear();
+  }
+}
+
+void PathlineTracer::storePoint(std::size_t particle, const Snapshot& a, const Snapshot& b,
                                 const TimeSample& s) {
-  float* out = placePoint(run, s.value);
+  float* out = placePoint(particle, s.value);
   const std::size_t channels = channelNames_.size();
   if (channels == 0) return;
   if (s.reason != AMRSTREAM_REASON_RUNNING) {
@@ -274,9 +323,9 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   }
   std::vector<TimeSample> samples(due.size());
   sampleAt(a, b, points, times, due, samples);
-  newChunk(due, std::vector<std::uint32_t>(due.size(), 1));
+  reserveRuns(due, [&](std::size_t k) { return 1 + plannedSteps(due[k]); });
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
-    storePoint(i, a, b, samples[i]);
+    storePoint(due[i], a, b, samples[i]);
     if (samples[i].reason != AMRSTREAM_REASON_RUNNING)
       particles_[due[i]].reason = samples[i].reason;
   });
@@ -286,7 +335,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
                           double until, double reach) {
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
-  // Each particle's run holds the steps it takes toward `reach`; runs[i] is active[i]'s.
+  // Room for the steps each particle takes toward `reach`.
   std::vector<std::uint32_t> capacities(all);
   tbb::parallel_for(std::size_t(0), all, [&](std::size_t i) {
     std::uint32_t steps = 0;
@@ -295,9 +344,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       t = timeStep(t, until, options_.stepSize).end;
     capacities[i] = steps;
   });
-  newChunk(active, capacities);
-  std::vector<std::size_t> runs(all);
-  std::iota(runs.begin(), runs.end(), std::size_t(0));
+  reserveRuns(active, [&](std::size_t k) { return capacities[k]; });
   StageScratch& w = *stages_;
   w.resize(all);
   auto &x = w.x, &points = w.points, &k1 = w.k1, &k2 = w.k2, &k3 = w.k3;
@@ -359,7 +406,7 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       p.position = points[i];
       p.time = stageTimes[i];
       ++p.steps;
-      storePoint(runs[i], a, b, stage[i]);
+      storePoint(active[i], a, b, stage[i]);
       if (p.time >= options_.endTime) {
         p.reason = options_.endReason;
         return;
@@ -375,7 +422,6 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
       for (std::size_t i = 0; i < n; ++i)
         if (goesOn[i]) {
           active[kept] = active[i];
-          runs[kept] = runs[i];
           start[kept] = stage[i];
           ++kept;
         }
@@ -416,8 +462,7 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
     std::copy(plans[g].steps.begin(), plans[g].steps.end(), schedule.begin() + g * stepCount);
 
   const IntervalPlan plan{positions, groups, schedule, std::uint32_t(stepCount)};
-  newChunk(moving,
-           std::views::transform(groups, [&](std::uint32_t g) { return plans[g].steps.size(); }));
+  reserveRuns(moving, [&](std::size_t k) { return plans[groups[k]].steps.size(); });
   stepper.move(plan, [&](const StepRows& rows) {
     if (rows.channelCount != channelNames_.size())
       throw std::logic_error("pathlines: the device sampled other point-data channels");
@@ -441,7 +486,7 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
           p.position = rows.positions[at];
           p.time = steps.ends[step];
           ++p.steps;
-          float* out = placePoint(i, rows.vectors[at]);
+          float* out = placePoint(moving[i], rows.vectors[at]);
           const float w = steps.steps[step].weightEnd;
           for (std::size_t c = 0; c < channels; ++c) {
             const float va = rows.channelsA[at * channels + c];
@@ -477,12 +522,9 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper, d
       p.cacheB = {};
     }
     p.pointsBefore = p.points;
-    p.tailChunk = p.lastChunk;
-    p.tailSlot = p.lastSlot;
   }
   lastA_ = a.volume;
   lastB_ = b.volume;
-  growthChunk_ = chunks_.size();
   std::vector<std::size_t> due, moving;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
@@ -567,56 +609,91 @@ TraceSet PathlineTracer::emptySet() const {
   return set;
 }
 
-TraceSet PathlineTracer::pathlines() const { return assemble(0, false); }
+TraceSet PathlineTracer::pathlines() const { return assemble(false); }
 
-TraceSet PathlineTracer::lastGrowth() const { return assemble(growthChunk_, true); }
+TraceSet PathlineTracer::lastGrowth() const { return assemble(true); }
 
-TraceSet PathlineTracer::assemble(std::size_t firstChunk, bool growth) const {
+TraceSet PathlineTracer::lineFrame(std::span<const std::uint32_t> from,
+                                   std::span<std::uint64_t> start) const {
   TraceSet set = emptySet();
-  const std::size_t channels = channelNames_.size();
-  // `count` points of `chunk` from `slot` to the set's point `at`.
-  const auto copyPoints = [&](const PointChunk& chunk, std::uint64_t slot, std::uint64_t at,
-                              std::uint64_t count) {
-    std::copy_n(chunk.positions.begin() + slot, count, set.positions.begin() + at);
-    std::copy_n(chunk.times.begin() + slot, count, set.times.begin() + at);
-    std::copy_n(chunk.vectors.begin() + slot, count, set.vectors.begin() + at);
-    std::copy_n(chunk.channels.begin() + slot * channels, count * channels,
-                set.channels.begin() + at * channels);
-  };
-  std::vector<std::uint64_t> next(particles_.size());  // where each particle's next point goes
-  std::vector<std::size_t> tails;                      // particles whose line starts at a tail
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    const std::uint32_t added = growth ? p.points - p.pointsBefore : p.points;
-    if (!p.released || (growth && added == 0)) continue;
-    const bool tail = growth && p.pointsBefore > 0;
-    if (tail) tails.push_back(i);
-    next[i] = set.offsets.back() + (tail ? 1 : 0);
+    if (!p.released || from[i] > p.points) continue;
+    start[i] = set.offsets.back();
     set.seedIds.push_back(p.seed);
     set.directions.push_back(1.0f);
     set.steps.push_back(p.steps);
     set.reasons.push_back(p.reason);
-    set.offsets.push_back(next[i] + added);
+    set.offsets.push_back(start[i] + (p.points - from[i]));
   }
   const std::uint64_t points = set.offsets.back();
   set.positions.resize(points);
   set.times.resize(points);
   set.vectors.resize(points);
-  set.channels.resize(points * channels);
-  for (const std::size_t i : tails)
-    copyPoints(chunks_[particles_[i].tailChunk], particles_[i].tailSlot, next[i] - 1, 1);
-  // Chunks in the order they were made: each particle's runs in order; a particle has at most
-  // one run per chunk, so a chunk's runs go in parallel.
-  for (std::size_t c = firstChunk; c < chunks_.size(); ++c) {
-    const PointChunk& chunk = chunks_[c];
+  set.channels.resize(points * channelNames_.size());
+  return set;
+}
+
+TraceSet PathlineTracer::assemble(bool growth) const {
+  constexpr std::uint32_t kNone = ~0u;
+  std::vector<std::uint32_t> from(particles_.size(), growth ? kNone : 0);
+  if (growth)
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+      const Particle& p = particles_[i];
+      if (p.points > p.pointsBefore) from[i] = p.pointsBefore > 0 ? p.pointsBefore - 1 : 0;
+    }
+  std::vector<std::uint64_t> start(particles_.size());
+  TraceSet set = lineFrame(from, start);
+  const std::size_t channels = channelNames_.size();
+  // Each run's points that the lines take, copied whole: a particle's runs hold its points in
+  // order, so a chunk's runs go in parallel.
+  for (const PointChunk& chunk : chunks_)
     tbb::parallel_for(std::size_t(0), chunk.particles.size(), [&](std::size_t k) {
-      const std::uint32_t count = chunk.filled[k];
-      if (count == 0) return;
-      std::uint64_t& at = next[chunk.particles[k]];
-      copyPoints(chunk, chunk.starts[k], at, count);
-      at += count;
+      const std::uint32_t particle = chunk.particles[k];
+      const std::uint64_t first = chunk.firstPoints[k], end = first + chunk.filled[k];
+      const std::uint64_t lo = std::max<std::uint64_t>(first, from[particle]);
+      if (from[particle] == kNone || lo >= end) return;
+      const std::uint64_t slot = chunk.starts[k] + (lo - first), count = end - lo;
+      const std::uint64_t at = start[particle] + (lo - from[particle]);
+      std::copy_n(chunk.positions.begin() + slot, count, set.positions.begin() + at);
+      std::copy_n(chunk.times.begin() + slot, count, set.times.begin() + at);
+      std::copy_n(chunk.vectors.begin() + slot, count, set.vectors.begin() + at);
+      std::copy_n(chunk.channels.begin() + slot * channels, count * channels,
+                  set.channels.begin() + at * channels);
     });
-  }
+  return set;
+}
+
+TraceSet PathlineTracer::takePathlines() && {
+  const std::size_t released = std::size_t(std::count_if(
+      particles_.begin(), particles_.end(), [](const Particle& p) { return p.released; }));
+  if (chunks_.size() != 1 || chunks_[0].particles.size() != released) return pathlines();
+  // One chunk with a run per released particle, in order: its runs close up in place, each
+  // column on its own core, and become the lines.
+  PointChunk& chunk = chunks_[0];
+  const std::vector<std::uint32_t> from(particles_.size(), 0);
+  std::vector<std::uint64_t> start(particles_.size());
+  TraceSet set = lineFrame(from, {start});
+  set.positions.clear();
+  set.times.clear();
+  set.vectors.clear();
+  set.channels.clear();
+  const auto closeUp = [&](auto& column, std::size_t width) {
+    for (std::size_t k = 0; k < chunk.particles.size(); ++k) {
+      const std::uint64_t slot = chunk.starts[k] * width, at = start[chunk.particles[k]] * width;
+      if (slot != at)  // at < slot: a forward copy is safe
+        std::copy_n(column.begin() + slot, chunk.filled[k] * width, column.begin() + at);
+    }
+    column.resize(set.pointCount() * width);
+  };
+  tbb::parallel_invoke([&] { closeUp(chunk.positions, 1); }, [&] { closeUp(chunk.times, 1); },
+                       [&] { closeUp(chunk.vectors, 1); },
+                       [&] { closeUp(chunk.channels, channelNames_.size()); });
+  set.positions = std::move(chunk.positions);
+  set.times = std::move(chunk.times);
+  set.vectors = std::move(chunk.vectors);
+  set.channels = std::move(chunk.channels);
+  chunks_.clear();
   return set;
 }
 

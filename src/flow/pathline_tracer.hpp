@@ -73,9 +73,18 @@ class PathlineTracer {
   // Stops the particles still running at the series' end (AMRSTREAM_REASON_SERIES_END).
   void finish();
 
+  // Sizes each particle's storage for its whole span through a series at these times (sorted),
+  // before the first advance(), where that fits options.maxResultBytes: its points then go to
+  // one run of memory, and takePathlines() hands them over in place. Without it, each advance()
+  // adds runs for the steps it takes.
+  void planStorage(std::span<const double> snapshotTimes);
+
   // One line per particle, in order of release and then of seed; IntegrationTime is the
   // physical time of each point.
   TraceSet pathlines() const;
+  // The same, moving the points out where planStorage() held them in one piece (the tracer then
+  // holds none).
+  TraceSet takePathlines() &&;
   // One line per seed through its particles that reached the last interval's end, from the newest
   // (at the seed) to the oldest; IntegrationTime is each particle's age.
   TraceSet streaklines() const;
@@ -92,6 +101,7 @@ class PathlineTracer {
   std::uint64_t stepCount() const;
 
  private:
+  static constexpr std::uint32_t kNoChunk = ~0u;
   struct Particle {
     std::uint32_t seed = 0;
     double releaseTime = 0.0;
@@ -100,13 +110,12 @@ class PathlineTracer {
     glm::vec3 position{0.0f};
     double time = 0.0;
     std::uint32_t steps = 0;
-    RegionCache cacheA, cacheB;   // the CPU sampler's last regions in the interval's snapshots
-    std::uint32_t points = 0;     // points stored
-    std::uint32_t lastChunk = 0;  // where the last of them is
+    RegionCache cacheA, cacheB;      // the CPU sampler's last regions in the interval's snapshots
+    std::uint32_t points = 0;        // points stored
+    std::uint32_t pointsBefore = 0;  // before the last advance()
+    std::uint32_t chunk = kNoChunk, run = 0;  // the run its next points go to
+    std::uint32_t lastChunk = 0;              // where its last point is
     std::uint64_t lastSlot = 0;
-    // The same before the last advance(): what lastGrowth() joins the new points to.
-    std::uint32_t pointsBefore = 0, tailChunk = 0;
-    std::uint64_t tailSlot = 0;
   };
 
  public:
@@ -118,14 +127,14 @@ class PathlineTracer {
   }
 
  private:
-  // The points of one release or one move of many particles: a run of slots per particle, as
-  // many as the steps it may take there, so that a particle's points go to consecutive memory
-  // (one growing array per particle would scatter every write, and one block per step scatters
-  // the lines' assembly).
+  // Runs of slots, one per particle, each holding its consecutive points (one growing array per
+  // particle would scatter every write, and one block per step the lines' assembly). A particle
+  // writes to its run until it needs more slots than are left; then a new chunk gives it another.
   struct PointChunk {
-    std::vector<std::uint32_t> particles;  // run k is particles[k]'s,
-    std::vector<std::uint64_t> starts;     // slots [starts[k], starts[k + 1]),
-    std::vector<std::uint32_t> filled;     // of which the first filled[k] are written
+    std::vector<std::uint32_t> particles;    // run k is particles[k]'s,
+    std::vector<std::uint64_t> starts;       // slots [starts[k], starts[k + 1]),
+    std::vector<std::uint32_t> filled;       // of which the first filled[k] are written,
+    std::vector<std::uint32_t> firstPoints;  // the particle's points from firstPoints[k] on
     // Columns: made without zeroing, each slot's written by its particle's thread.
     Column<glm::vec3> positions, vectors;
     Column<float> times;     // IntegrationTime, as the lines hold it
@@ -145,20 +154,26 @@ class PathlineTracer {
   void sampleAt(const Snapshot& a, const Snapshot& b, std::span<const glm::vec3> points,
                 std::span<const double> times, std::span<const std::size_t> owners,
                 std::span<TimeSample> out);
-  // A new chunk with a run for each of `particles` of capacities[k] slots (any span of sizes).
-  template <typename Capacities>
-  PointChunk& newChunk(std::span<const std::size_t> particles, const Capacities& capacities);
-  // Fills the next slot of run `run` of the last chunk with its particle's position and time and
-  // `vector`; returns where its channels go.
-  float* placePoint(std::size_t run, glm::vec3 vector);
-  void storePoint(std::size_t run, const Snapshot& a, const Snapshot& b, const TimeSample& s);
+  // Room for needed(k) more points of each of `particles` (needed: any callable): those whose
+  // run has less get a run of that many in a new chunk.
+  template <typename Needed>
+  void reserveRuns(std::span<const std::size_t> particles, const Needed& needed);
+  // Fills the next slot of the particle's run with its position and time and `vector`; returns
+  // where its channels go.
+  float* placePoint(std::size_t particle, glm::vec3 vector);
+  void storePoint(std::size_t particle, const Snapshot& a, const Snapshot& b, const TimeSample& s);
+  // The steps a particle released at `release` takes through the planned series (0 unplanned).
+  std::uint64_t plannedSteps(std::size_t particle);
   TraceSet emptySet() const;
   // Whether a particle at time t steps in this advance: its next step toward `until` ends by
   // `reach`.
   bool stepsBy(double t, double until, double reach) const;
-  // The released particles' points in chunks from `firstChunk` on, one line each; with `growth`,
-  // only the particles that have points there, each after its point from before.
-  TraceSet assemble(std::size_t firstChunk, bool growth) const;
+  // The released particles' points, one line each; with `growth`, only those the last advance()
+  // added, each after its point from before.
+  TraceSet assemble(bool growth) const;
+  // The lines' per-line arrays, with a line for each particle whose points from[i] on it holds
+  // (from[i] > points: none); start[i] gets where its line's points begin.
+  TraceSet lineFrame(std::span<const std::uint32_t> from, std::span<std::uint64_t> start) const;
 
   PathlineOptions options_;
   std::string vectorName_;
@@ -169,7 +184,8 @@ class PathlineTracer {
   double time_;                          // where the last interval ended
   const VectorVolume* lastA_ = nullptr;  // the last interval's snapshots
   const VectorVolume* lastB_ = nullptr;
-  std::size_t growthChunk_ = 0;  // the first chunk of the last advance()
+  std::vector<double> plannedTimes_;         // planStorage()'s
+  std::vector<std::uint64_t> releaseSteps_;  // per release, plannedSteps' (~0: not yet known)
   std::unique_ptr<SampleScratch> scratch_;
   struct StageScratch;
   std::unique_ptr<StageScratch> stages_;

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
+#include "amrstream/error.hpp"
 #include "flow/cpu_tracer.hpp"
 #include "flow/pathline_tracer.hpp"
 #include "flow/sampler.hpp"
@@ -257,20 +258,25 @@ TEST(Pathlines, CarryPointDataInterpolatedInTime) {
 }
 
 // The viewer's frames: each interval in advances of a few steps (a stop inside the interval)
-// makes the lines of whole intervals, bit for bit; what each advance added (lastGrowth), each
-// piece after its line's last point from before, adds up to the lines.
+// makes the lines of whole intervals, bit for bit, whether the storage was planned for the series
+// or grows with each advance; what each advance added (lastGrowth), each piece after its line's
+// last point from before, adds up to the lines.
 TEST(Pathlines, AFewStepsAtATimeMakeTheLinesOfWholeIntervals) {
   const Series series = swirlSeries(0.05, 0.2, Interpolant::Tent, {"temp"});
   std::vector<glm::dvec3> seeds = seedsAroundTheAxis(30, 13);
   seeds.push_back({0.6, 0.5, 0.999});  // leaves through the top
-  for (const bool streaks : {false, true}) {
-    SCOPED_TRACE(streaks ? "streaklines" : "pathlines");
+  for (const auto& [streaks, planned] : {std::pair{false, false}, std::pair{false, true},
+                                         std::pair{true, false}, std::pair{true, true}}) {
+    SCOPED_TRACE(std::string(streaks ? "streaklines" : "pathlines") +
+                 (planned ? ", storage planned" : ""));
     PathlineOptions o;
     o.stepSize = 0.01;
     o.endTime = 0.17;                     // within the last interval
     if (streaks) o.releaseEvery = 0.015;  // releases between the frames' stops
+    o.maxResultBytes = std::uint64_t(1) << 30;
     const PathlineTracer whole = traceSeries(series, seeds, o, {"temp"});
     PathlineTracer frames(seeds, o, "vel", {"temp"});
+    if (planned) frames.planStorage(series.times);
     std::vector<std::vector<glm::vec3>> grown(seeds.size());  // pathlines: a seed is a line
     std::size_t advances = 0;
     for (std::size_t i = 0; i + 1 < series.times.size() && series.times[i] < o.endTime; ++i) {
@@ -324,6 +330,51 @@ TEST(Pathlines, AFewStepsAtATimeMakeTheLinesOfWholeIntervals) {
           want.positions.begin() + std::ptrdiff_t(want.offsets[line]),
           want.positions.begin() + std::ptrdiff_t(want.offsets[line + 1]));
       EXPECT_EQ(grown[want.seedIds[line]], points) << "line " << line;
+    }
+  }
+}
+
+// Storage planned for the series holds each particle's points in one run: the lines are the same
+// as without the plan, taken in place (takePathlines) or copied; a plan that would pass the
+// result's limit is dropped, and the limit still holds.
+TEST(Pathlines, StoragePlannedForTheSeriesGivesTheSameLines) {
+  const Series series = swirlSeries(0.05, 0.2, Interpolant::Linear, {"temp"});
+  std::vector<glm::dvec3> seeds = seedsAroundTheAxis(40, 17);
+  seeds.push_back({0.6, 0.5, 0.999});  // leaves through the top: its run is not filled
+  seeds.push_back({1.5, 0.5, 0.5});    // outside: one point
+  PathlineOptions o;
+  o.stepSize = 0.007;
+  const TraceSet want = traceSeries(series, seeds, o, {"temp"}).pathlines();
+  EXPECT_EQ(want.reasons.back(), AMRSTREAM_REASON_OUT_OF_DOMAIN);
+  for (const std::uint64_t limit : {std::uint64_t(1) << 30, std::uint64_t(40000)}) {
+    SCOPED_TRACE(limit);
+    o.maxResultBytes = limit;
+    PathlineTracer planned(seeds, o, "vel", {"temp"});
+    planned.planStorage(series.times);
+    bool refused = false;
+    for (std::size_t i = 0; i + 1 < series.times.size() && !refused; ++i) try {
+        planned.advance({series.times[i], &series.volumes[i]},
+                        {series.times[i + 1], &series.volumes[i + 1]});
+      } catch (const InputError&) {
+        refused = true;
+      }
+    EXPECT_EQ(refused, limit < want.pointCount() * 32);
+    if (refused) continue;
+    planned.finish();
+    const TraceSet copied = planned.pathlines();
+    const TraceSet taken = std::move(planned).takePathlines();
+    for (const TraceSet* got : {&copied, &taken}) {
+      ASSERT_EQ(got->offsets, want.offsets);
+      EXPECT_EQ(got->reasons, want.reasons);
+      EXPECT_EQ(got->steps, want.steps);
+      EXPECT_EQ(got->positions, want.positions);
+      EXPECT_EQ(got->times, want.times);
+      EXPECT_EQ(got->vectors, want.vectors);
+      ASSERT_EQ(got->channels.size(), want.channels.size());
+      for (std::size_t i = 0; i < want.channels.size(); ++i)  // NaN where outside
+        ASSERT_TRUE(got->channels[i] == want.channels[i] ||
+                    (std::isnan(got->channels[i]) && std::isnan(want.channels[i])))
+            << "value " << i;
     }
   }
 }
