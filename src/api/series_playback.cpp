@@ -27,7 +27,7 @@ SeriesPlayback::SeriesPlayback(std::vector<SnapshotFile> series,
                                const flow::PathlineOptions& options, FieldOptions field,
                                DeclaredUnits units, const flow::VectorVolume& first,
                                std::span<const glm::dvec3> seeds, const vk::Context* ctx,
-                               gpu::Backend backend)
+                               gpu::Backend backend, const gpu::VolumeBuffers* firstDevice)
     : series_(std::move(series)),
       options_(options),
       field_(std::move(field)),
@@ -48,7 +48,9 @@ SeriesPlayback::SeriesPlayback(std::vector<SnapshotFile> series,
     });
   if (ctx) {
     device_ = std::make_unique<Device>(*ctx, backend);
-    device_->probeA = std::make_unique<gpu::VectorProbe>(*ctx, device_->kernel, first);
+    device_->probeA =
+        firstDevice ? std::make_unique<gpu::VectorProbe>(*ctx, device_->kernel, first, *firstDevice)
+                    : std::make_unique<gpu::VectorProbe>(*ctx, device_->kernel, first);
     device_->probeB =
         std::make_unique<gpu::VectorProbe>(*ctx, device_->kernel, volumeOf(*b_->field));
     device_->stepper.bind(*device_->probeA, *device_->probeB);

@@ -25,6 +25,7 @@ class Context;
 }
 namespace gpu {
 struct TraceKernel;
+struct VolumeBuffers;
 class PathlineStepper;
 class VectorProbe;
 }  // namespace gpu
@@ -33,11 +34,13 @@ class SeriesPlayback final : public flow::GrowingTraces {
  public:
   // `first`: the field of the snapshot at or before options.startTime, built with `field`
   // (the caller's, which must outlive the playback). `seeds` in physical coordinates. With a
-  // context the particles step on its device with `backend`'s kernels; without, on the CPU.
-  // Throws InputError for a later snapshot that lacks the vector or a channel (when it is read).
+  // context the particles step on its device with `backend`'s kernels (`firstDevice`: `first`
+  // already there, which must outlive the playback; else uploaded); without, on the CPU. Throws
+  // InputError for a later snapshot that lacks the vector or a channel (when it is read).
   SeriesPlayback(std::vector<SnapshotFile> series, const flow::PathlineOptions& options,
                  FieldOptions field, DeclaredUnits units, const flow::VectorVolume& first,
-                 std::span<const glm::dvec3> seeds, const vk::Context* ctx, gpu::Backend backend);
+                 std::span<const glm::dvec3> seeds, const vk::Context* ctx, gpu::Backend backend,
+                 const gpu::VolumeBuffers* firstDevice = nullptr);
   ~SeriesPlayback() override;
   SeriesPlayback(const SeriesPlayback&) = delete;
   SeriesPlayback& operator=(const SeriesPlayback&) = delete;
