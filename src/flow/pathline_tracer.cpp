@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 
 #include "../../shaders/glsl/shared/trace_codes.h"
@@ -210,9 +211,10 @@ PathlineTracer::~PathlineTracer() = default;
 
 template <typename Needed>
 void PathlineTracer::reserveRuns(std::span<const std::size_t> particles, const Needed& needed) {
-  std::vector<std::size_t> lacking;
-  std::vector<std::uint64_t> sizes;
-  for (std::size_t k = 0; k < particles.size(); ++k) {
+  // Mostly every particle has room (storage planned, or one move's run going on): checked on all
+  // cores, and only the ones that lack it listed.
+  std::vector<std::uint64_t> wants(particles.size());
+  tbb::parallel_for(std::size_t(0), particles.size(), [&](std::size_t k) {
     const Particle& p = particles_[particles[k]];
     const std::uint64_t want = needed(k);
     std::uint64_t left = 0;
@@ -220,11 +222,15 @@ void PathlineTracer::reserveRuns(std::span<const std::size_t> particles, const N
       const PointChunk& c = chunks_[p.chunk];
       left = c.starts[p.run + 1] - c.starts[p.run] - c.filled[p.run];
     }
-    if (left < want) {
+    wants[k] = left < want ? want : 0;
+  });
+  std::vector<std::size_t> lacking;
+  std::vector<std::uint64_t> sizes;
+  for (std::size_t k = 0; k < particles.size(); ++k)
+    if (wants[k] > 0) {
       lacking.push_back(particles[k]);
-      sizes.push_back(want);
+      sizes.push_back(wants[k]);
     }
-  }
   if (lacking.empty()) return;
   const std::uint32_t index = std::uint32_t(chunks_.size());
   PointChunk& chunk = chunks_.emplace_back();
@@ -234,14 +240,14 @@ void PathlineTracer::reserveRuns(std::span<const std::size_t> particles, const N
   chunk.filled.assign(runs, 0);
   chunk.firstPoints.resize(runs);
   chunk.starts[0] = 0;
-  for (std::size_t k = 0; k < runs; ++k) {
+  std::inclusive_scan(sizes.begin(), sizes.end(), chunk.starts.begin() + 1);
+  tbb::parallel_for(std::size_t(0), runs, [&](std::size_t k) {
     Particle& p = particles_[lacking[k]];
     chunk.particles[k] = std::uint32_t(lacking[k]);
-    chunk.starts[k + 1] = chunk.starts[k] + sizes[k];
     chunk.firstPoints[k] = p.points;
     p.chunk = index;
     p.run = std::uint32_t(k);
-  }
+  });
   const std::uint64_t slots = chunk.starts[runs];
   chunk.positions.resize(slots);
   chunk.vectors.resize(slots);
@@ -323,7 +329,9 @@ void PathlineTracer::release(std::span<const std::size_t> due, const Snapshot& a
   }
   std::vector<TimeSample> samples(due.size());
   sampleAt(a, b, points, times, due, samples);
-  reserveRuns(due, [&](std::size_t k) { return 1 + plannedSteps(due[k]); });
+  std::vector<std::uint64_t> capacities(due.size());  // plannedSteps() fills its cache: in turn
+  for (std::size_t k = 0; k < due.size(); ++k) capacities[k] = 1 + plannedSteps(due[k]);
+  reserveRuns(due, [&](std::size_t k) { return capacities[k]; });
   tbb::parallel_for(std::size_t(0), due.size(), [&](std::size_t i) {
     storePoint(due[i], a, b, samples[i]);
     if (samples[i].reason != AMRSTREAM_REASON_RUNNING)
@@ -437,19 +445,25 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
   const std::size_t n = moving.size();
   if (n == 0) return;
   // Particles at one time take the same steps: one group each.
+  // The particles' states gathered on all cores (they lie in Morton order, scattered in memory).
   std::map<double, std::uint32_t> groupOfTime;
   std::vector<std::uint32_t> groups(n);
   std::vector<glm::vec3> positions(n);
+  std::vector<double> times(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    const Particle& p = particles_[moving[i]];
+    positions[i] = p.position;
+    times[i] = p.time;
+  });
   double lastTime = std::numeric_limits<double>::quiet_NaN();
   std::uint32_t lastGroup = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Particle& p = particles_[moving[i]];
-    if (!(p.time == lastTime)) {  // mostly every particle is at one time
-      lastTime = p.time;
-      lastGroup = groupOfTime.try_emplace(p.time, std::uint32_t(groupOfTime.size())).first->second;
+    if (!(times[i] == lastTime)) {  // mostly every particle is at one time
+      lastTime = times[i];
+      lastGroup =
+          groupOfTime.try_emplace(times[i], std::uint32_t(groupOfTime.size())).first->second;
     }
     groups[i] = lastGroup;
-    positions[i] = p.position;
   }
   std::vector<GroupSteps> plans(groupOfTime.size());
   std::size_t stepCount = 0;
@@ -516,13 +530,14 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper, d
   // The caches hold regions of the volumes they name.
   const bool sameInterval = a.volume == lastA_ && b.volume == lastB_;
   const bool aWasB = a.volume == lastB_;
-  for (Particle& p : particles_) {
+  tbb::parallel_for(std::size_t(0), particles_.size(), [&](std::size_t i) {
+    Particle& p = particles_[i];
     if (!sameInterval) {
       p.cacheA = aWasB ? p.cacheB : RegionCache{};
       p.cacheB = {};
     }
     p.pointsBefore = p.points;
-  }
+  });
   lastA_ = a.volume;
   lastB_ = b.volume;
   std::vector<std::size_t> due, moving;
@@ -539,10 +554,15 @@ void PathlineTracer::advance(Snapshot a, Snapshot b, IntervalStepper* stepper, d
   if (stepper) {
     // Neighbouring threads start near each other, and mostly stay so through the interval and
     // the next: the particles are sorted again only when others join.
-    std::erase_if(deviceOrder_, [&](std::size_t i) {
-      const Particle& p = particles_[i];
-      return p.reason != AMRSTREAM_REASON_RUNNING || !stepsBy(p.time, until, reach);
+    std::vector<char> stays(deviceOrder_.size());
+    tbb::parallel_for(std::size_t(0), deviceOrder_.size(), [&](std::size_t k) {
+      const Particle& p = particles_[deviceOrder_[k]];
+      stays[k] = p.reason == AMRSTREAM_REASON_RUNNING && stepsBy(p.time, until, reach);
     });
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < deviceOrder_.size(); ++k)
+      if (stays[k]) deviceOrder_[kept++] = deviceOrder_[k];
+    deviceOrder_.resize(kept);
     if (!due.empty() || deviceOrder_.size() != moving.size()) {
       std::vector<glm::vec3> starts(moving.size());
       for (std::size_t i = 0; i < moving.size(); ++i) starts[i] = particles_[moving[i]].position;
