@@ -165,6 +165,13 @@ flow::PathlineOptions pathlineOptions(std::span<const SnapshotFile> series,
   return options;
 }
 
+std::vector<double> snapshotTimes(std::span<const SnapshotFile> series, std::size_t first,
+                                  std::size_t last) {
+  std::vector<double> times;
+  for (std::size_t i = first; i <= last; ++i) times.push_back(series[i].time);
+  return times;
+}
+
 flow::VectorBatchSampler probeSampler(gpu::VectorProbe* probe) {
   if (!probe) return {};
   return [probe](std::span<const glm::vec3> cells, std::span<flow::VectorSample> out) {

@@ -47,6 +47,10 @@ void checkLikeTheFirst(const flow::VectorVolume& v, const std::string& path,
 std::pair<std::size_t, std::size_t> snapshotsUsed(std::span<const SnapshotFile> series, double t0,
                                                   double t1);
 
+// The times of snapshots first..last (PathlineTracer::planStorage's).
+std::vector<double> snapshotTimes(std::span<const SnapshotFile> series, std::size_t first,
+                                  std::size_t last);
+
 // Streaklines release every seed again every `releaseEvery`: refuses more particles than a
 // trace may hold or its memory holds, or an interval the times cannot resolve. `seedCount` 0:
 // the seeds are not chosen yet, and only the releases are checked.

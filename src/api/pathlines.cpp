@@ -263,9 +263,7 @@ PathlineResult tracePathlines(const PathlineJob& job, const Reporter& reporter) 
   reporter.lap("first snapshot and seeds");
   checkReleases(options, seeds.points.size(), report.channelNames.size());
   flow::PathlineTracer tracer(seeds.points, options, report.vectorName, report.channelNames);
-  std::vector<double> times;
-  for (std::size_t i = first; i <= last; ++i) times.push_back(series[i].time);
-  tracer.planStorage(times);
+  tracer.planStorage(snapshotTimes(series, first, last));
   say(log, fmt::format("tracing    backend {} on {}", report.backend, report.device));
   traceIntervals(job, first, last, std::move(a), gpu, tracer, report, reporter);
   tracer.finish();

@@ -37,15 +37,10 @@ SeriesPlayback::SeriesPlayback(std::vector<SnapshotFile> series,
       time_(options.startTime) {
   std::tie(first_, last_) = snapshotsUsed(series_, options.startTime, options.endTime);
   index_ = first_;
-  std::vector<double> times;
-  for (std::size_t i = first_; i <= last_; ++i) times.push_back(series_[i].time);
-  tracer_.planStorage(times);
+  tracer_.planStorage(snapshotTimes(series_, first_, last_));
   b_ = loadSnapshot(series_[index_ + 1], field_, units_, false);
   checkLikeTheFirst(volumeOf(*b_->field), series_[index_ + 1].path, first);
-  if (index_ + 2 <= last_)
-    next_ = std::async(std::launch::async, [this, i = index_ + 2] {
-      return loadSnapshot(series_[i], field_, units_, false);
-    });
+  loadAhead();
   if (ctx) {
     device_ = std::make_unique<Device>(*ctx, backend);
     device_->probeA =
@@ -71,14 +66,18 @@ flow::Snapshot SeriesPlayback::snapshotB() const {
           probeSampler(device_ ? device_->probeB.get() : nullptr)};
 }
 
-void SeriesPlayback::nextInterval() {
-  ++index_;
-  std::unique_ptr<LoadedSnapshot> b = next_.get();
-  checkLikeTheFirst(volumeOf(*b->field), series_[index_ + 1].path, *firstVolume_);
+void SeriesPlayback::loadAhead() {
   if (index_ + 2 <= last_)
     next_ = std::async(std::launch::async, [this, i = index_ + 2] {
       return loadSnapshot(series_[i], field_, units_, false);
     });
+}
+
+void SeriesPlayback::nextInterval() {
+  ++index_;
+  std::unique_ptr<LoadedSnapshot> b = next_.get();
+  checkLikeTheFirst(volumeOf(*b->field), series_[index_ + 1].path, *firstVolume_);
+  loadAhead();
   if (device_) {
     vkQueueWaitIdle(device_->ctx.queue());
     device_->probeA = std::move(device_->probeB);

@@ -62,6 +62,8 @@ class SeriesPlayback final : public flow::GrowingTraces {
 
  private:
   struct Device;
+  // Starts reading the snapshot after the interval's later one, where there is one.
+  void loadAhead();
   // The interval's later snapshot becomes the earlier, and the next one read the later.
   void nextInterval();
   flow::Snapshot snapshotA() const;

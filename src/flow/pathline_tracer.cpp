@@ -278,7 +278,8 @@ std::uint64_t PathlineTracer::plannedSteps(std::size_t particle) {
   for (std::size_t i = 0; i + 1 < plannedTimes_.size() && t < options_.endTime; ++i) {
     if (plannedTimes_[i + 1] <= t) continue;
     const double until = std::min(plannedTimes_[i + 1], options_.endTime);
-    for (; t < until; ++steps) t = timeStep(t, until, options_.stepSize).end;
+    steps += stepsToward(t, until, until);
+    t = until;  // where the interval's last step ends
   }
   return known = steps;
 }
@@ -344,13 +345,9 @@ void PathlineTracer::move(std::span<const std::size_t> moving, const Snapshot& a
   std::vector<std::size_t> active(moving.begin(), moving.end());
   const std::size_t all = active.size();
   // Room for the steps each particle takes toward `reach`.
-  std::vector<std::uint32_t> capacities(all);
+  std::vector<std::uint64_t> capacities(all);
   tbb::parallel_for(std::size_t(0), all, [&](std::size_t i) {
-    std::uint32_t steps = 0;
-    for (double t = particles_[active[i]].time; stepsBy(t, until, reach) && t < options_.endTime;
-         ++steps)
-      t = timeStep(t, until, options_.stepSize).end;
-    capacities[i] = steps;
+    capacities[i] = stepsToward(particles_[active[i]].time, until, reach);
   });
   reserveRuns(active, [&](std::size_t k) { return capacities[k]; });
   StageScratch& w = *stages_;
@@ -592,6 +589,13 @@ bool PathlineTracer::stepsBy(double t, double until, double reach) const {
   return t < until && endsBy(timeStep(t, until, options_.stepSize), reach, options_.stepSize);
 }
 
+std::uint64_t PathlineTracer::stepsToward(double t, double until, double reach) const {
+  std::uint64_t steps = 0;
+  for (; t < options_.endTime && stepsBy(t, until, reach); ++steps)
+    t = timeStep(t, until, options_.stepSize).end;
+  return steps;
+}
+
 void PathlineTracer::finish() {
   for (Particle& p : particles_)
     if (p.released && p.reason == AMRSTREAM_REASON_RUNNING) p.reason = AMRSTREAM_REASON_SERIES_END;
@@ -646,11 +650,6 @@ TraceSet PathlineTracer::lineFrame(std::span<const std::uint32_t> from,
     set.reasons.push_back(p.reason);
     set.offsets.push_back(start[i] + (p.points - from[i]));
   }
-  const std::uint64_t points = set.offsets.back();
-  set.positions.resize(points);
-  set.times.resize(points);
-  set.vectors.resize(points);
-  set.channels.resize(points * channelNames_.size());
   return set;
 }
 
@@ -665,6 +664,11 @@ TraceSet PathlineTracer::assemble(bool growth) const {
   std::vector<std::uint64_t> start(particles_.size());
   TraceSet set = lineFrame(from, start);
   const std::size_t channels = channelNames_.size();
+  const std::uint64_t points = set.pointCount();
+  set.positions.resize(points);
+  set.times.resize(points);
+  set.vectors.resize(points);
+  set.channels.resize(points * channels);
   // Each run's points that the lines take, copied whole: a particle's runs hold its points in
   // order, so a chunk's runs go in parallel.
   for (const PointChunk& chunk : chunks_)
@@ -693,11 +697,7 @@ TraceSet PathlineTracer::takePathlines() && {
   PointChunk& chunk = chunks_[0];
   const std::vector<std::uint32_t> from(particles_.size(), 0);
   std::vector<std::uint64_t> start(particles_.size());
-  TraceSet set = lineFrame(from, {start});
-  set.positions.clear();
-  set.times.clear();
-  set.vectors.clear();
-  set.channels.clear();
+  TraceSet set = lineFrame(from, start);
   const auto closeUp = [&](auto& column, std::size_t width) {
     for (std::size_t k = 0; k < chunk.particles.size(); ++k) {
       const std::uint64_t slot = chunk.starts[k] * width, at = start[chunk.particles[k]] * width;

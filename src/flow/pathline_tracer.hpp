@@ -168,11 +168,15 @@ class PathlineTracer {
   // Whether a particle at time t steps in this advance: its next step toward `until` ends by
   // `reach`.
   bool stepsBy(double t, double until, double reach) const;
+  // The steps a particle at time t takes toward `until` that end by `reach`, as move() takes
+  // them (stopping at the end time).
+  std::uint64_t stepsToward(double t, double until, double reach) const;
   // The released particles' points, one line each; with `growth`, only those the last advance()
   // added, each after its point from before.
   TraceSet assemble(bool growth) const;
-  // The lines' per-line arrays, with a line for each particle whose points from[i] on it holds
-  // (from[i] > points: none); start[i] gets where its line's points begin.
+  // The lines' per-line arrays (the point columns left empty), with a line for each particle
+  // whose points from[i] on it holds (from[i] > points: none); start[i] gets where its line's
+  // points begin.
   TraceSet lineFrame(std::span<const std::uint32_t> from, std::span<std::uint64_t> start) const;
 
   PathlineOptions options_;

@@ -66,7 +66,7 @@ void ViewSession::startTraces() {
     if (options_.job.trace.stepSize) settings.stepSize = *options_.job.trace.stepSize;
     auto playback = std::make_unique<SeriesPlayback>(
         series_, pathlineOptions(series_, settings), options_.job.field, options_.job.dataset.units,
-        input_.volume(), input_.seeds.points, ctx_, backend_);
+        input_.volume(), input_.seeds.points, ctx_, backend_, &tracer_.volumeBuffers());
     playback_ = playback.get();
     traces_ = std::move(playback);
     return;
