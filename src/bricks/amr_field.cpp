@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -337,8 +338,20 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     throw InputError(
         source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
 
+  // A coarser level where a cell's aligned corner is the previous cell's needs no look when the
+  // previous cell is no coarser: were that corner a coarser cell's, the previous cell would fail
+  // first. Consecutive cells of a block then look only at the levels below which they differ.
+  const auto lookedUpLevelsEnd = [&](std::size_t i) {
+    std::size_t end = sets.size();
+    if (i > 0 && levels_[i - 1] <= levels_[i]) {
+      const glm::ivec3 d = lowers_[i] ^ lowers_[i - 1];
+      end = std::min(end, std::size_t(std::bit_width(unsigned(d.x | d.y | d.z))));
+    }
+    return end;
+  };
   const auto insideCoarser = [&](AbsentCorners& absent, std::size_t i) -> int {
-    for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
+    const std::size_t end = lookedUpLevelsEnd(i);
+    for (std::size_t level = levels_[i] + 1; level < end; ++level) {
       if (!sets[level]) continue;
       const int mask = ~(cellWidth(int(level)) - 1);
       // Corners of coarser cells are aligned in absolute coordinates, so align before shifting.
@@ -352,7 +365,8 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
   };
   // The coarser corners a cell some cells ahead will look up, unless known to be absent.
   const auto prefetchCoarser = [&](const AbsentCorners& absent, std::size_t i) {
-    for (std::size_t level = levels_[i] + 1; level < sets.size(); ++level) {
+    const std::size_t end = lookedUpLevelsEnd(i);
+    for (std::size_t level = levels_[i] + 1; level < end; ++level) {
       if (!sets[level]) continue;
       const int mask = ~(cellWidth(int(level)) - 1);
       const glm::ivec3 aligned =

@@ -70,6 +70,20 @@ TEST(AmrField, RejectsFineCellInsideCoarseCell) {
   EXPECT_THAT(error, HasSubstr("overlaps the level-2 cell at 4,4,4"));
 }
 
+// A cell listed right after a neighbour of its level looks only at the coarser levels where their
+// corners differ (the rest the neighbour looked at): (0,0,0) and (2,0,0) differ below level 2,
+// (4,0,0) and (2,1,0) below level 3.
+TEST(AmrField, RejectsFineCellInsideCoarseCellAfterAFineNeighbour) {
+  EXPECT_THAT(testing::inputErrorOf([] {
+                makeField({{0, 0, 0}, {2, 0, 0}, {2, 0, 0}}, {0, 0, 1});
+              }),
+              HasSubstr("cell 1 (level 0, lower corner 2,0,0) overlaps the level-1 cell at 2,0,0"));
+  EXPECT_THAT(testing::inputErrorOf([] {
+                makeField({{4, 0, 0}, {2, 1, 0}, {0, 0, 0}}, {0, 0, 2});
+              }),
+              HasSubstr("cell 1 (level 0, lower corner 2,1,0) overlaps the level-2 cell at 0,0,0"));
+}
+
 // Many cells in shuffled order: tiles of a level's set are shared by cells far apart in the
 // input, inserted by different threads. Every added duplicate or nested cell is found, and named
 // as the first failing cell in input order.
