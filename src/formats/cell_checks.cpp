@@ -56,6 +56,37 @@ CellsBox cellsBox(std::span<const glm::ivec3> lowers, std::span<const std::uint8
       });
 }
 
+// Why `transform` cannot place cells in `box`; with `noCells`, only the origin and spacing.
+std::optional<std::string> positionsProblem(const WorldTransform& transform, const CellsBounds& box,
+                                            bool noCells) {
+  for (int a = 0; a < 3; ++a) {
+    const double origin = transform.origin[a], spacing = transform.spacing[a];
+    const char axis = "xyz"[a];
+    if (!std::isfinite(origin)) return fmt::format("the origin along {} is {}", axis, origin);
+    if (!(spacing >= kMinSpacing && spacing <= kMaxPositionMagnitude))
+      return fmt::format(
+          "the spacing along {} is {}, outside the [{}, {}] that float32 "
+          "positions can hold",
+          axis, spacing, kMinSpacing, kMaxPositionMagnitude);
+    const double lower = box.lower[a], upper = box.upper[a];
+    if (noCells) continue;
+    const double low = origin + spacing * lower, high = origin + spacing * upper;
+    const double largest = std::max(std::abs(low), std::abs(high));
+    if (!(largest <= kMaxPositionMagnitude))
+      return fmt::format(
+          "origin {} + spacing {} x cell units [{}, {}] along {} reaches {}, "
+          "beyond the {} that float32 positions can hold",
+          origin, spacing, lower, upper, axis, largest, kMaxPositionMagnitude);
+    if (!(spacing > 4 * largest * std::numeric_limits<double>::epsilon()))
+      return fmt::format(
+          "origin {} + spacing {} x cell units [{}, {}] along {} reaches {}, where "
+          "positions cannot resolve a finest cell: neighbouring cells would share "
+          "a position",
+          origin, spacing, lower, upper, axis, largest);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> unusableFieldValue(double value) {
@@ -65,9 +96,10 @@ std::optional<std::string> unusableFieldValue(double value) {
   return std::nullopt;
 }
 
-void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
-                              std::span<const std::uint8_t> levels, const std::string& source) {
-  if (std::min(lowers.size(), levels.size()) == 0) return;
+CellsBounds requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
+                                     std::span<const std::uint8_t> levels,
+                                     const std::string& source) {
+  if (std::min(lowers.size(), levels.size()) == 0) return {};
   const CellsBox box = cellsBox(lowers, levels);
   if (const std::size_t i = box.firstOutside; i < std::min(lowers.size(), levels.size())) {
     if (levels[i] > bricks::kMaxLevel)
@@ -86,38 +118,19 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
       throw InputError(source, fmt::format("the cells span {} finest cells along axis {} (from {} "
                                            "to {}); at most {} are supported",
                                            extent[a], "xyz"[a], lower[a], upper[a], limit));
+  return {box.lower, box.upper};
 }
 
 std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
                                                     std::span<const glm::ivec3> lowers,
                                                     std::span<const std::uint8_t> levels) {
   const CellsBox box = cellsBox(lowers, levels);
-  for (int a = 0; a < 3; ++a) {
-    const double origin = transform.origin[a], spacing = transform.spacing[a];
-    const char axis = "xyz"[a];
-    if (!std::isfinite(origin)) return fmt::format("the origin along {} is {}", axis, origin);
-    if (!(spacing >= kMinSpacing && spacing <= kMaxPositionMagnitude))
-      return fmt::format(
-          "the spacing along {} is {}, outside the [{}, {}] that float32 "
-          "positions can hold",
-          axis, spacing, kMinSpacing, kMaxPositionMagnitude);
-    const double lower = box.lower[a], upper = box.upper[a];
-    if (lowers.empty()) continue;
-    const double low = origin + spacing * lower, high = origin + spacing * upper;
-    const double largest = std::max(std::abs(low), std::abs(high));
-    if (!(largest <= kMaxPositionMagnitude))
-      return fmt::format(
-          "origin {} + spacing {} x cell units [{}, {}] along {} reaches {}, "
-          "beyond the {} that float32 positions can hold",
-          origin, spacing, lower, upper, axis, largest, kMaxPositionMagnitude);
-    if (!(spacing > 4 * largest * std::numeric_limits<double>::epsilon()))
-      return fmt::format(
-          "origin {} + spacing {} x cell units [{}, {}] along {} reaches {}, where "
-          "positions cannot resolve a finest cell: neighbouring cells would share "
-          "a position",
-          origin, spacing, lower, upper, axis, largest);
-  }
-  return std::nullopt;
+  return positionsProblem(transform, {box.lower, box.upper}, lowers.empty());
+}
+
+std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
+                                                    const CellsBounds& bounds) {
+  return positionsProblem(transform, bounds, false);
 }
 
 }  // namespace amrstream::formats

@@ -28,11 +28,19 @@ inline constexpr std::size_t kMaxSlabGrowth = 256;
 // range"), or nullopt when it can.
 std::optional<std::string> unusableFieldValue(double value);
 
+// The cells' bounding box in finest-cell units (upper corners at lower + 2^level).
+struct CellsBounds {
+  glm::dvec3 lower{0.0};
+  glm::dvec3 upper{0.0};
+};
+
 // Throws InputError(source, ...) naming the first cell whose upper corner (lower + 2^level) does
 // not fit in 32 bits, or the extent of the cells when their bounding box spans 2^kMaxExtentBits
-// finest cells or more along an axis. Levels must be at most bricks::kMaxLevel.
-void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
-                              std::span<const std::uint8_t> levels, const std::string& source);
+// finest cells or more along an axis. Levels must be at most bricks::kMaxLevel. Returns the
+// box, for unrepresentablePositions.
+CellsBounds requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
+                                     std::span<const std::uint8_t> levels,
+                                     const std::string& source);
 
 // Why `transform` cannot place the cells, or nullopt when it can: its origin is not finite, a
 // spacing lies outside [kMinSpacing, kMaxPositionMagnitude], a corner of the cells' bounding box
@@ -41,5 +49,8 @@ void requireCellsWithinExtent(std::span<const glm::ivec3> lowers,
 std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
                                                     std::span<const glm::ivec3> lowers,
                                                     std::span<const std::uint8_t> levels);
+// The same for the bounding box of at least one cell.
+std::optional<std::string> unrepresentablePositions(const WorldTransform& transform,
+                                                    const CellsBounds& bounds);
 
 }  // namespace amrstream::formats

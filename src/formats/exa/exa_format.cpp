@@ -157,9 +157,10 @@ ExaConfig parseConfig(const std::filesystem::path& config) {
 }
 
 // The cells file: int32 x, y, z, level per cell, checked before they become a field; read in
-// pieces on all cores, so that the records never sit in memory beside the whole field.
-void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lowers,
-               std::vector<std::uint8_t>& levels) {
+// pieces on all cores, so that the records never sit in memory beside the whole field. Returns
+// their bounding box.
+CellsBounds readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lowers,
+                      std::vector<std::uint8_t>& levels) {
   std::ifstream in;
   const std::uint64_t size = openRegularFile(in, path, "the cells file");
   if (size % kCellBytes != 0)
@@ -201,7 +202,7 @@ void readCells(const std::filesystem::path& path, std::vector<glm::ivec3>& lower
     throw InputError(path.string(), fmt::format("cell {} has level {}; levels must be in 0..{}",
                                                 bad, cell[3], bricks::kMaxLevel));
   }
-  requireCellsWithinExtent(lowers, levels, path.string());
+  return requireCellsWithinExtent(lowers, levels, path.string());
 }
 
 // Opens a scalars file and checks that it holds one float32 for each of `cells` cells.
@@ -259,9 +260,9 @@ ExaCells readExaCells(const std::filesystem::path& config) {
   const ExaConfig exa = parseConfig(config);
   std::vector<glm::ivec3> lowers;
   std::vector<std::uint8_t> levels;
-  readCells(exa.cells, lowers, levels);
+  const CellsBounds bounds = readCells(exa.cells, lowers, levels);
   if (lowers.empty()) throw InputError(exa.cells.string(), "the cells file holds no cells");
-  if (const auto problem = unrepresentablePositions(exa.transform, lowers, levels))
+  if (const auto problem = unrepresentablePositions(exa.transform, bounds))
     throw InputError(config.string(),
                      fmt::format("origin ({}) and spacing ({}) cannot place the cells: {}",
                                  lineOf(exa.originLine), lineOf(exa.spacingLine), *problem));
