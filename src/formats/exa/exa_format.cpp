@@ -228,8 +228,10 @@ void readScalarsInto(const std::string& name, const std::filesystem::path& path,
     throw InputError(path.string(), fmt::format("{} values asked for of a channel of {} cells",
                                                 values.size(), cells));
   readInPieces(path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
-  const std::size_t i =
-      firstFailing(cells, [&](std::size_t k) { return unusableFieldValue(values[k]).has_value(); });
+  // A float is unusable exactly when it is not finite: NaN fails the comparison.
+  const std::size_t i = firstFailing(cells, [&](std::size_t k) {
+    return !(std::abs(values[k]) <= std::numeric_limits<float>::max());
+  });
   if (i < cells) {
     const std::string problem = *unusableFieldValue(values[i]);
     throw InputError(path.string(),
