@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "amrstream/builtin.hpp"
@@ -38,7 +39,9 @@ class Dataset {
   std::span<const float> channel(std::string_view name) const;
   const WorldTransform& transform() const;  // cell units to physical coordinates
   CellBox bounds() const;                   // the cells' bounding box, finest-cell units
-  glm::dvec3 lower() const;                 // the bounding box in physical coordinates
+  // Seconds loading spent checking the cells (levels, alignment, bounds) and that none overlap.
+  std::pair<double, double> checkSeconds() const;
+  glm::dvec3 lower() const;  // the bounding box in physical coordinates
   glm::dvec3 upper() const;
   int finestLevel() const;    // 0 unless the finest cells are coarser than the unit
   int coarsestLevel() const;  // internal numbering

@@ -37,6 +37,10 @@ std::span<const float> Dataset::channel(std::string_view name) const {
 }
 const WorldTransform& Dataset::transform() const { return impl_->cells.transform(); }
 CellBox Dataset::bounds() const { return impl_->cells.bounds(); }
+std::pair<double, double> Dataset::checkSeconds() const {
+  const bricks::AmrField::CheckSeconds seconds = impl_->cells.checkSeconds();
+  return {seconds.cells, seconds.overlaps};
+}
 glm::dvec3 Dataset::lower() const { return transform().toPhysical(glm::dvec3(bounds().lower)); }
 glm::dvec3 Dataset::upper() const { return transform().toPhysical(glm::dvec3(bounds().upper)); }
 int Dataset::finestLevel() const { return impl_->cells.finestLevel(); }

@@ -32,7 +32,8 @@ Field loadField(const ResampleJob& job, const Reporter& reporter) {
   const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
-  reporter.lap("input");
+  const auto [cellChecks, overlapCheck] = cells.checkSeconds();
+  reporter.lap("input", {{"cell checks", cellChecks}, {"overlap check", overlapCheck}});
   clock.restart();
   Field field = buildField(cells, job.field, KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);

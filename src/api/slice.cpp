@@ -399,7 +399,8 @@ void runSliceJob(const SliceJob& job, const Reporter& reporter) {
   const Dataset cells = load(job.dataset.input, job.dataset.builtin, job.dataset.units);
   say(log, fmt::format("input      {}: {} cells [{:.2f} s]", cells.source(),
                        withCommas(cells.cellCount()), clock.seconds()));
-  reporter.lap("input");
+  const auto [cellChecks, overlapCheck] = cells.checkSeconds();
+  reporter.lap("input", {{"cell checks", cellChecks}, {"overlap check", overlapCheck}});
   clock.restart();
   const Field field = buildField(cells, sliceFieldOptions(job, cells), KeepDataset::No);
   const flow::VectorVolume& volume = volumeOf(field);

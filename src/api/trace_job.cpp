@@ -285,7 +285,8 @@ PreparedJob prepareJob(const TraceJob& job, const PrepareOptions& options, Input
   named.push_back(plan.vector.name);
   declareInputUnits(*read.data.cells, job.dataset.units, named);
   sayInput(*read.data.cells, plan.vector, read.seconds, log);
-  reporter.lap("input");
+  const bricks::AmrField::CheckSeconds checks = read.data.cells->checkSeconds();
+  reporter.lap("input", {{"cell checks", checks.cells}, {"overlap check", checks.overlaps}});
 
   JobSeeds seeding;
   seeding.here = options.seeds && !share;

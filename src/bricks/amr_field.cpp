@@ -20,6 +20,7 @@
 #include "amrstream/error.hpp"
 #include "level_corner_set.hpp"
 #include "util/first_failing.hpp"
+#include "util/stopwatch.hpp"
 
 namespace amrstream::bricks {
 
@@ -179,6 +180,7 @@ struct AmrField::LevelBoxes {
 };
 
 void AmrField::validate(const CheckedCells* checked) {
+  Stopwatch clock;
   checkCellCounts();
   checkCellLevels();
   for (const Channel& c : channels_) checkChannelValues(c);
@@ -194,9 +196,13 @@ void AmrField::validate(const CheckedCells* checked) {
   if (checked) {
     if (lowers_ != checked->lowers || levels_ != checked->levels)
       throw InputError(source_, "its cells differ from those of a first read (did it change?)");
+    checkSeconds_.cells = clock.seconds();
     return;
   }
+  checkSeconds_.cells = clock.seconds();
+  clock.restart();
   checkOverlaps(boxes);
+  checkSeconds_.overlaps = clock.seconds();
 }
 
 void AmrField::checkCellCounts() const {

@@ -80,6 +80,14 @@ class AmrField {
   const DatasetInfo& info() const { return info_; }
   void setInfo(DatasetInfo info) { info_ = std::move(info); }
 
+  // Seconds the constructor spent on its checks: of the cells (counts, levels, alignment, the
+  // channels given to it, the bounds) and of overlaps (none for cells a first read checked).
+  struct CheckSeconds {
+    double cells = 0.0;
+    double overlaps = 0.0;
+  };
+  CheckSeconds checkSeconds() const { return checkSeconds_; }
+
   CellBox bounds() const { return bounds_; }  // bounding box of all cells
   int coarsestLevel() const { return coarsest_; }
   int finestLevel() const { return finest_; }
@@ -114,6 +122,7 @@ class AmrField {
   std::string source_;
   CellBox bounds_;
   int coarsest_ = 0, finest_ = 0;  // the levels of the widest and narrowest cells
+  CheckSeconds checkSeconds_;
   DatasetInfo info_;
 };
 

@@ -90,7 +90,8 @@ void printStructure(const Dataset& dataset, const DatasetSummary& s) {
 void describe(const DatasetRequest& request, StageClock& clock) {
   const auto start = std::chrono::steady_clock::now();
   const Dataset dataset = load(request.input, request.builtin, request.units);
-  clock.lap("input");
+  const auto [cellChecks, overlapCheck] = dataset.checkSeconds();
+  clock.lap("input", {{"cell checks", cellChecks}, {"overlap check", overlapCheck}});
   const DatasetInfo& info = dataset.info();
   printLine(
       fmt::format("input      {} [{:.2f} s]", dataset.source(),

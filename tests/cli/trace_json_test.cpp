@@ -50,7 +50,8 @@ TEST_F(TraceJson, TheStagesAddUpToTheWholeCommand) {
   // to a clock tick (10 ms).
   EXPECT_LE(wall, measured + 0.011);
   EXPECT_GE(wall, 0.9 * measured - 0.05) << "the stages miss part of the command: " << r.output;
-  for (const char* name : {"start", "input", "bricks", "regions", "seeds", "tracing", "output"})
+  for (const char* name : {"start", "cell checks", "overlap check", "input", "bricks", "regions",
+                           "seeds", "tracing", "output"})
     EXPECT_TRUE(stages.contains(name)) << name;
   EXPECT_GE(stages["tracing"], doc.at("trace_seconds").get<double>());
 
