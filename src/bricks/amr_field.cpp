@@ -1,6 +1,7 @@
 #include "amr_field.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
@@ -14,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <unordered_set>
 
 #include "amrstream/closest_name.hpp"
@@ -323,26 +325,51 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     tilings.emplace_back(int(level), boxes.lower[level], boxes.upper[level]);
   const std::array<std::size_t, kMaxLevel + 1> runs = tileRuns(tilings);
   std::vector<std::unique_ptr<LevelCornerSet>> sets(levels);
-  for (std::size_t level = 0; level < levels; ++level)
-    if (boxes.lower[level].x <= boxes.upper[level].x)
-      sets[level] = std::make_unique<LevelCornerSet>(tilings[level], runs[level]);
+  const auto makeSets = [&] {
+    for (std::size_t level = 0; level < levels; ++level)
+      if (boxes.lower[level].x <= boxes.upper[level].x)
+        sets[level] = std::make_unique<LevelCornerSet>(tilings[level], runs[level]);
+  };
+  makeSets();
 
   // The sets are far larger than the caches: each new tile's slot is fetched some cells ahead.
   constexpr std::size_t kAhead = 16;
-  struct Inserting {
-    std::array<TileHint, kMaxLevel + 1> hints;
-    std::array<std::uint64_t, kMaxLevel + 1> fetched{};
-  };
-  const auto duplicated = [&](Inserting& state, std::size_t i) {
+  const auto prefetchAhead = [&](std::size_t i, std::array<std::uint64_t, kMaxLevel + 1>& last) {
     if (i + kAhead < n) {
       const int ahead = levels_[i + kAhead];
-      sets[ahead]->prefetch(lowers_[i + kAhead], state.fetched[ahead]);
+      sets[ahead]->prefetch(lowers_[i + kAhead], last[ahead]);
     }
-    return !sets[levels_[i]]->insert(lowers_[i], state.hints[levels_[i]]);
   };
-  if (std::size_t i = firstFailingWith<Inserting>(n, duplicated); i < n)
-    throw InputError(
-        source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
+  // Each thread sets a tile's cells it meets in a row with one atomic or. Only when a cell came
+  // twice are the sets filled again cell by cell, to name the first of them in input order.
+  std::atomic<bool> twice = false;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+    std::array<TileRun, kMaxLevel + 1> tileRuns{};
+    std::array<std::uint64_t, kMaxLevel + 1> fetched{};
+    bool fresh = true;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      prefetchAhead(i, fetched);
+      fresh = sets[levels_[i]]->add(lowers_[i], tileRuns[levels_[i]]) && fresh;
+    }
+    for (std::size_t level = 0; level < levels; ++level)
+      if (sets[level]) fresh = sets[level]->flush(tileRuns[level]) && fresh;
+    if (!fresh) twice = true;
+  });
+  if (twice) {
+    makeSets();
+    struct Inserting {
+      std::array<TileHint, kMaxLevel + 1> hints;
+      std::array<std::uint64_t, kMaxLevel + 1> fetched{};
+    };
+    const auto duplicated = [&](Inserting& state, std::size_t i) {
+      prefetchAhead(i, state.fetched);
+      return !sets[levels_[i]]->insert(lowers_[i], state.hints[levels_[i]]);
+    };
+    if (std::size_t i = firstFailingWith<Inserting>(n, duplicated); i < n)
+      throw InputError(
+          source_, fmt::format("{} appears twice", describeCell(i, lowers_[i], levels_[i], info_)));
+    throw std::logic_error("checkOverlaps: a cell came twice, then not");
+  }
 
   // A coarser level where a cell's aligned corner is the previous cell's needs no look when the
   // previous cell is no coarser: were that corner a coarser cell's, the previous cell would fail

@@ -49,9 +49,9 @@ std::size_t ConcurrentTileSet::claim(std::uint64_t key) {
   }
 }
 
-bool ConcurrentTileSet::set(std::size_t slot, std::uint64_t bit) {
+bool ConcurrentTileSet::set(std::size_t slot, std::uint64_t bits) {
   std::atomic_ref<std::uint64_t> cells(slots_[slot].cells);
-  return (cells.fetch_or(bit, std::memory_order_relaxed) & bit) == 0;
+  return (cells.fetch_or(bits, std::memory_order_relaxed) & bits) == 0;
 }
 
 bool ConcurrentTileSet::contains(std::uint64_t key, std::uint64_t bit) const {
@@ -119,6 +119,30 @@ bool LevelCornerSet::insert(glm::ivec3 corner, TileHint& hint) {
   Shard& shard = shards_[shardOf(corner)];
   const std::lock_guard lock(shard.mutex);
   return shard.corners.insert(corner).second;
+}
+
+bool LevelCornerSet::add(glm::ivec3 corner, TileRun& run) {
+  if (!tiles_) {
+    TileHint unused;
+    return insert(corner, unused);
+  }
+  const std::uint64_t key = tiling_.key(corner);
+  bool fresh = true;
+  if (key != run.key) {
+    fresh = flush(run);
+    run.key = key;
+    run.slot = tiles_->claim(key);
+  }
+  const std::uint64_t bit = tiling_.bit(corner);
+  fresh = fresh && (run.bits & bit) == 0;
+  run.bits |= bit;
+  return fresh;
+}
+
+bool LevelCornerSet::flush(TileRun& run) {
+  const bool fresh = run.bits == 0 || tiles_->set(run.slot, run.bits);
+  run.bits = 0;
+  return fresh;
 }
 
 void LevelCornerSet::prefetch(glm::ivec3 corner, std::uint64_t& last) const {

@@ -21,8 +21,8 @@ class ConcurrentTileSet {
 
   // The slot holding a tile, claimed when the tile is new.
   std::size_t claim(std::uint64_t key);
-  // False when the cell's bit was already set.
-  bool set(std::size_t slot, std::uint64_t bit);
+  // False when one of the cells' bits was already set.
+  bool set(std::size_t slot, std::uint64_t bits);
   bool contains(std::uint64_t key, std::uint64_t bit) const;
   // Starts loading the tile's first slot: a later claim or contains then waits less for memory.
   void prefetch(std::uint64_t key) const;
@@ -68,6 +68,14 @@ struct TileHint {
   std::size_t slot = 0;
 };
 
+// The tile a thread is filling, per level: the cells it met there since it came, set in the tile
+// set with one atomic or when it moves on (LevelCornerSet::flush).
+struct TileRun {
+  std::uint64_t key = 0;
+  std::size_t slot = 0;
+  std::uint64_t bits = 0;
+};
+
 // A level's corners: tiles in a ConcurrentTileSet, or (a level's cells scattered over a box of
 // 2^62 cells or more, possible beyond 2^21 finest cells per axis) the corners themselves in a
 // set split into locked shards.
@@ -78,6 +86,11 @@ class LevelCornerSet {
 
   // False when the corner was already present.
   bool insert(glm::ivec3 corner, TileHint& hint);
+  // The same, the corner's bit kept in `run` while its cells come in a row: false when the corner
+  // was met before in the run, or (as the run moves to another tile) in the set.
+  bool add(glm::ivec3 corner, TileRun& run);
+  // Sets the run's cells; false when one was already present. Leaves the run empty.
+  bool flush(TileRun& run);
   // Starts loading where an insert or contains of the corner will look (tiles only), unless its
   // tile is `last`, the tile prefetched before, which it becomes.
   void prefetch(glm::ivec3 corner, std::uint64_t& last) const;
