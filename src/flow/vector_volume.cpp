@@ -1,9 +1,12 @@
 #include "vector_volume.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -220,9 +223,39 @@ namespace {
 // The cells a channel must have values for: every slot's cell (the source's cells are the
 // layout's).
 std::size_t cellsNeeded(const VectorVolume& volume) {
-  return volume.cellIds.empty()
-             ? 0
-             : std::size_t(*std::max_element(volume.cellIds.begin(), volume.cellIds.end())) + 1;
+  if (volume.cellIds.empty()) return 0;
+  const std::span<const std::uint32_t> ids = volume.cellIds;
+  return std::size_t(tbb::parallel_reduce(
+             tbb::blocked_range<std::size_t>(0, ids.size()), std::uint32_t(0),
+             [&](const tbb::blocked_range<std::size_t>& range, std::uint32_t most) {
+               for (std::size_t i = range.begin(); i != range.end(); ++i)
+                 most = std::max(most, ids[i]);
+               return most;
+             },
+             [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); })) +
+         1;
+}
+
+// Gathers a channel's values into the slots (`store(slot, value)`), checking them against
+// `bound` in the same pass. When the slots hold every value once (no periodic images, the whole
+// input's cells) that checks them all; otherwise, and when one fails, checkChannelRange checks
+// them in cell order and names the first.
+template <typename Store>
+void gatherChecked(const VectorVolume& volume, std::span<const float> values,
+                   const std::string& source, const std::string& name, float bound,
+                   const char* role, Store store) {
+  const std::span<const std::uint32_t> ids = volume.cellIds;
+  std::atomic<bool> outside = false;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size()), [&](const auto& range) {
+    bool out = false;
+    for (std::size_t slot = range.begin(); slot != range.end(); ++slot) {
+      const float value = values[ids[slot]];
+      out = out || !(std::abs(value) <= bound);
+      store(slot, value);
+    }
+    if (out) outside = true;
+  });
+  if (outside || ids.size() != values.size()) checkChannelRange(values, source, name, bound, role);
 }
 
 void checkCount(std::size_t cellsNeeded, const std::string& name, std::span<const float> values) {
@@ -241,10 +274,9 @@ void gatherVector(VectorVolume& volume, const VectorChannels& vector, const std:
     std::vector<float> scalars(slots);
     channels(vector.gradientOf, [&](std::span<const float> values) {
       checkCount(cells, vector.gradientOf, values);
-      checkChannelRange(values, source, vector.gradientOf, kMaxPointDataValue,
-                        "the scalar of the gradient");
-      tbb::parallel_for(std::size_t(0), slots,
-                        [&](std::size_t slot) { scalars[slot] = values[volume.cellIds[slot]]; });
+      gatherChecked(volume, values, source, vector.gradientOf, kMaxPointDataValue,
+                    "the scalar of the gradient",
+                    [&](std::size_t slot, float value) { scalars[slot] = value; });
     });
     const std::vector<glm::vec3> gradients =
         physicalGradients(volume, scalars, vector.gradientSign, source, vector.gradientOf);
@@ -261,10 +293,8 @@ void gatherVector(VectorVolume& volume, const VectorChannels& vector, const std:
     }
     channels(name, [&](std::span<const float> values) {
       checkCount(cells, name, values);
-      checkChannelRange(values, source, name, kMaxVectorComponent, "the vector component");
-      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
-        volume.values[slot][c] = values[volume.cellIds[slot]];
-      });
+      gatherChecked(volume, values, source, name, kMaxVectorComponent, "the vector component",
+                    [&](std::size_t slot, float value) { volume.values[slot][c] = value; });
     });
   }
 }
@@ -290,10 +320,10 @@ void fillVolumeValues(VectorVolume& volume, const VectorChannels& vector,
     const std::string& name = options.pointData[c];
     channels(name, [&](std::span<const float> values) {
       checkCount(cells, name, values);
-      checkChannelRange(values, source, name, kMaxPointDataValue, "the point-data channel");
-      tbb::parallel_for(std::size_t(0), slots, [&](std::size_t slot) {
-        volume.channelValues[slot * channelCount + c] = values[volume.cellIds[slot]];
-      });
+      gatherChecked(volume, values, source, name, kMaxPointDataValue, "the point-data channel",
+                    [&](std::size_t slot, float value) {
+                      volume.channelValues[slot * channelCount + c] = value;
+                    });
     });
   }
   VolumeBuildTimes local = times ? *times : VolumeBuildTimes{};

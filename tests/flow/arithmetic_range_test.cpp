@@ -35,6 +35,23 @@ TEST(ArithmeticRange, RefusesAVectorWhoseSpeedOverflowsFloat) {
   EXPECT_NO_THROW(testing::volumeOf(constantField(kMaxVectorComponent)));
 }
 
+// The values are checked as they are gathered in brick order; the cell named is still the first
+// in cell order.
+TEST(ArithmeticRange, NamesTheFirstCellWhoseComponentOverflows) {
+  const bricks::AmrField grid = constantField(1.0f);
+  std::vector<Channel> channels = grid.channels();
+  for (Channel& channel : channels)
+    if (channel.name == "vy") {
+      channel.values[40] = -2e38f;
+      channel.values[5] = 3e38f;
+    }
+  const bricks::AmrField field({grid.lowers().begin(), grid.lowers().end()},
+                              {grid.levels().begin(), grid.levels().end()}, channels,
+                              grid.transform(), "big.exa");
+  EXPECT_THAT(testing::inputErrorOf([&] { testing::volumeOf(field); }),
+              HasSubstr("big.exa: the vector component 'vy' is 3e+38 at cell 5;"));
+}
+
 TEST(ArithmeticRange, RefusesPointDataWhoseTentSumOverflowsFloat) {
   VolumeOptions options;
   options.pointData = {"rho"};
