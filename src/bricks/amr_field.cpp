@@ -396,24 +396,10 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     }
     return -1;
   };
-  // The coarser corners a cell some cells ahead will look up, unless known to be absent.
-  const auto prefetchCoarser = [&](const AbsentCorners& absent, std::size_t i) {
-    const std::size_t end = lookedUpLevelsEnd(i);
-    for (std::size_t level = levels_[i] + 1; level < end; ++level) {
-      if (!sets[level]) continue;
-      const int mask = ~(cellWidth(int(level)) - 1);
-      const glm::ivec3 aligned =
-          glm::ivec3(lowers_[i].x & mask, lowers_[i].y & mask, lowers_[i].z & mask);
-      std::uint64_t any = 0;
-      if (!absent.holds(level, aligned)) sets[level]->prefetch(aligned, any);
-    }
-  };
-  if (std::size_t i = firstFailingWith<AbsentCorners>(n,
-                                                      [&](AbsentCorners& absent, std::size_t i) {
-                                                        if (i + kAhead < n)
-                                                          prefetchCoarser(absent, i + kAhead);
-                                                        return insideCoarser(absent, i) >= 0;
-                                                      });
+  // The lookups are few (most cells share their coarser corners with the cell before), so they
+  // are not prefetched: computing the corners of a cell ahead cost more than it saved.
+  if (std::size_t i = firstFailingWith<AbsentCorners>(
+          n, [&](AbsentCorners& absent, std::size_t i) { return insideCoarser(absent, i) >= 0; });
       i < n) {
     AbsentCorners none;
     const int level = insideCoarser(none, i);

@@ -46,8 +46,8 @@ TEST(ArithmeticRange, NamesTheFirstCellWhoseComponentOverflows) {
       channel.values[5] = 3e38f;
     }
   const bricks::AmrField field({grid.lowers().begin(), grid.lowers().end()},
-                              {grid.levels().begin(), grid.levels().end()}, channels,
-                              grid.transform(), "big.exa");
+                               {grid.levels().begin(), grid.levels().end()}, channels,
+                               grid.transform(), "big.exa");
   EXPECT_THAT(testing::inputErrorOf([&] { testing::volumeOf(field); }),
               HasSubstr("big.exa: the vector component 'vy' is 3e+38 at cell 5;"));
 }
