@@ -41,7 +41,7 @@ BrickSet buildBricks(const AmrField& field, const BrickBuildOptions& options) {
                                 std::to_string(field.cellCount()));
 
   // Tiles of four times the cap keep nearly every brick the whole level's split would make,
-  // while each tile's cells are split in a core's cache.
+  // while each tile's cells are split from the caches, not from memory.
   const int tileSide = 4 * int(std::bit_floor(unsigned(std::min(options.maxBrickSide, 1 << 27))));
   detail::TiledCells sorted = detail::groupIntoTiles(field, tileSide, kMaxTiles);
   std::vector<std::vector<detail::GridBox>> boxes(sorted.groups.size());

@@ -1,7 +1,7 @@
 #pragma once
 // Private to the brick builder: a field's cells grouped by level and, within a level, by aligned
-// tiles of that level's grid, so that each tile's cells are split into bricks on their own, in a
-// core's cache (docs/architecture.md, "Bricks").
+// tiles of that level's grid, so that each tile's cells are split into bricks on their own, from
+// the caches rather than from memory (docs/architecture.md, "Bricks").
 
 #include <cstddef>
 #include <memory>
