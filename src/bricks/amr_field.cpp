@@ -325,10 +325,12 @@ void AmrField::checkOverlaps(const LevelBoxes& boxes) const {
     tilings.emplace_back(int(level), boxes.lower[level], boxes.upper[level]);
   const std::array<std::size_t, kMaxLevel + 1> runs = tileRuns(tilings);
   std::vector<std::unique_ptr<LevelCornerSet>> sets(levels);
-  const auto makeSets = [&] {
-    for (std::size_t level = 0; level < levels; ++level)
+  const auto makeSets = [&] {  // empty, the old ones freed first (they are large)
+    for (std::size_t level = 0; level < levels; ++level) {
+      sets[level].reset();
       if (boxes.lower[level].x <= boxes.upper[level].x)
         sets[level] = std::make_unique<LevelCornerSet>(tilings[level], runs[level]);
+    }
   };
   makeSets();
 
