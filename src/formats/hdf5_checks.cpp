@@ -19,7 +19,7 @@ namespace {
   throw InputError(file, fmt::format("dataset '{}': {}", name, problem));
 }
 
-std::uint64_t declaredCount(hid_t set, const std::string& file, const std::string& name) {
+std::vector<hsize_t> declaredShape(hid_t set, const std::string& file, const std::string& name) {
   const Hdf5Handle space(H5Dget_space(set), H5Sclose);
   if (!space.valid()) fail(file, name, "cannot read the dataspace");
   const int rank = H5Sget_simple_extent_ndims(space.get());
@@ -27,24 +27,38 @@ std::uint64_t declaredCount(hid_t set, const std::string& file, const std::strin
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
   if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0)
     fail(file, name, "cannot read the dataspace");
-  std::uint64_t count = 1;
-  for (hsize_t d : dims) count = checkedProduct(count, d, file, "dataset '" + name + "' shape");
-  return count;
+  return dims;
+}
+
+// 4 or 8 for the machine's float or double, else 0.
+int nativeFloatBytes(hid_t type) {
+  if (H5Tequal(type, H5T_NATIVE_FLOAT) > 0) return 4;
+  if (H5Tequal(type, H5T_NATIVE_DOUBLE) > 0) return 8;
+  return 0;
 }
 
 }  // namespace
 
-std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std::string& name) {
-  const std::uint64_t count = declaredCount(set, file, name);
+StoredDataset inspectStoredDataset(hid_t set, const std::string& file, const std::string& name) {
+  StoredDataset facts;
+  facts.shape = declaredShape(set, file, name);
+  facts.count = 1;
+  for (hsize_t d : facts.shape)
+    facts.count = checkedProduct(facts.count, d, file, "dataset '" + name + "' shape");
+  const std::uint64_t count = facts.count;
   if (count > kMaxDatasetValues)
     fail(file, name,
          fmt::format("declares {} values, more than the {} accepted", count, kMaxDatasetValues));
   const Hdf5Handle type(H5Dget_type(set), H5Tclose);
   const std::size_t elementBytes = type.valid() ? H5Tget_size(type.get()) : 0;
   if (elementBytes == 0) fail(file, name, "cannot read the datatype");
+  facts.typeClass = H5Tget_class(type.get());
+  facts.nativeFloatBytes = facts.typeClass == H5T_FLOAT ? nativeFloatBytes(type.get()) : 0;
   const Hdf5Handle plist(H5Dget_create_plist(set), H5Pclose);
   const int filters = plist.valid() ? H5Pget_nfilters(plist.get()) : -1;
   if (filters < 0) fail(file, name, "cannot read the creation properties");
+  facts.inPlace = H5Pget_layout(plist.get()) == H5D_CONTIGUOUS && filters == 0 &&
+                  H5Pget_external_count(plist.get()) == 0;
   const std::uint64_t needed = checkedProduct(count, elementBytes, file, "dataset '" + name + "'");
   const std::uint64_t stored = H5Dget_storage_size(set);
   const std::uint64_t least = filters == 0 ? needed : needed / kMaxCompressionRatio;
@@ -62,7 +76,13 @@ std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std:
     fail(file, name,
          fmt::format("claims {} bytes of storage in a file of {} bytes (truncated?)", stored,
                      fileBytes));
-  return count;
+  facts.fileBytes = fileBytes;
+  facts.offset = H5Dget_offset(set);
+  return facts;
+}
+
+std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std::string& name) {
+  return inspectStoredDataset(set, file, name).count;
 }
 
 std::optional<std::vector<std::string>> readHdf5Strings(hid_t set, hid_t stringType,

@@ -23,6 +23,19 @@ inline constexpr std::uint64_t kMaxCompressionRatio = 4096;
 // the file does not back is refused before any allocation.
 std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std::string& name);
 
+// What dataset `set` declares and how its values are stored, each asked of HDF5 once (a reader
+// of thousands of datasets pays for every call on one thread), with requireStoredValues' checks.
+struct StoredDataset {
+  std::vector<hsize_t> shape;
+  std::uint64_t count = 0;  // values
+  H5T_class_t typeClass = H5T_NO_CLASS;
+  int nativeFloatBytes = 0;  // 4 or 8 when the type is the machine's float or double, else 0
+  bool inPlace = false;      // contiguous, unfiltered and in the file itself (not external)
+  haddr_t offset = HADDR_UNDEF;
+  std::uint64_t fileBytes = 0;
+};
+StoredDataset inspectStoredDataset(hid_t set, const std::string& file, const std::string& name);
+
 // The strings of dataset `set`: each element, or the compound member `member` of each element,
 // of file type `stringType` (an H5T_STRING), `count` of them, whatever their storage: fixed
 // length null-terminated, null-padded or space-padded, or variable length. Each string is cut at

@@ -4,11 +4,11 @@
 // dataset is stored contiguously, unfiltered, in the file itself (not an external one), its
 // storage is allocated, and its type is the machine's own float32 or float64.
 
-#include <hdf5.h>
-
 #include <cstdint>
 #include <optional>
 #include <string>
+
+#include "formats/hdf5_checks.hpp"
 
 namespace amrstream::formats {
 
@@ -17,10 +17,10 @@ struct ContiguousFloats {
   int valueBytes = 4;        // 4: float32, 8: float64
 };
 
-// Dataset `set` (named `name`, of `count` values, in `file`), or nullopt when it must be read
-// with H5Dread. Throws InputError(file, "dataset 'NAME': ...") when its values would run past the
-// end of the file (a truncated file).
-std::optional<ContiguousFloats> contiguousFloats(hid_t set, const std::string& file,
-                                                 const std::string& name, std::uint64_t count);
+// The dataset `stored` describes (named `name`, in `file`), or nullopt when it must be read with
+// H5Dread. Throws InputError(file, "dataset 'NAME': ...") when its values would run past the end
+// of the file (a truncated file).
+std::optional<ContiguousFloats> contiguousFloats(const StoredDataset& stored,
+                                                 const std::string& file, const std::string& name);
 
 }  // namespace amrstream::formats

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <tuple>
 
 #include "amrstream/error.hpp"
 #include "formats/cell_checks.hpp"
@@ -28,22 +29,10 @@ std::string zoneText(std::uint64_t index, glm::ivec3 dims, int axes) {
                                               value, zone, problem));
 }
 
-std::vector<hsize_t> shapeOf(hid_t set, const fs::path& file, const std::string& what) {
-  const Hdf5Handle space(H5Dget_space(set), H5Sclose);
-  const int rank = space.valid() ? H5Sget_simple_extent_ndims(space.get()) : -1;
-  if (rank < 0 || rank > H5S_MAX_RANK)
-    throw InputError(file.string(), fmt::format("HDF5 could not get the shape of {}", what));
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0)
-    throw InputError(file.string(), fmt::format("HDF5 could not get the shape of {}", what));
-  return dims;
-}
-
-void requireShape(hid_t set, const fs::path& file, const std::string& what, glm::ivec3 dims,
-                  int axes) {
+void requireShape(const std::vector<hsize_t>& shape, const fs::path& file, const std::string& what,
+                  glm::ivec3 dims, int axes) {
   const std::vector<hsize_t> expected{hsize_t(dims.z), hsize_t(dims.y), hsize_t(dims.x)};
   const std::vector<hsize_t> planar{hsize_t(dims.y), hsize_t(dims.x)};
-  const auto shape = shapeOf(set, file, what);
   if (shape == expected || (axes == 2 && shape == planar)) return;
   std::string got;
   for (auto s : shape) got += fmt::format("{}{}", got.empty() ? "" : ",", s);
@@ -63,17 +52,17 @@ void FieldReads::add(hid_t group, const fs::path& file, const std::string& group
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const std::string& name = channels_[c];
     const auto what = fmt::format("{}/{}", groupName, name);
-    if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
-      throw InputError(file.string(), fmt::format("dataset {} is missing", what));
     const Hdf5Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
     if (!set.valid())
-      throw InputError(file.string(), fmt::format("HDF5 could not open dataset {}", what));
-    requireShape(set.get(), file, what, dims, axes);
-    const Hdf5Handle type(H5Dget_type(set.get()), H5Tclose);
-    if (!type.valid() || H5Tget_class(type.get()) != H5T_FLOAT)
+      throw InputError(file.string(), H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0
+                                          ? fmt::format("dataset {} is missing", what)
+                                          : fmt::format("HDF5 could not open dataset {}", what));
+    const StoredDataset stored = inspectStoredDataset(set.get(), file.string(), what);
+    requireShape(stored.shape, file, what, dims, axes);
+    if (stored.typeClass != H5T_FLOAT)
       throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
-    const std::uint64_t count = requireStoredValues(set.get(), file.string(), what);
-    if (const auto contiguous = contiguousFloats(set.get(), file.string(), what, count)) {
+    const std::uint64_t count = stored.count;
+    if (const auto contiguous = contiguousFloats(stored, file.string(), what)) {
       queue(file, contiguous->valueBytes, {contiguous->offset, count, into[c]}, {what, dims, axes});
       continue;
     }
@@ -88,21 +77,50 @@ void FieldReads::add(hid_t group, const fs::path& file, const std::string& group
   }
 }
 
-void FieldReads::queue(const fs::path& file, int valueBytes, FloatRun run, Source source) {
-  const auto [at, added] = fileIndex_.try_emplace({file.string(), valueBytes}, files_.size());
-  if (added) files_.push_back({file, valueBytes, {}, {}});
-  files_[at->second].runs.push_back(run);
-  files_[at->second].sources.push_back(std::move(source));
+FieldReads::~FieldReads() {
+  reading_.cancel();
+  try {
+    reading_.wait();
+  } catch (...) {  // the error that ended the reading is already on its way out
+  }
 }
 
-void FieldReads::run() const {
-  for (const FileReads& reads : files_) {
-    const auto bad = readFloatRuns(reads.file, reads.valueBytes, reads.runs, "a grid field");
-    if (!bad) continue;
-    const Source& source = reads.sources[bad->run];
-    unusable(reads.file, source.dataset, bad->value, zoneText(bad->index, source.dims, source.axes),
-             bad->problem);
-  }
+void FieldReads::queue(const fs::path& file, int valueBytes, FloatRun run, Source source) {
+  const auto [at, added] = fileIndex_.try_emplace({file.string(), valueBytes}, files_.size());
+  if (added) files_.push_back({file, valueBytes, {}, {}, 0});
+  FileReads& reads = files_[at->second];
+  reads.sources.push_back(std::move(source));
+  reads.pending.push_back(run);
+  reads.pendingValues += run.count;
+  if (reads.pendingValues >= batchValues_) launch(at->second);
+}
+
+void FieldReads::launch(std::size_t file) {
+  FileReads& reads = files_[file];
+  if (reads.pending.empty()) return;
+  const std::size_t firstRun = reads.sources.size() - reads.pending.size();
+  Batch& batch = batches_.emplace_back(Batch{file, firstRun, std::move(reads.pending), {}});
+  reads.pending.clear();
+  reads.pendingValues = 0;
+  reading_.run([&batch, &reads] {
+    batch.bad = readFloatRuns(reads.file, reads.valueBytes, batch.runs, "a grid field");
+  });
+}
+
+void FieldReads::run() {
+  for (std::size_t file = 0; file < files_.size(); ++file) launch(file);
+  reading_.wait();
+  const Batch* first = nullptr;
+  auto key = [](const Batch& b) {
+    return std::tuple(b.file, b.firstRun + b.bad->run, b.bad->index);
+  };
+  for (const Batch& batch : batches_)
+    if (batch.bad && (!first || key(batch) < key(*first))) first = &batch;
+  if (!first) return;
+  const FileReads& reads = files_[first->file];
+  const Source& source = reads.sources[first->firstRun + first->bad->run];
+  unusable(reads.file, source.dataset, first->bad->value,
+           zoneText(first->bad->index, source.dims, source.axes), first->bad->problem);
 }
 
 }  // namespace amrstream::formats::enzo

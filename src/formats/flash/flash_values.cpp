@@ -54,10 +54,10 @@ void readBlockValues(const FlashFile& file, const std::string& name,
     std::size_t size = 0;
     if (file.typeClass(name, set, &size) != H5T_FLOAT || (size != 4 && size != 8))
       file.fail(name, "expected float32 or float64 data");
-    const std::uint64_t count = requireStoredValues(set.get(), file.path(), name);
-    if (blocks.back().block >= count / perBlock)
+    const StoredDataset stored = inspectStoredDataset(set.get(), file.path(), name);
+    if (blocks.back().block >= stored.count / perBlock)
       file.fail(name, fmt::format("has no block {}", blocks.back().block));
-    contiguous = contiguousFloats(set.get(), file.path(), name, count);
+    contiguous = contiguousFloats(stored, file.path(), name);
   }
   if (contiguous) {
     const BlockRuns runs = blockRuns(blocks, contiguous->offset, contiguous->valueBytes, perBlock);

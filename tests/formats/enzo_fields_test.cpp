@@ -1,0 +1,153 @@
+// The Enzo grids' field values read in batches while more grids are added: with batches of
+// every size, the values equal those H5Dread gives, and of several unusable values the one
+// reported is the first in the order the datasets were added, whichever batch met it first.
+
+#include "formats/enzo/enzo_fields.hpp"
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "amrstream/error.hpp"
+#include "formats/dataset_writers.hpp"
+#include "input_error_of.hpp"
+#include "synth/generators.hpp"
+#include "temp_dir_test.hpp"
+
+namespace amrstream::formats::enzo {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using testing::inputErrorOf;
+
+const std::vector<std::string> kChannels = {"dens", "magx", "magy", "magz"};
+
+struct GridValues {
+  std::string group;
+  glm::ivec3 dims;
+  std::vector<std::vector<float>> channels;  // what H5Dread gives
+};
+
+// The grids of `file` (a field file the Enzo writer wrote) with their values as H5Dread reads them.
+std::vector<GridValues> readWithHdf5(const fs::path& file) {
+  std::vector<GridValues> grids;
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(f, 0);
+  for (int id = 1;; ++id) {
+    const std::string group = fmt::format("/Grid{:08d}", id);
+    if (H5Lexists(f, group.c_str(), H5P_DEFAULT) <= 0) break;
+    GridValues grid{group, glm::ivec3(0), {}};
+    for (const std::string& name : kChannels) {
+      const hid_t set = H5Dopen2(f, (group + "/" + name).c_str(), H5P_DEFAULT);
+      const hid_t space = H5Dget_space(set);
+      hsize_t dims[3] = {0, 0, 0};
+      H5Sget_simple_extent_dims(space, dims, nullptr);
+      grid.dims = glm::ivec3(int(dims[2]), int(dims[1]), int(dims[0]));
+      std::vector<float> values(dims[0] * dims[1] * dims[2]);
+      EXPECT_GE(H5Dread(set, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+      grid.channels.push_back(std::move(values));
+      H5Sclose(space);
+      H5Dclose(set);
+    }
+    grids.push_back(std::move(grid));
+  }
+  H5Fclose(f);
+  return grids;
+}
+
+// Every grid of `file` added to a FieldReads of `batchValues` and read into `into` (sized as
+// `grids`' values).
+void readWithBatches(const fs::path& file, const std::vector<GridValues>& grids,
+                     std::vector<std::vector<std::vector<float>>>& into,
+                     std::uint64_t batchValues) {
+  into.clear();
+  for (const GridValues& grid : grids) {
+    std::vector<std::vector<float>> channels;
+    for (const auto& values : grid.channels) channels.emplace_back(values.size(), -1.0f);
+    into.push_back(std::move(channels));
+  }
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  {
+    FieldReads reads(kChannels, batchValues);
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      const hid_t group = H5Gopen2(f, grids[g].group.c_str(), H5P_DEFAULT);
+      std::vector<float*> targets;
+      for (auto& values : into[g]) targets.push_back(values.data());
+      reads.add(group, file, grids[g].group, grids[g].dims, 3, targets);
+      H5Gclose(group);
+    }
+    reads.run();
+  }
+  H5Fclose(f);
+}
+
+// Overwrites value `index` of `group`/`name` in place (the dataset keeps its contiguous storage).
+void spoil(const fs::path& file, const std::string& group, const std::string& name,
+           std::size_t index, float value) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t set = H5Dopen2(f, (group + "/" + name).c_str(), H5P_DEFAULT);
+  const hid_t space = H5Dget_space(set);
+  std::vector<float> values(std::size_t(H5Sget_simple_extent_npoints(space)));
+  ASSERT_GE(H5Dread(set, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  values.at(index) = value;
+  ASSERT_GE(H5Dwrite(set, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(f);
+}
+
+class FieldReadsTest : public testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    testing::TempDirTest::SetUp();
+    BuiltinOptions options;
+    options.levels = 3;
+    options.rootBlocks = 2;
+    options.targetCells = 40000;
+    writeFieldAs(synth::generate("cloud", options), dir_ / "cloud", "enzo");
+    file_ = dir_ / "cloud.cpu0000";
+    grids_ = readWithHdf5(file_);
+    ASSERT_GE(grids_.size(), 4u);
+  }
+  fs::path file_;
+  std::vector<GridValues> grids_;
+};
+
+TEST_F(FieldReadsTest, EveryBatchSizeReadsTheValuesHdf5Reads) {
+  for (const std::uint64_t batch : {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
+    std::vector<std::vector<std::vector<float>>> into;
+    readWithBatches(file_, grids_, into, batch);
+    for (std::size_t g = 0; g < grids_.size(); ++g)
+      for (std::size_t c = 0; c < kChannels.size(); ++c)
+        ASSERT_EQ(into[g][c], grids_[g].channels[c])
+            << "batch " << batch << ", " << grids_[g].group << "/" << kChannels[c];
+  }
+}
+
+TEST_F(FieldReadsTest, TheFirstUnusableValueInTheOrderAddedIsNamedWhateverTheBatches) {
+  // A NaN in the last grid, infinities in grid 2's magx and, earlier in the order added, its dens.
+  spoil(file_, grids_.back().group, "dens", 0, std::numeric_limits<float>::quiet_NaN());
+  spoil(file_, grids_[1].group, "magx", 3, std::numeric_limits<float>::infinity());
+  spoil(file_, grids_[1].group, "dens", 5, -std::numeric_limits<float>::infinity());
+  const std::string expected =
+      fmt::format("dataset {}/dens: value -inf at zone (i, j, k) = (5, 0, 0)", grids_[1].group);
+  for (const std::uint64_t batch : {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
+    std::vector<std::vector<std::vector<float>>> into;
+    const std::string error =
+        inputErrorOf([&] { readWithBatches(file_, grids_, into, batch); });
+    EXPECT_THAT(error, HasSubstr(file_.string())) << "batch " << batch;
+    EXPECT_THAT(error, HasSubstr(expected)) << "batch " << batch;
+  }
+}
+
+}  // namespace
+}  // namespace amrstream::formats::enzo
