@@ -92,7 +92,7 @@ std::optional<std::string> positionsProblem(const WorldTransform& transform, con
 std::optional<std::string> unusableFieldValue(double value) {
   if (std::isnan(value)) return "not a number";
   if (std::isinf(value)) return "infinite";
-  if (std::abs(value) > std::numeric_limits<float>::max()) return "beyond the float range";
+  if (std::abs(value) > kLargestFieldValue) return "beyond the float range";
   return std::nullopt;
 }
 

@@ -27,6 +27,9 @@ inline constexpr std::size_t kMaxSlabGrowth = 256;
 // Why `value` cannot be a float channel value ("not a number", "infinite", "beyond the float
 // range"), or nullopt when it can.
 std::optional<std::string> unusableFieldValue(double value);
+// Every value whose magnitude is at most this (NaN is not) is usable: the test a reader makes
+// per value before it asks unusableFieldValue why one is not.
+inline constexpr double kLargestFieldValue = std::numeric_limits<float>::max();
 
 // The cells' bounding box in finest-cell units (upper corners at lower + 2^level).
 struct CellsBounds {

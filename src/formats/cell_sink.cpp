@@ -32,22 +32,12 @@ CellSink::CellSink(const ValueWindow* window, std::string source, WindowedRead* 
       read_(read),
       source_(std::move(source)) {}
 
-void CellSink::reserve(std::size_t cells) {
-  if (checked_) return;
-  lowers_.reserve(cells);
-  levels_.reserve(cells);
-  for (Channel& channel : channels_) channel.values.reserve(cells);
-}
-
 void CellSink::addChannel(std::string name) {
   names_.push_back(name);
   if (window_ && !window_->withChannels) return;
-  channels_.push_back(
-      {std::move(name), std::vector<float>(checked_ ? checked_->lowers.size() : lowers_.size())});
-}
-
-void CellSink::set(std::size_t channel, std::size_t cell, float value) {
-  if (!channels_.empty()) channels_[channel].values[cell] = value;
+  Channel channel{std::move(name), {}};
+  resizeInHugePages(channel.values, checked_ ? checked_->lowers.size() : lowers_.size());
+  channels_.push_back(std::move(channel));
 }
 
 std::span<float> CellSink::values(std::size_t channel) {
@@ -55,21 +45,7 @@ std::span<float> CellSink::values(std::size_t channel) {
   return channels_[channel].values;
 }
 
-std::size_t CellSink::cell(glm::ivec3 lower, std::uint8_t level) {
-  if (checked_) {
-    if (at_ >= checked_->lowers.size() || checked_->lowers[at_] != lower ||
-        checked_->levels[at_] != level)
-      differs(source_);
-    return at_++;
-  }
-  lowers_.push_back(lower);
-  levels_.push_back(level);
-  for (Channel& channel : channels_) channel.values.push_back(0.0f);
-  return lowers_.size() - 1;
-}
-
 void CellSink::presize(std::size_t cells) {
-  presized_ = true;
   if (checked_) {
     if (cells != checked_->lowers.size()) differs(source_);
     return;
@@ -91,7 +67,6 @@ void CellSink::place(std::size_t at, glm::ivec3 lower, std::uint8_t level) {
 bricks::AmrField CellSink::finish(WorldTransform transform) {
   if (read_) read_->channels = names_;
   if (checked_) {
-    if (!presized_ && at_ != checked_->lowers.size()) differs(source_);
     lowers_ = checked_->lowers;
     levels_ = checked_->levels;
   }

@@ -1,8 +1,9 @@
 #pragma once
-// Where a reader puts the leaf cells it lays out and their values. A first (or only) read
-// appends them. A second read of the same input against the cells a first read checked
-// (ValueWindow::checked) writes values in place instead: it skips the pieces outside its window
-// by their cell counts and compares the cells it lays out with the first read's.
+// Where a reader puts the leaf cells it lays out and their values, each piece of the input (a
+// block, grid or box) at the cells it knows its place in, from any thread. A second read of the
+// same input against the cells a first read checked (ValueWindow::checked) writes values in
+// place instead: it lays out only the pieces in its window and compares their cells with the
+// first read's.
 
 #include <cstddef>
 #include <cstdint>
@@ -21,24 +22,16 @@ class CellSink {
   // `read`, when given, receives the channels' names.
   CellSink(const ValueWindow* window, std::string source, WindowedRead* read = nullptr);
 
-  // A second read that lays out only the pieces it reads (the others: skip()).
+  // A second read, which lays out only the pieces it reads.
   bool skipsPieces() const { return checked_ != nullptr; }
-  // Room for `cells` cells (a first read).
-  void reserve(std::size_t cells);
-  // Adds a channel, every cell's value 0 until set.
+  // Adds a channel, every cell's value 0 until written.
   void addChannel(std::string name);
-  // The next cell's index; on a second read, InputError unless it is the first read's.
-  std::size_t cell(glm::ivec3 lower, std::uint8_t level);
-  void set(std::size_t channel, std::size_t cell, float value);
-  // A channel's values, one per cell, to be filled in place from any thread (after presize or
-  // the cells' cell() calls); empty when the sink keeps no channels (ValueWindow::withChannels).
+  // A channel's values, one per cell, to be filled in place from any thread after presize;
+  // empty when the sink keeps no channels (ValueWindow::withChannels).
   std::span<float> values(std::size_t channel);
-  // On a second read: the next `count` cells, of a piece not read.
-  void skip(std::size_t count) { at_ += count; }
 
-  // Pieces laid out in parallel, each at cells it knows: room for `cells` cells in all (on a
-  // second read, InputError unless the first read's count), then place() for each cell, from
-  // any thread, and set() for its values, instead of cell() and skip().
+  // Room for `cells` cells in all (on a second read, InputError unless the first read's count),
+  // then place() for each cell laid out.
   void presize(std::size_t cells);
   void place(std::size_t at, glm::ivec3 lower, std::uint8_t level);
   // The field, checked (against the first read's cells on a second read).
@@ -57,8 +50,6 @@ class CellSink {
   std::vector<glm::ivec3> lowers_;
   std::vector<std::uint8_t> levels_;
   std::vector<Channel> channels_;
-  std::size_t at_ = 0;  // second read: the next cell
-  bool presized_ = false;
 };
 
 }  // namespace amrstream::formats

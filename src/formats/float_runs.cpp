@@ -35,10 +35,9 @@ std::vector<Piece> piecesOf(std::span<const FloatRun> runs) {
 // The first unusable value among `values` (those of the piece), if any.
 template <typename T>
 std::optional<UnusableValue> firstUnusable(const T* values, const Piece& piece) {
-  constexpr double kLargest = std::numeric_limits<float>::max();
   for (std::uint64_t i = 0; i < piece.count; ++i) {
     const double value = double(values[i]);
-    if (std::abs(value) <= kLargest) continue;  // the usual case, NaN excluded
+    if (std::abs(value) <= kLargestFieldValue) continue;  // the usual case, NaN excluded
     if (auto problem = unusableFieldValue(value))
       return UnusableValue{piece.run, piece.first + i, value, std::move(*problem)};
   }

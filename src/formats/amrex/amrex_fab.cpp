@@ -58,19 +58,29 @@ RealFormat readRealFormat(Cursor& in) {
   return {bytes, order == big};
 }
 
-double decode(const unsigned char* p, const RealFormat& format) {
-  unsigned char bytes[8];
-  std::memcpy(bytes, p, format.bytes);
-  if (format.bigEndian != (std::endian::native == std::endian::big))
-    std::reverse(bytes, bytes + format.bytes);
+// `count` values of `format`, read as bytes into the last count * format.bytes bytes of
+// `values`' storage, made doubles in place: each value's bytes are read before any double is
+// written over them, since the i-th double ends at or before the (i+1)-th value's bytes begin.
+void decodeInPlace(double* values, std::uint64_t count, const RealFormat& format) {
+  const bool swap = format.bigEndian != (std::endian::native == std::endian::big);
+  auto* bytes = reinterpret_cast<unsigned char*>(values);
   if (format.bytes == 8) {
-    double v;
-    std::memcpy(&v, bytes, 8);
-    return v;
+    if (!swap) return;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      std::uint64_t word;
+      std::memcpy(&word, bytes + 8 * i, 8);
+      word = __builtin_bswap64(word);
+      std::memcpy(bytes + 8 * i, &word, 8);
+    }
+    return;
   }
-  float v;
-  std::memcpy(&v, bytes, 4);
-  return v;
+  const unsigned char* from = bytes + 4 * count;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint32_t word;
+    std::memcpy(&word, from + 4 * i, 4);
+    if (swap) word = __builtin_bswap32(word);
+    values[i] = double(std::bit_cast<float>(word));
+  }
 }
 
 std::string formatName(const RealFormat& format) {
@@ -79,9 +89,9 @@ std::string formatName(const RealFormat& format) {
 
 }  // namespace
 
-std::vector<double> readFab(const std::filesystem::path& file, std::uint64_t offset,
-                            std::optional<std::uint64_t> nextFab, const Box& stored, int ncomp,
-                            int axes) {
+std::unique_ptr<double[]> readFab(const std::filesystem::path& file, std::uint64_t offset,
+                                  std::optional<std::uint64_t> nextFab, const Box& stored,
+                                  int ncomp, int axes) {
   const std::string source = file.string();
   std::ifstream in;
   const std::uint64_t fileSize = openRegularFile(in, file, "the FAB data file (Cell_D)");
@@ -128,11 +138,10 @@ std::vector<double> readFab(const std::filesystem::path& file, std::uint64_t off
                            nextFab ? "where the next FAB starts" : "the end of the file"));
   in.clear();
   in.seekg(static_cast<std::streamoff>(dataStart));
-  std::vector<unsigned char> raw(dataBytes);
-  readExactly(in, file, dataStart, reinterpret_cast<char*>(raw.data()), dataBytes, "the FAB data");
-  std::vector<double> decoded(values);
-  for (std::size_t i = 0; i < decoded.size(); ++i)
-    decoded[i] = decode(&raw[i * format.bytes], format);
+  auto decoded = std::make_unique_for_overwrite<double[]>(values);
+  char* raw = reinterpret_cast<char*>(decoded.get()) + (8 - format.bytes) * values;
+  readExactly(in, file, dataStart, raw, dataBytes, "the FAB data");
+  decodeInPlace(decoded.get(), values, format);
   return decoded;
 }
 

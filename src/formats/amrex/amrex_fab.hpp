@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,8 +21,8 @@ namespace amrstream::formats::amrex {
 // `stored` and `ncomp`, its data is truncated, or the value size it declares does not fill the
 // bytes up to the next FAB or the end of the file exactly (a float32 declaration over float64
 // data, say). `axes`: the plotfile's dimension (a 2D FAB's box has two coordinates).
-std::vector<double> readFab(const std::filesystem::path& file, std::uint64_t offset,
-                            std::optional<std::uint64_t> nextFab, const Box& stored, int ncomp,
-                            int axes);
+std::unique_ptr<double[]> readFab(const std::filesystem::path& file, std::uint64_t offset,
+                                  std::optional<std::uint64_t> nextFab, const Box& stored,
+                                  int ncomp, int axes);
 
 }  // namespace amrstream::formats::amrex

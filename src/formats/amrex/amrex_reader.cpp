@@ -430,12 +430,14 @@ void readFabCells(const Plotfile& plot, const FabPlan& plan, CellSink& sink) {
   const fs::path file = plot.fabFile(l, fab);
   const Box stored = plot.stored(l, fab);
   const int ncomp = plot.components();
-  const std::vector<double> values =
+  const std::unique_ptr<double[]> values =
       plan.wanted
           ? amrex::readFab(file, static_cast<std::uint64_t>(fab.offset),
                            nextFabOffset(plot.offsets[std::size_t(l)].at(fab.file), fab.offset),
                            stored, ncomp, plot.header.axes)
-          : std::vector<double>();
+          : nullptr;
+  std::vector<float*> into(std::size_t(plan.wanted ? ncomp : 0), nullptr);
+  for (std::size_t c = 0; c < into.size(); ++c) into[c] = sink.values(c).data();
   const std::vector<bool> covered = coveredMask(plot, l, fab.box, file.string());
   const int width = plot.widths[l];
   const auto ourLevel = static_cast<std::uint8_t>(std::countr_zero(unsigned(width)));
@@ -456,8 +458,12 @@ void readFabCells(const Plotfile& plot, const FabPlan& plan, CellSink& sink) {
           glm::ivec3 lower = cell * width - plot.finestDomain().lo;
           if (plot.planar()) lower.z = copy * width;
           sink.place(at, lower, ourLevel);
-          for (int c = 0; plan.wanted && c < ncomp; ++c) {
+          for (std::size_t c = 0; c < into.size(); ++c) {
             const double value = values[c * points + point];
+            if (std::abs(value) <= kLargestFieldValue) {  // the usual case, NaN excluded
+              if (into[c]) into[c][at] = static_cast<float>(value);
+              continue;
+            }
             if (const auto problem = unusableFieldValue(value))
               throw InputError(
                   file.string(),
@@ -467,7 +473,6 @@ void readFabCells(const Plotfile& plot, const FabPlan& plan, CellSink& sink) {
                               plot.planar() ? fmt::format("({}, {})", cell.x, cell.y)
                                             : fmt::format("({}, {}, {})", cell.x, cell.y, cell.z),
                               *problem, value));
-            sink.set(std::size_t(c), at, static_cast<float>(value));
           }
         }
       }

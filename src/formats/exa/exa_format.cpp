@@ -229,9 +229,8 @@ void readScalarsInto(const std::string& name, const std::filesystem::path& path,
                                                 values.size(), cells));
   readInPieces(path, 0, reinterpret_cast<char*>(values.data()), size, "the scalars file");
   // A float is unusable exactly when it is not finite: NaN fails the comparison.
-  const std::size_t i = firstFailing(cells, [&](std::size_t k) {
-    return !(std::abs(values[k]) <= std::numeric_limits<float>::max());
-  });
+  const std::size_t i = firstFailing(
+      cells, [&](std::size_t k) { return !(std::abs(values[k]) <= kLargestFieldValue); });
   if (i < cells) {
     const std::string problem = *unusableFieldValue(values[i]);
     throw InputError(path.string(),
