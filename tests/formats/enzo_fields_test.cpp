@@ -123,7 +123,8 @@ class FieldReadsTest : public testing::TempDirTest {
 };
 
 TEST_F(FieldReadsTest, EveryBatchSizeReadsTheValuesHdf5Reads) {
-  for (const std::uint64_t batch : {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
+  for (const std::uint64_t batch :
+       {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
     std::vector<std::vector<std::vector<float>>> into;
     readWithBatches(file_, grids_, into, batch);
     for (std::size_t g = 0; g < grids_.size(); ++g)
@@ -140,10 +141,10 @@ TEST_F(FieldReadsTest, TheFirstUnusableValueInTheOrderAddedIsNamedWhateverTheBat
   spoil(file_, grids_[1].group, "dens", 5, -std::numeric_limits<float>::infinity());
   const std::string expected =
       fmt::format("dataset {}/dens: value -inf at zone (i, j, k) = (5, 0, 0)", grids_[1].group);
-  for (const std::uint64_t batch : {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
+  for (const std::uint64_t batch :
+       {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
     std::vector<std::vector<std::vector<float>>> into;
-    const std::string error =
-        inputErrorOf([&] { readWithBatches(file_, grids_, into, batch); });
+    const std::string error = inputErrorOf([&] { readWithBatches(file_, grids_, into, batch); });
     EXPECT_THAT(error, HasSubstr(file_.string())) << "batch " << batch;
     EXPECT_THAT(error, HasSubstr(expected)) << "batch " << batch;
   }
