@@ -146,6 +146,7 @@ SeedList seedsOnGrid(glm::dvec3 lower, glm::dvec3 upper, glm::ivec3 counts) {
 }
 
 bool insideACell(const VectorVolume& volume, glm::dvec3 cellUnits) {
+  if (volume.surelyInACell(cellUnits)) return true;
   const std::int32_t region = locateRegion(volume, toCellPoint(cellUnits));
   if (region < 0) return false;
   const shared::Region& r = volume.regions.regions[std::size_t(region)];

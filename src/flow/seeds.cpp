@@ -122,6 +122,11 @@ void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {
   const auto sampleAt = [&](std::size_t i) {
     return sampleVector(volume, toCellPoint(volume.transform.toCellUnits(seeds.points[i])));
   };
+  // A point in a cell has a valid sample: its cell's tent is at least 1/8 there, and the values
+  // are finite and bounded so that their weighted sums are (value_range.hpp).
+  const auto valid = [&](std::size_t i) {
+    return volume.surelyInACell(volume.transform.toCellUnits(seeds.points[i])) || sampleAt(i).valid;
+  };
   // The first seed without a valid sample, found on all cores.
   const std::size_t n = seeds.points.size();
   std::atomic<std::size_t> first{n};
@@ -130,7 +135,7 @@ void checkSeedsInDomain(const VectorVolume& volume, const SeedList& seeds) {
                       for (std::size_t i = range.begin(); i < range.end(); ++i) {
                         std::size_t known = first.load(std::memory_order_relaxed);
                         if (i >= known) return;
-                        if (sampleAt(i).valid) continue;
+                        if (valid(i)) continue;
                         while (i < known && !first.compare_exchange_weak(known, i)) {
                         }
                         return;

@@ -144,11 +144,23 @@ void keepAround(bricks::BrickSet& set, const VolumeOptions::Box& box, const Cell
 
 namespace {
 
+// Whether `bricks` (disjoint dense boxes of cells) fill `domain`: their volumes, summed exactly
+// (up to 2^90 finest cells each), equal the box's.
+bool fillsDomain(std::span<const shared::Brick> bricks, const CellBox& domain) {
+  using Volume = unsigned __int128;
+  Volume filled = 0;
+  for (const shared::Brick& b : bricks)
+    filled += (Volume(b.size.x) * Volume(b.size.y) * Volume(b.size.z)) << (3 * b.level);
+  const glm::ivec3 extent = domain.upper - domain.lower;
+  return filled == Volume(extent.x) * Volume(extent.y) * Volume(extent.z);
+}
+
 // A layout from its bricks (centred, kept): their periodic images, the regions.
 VectorVolume finishLayout(bricks::BrickSet brickSet, const CentredCells& centred,
                           const VolumeOptions& options, Stopwatch& clock, VolumeBuildTimes* times) {
   VectorVolume volume;
   volume.originalBrickCount = brickSet.bricks.size();
+  volume.cellsFillDomain = fillsDomain(brickSet.bricks, centred.domain);
   if (std::find(options.periodic.begin(), options.periodic.end(), true) != options.periodic.end()) {
     const std::vector<shared::Brick> images =
         periodicImages(brickSet.bricks, centred.domain, options.periodic);

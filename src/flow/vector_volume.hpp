@@ -55,6 +55,8 @@ struct VectorVolume {
   // when the field's reach beyond 2^20 of the origin, centred on the domain (buildCellLayout
   // moves the cells, and the transform with them).
   CellBox domain;
+  // Whether the original bricks fill the domain box: no hole, every point of it in a cell.
+  bool cellsFillDomain = false;
   PeriodicAxes periodic{};
   WorldTransform transform;
   std::string vectorName;
@@ -65,6 +67,15 @@ struct VectorVolume {
   glm::dvec3 frameVelocity{0.0};
 
   glm::ivec3 period() const { return domain.upper - domain.lower; }
+  // True for a point (cell units) in the domain box of a volume without holes, but not within
+  // 2^-20 cells under an upper face: such a point is in a cell, and the region lookup, which
+  // sees points rounded to float, finds its region. False says nothing.
+  bool surelyInACell(glm::dvec3 cellUnits) const {
+    constexpr double kUpperMargin = 0x1.0p-20;
+    return cellsFillDomain &&
+           glm::all(glm::greaterThanEqual(cellUnits, glm::dvec3(domain.lower))) &&
+           glm::all(glm::lessThan(cellUnits, glm::dvec3(domain.upper) - kUpperMargin));
+  }
   std::size_t channelCount() const { return channelNames.size(); }
   // Whether a float in cell units (centred on the domain) misses finest cells somewhere in the
   // domain: wider than 2^21 finest cells on some axis. The GPU then hands positions over as

@@ -48,6 +48,43 @@ TEST(SeedStrategies, RandomSeedsLandInCellsNeverInHoles) {
   }
 }
 
+TEST(SeedStrategies, InsideACellOfAFieldWithoutHolesAnswersAsTheRegionLookupDoes) {
+  // Random 4-level layouts fill their domain box, so that a point in the box is in a cell. The
+  // region lookup sees points in float: within 2^-24 cells under an upper face it finds none.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const bricks::AmrField field = testing::randomAmr(seed, {4, {2, 3, 2}, 0.45, {16, -8, 0}});
+    const VectorVolume filled = testing::volumeOf(field);
+    VectorVolume lookedUp = testing::volumeOf(field);
+    EXPECT_TRUE(filled.cellsFillDomain) << seed;
+    lookedUp.cellsFillDomain = false;  // every point through the region lookup
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const glm::dvec3 lower(field.bounds().lower), upper(field.bounds().upper);
+    ASSERT_EQ(glm::dvec3(filled.domain.lower), lower);  // the field's own cell units
+    std::vector<glm::dvec3> points;
+    for (int n = 0; n < 2000; ++n)
+      points.push_back(lower - 0.5 +
+                       glm::dvec3(unit(rng), unit(rng), unit(rng)) * (upper - lower + 1.0));
+    for (const double in : {0.0, 1e-12, 0x1.0p-21, 0x1.0p-20, 1e-3, -1e-12})
+      for (int axis = 0; axis < 3; ++axis) {
+        glm::dvec3 nearUpper = (lower + upper) / 2.0, nearLower = nearUpper;
+        nearUpper[axis] = upper[axis] - in;
+        nearLower[axis] = lower[axis] + in;
+        points.push_back(nearUpper);
+        points.push_back(nearLower);
+      }
+    for (const glm::dvec3& p : points) {
+      ASSERT_EQ(insideACell(filled, p), insideACell(lookedUp, p))
+          << seed << ": " << p.x << " " << p.y << " " << p.z;
+      if (glm::all(glm::lessThan(p, upper - 0x1.0p-20))) {
+        ASSERT_EQ(insideACell(filled, p), insideSomeCell(field, p))
+            << seed << ": " << p.x << " " << p.y << " " << p.z;
+      }
+    }
+  }
+  EXPECT_FALSE(testing::volumeOf(testing::twoBlocksWithAGap()).cellsFillDomain);
+}
+
 TEST(SeedStrategies, RandomSeedsInCellsEqualTheBoxDrawWithoutHoles) {
   const VectorVolume volume =
       testing::volumeOf(testing::uniformGrid(4, [](glm::dvec3) { return glm::vec3(1.0f); }));

@@ -9,12 +9,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "flow/sampler.hpp"
 #include "flow/vector_selection.hpp"
 #include "flow_test_support.hpp"
 #include "input_error_of.hpp"
+#include "random_amr.hpp"
 
 namespace amrstream::flow {
 namespace {
@@ -115,6 +118,43 @@ TEST(SeedCheck, NamesTheFirstOfManySeedsOutside) {
   seeds.points[70001] = {1, 1, 1};
   EXPECT_THAT(testing::inputErrorOf([&] { checkSeedsInDomain(volume, seeds); }),
               HasSubstr("random seed #150001: seed (9, 1, 1)"));
+}
+
+// Without holes, a seed in the box passes without being sampled; it passes exactly when its
+// sample is valid, near the faces and on them too.
+TEST(SeedCheck, ASeedOfAFieldWithoutHolesPassesExactlyWhenItsSampleIsValid) {
+  const bricks::AmrField field = testing::randomAmr(7, {4, {3, 2, 2}, 0.45, {0, 8, -16}});
+  const VectorVolume volume = testing::volumeOf(field);
+  ASSERT_TRUE(volume.cellsFillDomain);
+  const glm::dvec3 lower(volume.domain.lower), upper(volume.domain.upper);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<glm::dvec3> points;
+  for (int n = 0; n < 3000; ++n)
+    points.push_back(lower - 0.25 +
+                     glm::dvec3(unit(rng), unit(rng), unit(rng)) * (upper - lower + 0.5));
+  for (const double in : {0.0, 1e-12, 0x1.0p-21, 0x1.0p-20, 1e-3, -1e-12})
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::dvec3 nearUpper = (lower + upper) / 2.0, nearLower = nearUpper;
+      nearUpper[axis] = upper[axis] - in;
+      nearLower[axis] = lower[axis] + in;
+      points.push_back(nearUpper);
+      points.push_back(nearLower);
+    }
+  for (const glm::dvec3& cellUnits : points) {
+    SeedList one;
+    one.points = {volume.transform.toPhysical(cellUnits)};
+    one.origin = [](std::size_t) { return std::string("seed"); };
+    const bool valid =
+        sampleVector(volume, toCellPoint(volume.transform.toCellUnits(one.points[0]))).valid;
+    bool passed = true;
+    try {
+      checkSeedsInDomain(volume, one);
+    } catch (const InputError&) {
+      passed = false;
+    }
+    ASSERT_EQ(passed, valid) << cellUnits.x << " " << cellUnits.y << " " << cellUnits.z;
+  }
 }
 
 TEST(SeedCheck, RefusesASeedWhereNoTentReachesSoNoSampleIsNaN) {
