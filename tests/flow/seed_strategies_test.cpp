@@ -57,22 +57,10 @@ TEST(SeedStrategies, InsideACellOfAFieldWithoutHolesAnswersAsTheRegionLookupDoes
     VectorVolume lookedUp = testing::volumeOf(field);
     EXPECT_TRUE(filled.cellsFillDomain) << seed;
     lookedUp.cellsFillDomain = false;  // every point through the region lookup
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     const glm::dvec3 lower(field.bounds().lower), upper(field.bounds().upper);
     ASSERT_EQ(glm::dvec3(filled.domain.lower), lower);  // the field's own cell units
-    std::vector<glm::dvec3> points;
-    for (int n = 0; n < 2000; ++n)
-      points.push_back(lower - 0.5 +
-                       glm::dvec3(unit(rng), unit(rng), unit(rng)) * (upper - lower + 1.0));
-    for (const double in : {0.0, 1e-12, 0x1.0p-21, 0x1.0p-20, 1e-3, -1e-12})
-      for (int axis = 0; axis < 3; ++axis) {
-        glm::dvec3 nearUpper = (lower + upper) / 2.0, nearLower = nearUpper;
-        nearUpper[axis] = upper[axis] - in;
-        nearLower[axis] = lower[axis] + in;
-        points.push_back(nearUpper);
-        points.push_back(nearLower);
-      }
+    const std::vector<glm::dvec3> points =
+        testing::pointsInAndAroundBox(lower, upper, 0.5, 2000, seed);
     for (const glm::dvec3& p : points) {
       ASSERT_EQ(insideACell(filled, p), insideACell(lookedUp, p))
           << seed << ": " << p.x << " " << p.y << " " << p.z;

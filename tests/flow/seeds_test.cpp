@@ -127,20 +127,7 @@ TEST(SeedCheck, ASeedOfAFieldWithoutHolesPassesExactlyWhenItsSampleIsValid) {
   const VectorVolume volume = testing::volumeOf(field);
   ASSERT_TRUE(volume.cellsFillDomain);
   const glm::dvec3 lower(volume.domain.lower), upper(volume.domain.upper);
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<glm::dvec3> points;
-  for (int n = 0; n < 3000; ++n)
-    points.push_back(lower - 0.25 +
-                     glm::dvec3(unit(rng), unit(rng), unit(rng)) * (upper - lower + 0.5));
-  for (const double in : {0.0, 1e-12, 0x1.0p-21, 0x1.0p-20, 1e-3, -1e-12})
-    for (int axis = 0; axis < 3; ++axis) {
-      glm::dvec3 nearUpper = (lower + upper) / 2.0, nearLower = nearUpper;
-      nearUpper[axis] = upper[axis] - in;
-      nearLower[axis] = lower[axis] + in;
-      points.push_back(nearUpper);
-      points.push_back(nearLower);
-    }
+  const std::vector<glm::dvec3> points = testing::pointsInAndAroundBox(lower, upper, 0.25, 3000, 7);
   for (const glm::dvec3& cellUnits : points) {
     SeedList one;
     one.points = {volume.transform.toPhysical(cellUnits)};
