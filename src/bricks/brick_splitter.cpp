@@ -145,7 +145,6 @@ std::size_t partitionCells(std::span<GridCell> cells, Predicate lower) {
 struct Step {
   SplitPlane plane;
   std::optional<GridBounds> lower, upper;
-  std::optional<AxisSlabs> lowerSlabs, upperSlabs;
 };
 
 class Splitter {
@@ -156,14 +155,11 @@ class Splitter {
         maxAlignment_(std::bit_width(unsigned(maxSide)) - 1),
         depthLimit_(2 * int(std::bit_width(cells.size())) + 16) {}
 
-  // `known`: the node's bounds, when its parent read them off its histograms; `slabs`: its
-  // histogram along the parent's axis, when the parent's split counted them.
-  void split(std::size_t begin, std::size_t end, int depth, std::optional<GridBounds> known,
-             std::optional<AxisSlabs> slabs) {
+  void split(std::size_t begin, std::size_t end, int depth, std::optional<GridBounds> known) {
     const std::span<GridCell> cells = cells_.subspan(begin, end - begin);
     const GridBounds b = known ? *known : boundsOf(cells);
     assert(!known || *known == boundsOf(cells));
-    std::optional<Step> step = chooseStep(cells, b, depth > depthLimit_, slabs ? &*slabs : nullptr);
+    const std::optional<Step> step = chooseStep(cells, b, depth > depthLimit_);
     if (!step) {
       boxes_.push_back({b.lower, b.extent(), std::uint32_t(begin)});
       return;
@@ -172,12 +168,8 @@ class Splitter {
     const std::size_t middle = begin + partitionCells(cells, [&](const GridCell& c) {
                                  return c.g[plane.axis] < plane.at;
                                });
-    const auto lower = [&] {
-      split(begin, middle, depth + 1, step->lower, std::move(step->lowerSlabs));
-    };
-    const auto upper = [&] {
-      split(middle, end, depth + 1, step->upper, std::move(step->upperSlabs));
-    };
+    const auto lower = [&] { split(begin, middle, depth + 1, step->lower); };
+    const auto upper = [&] { split(middle, end, depth + 1, step->upper); };
     if (cells.size() >= kParallelCells) {
       tbb::parallel_invoke(lower, upper);
     } else {
@@ -196,8 +188,8 @@ class Splitter {
  private:
   // None when the cells fill their bounds and fit the side cap. Both sides of a step are
   // non-empty, because bounds are tight and planes lie strictly inside them.
-  std::optional<Step> chooseStep(std::span<const GridCell> cells, const GridBounds& b, bool tooDeep,
-                                 const AxisSlabs* slabs) const {
+  std::optional<Step> chooseStep(std::span<const GridCell> cells, const GridBounds& b,
+                                 bool tooDeep) const {
     const glm::ivec3 e = b.extent();
     const int axis = longestAxis(e);
     if (cells.size() == volume(e)) {
@@ -208,17 +200,16 @@ class Splitter {
       GridBounds lower = b, upper = b;
       lower.upper[axis] = at;
       upper.lower[axis] = at;
-      return Step{{axis, at}, lower, upper, {}, {}};
+      return Step{{axis, at}, lower, upper};
     }
     // Past the depth limit only halving splits, which bound the remaining depth by the extent
     // bits and keep the build O(N log N) whatever the layout.
-    if (tooDeep) return Step{{axis, b.lower[axis] + e[axis] / 2}, {}, {}, {}, {}};
+    if (tooDeep) return Step{{axis, b.lower[axis] + e[axis] / 2}, {}, {}};
     // Histograms cost O(extent); for sparse nodes sorting the coordinates is cheaper.
     if (U64(e.x) + U64(e.y) + U64(e.z) > 16 * U64(cells.size()) + 64)
-      return Step{sparseGapPlane(cells, b, axis), {}, {}, {}, {}};
-    HistogramSplit split = histogramSplit(cells, b, maxAlignment_, slabs);
-    return Step{split.plane, split.lower, split.upper, std::move(split.lowerSlabs),
-                std::move(split.upperSlabs)};
+      return Step{sparseGapPlane(cells, b, axis), {}, {}};
+    const HistogramSplit split = histogramSplit(cells, b, maxAlignment_);
+    return Step{split.plane, split.lower, split.upper};
   }
 
   // The empty slab along `axis` nearest the centre (ties: the lower one), found in O(cells):
@@ -249,7 +240,7 @@ class Splitter {
 std::vector<GridBox> splitIntoBoxes(std::span<GridCell> cells, int maxSide) {
   if (cells.empty()) return {};
   Splitter splitter(cells, maxSide);
-  splitter.split(0, cells.size(), 0, std::nullopt, std::nullopt);
+  splitter.split(0, cells.size(), 0, std::nullopt);
   return splitter.boxes();
 }
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cassert>
 #include <climits>
 #include <cstdlib>
 #include <vector>
@@ -14,6 +13,25 @@ namespace amrstream::bricks::detail {
 namespace {
 
 using U64 = std::uint64_t;
+
+// The cells of one slab: count and bounds on the two other axes, u = axis+1, v = axis+2 (mod 3).
+struct Slab {
+  std::uint32_t count = 0;
+  glm::ivec2 lower{INT_MAX};
+  glm::ivec2 upper{INT_MIN};  // exclusive
+
+  void add(glm::ivec2 p) {
+    ++count;
+    lower = glm::min(lower, p);
+    upper = glm::max(upper, p + 1);
+  }
+  void merge(const Slab& o) {
+    count += o.count;
+    lower = glm::min(lower, o.lower);
+    upper = glm::max(upper, o.upper);
+  }
+  U64 area() const { return U64(upper.x - lower.x) * U64(upper.y - lower.y); }
+};
 
 struct Histograms {
   std::vector<Slab> slabs[3];  // per axis, one per slab of the node
@@ -66,36 +84,21 @@ GridBounds sideBounds(const std::vector<Slab>& slabs, const GridBounds& node, in
 }  // namespace
 
 HistogramSplit histogramSplit(std::span<const GridCell> cells, const GridBounds& bounds,
-                              int maxAlignment, const AxisSlabs* known) {
+                              int maxAlignment) {
   const glm::ivec3 e = bounds.extent();
-  assert(!known || known->slabs.size() == std::size_t(e[known->axis]));
-  const int skipped = known ? known->axis : -1;
   // The histograms of large nodes are summed over pieces of the cells in parallel: a slab's
   // count and bounds do not depend on the order its cells come in.
-  const auto count = [&]<int kSkipped>(std::size_t from, std::size_t to) {
+  const auto histograms = [&](std::size_t from, std::size_t to) {
     Histograms h;
-    for (int axis = 0; axis < 3; ++axis)
-      if (axis != kSkipped) h.slabs[axis].assign(std::size_t(e[axis]), Slab{});
+    for (int axis = 0; axis < 3; ++axis) h.slabs[axis].assign(std::size_t(e[axis]), Slab{});
     for (std::size_t i = from; i < to; ++i) {
       const GridCell& c = cells[i];
       const glm::ivec3 g = c.g - bounds.lower;
-      if constexpr (kSkipped != 0) h.slabs[0][g.x].add({c.g.y, c.g.z});
-      if constexpr (kSkipped != 1) h.slabs[1][g.y].add({c.g.z, c.g.x});
-      if constexpr (kSkipped != 2) h.slabs[2][g.z].add({c.g.x, c.g.y});
+      h.slabs[0][g.x].add({c.g.y, c.g.z});
+      h.slabs[1][g.y].add({c.g.z, c.g.x});
+      h.slabs[2][g.z].add({c.g.x, c.g.y});
     }
     return h;
-  };
-  const auto histograms = [&](std::size_t from, std::size_t to) {
-    switch (skipped) {
-      case 0:
-        return count.template operator()<0>(from, to);
-      case 1:
-        return count.template operator()<1>(from, to);
-      case 2:
-        return count.template operator()<2>(from, to);
-      default:
-        return count.template operator()<-1>(from, to);
-    }
   };
   constexpr std::size_t kPiece = std::size_t(1) << 18;
   const std::size_t slabCount = std::size_t(e.x) + std::size_t(e.y) + std::size_t(e.z);
@@ -115,7 +118,6 @@ HistogramSplit histogramSplit(std::span<const GridCell> cells, const GridBounds&
           all.slabs[axis][s].merge(parts[p].slabs[axis][s]);
     });
   }
-  if (known) all.slabs[skipped] = known->slabs;
   std::vector<Slab>(&slabs)[3] = all.slabs;
 
   Candidate gap;
@@ -149,18 +151,9 @@ HistogramSplit histogramSplit(std::span<const GridCell> cells, const GridBounds&
   }
 
   const std::vector<Slab>& chosen = slabs[best.axis];
-  HistogramSplit split{{best.axis, bounds.lower[best.axis] + best.slab},
-                       sideBounds(chosen, bounds, best.axis, 0, best.slab),
-                       sideBounds(chosen, bounds, best.axis, best.slab, e[best.axis]),
-                       {},
-                       {}};
-  const auto sideSlabs = [&](const GridBounds& side) {
-    const auto first = chosen.begin() + (side.lower[best.axis] - bounds.lower[best.axis]);
-    return AxisSlabs{best.axis, std::vector<Slab>(first, first + side.extent()[best.axis])};
-  };
-  split.lowerSlabs = sideSlabs(split.lower);
-  split.upperSlabs = sideSlabs(split.upper);
-  return split;
+  return {{best.axis, bounds.lower[best.axis] + best.slab},
+          sideBounds(chosen, bounds, best.axis, 0, best.slab),
+          sideBounds(chosen, bounds, best.axis, best.slab, e[best.axis])};
 }
 
 }  // namespace amrstream::bricks::detail
