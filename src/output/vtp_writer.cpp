@@ -118,6 +118,16 @@ PieceTable pieceTable(std::vector<Piece> pieces) {
   return table;
 }
 
+// The buffers a column's values along a line are made in, reused from line to line: `values`
+// holds what a column returns when it is not a view of the stored points, the others the columns
+// it is made from.
+template <typename T>
+struct LineScratch {
+  std::vector<T> values;
+  std::vector<float> vectors, channels, vorticity, times, omega;
+  std::vector<double> exact;
+};
+
 // Bytes [first, first + out.size()) of the point array `name`, `width` values of type T (float or
 // double) per written point, whose values along a line `lineValues(line, scratch)` gives; each
 // piece takes its part of its line (a 1-point piece its values twice). Thread-safe when
@@ -129,7 +139,8 @@ void fillPoints(const PieceTable& table, std::size_t width, const LineValues& li
   const std::uint64_t pointBytes = width * sizeof(T);
   const std::uint64_t begin = first / pointBytes;
   const std::uint64_t end = (first + out.size() + pointBytes - 1) / pointBytes;
-  std::vector<T> values((end - begin) * width), scratch;
+  std::vector<T> values((end - begin) * width);
+  LineScratch<T> scratch;
   std::size_t k = std::upper_bound(table.firstWritten.begin(), table.firstWritten.end(), begin) -
                   table.firstWritten.begin() - 1;
   T* to = values.data();
@@ -137,10 +148,12 @@ void fillPoints(const PieceTable& table, std::size_t width, const LineValues& li
     const Piece& piece = table.pieces[k];
     const std::span<const T> line = lineValues(piece.line, scratch);
     const std::uint64_t stop = std::min(end, table.firstWritten[k + 1]);
-    for (; w < stop; ++w) {
-      const std::uint64_t point =
-          piece.first + std::min(w - table.firstWritten[k], piece.count - 1);
-      to = std::copy_n(line.data() + point * width, width, to);
+    if (piece.count == 1) {  // its one point, written twice
+      for (; w < stop; ++w) to = std::copy_n(line.data() + piece.first * width, width, to);
+    } else {
+      const std::uint64_t point = piece.first + (w - table.firstWritten[k]);
+      to = std::copy_n(line.data() + point * width, (stop - w) * width, to);
+      w = stop;
     }
   }
   for (std::size_t i = 0; i < values.size(); ++i)
@@ -174,20 +187,21 @@ AppendedArray pointArray(std::string name, int components, const PieceTable& tab
 
 // A column as it is stored.
 auto storedColumn(const flow::TraceView& traces, PointColumn column) {
-  return [&traces, column](std::uint32_t line, std::vector<float>& scratch) {
-    return traces.column(column, line, scratch);
+  return [&traces, column](std::uint32_t line, LineScratch<float>& scratch) {
+    return traces.column(column, line, scratch.values);
   };
 }
 
 // One channel of the interleaved channel values.
 auto channelColumn(const flow::TraceView& traces, std::size_t channel) {
-  return [&traces, channel](std::uint32_t line, std::vector<float>& scratch) {
+  return [&traces, channel](std::uint32_t line, LineScratch<float>& scratch) {
     const std::size_t width = traces.lines().channelCount();
-    std::vector<float> all;
-    const std::span<const float> values = traces.column(PointColumn::Channels, line, all);
-    scratch.resize(values.size() / width);
-    for (std::size_t k = 0; k < scratch.size(); ++k) scratch[k] = values[k * width + channel];
-    return std::span<const float>(scratch);
+    const std::span<const float> values =
+        traces.column(PointColumn::Channels, line, scratch.channels);
+    std::vector<float>& out = scratch.values;
+    out.resize(values.size() / width);
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = values[k * width + channel];
+    return std::span<const float>(out);
   };
 }
 
@@ -197,20 +211,20 @@ float speedOf(const float* v) {
 }
 
 auto speedColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
-    std::vector<float> vectors;
-    const std::span<const float> v = traces.column(PointColumn::Vectors, line, vectors);
-    scratch.resize(v.size() / 3);
-    for (std::size_t k = 0; k < scratch.size(); ++k) scratch[k] = speedOf(&v[3 * k]);
-    return std::span<const float>(scratch);
+  return [&traces](std::uint32_t line, LineScratch<float>& scratch) {
+    const std::span<const float> v = traces.column(PointColumn::Vectors, line, scratch.vectors);
+    std::vector<float>& out = scratch.values;
+    out.resize(v.size() / 3);
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = speedOf(&v[3 * k]);
+    return std::span<const float>(out);
   };
 }
 
 // vtkStreamTracer's AngularVelocity: the vorticity's component along the unit tangent.
-void angularVelocities(const flow::TraceView& traces, std::uint32_t line, std::vector<float>& out) {
-  std::vector<float> vectorScratch, vorticityScratch;
-  const std::span<const float> v = traces.column(PointColumn::Vectors, line, vectorScratch);
-  const std::span<const float> w = traces.column(PointColumn::Vorticity, line, vorticityScratch);
+void angularVelocities(const flow::TraceView& traces, std::uint32_t line, std::vector<float>& out,
+                       LineScratch<float>& scratch) {
+  const std::span<const float> v = traces.column(PointColumn::Vectors, line, scratch.vectors);
+  const std::span<const float> w = traces.column(PointColumn::Vorticity, line, scratch.vorticity);
   out.resize(v.size() / 3);
   for (std::size_t k = 0; k < out.size(); ++k) {
     const glm::dvec3 velocity(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
@@ -221,33 +235,34 @@ void angularVelocities(const flow::TraceView& traces, std::uint32_t line, std::v
 }
 
 auto angularVelocityColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
-    angularVelocities(traces, line, scratch);
-    return std::span<const float>(scratch);
+  return [&traces](std::uint32_t line, LineScratch<float>& scratch) {
+    angularVelocities(traces, line, scratch.values, scratch);
+    return std::span<const float>(scratch.values);
   };
 }
 
 // vtkStreamTracer's Rotation: the angular velocity integrated along each line with the trapezoid
 // rule over IntegrationTime, from 0 at the seed.
 auto rotationColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<float>& scratch) {
-    std::vector<float> omega, timeScratch;
-    angularVelocities(traces, line, omega);
-    const std::span<const float> t = traces.column(PointColumn::Times, line, timeScratch);
-    scratch.assign(omega.size(), 0.0f);
+  return [&traces](std::uint32_t line, LineScratch<float>& scratch) {
+    std::vector<float>& omega = scratch.omega;
+    angularVelocities(traces, line, omega, scratch);
+    const std::span<const float> t = traces.column(PointColumn::Times, line, scratch.times);
+    std::vector<float>& out = scratch.values;
+    out.assign(omega.size(), 0.0f);
     double total = 0.0;
     for (std::size_t k = 1; k < omega.size(); ++k) {
       total += 0.5 * (double(omega[k - 1]) + omega[k]) * (double(t[k]) - t[k - 1]);
-      scratch[k] = static_cast<float>(total);
+      out[k] = static_cast<float>(total);
     }
-    return std::span<const float>(scratch);
+    return std::span<const float>(out);
   };
 }
 
 // Precise positions, joined.
 auto exactPositionColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<double>& scratch) {
-    return flow::exactPositions(traces, line, scratch);
+  return [&traces](std::uint32_t line, LineScratch<double>& scratch) {
+    return flow::exactPositions(traces, line, scratch.values);
   };
 }
 
@@ -255,11 +270,11 @@ auto exactPositionColumn(const flow::TraceView& traces) {
 // exact positions, written as T.
 template <typename T>
 auto unwrappedPositionColumn(const flow::TraceView& traces) {
-  return [&traces](std::uint32_t line, std::vector<T>& scratch) {
+  return [&traces](std::uint32_t line, LineScratch<T>& scratch) {
     const flow::PeriodicBox& box = traces.lines().periodic;
-    std::vector<double> exact;
-    const std::span<const double> p = flow::exactPositions(traces, line, exact);
-    scratch.assign(p.begin(), p.end());
+    const std::span<const double> p = flow::exactPositions(traces, line, scratch.exact);
+    std::vector<T>& out = scratch.values;
+    out.assign(p.begin(), p.end());
     const glm::dvec3 period = box.upper - box.lower;
     glm::dvec3 shift(0.0);
     for (std::size_t k = 1; k < p.size() / 3; ++k) {
@@ -268,10 +283,10 @@ auto unwrappedPositionColumn(const flow::TraceView& traces) {
         const double jump = p[3 * k + a] - p[3 * (k - 1) + a];
         if (jump > 0.5 * period[a]) shift[a] -= period[a];
         if (jump < -0.5 * period[a]) shift[a] += period[a];
-        scratch[3 * k + a] = static_cast<T>(p[3 * k + a] + shift[a]);
+        out[3 * k + a] = static_cast<T>(p[3 * k + a] + shift[a]);
       }
     }
-    return std::span<const T>(scratch);
+    return std::span<const T>(out);
   };
 }
 

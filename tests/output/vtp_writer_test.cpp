@@ -252,6 +252,30 @@ TEST_P(VtpWriter, EndpointsOnlyTracesAreEachAPointTwice) {
             (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7}));
 }
 
+// Many blocks of endpoints: a block may begin at a point's second copy, in any array.
+TEST_P(VtpWriter, EndpointsOnlyTracesKeepEachPointTwiceAcrossBlocks) {
+  const std::vector<std::uint32_t> counts(20000, 1);
+  const VtpFile vtp = writeAndRead(sampleTraces(counts));
+  const auto points = vtp.array("Points", "Points").values<glm::vec3>();
+  const auto vectors = vtp.array("PointData", "velocity").values<glm::vec3>();
+  const auto times = vtp.array("PointData", "IntegrationTime").values<float>();
+  const auto speeds = vtp.array("PointData", "Speed").values<float>();
+  ASSERT_EQ(points.size(), 2 * counts.size());
+  ASSERT_EQ(vectors.size(), points.size());
+  ASSERT_EQ(times.size(), points.size());
+  ASSERT_EQ(speeds.size(), points.size());
+  for (std::uint32_t seed = 0; seed < counts.size(); ++seed) {
+    const glm::dvec3 v(sampleVector(seed, 0));
+    const float speed = static_cast<float>(std::sqrt(glm::dot(v, v)));
+    for (const std::size_t i : {2 * std::size_t(seed), 2 * std::size_t(seed) + 1}) {
+      ASSERT_EQ(points[i], samplePosition(seed, 0)) << "written point " << i;
+      ASSERT_EQ(vectors[i], sampleVector(seed, 0)) << "written point " << i;
+      ASSERT_EQ(times[i], sampleTime(seed, 0)) << "written point " << i;
+      ASSERT_FLOAT_EQ(speeds[i], speed) << "written point " << i;
+    }
+  }
+}
+
 // A trace without points has nothing to draw and no point to repeat; SeedIds names the others.
 TEST_P(VtpWriter, ATraceWithoutPointsHasNoLineAndSeedIdsSkipIt) {
   const VtpFile vtp = writeAndRead(sampleTraces({2, 0, 3}));
