@@ -330,6 +330,17 @@ TEST_F(EnzoSyntheticTest, RejectsATruncatedHierarchy) {
   }
 }
 
+// Grids 3 and 4 each cover half of a coarser cell (grid 2's and the root's): the error names
+// the first covered grid in the table's order, the root, whichever is checked first.
+TEST_F(EnzoSyntheticTest, AGridCoveringPartOfACoarserCellIsNamedInTableOrder) {
+  replaceText("sim.hierarchy", "0.5 0.25 0.5 \nGridRightEdge     = 0.75 0.375 0.75",
+              "0.5625 0.25 0.5 \nGridRightEdge     = 0.8125 0.375 0.75");
+  replaceText("sim.hierarchy", "0 0 0 \nGridRightEdge     = 0.25 0.5 0.25",
+              "0.125 0 0 \nGridRightEdge     = 0.375 0.5 0.25");
+  expectRejected(dir_ / "sim", (dir_ / "sim.hierarchy").string(),
+                 "grid 4 covers only part of a cell of grid 1");
+}
+
 TEST_F(EnzoSyntheticTest, RejectsAMissingGridFile) {
   fs::remove(dir_ / "sim.cpu0001");
   expectRejected(dir_ / "sim.hierarchy", (dir_ / "sim.cpu0001").string(), "grid 4");

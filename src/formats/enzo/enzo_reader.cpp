@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -56,11 +57,11 @@ struct Domain {
   int axes = 3;  // 2: planar data, whose grids are one zone thick (z is then unused)
 };
 
-std::string trim(std::string s) {
+std::string_view trim(std::string_view s) {
   const auto* ws = " \t\r\n";
-  s.erase(0, s.find_first_not_of(ws));
-  s.erase(s.find_last_not_of(ws) + 1);
-  return s;
+  const std::size_t first = s.find_first_not_of(ws);
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(ws) - first + 1);
 }
 
 // Active zones per grid axis and per grid: beyond these no grid fits the cells' extent or this
@@ -148,19 +149,20 @@ std::vector<Grid> readHierarchy(const fs::path& file, int& axes) {
   std::size_t lineStart = 0;
   for (int number = 1; lineStart < text.size(); ++number) {
     const std::size_t lineEnd = std::min(text.find('\n', lineStart), text.size());
-    const std::string line = text.substr(lineStart, lineEnd - lineStart);
+    const std::string_view line = std::string_view(text).substr(lineStart, lineEnd - lineStart);
     lineStart = lineEnd + 1;
     const auto eq = line.find('=');
-    if (eq == std::string::npos) continue;
-    const auto key = trim(line.substr(0, eq));
-    const auto value = trim(line.substr(eq + 1));
-    const std::string where = fmt::format("{}:{}", source, number);
+    if (eq == std::string_view::npos) continue;
+    const std::string_view key = trim(line.substr(0, eq));
+    const std::string_view value = trim(line.substr(eq + 1));
     if (key == "Grid") {
       if (value != std::to_string(blocks.size() + 1))
-        throw InputError(where, fmt::format("expected Grid = {}, got Grid = {}", blocks.size() + 1,
-                                            excerpt(value)));
+        throw InputError(
+            fmt::format("{}:{}", source, number),
+            fmt::format("expected Grid = {}, got Grid = {}", blocks.size() + 1, excerpt(value)));
       blocks.emplace_back();
     } else if (key.starts_with("Pointer:")) {
+      const std::string where = fmt::format("{}:{}", source, number);
       std::int64_t grid = 0, target = 0;
       std::string which;
       if (!parsePointer(key, value, where, grid, which, target))
@@ -168,7 +170,7 @@ std::vector<Grid> readHierarchy(const fs::path& file, int& axes) {
       pointers.emplace(grid, which);
       maxTarget = std::max(maxTarget, target);
     } else if (!blocks.empty()) {
-      blocks.back()[key] = value;
+      blocks.back()[std::string(key)] = std::string(value);
     }
   }
   const std::size_t n = blocks.size();
@@ -538,16 +540,33 @@ GridCells gridCells(const GridReading& r, const ValueWindow* window) {
     throw InputError(r.table.string(), fmt::format("the grids hold {} active zones, more than "
                                                    "the {} accepted",
                                                    zones, kMaxTotalZones));
+  const std::size_t n = r.grids.size();
   GridCells cells;
-  for (const Grid& g : r.grids) {
+  cells.covered.resize(n);
+  cells.wanted.resize(n);
+  cells.first.resize(n);
+  // Each grid's cells, on all cores; the first grid's error (in the table's order) is thrown.
+  std::vector<std::size_t> counts(n);
+  std::vector<std::exception_ptr> errors(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    const Grid& g = r.grids[i];
     glm::ivec3 upper = g.lower + g.dims * g.width;
     if (r.axes == 2) upper.z = r.slabCells;
-    cells.wanted.push_back(!window || window->meets(g.lower, upper, g.width));
-    cells.covered.push_back(coveredCells(g, r.grids, r.table, r.axes));
-    const auto& covered = cells.covered.back();
+    cells.wanted[i] = !window || window->meets(g.lower, upper, g.width);
+    try {
+      cells.covered[i] = coveredCells(g, r.grids, r.table, r.axes);
+    } catch (...) {
+      errors[i] = std::current_exception();
+      return;
+    }
     const int copies = r.axes == 2 ? r.slabCells / g.width : 1;
-    cells.first.push_back(cells.total);
-    cells.total += std::size_t(std::count(covered.begin(), covered.end(), false)) * copies;
+    const auto& covered = cells.covered[i];
+    counts[i] = std::size_t(std::count(covered.begin(), covered.end(), false)) * copies;
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    cells.first[i] = cells.total;
+    cells.total += counts[i];
   }
   return cells;
 }
