@@ -13,6 +13,9 @@ namespace amrstream::formats {
 // `text` for an error message: its first 60 bytes, other bytes than printable ASCII as \xNN.
 std::string excerpt(std::string_view text);
 
+// `text` without the blanks (spaces, tabs, CR, LF) around it.
+std::string_view trimmed(std::string_view text);
+
 // Blank-separated words of `text` (spaces, tabs, CR, LF).
 std::vector<std::string_view> splitWords(std::string_view text);
 

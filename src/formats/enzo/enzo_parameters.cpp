@@ -11,17 +11,6 @@
 
 namespace amrstream::formats {
 
-namespace {
-
-std::string trim(std::string_view s) {
-  const auto* ws = " \t\r\n";
-  const std::size_t first = s.find_first_not_of(ws);
-  if (first == std::string_view::npos) return "";
-  return std::string(s.substr(first, s.find_last_not_of(ws) - first + 1));
-}
-
-}  // namespace
-
 EnzoParameters::EnzoParameters(const std::filesystem::path& file) : file_(file) {
   const std::string text = readWholeFile(file, "the parameter file");
   std::size_t start = 0;
@@ -29,7 +18,8 @@ EnzoParameters::EnzoParameters(const std::filesystem::path& file) : file_(file) 
     const std::size_t end = std::min(text.find('\n', start), text.size());
     const std::string_view line(text.data() + start, end - start);
     const auto eq = line.find('=');
-    if (eq != std::string_view::npos) values_[trim(line.substr(0, eq))] = trim(line.substr(eq + 1));
+    if (eq != std::string_view::npos)
+      values_[std::string(trimmed(line.substr(0, eq)))] = std::string(trimmed(line.substr(eq + 1)));
     start = end + 1;
   }
 }

@@ -57,13 +57,6 @@ struct Domain {
   int axes = 3;  // 2: planar data, whose grids are one zone thick (z is then unused)
 };
 
-std::string_view trim(std::string_view s) {
-  const auto* ws = " \t\r\n";
-  const std::size_t first = s.find_first_not_of(ws);
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(ws) - first + 1);
-}
-
 // Active zones per grid axis and per grid: beyond these no grid fits the cells' extent or this
 // machine's memory.
 constexpr std::int64_t kMaxZonesPerAxis = std::int64_t{1} << bricks::kMaxExtentBits;
@@ -153,8 +146,8 @@ std::vector<Grid> readHierarchy(const fs::path& file, int& axes) {
     lineStart = lineEnd + 1;
     const auto eq = line.find('=');
     if (eq == std::string_view::npos) continue;
-    const std::string_view key = trim(line.substr(0, eq));
-    const std::string_view value = trim(line.substr(eq + 1));
+    const std::string_view key = trimmed(line.substr(0, eq));
+    const std::string_view value = trimmed(line.substr(eq + 1));
     if (key == "Grid") {
       if (value != std::to_string(blocks.size() + 1))
         throw InputError(
@@ -166,7 +159,8 @@ std::vector<Grid> readHierarchy(const fs::path& file, int& axes) {
       std::int64_t grid = 0, target = 0;
       std::string which;
       if (!parsePointer(key, value, where, grid, which, target))
-        throw InputError(where, fmt::format("cannot parse '{}' (truncated?)", excerpt(trim(line))));
+        throw InputError(where,
+                         fmt::format("cannot parse '{}' (truncated?)", excerpt(trimmed(line))));
       pointers.emplace(grid, which);
       maxTarget = std::max(maxTarget, target);
     } else if (!blocks.empty()) {
