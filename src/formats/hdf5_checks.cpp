@@ -39,43 +39,48 @@ int nativeFloatBytes(hid_t type) {
 
 }  // namespace
 
-StoredDataset inspectStoredDataset(hid_t set, const std::string& file, const std::string& name) {
-  StoredDataset facts;
-  facts.shape = declaredShape(set, file, name);
-  facts.count = 1;
-  for (hsize_t d : facts.shape)
-    facts.count = checkedProduct(facts.count, d, file, "dataset '" + name + "' shape");
-  const std::uint64_t count = facts.count;
+std::uint64_t checkedValueCount(const std::vector<hsize_t>& shape, std::uint64_t elementBytes,
+                                bool filtered, std::uint64_t storedBytes, std::uint64_t fileBytes,
+                                const std::string& file, const std::string& name) {
+  std::uint64_t count = 1;
+  for (hsize_t d : shape) count = checkedProduct(count, d, file, "dataset '" + name + "' shape");
   if (count > kMaxDatasetValues)
     fail(file, name,
          fmt::format("declares {} values, more than the {} accepted", count, kMaxDatasetValues));
-  const Hdf5Handle type(H5Dget_type(set), H5Tclose);
-  const std::size_t elementBytes = type.valid() ? H5Tget_size(type.get()) : 0;
   if (elementBytes == 0) fail(file, name, "cannot read the datatype");
-  facts.typeClass = H5Tget_class(type.get());
-  facts.nativeFloatBytes = facts.typeClass == H5T_FLOAT ? nativeFloatBytes(type.get()) : 0;
-  const Hdf5Handle plist(H5Dget_create_plist(set), H5Pclose);
-  const int filters = plist.valid() ? H5Pget_nfilters(plist.get()) : -1;
-  if (filters < 0) fail(file, name, "cannot read the creation properties");
-  facts.inPlace = H5Pget_layout(plist.get()) == H5D_CONTIGUOUS && filters == 0 &&
-                  H5Pget_external_count(plist.get()) == 0;
   const std::uint64_t needed = checkedProduct(count, elementBytes, file, "dataset '" + name + "'");
-  const std::uint64_t stored = H5Dget_storage_size(set);
-  const std::uint64_t least = filters == 0 ? needed : needed / kMaxCompressionRatio;
-  if (stored < least)
+  const std::uint64_t least = filtered ? needed / kMaxCompressionRatio : needed;
+  if (storedBytes < least)
     fail(file, name,
          fmt::format("declares {} values of {} bytes ({} bytes) but the file stores {} bytes "
                      "for them{}",
-                     count, elementBytes, needed, stored,
-                     filters == 0 ? "" : " (too few even compressed)"));
+                     count, elementBytes, needed, storedBytes,
+                     filtered ? " (too few even compressed)" : ""));
+  if (storedBytes > fileBytes)
+    fail(file, name,
+         fmt::format("claims {} bytes of storage in a file of {} bytes (truncated?)", storedBytes,
+                     fileBytes));
+  return count;
+}
+
+StoredDataset inspectStoredDataset(hid_t set, const std::string& file, const std::string& name) {
+  StoredDataset facts;
+  facts.shape = declaredShape(set, file, name);
+  const Hdf5Handle type(H5Dget_type(set), H5Tclose);
+  const std::size_t elementBytes = type.valid() ? H5Tget_size(type.get()) : 0;
+  const Hdf5Handle plist(H5Dget_create_plist(set), H5Pclose);
+  const int filters = plist.valid() ? H5Pget_nfilters(plist.get()) : -1;
+  if (filters < 0) fail(file, name, "cannot read the creation properties");
   const Hdf5Handle fileId(H5Iget_file_id(set), H5Fclose);
   hsize_t fileBytes = 0;
   if (!fileId.valid() || H5Fget_filesize(fileId.get(), &fileBytes) < 0)
     fail(file, name, "cannot read the file size");
-  if (stored > fileBytes)
-    fail(file, name,
-         fmt::format("claims {} bytes of storage in a file of {} bytes (truncated?)", stored,
-                     fileBytes));
+  facts.count = checkedValueCount(facts.shape, elementBytes, filters != 0, H5Dget_storage_size(set),
+                                  fileBytes, file, name);
+  facts.typeClass = H5Tget_class(type.get());
+  facts.nativeFloatBytes = facts.typeClass == H5T_FLOAT ? nativeFloatBytes(type.get()) : 0;
+  facts.inPlace = H5Pget_layout(plist.get()) == H5D_CONTIGUOUS && filters == 0 &&
+                  H5Pget_external_count(plist.get()) == 0;
   facts.fileBytes = fileBytes;
   facts.offset = H5Dget_offset(set);
   return facts;

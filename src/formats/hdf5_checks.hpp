@@ -23,6 +23,15 @@ inline constexpr std::uint64_t kMaxCompressionRatio = 4096;
 // the file does not back is refused before any allocation.
 std::uint64_t requireStoredValues(hid_t set, const std::string& file, const std::string& name);
 
+// The number of values a dataset of `shape` declares, each of `elementBytes` (0: the type could
+// not be read), with `storedBytes` in a file of `fileBytes`: throws InputError(file, "dataset
+// 'NAME': ...") when their count exceeds kMaxDatasetValues, when the file stores fewer bytes for
+// them than they need (unfiltered) or than 1 / kMaxCompressionRatio of that (filtered), or more
+// than the file holds.
+std::uint64_t checkedValueCount(const std::vector<hsize_t>& shape, std::uint64_t elementBytes,
+                                bool filtered, std::uint64_t storedBytes, std::uint64_t fileBytes,
+                                const std::string& file, const std::string& name);
+
 // What dataset `set` declares and how its values are stored, each asked of HDF5 once (a reader
 // of thousands of datasets pays for every call on one thread), with requireStoredValues' checks.
 struct StoredDataset {

@@ -1,6 +1,8 @@
 // The Enzo grids' field values read in batches while more grids are added: with batches of
 // every size, the values equal those H5Dread gives, and of several unusable values the one
-// reported is the first in the order the datasets were added, whichever batch met it first.
+// reported is the first in the order the datasets were added, whichever batch met it first;
+// the same with the datasets found from their object headers, which leave to libhdf5 the groups
+// and fields they do not find.
 
 #include "formats/enzo/enzo_fields.hpp"
 
@@ -17,6 +19,7 @@
 
 #include "amrstream/error.hpp"
 #include "formats/dataset_writers.hpp"
+#include "formats/enzo/enzo_grid_headers.hpp"
 #include "input_error_of.hpp"
 #include "synth/generators.hpp"
 #include "temp_dir_test.hpp"
@@ -63,11 +66,20 @@ std::vector<GridValues> readWithHdf5(const fs::path& file) {
   return grids;
 }
 
+// The grids' datasets found from their object headers.
+std::vector<GridDatasets> fromHeaders(hid_t f, const fs::path& file,
+                                      const std::vector<GridValues>& grids) {
+  const FieldFile files[] = {{file, f}};
+  std::vector<GridGroup> groups;
+  for (const GridValues& grid : grids) groups.push_back({0, grid.group, true});
+  return findGridDatasets(files, groups, kChannels);
+}
+
 // Every grid of `file` added to a FieldReads of `batchValues` and read into `into` (sized as
-// `grids`' values).
+// `grids`' values); `headers`: the datasets found from their object headers, not opened.
 void readWithBatches(const fs::path& file, const std::vector<GridValues>& grids,
-                     std::vector<std::vector<std::vector<float>>>& into,
-                     std::uint64_t batchValues) {
+                     std::vector<std::vector<std::vector<float>>>& into, std::uint64_t batchValues,
+                     bool headers = false) {
   into.clear();
   for (const GridValues& grid : grids) {
     std::vector<std::vector<float>> channels;
@@ -77,11 +89,19 @@ void readWithBatches(const fs::path& file, const std::vector<GridValues>& grids,
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   {
+    const std::vector<GridDatasets> found =
+        headers ? fromHeaders(f, file, grids) : std::vector<GridDatasets>(grids.size());
     FieldReads reads(kChannels, batchValues);
     for (std::size_t g = 0; g < grids.size(); ++g) {
-      const hid_t group = H5Gopen2(f, grids[g].group.c_str(), H5P_DEFAULT);
       std::vector<float*> targets;
       for (auto& values : into[g]) targets.push_back(values.data());
+      if (headers) {
+        ASSERT_EQ(found[g].channels.size(), kChannels.size()) << grids[g].group;
+        reads.addInPlace(file, grids[g].group, grids[g].dims, 3, targets, found[g].channels,
+                         found[g].fileBytes);
+        continue;
+      }
+      const hid_t group = H5Gopen2(f, grids[g].group.c_str(), H5P_DEFAULT);
       reads.add(group, file, grids[g].group, grids[g].dims, 3, targets);
       H5Gclose(group);
     }
@@ -123,15 +143,46 @@ class FieldReadsTest : public testing::TempDirTest {
 };
 
 TEST_F(FieldReadsTest, EveryBatchSizeReadsTheValuesHdf5Reads) {
-  for (const std::uint64_t batch :
-       {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
-    std::vector<std::vector<std::vector<float>>> into;
-    readWithBatches(file_, grids_, into, batch);
-    for (std::size_t g = 0; g < grids_.size(); ++g)
-      for (std::size_t c = 0; c < kChannels.size(); ++c)
-        ASSERT_EQ(into[g][c], grids_[g].channels[c])
-            << "batch " << batch << ", " << grids_[g].group << "/" << kChannels[c];
-  }
+  for (const bool headers : {false, true})
+    for (const std::uint64_t batch :
+         {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
+      std::vector<std::vector<std::vector<float>>> into;
+      readWithBatches(file_, grids_, into, batch, headers);
+      for (std::size_t g = 0; g < grids_.size(); ++g)
+        for (std::size_t c = 0; c < kChannels.size(); ++c)
+          ASSERT_EQ(into[g][c], grids_[g].channels[c])
+              << "batch " << batch << ", " << grids_[g].group << "/" << kChannels[c]
+              << (headers ? ", from the headers" : "");
+    }
+}
+
+TEST_F(FieldReadsTest, GroupsNotInTheFileOrAFileLibhdf5CouldNotOpenAreLeftToIt) {
+  const hid_t f = H5Fopen(file_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const FieldFile files[] = {{file_, f}, {file_, H5I_INVALID_HID}};
+  const std::vector<GridGroup> groups = {{0, grids_[0].group, true},
+                                         {0, "/Grid99999999", true},
+                                         {1, grids_[0].group, true},
+                                         {0, grids_[1].group, false}};
+  const auto found = findGridDatasets(files, groups, kChannels);
+  H5Fclose(f);
+  ASSERT_EQ(found.size(), 4u);
+  EXPECT_TRUE(found[0].groupFound);
+  EXPECT_EQ(found[0].channels.size(), kChannels.size());
+  EXPECT_EQ(found[0].fileBytes, fs::file_size(file_));
+  EXPECT_FALSE(found[1].groupFound);
+  EXPECT_FALSE(found[2].groupFound);
+  EXPECT_TRUE(found[2].channels.empty());
+  EXPECT_TRUE(found[3].groupFound);  // its values are not wanted: no datasets looked for
+  EXPECT_TRUE(found[3].channels.empty());
+  const std::vector<std::string> absent = {"dens", "no_such_field"};
+  const GridGroup one[] = {{0, grids_[0].group, true}};
+  const hid_t again = H5Fopen(file_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const FieldFile file[] = {{file_, again}};
+  const auto partial = findGridDatasets(file, one, absent);
+  H5Fclose(again);
+  EXPECT_TRUE(partial[0].groupFound);
+  EXPECT_TRUE(partial[0].channels.empty());  // one channel missing: libhdf5 names it
 }
 
 TEST_F(FieldReadsTest, TheFirstUnusableValueInTheOrderAddedIsNamedWhateverTheBatches) {
@@ -143,10 +194,13 @@ TEST_F(FieldReadsTest, TheFirstUnusableValueInTheOrderAddedIsNamedWhateverTheBat
       fmt::format("dataset {}/dens: value -inf at zone (i, j, k) = (5, 0, 0)", grids_[1].group);
   for (const std::uint64_t batch :
        {std::uint64_t(1), std::uint64_t(1000), std::uint64_t(1) << 40}) {
-    std::vector<std::vector<std::vector<float>>> into;
-    const std::string error = inputErrorOf([&] { readWithBatches(file_, grids_, into, batch); });
-    EXPECT_THAT(error, HasSubstr(file_.string())) << "batch " << batch;
-    EXPECT_THAT(error, HasSubstr(expected)) << "batch " << batch;
+    for (const bool headers : {false, true}) {
+      std::vector<std::vector<std::vector<float>>> into;
+      const std::string error =
+          inputErrorOf([&] { readWithBatches(file_, grids_, into, batch, headers); });
+      EXPECT_THAT(error, HasSubstr(file_.string())) << "batch " << batch;
+      EXPECT_THAT(error, HasSubstr(expected)) << "batch " << batch;
+    }
   }
 }
 

@@ -58,14 +58,8 @@ void FieldReads::add(hid_t group, const fs::path& file, const std::string& group
                                           ? fmt::format("dataset {} is missing", what)
                                           : fmt::format("HDF5 could not open dataset {}", what));
     const StoredDataset stored = inspectStoredDataset(set.get(), file.string(), what);
-    requireShape(stored.shape, file, what, dims, axes);
-    if (stored.typeClass != H5T_FLOAT)
-      throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
+    if (queueInPlace(stored, file, what, dims, axes, into[c])) continue;
     const std::uint64_t count = stored.count;
-    if (const auto contiguous = contiguousFloats(stored, file.string(), what)) {
-      queue(file, contiguous->valueBytes, {contiguous->offset, count, into[c]}, {what, dims, axes});
-      continue;
-    }
     std::vector<double> values(count);
     if (H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
       throw InputError(file.string(), fmt::format("HDF5 could not read dataset {}", what));
@@ -75,6 +69,37 @@ void FieldReads::add(hid_t group, const fs::path& file, const std::string& group
       into[c][i] = static_cast<float>(values[i]);
     }
   }
+}
+
+void FieldReads::addInPlace(const fs::path& file, const std::string& groupName, glm::ivec3 dims,
+                            int axes, std::span<float* const> into,
+                            std::span<const HeaderDataset> datasets, std::uint64_t fileBytes) {
+  for (std::size_t c = 0; c < channels_.size(); ++c) {
+    const auto what = fmt::format("{}/{}", groupName, channels_[c]);
+    const HeaderDataset& d = datasets[c];
+    StoredDataset stored;
+    stored.shape = d.shape;
+    stored.count = checkedValueCount(d.shape, std::uint64_t(d.valueBytes), false, d.storedBytes,
+                                     fileBytes, file.string(), what);
+    stored.typeClass = H5T_FLOAT;
+    stored.nativeFloatBytes = d.valueBytes;
+    stored.inPlace = true;
+    stored.offset = d.offset;
+    stored.fileBytes = fileBytes;
+    if (!queueInPlace(stored, file, what, dims, axes, into[c]))
+      throw InputError(file.string(), fmt::format("dataset {} could not be read in place", what));
+  }
+}
+
+bool FieldReads::queueInPlace(const StoredDataset& stored, const fs::path& file,
+                              const std::string& what, glm::ivec3 dims, int axes, float* into) {
+  requireShape(stored.shape, file, what, dims, axes);
+  if (stored.typeClass != H5T_FLOAT)
+    throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
+  const auto contiguous = contiguousFloats(stored, file.string(), what);
+  if (!contiguous) return false;
+  queue(file, contiguous->valueBytes, {contiguous->offset, stored.count, into}, {what, dims, axes});
+  return true;
 }
 
 FieldReads::~FieldReads() {

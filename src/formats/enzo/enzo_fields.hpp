@@ -1,6 +1,7 @@
 #pragma once
 // The field values of Enzo grids, gathered on one thread and read on all. Each grid's datasets
-// are opened and checked where they are added (libhdf5 is not thread safe); a contiguous,
+// are checked where they are added: opened through libhdf5 (not thread safe) there, or found
+// beforehand from their object headers (enzo_grid_headers.hpp); a contiguous,
 // unfiltered dataset of the machine's float32 or float64 is queued to be read through its file
 // offset (float_runs.hpp), any other is read with H5Dread at once. The queued values are read in
 // batches of a few MiB per file, on all cores, while the next grids are added: the reading
@@ -20,6 +21,8 @@
 #include <vector>
 
 #include "formats/float_runs.hpp"
+#include "formats/hdf5_checks.hpp"
+#include "formats/hdf5_headers.hpp"
 
 namespace amrstream::formats::enzo {
 
@@ -43,6 +46,12 @@ class FieldReads {
   // not stored, and for a value read here that is not finite or beyond the float range.
   void add(hid_t group, const std::filesystem::path& file, const std::string& groupName,
            glm::ivec3 dims, int axes, std::span<float* const> into);
+
+  // The same for a grid whose datasets were read from their object headers (`datasets`, one per
+  // channel, in a file of `fileBytes`), with the same checks and errors.
+  void addInPlace(const std::filesystem::path& file, const std::string& groupName, glm::ivec3 dims,
+                  int axes, std::span<float* const> into, std::span<const HeaderDataset> datasets,
+                  std::uint64_t fileBytes);
 
   // Reads what add() queued and has not read yet, and waits for all of it. Throws InputError
   // naming the file, dataset and zone of a value that is not finite or beyond the float range
@@ -69,6 +78,10 @@ class FieldReads {
     std::vector<FloatRun> runs;
     std::optional<UnusableValue> bad;
   };
+  // Queues the dataset `stored` (named `what`) for reading into `into`; false when it must be
+  // read with H5Dread.
+  bool queueInPlace(const StoredDataset& stored, const std::filesystem::path& file,
+                    const std::string& what, glm::ivec3 dims, int axes, float* into);
   void queue(const std::filesystem::path& file, int valueBytes, FloatRun run, Source source);
   void launch(std::size_t file);
 

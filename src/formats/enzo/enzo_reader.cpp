@@ -21,6 +21,7 @@
 #include "formats/cell_checks.hpp"
 #include "formats/cell_sink.hpp"
 #include "formats/enzo/enzo_fields.hpp"
+#include "formats/enzo/enzo_grid_headers.hpp"
 #include "formats/enzo/enzo_info.hpp"
 #include "formats/enzo/enzo_parameters.hpp"
 #include "formats/hdf5_checks.hpp"
@@ -585,16 +586,44 @@ Handle openGroup(GridReading& r, const Grid& g) {
                  fmt::format("open group {}", groupName));
 }
 
+// The grids' groups and datasets from their object headers: the field files the grids name,
+// those libhdf5 opens (a missing or unreadable one is reported by openGroup, in the grids' order).
+std::vector<enzo::GridDatasets> findDatasets(GridReading& r, const GridCells& cells) {
+  std::vector<enzo::FieldFile> files;
+  std::map<std::string, std::size_t> fileIndex;
+  std::vector<enzo::GridGroup> groups(r.grids.size());
+  for (std::size_t n = 0; n < r.grids.size(); ++n) {
+    const Grid& g = r.grids[n];
+    auto [at, added] = fileIndex.try_emplace(g.file, files.size());
+    if (added) {
+      const fs::path path = r.dir / g.file;
+      enzo::FieldFile& file = files.emplace_back(enzo::FieldFile{path, H5I_INVALID_HID});
+      try {
+        auto open = r.files.find(g.file);
+        if (open == r.files.end() && present(path))
+          open = r.files.emplace(g.file, openHdf5(path)).first;
+        if (open != r.files.end()) file.id = open->second.get();
+      } catch (const InputError&) {  // openGroup reports it where the grids' order meets it
+      }
+    }
+    groups[n] = {at->second, fmt::format("/Grid{:08d}", g.id),
+                 cells.wanted[n] && !r.sink.values(0).empty()};
+  }
+  return enzo::findGridDatasets(files, groups, r.channels);
+}
+
 // The values of the grids read, each channel's: a grid whose zones are its cells, one to one,
 // straight into them; any other into `staged` (channel after channel), to be spread over its
 // cells by placeCells.
 void readValues(GridReading& r, const GridCells& cells, std::vector<std::vector<float>>& staged) {
+  const std::vector<enzo::GridDatasets> found = findDatasets(r, cells);
   enzo::FieldReads fields(r.channels);
   std::vector<float*> into(r.channels.size());
   for (std::size_t n = 0; n < r.grids.size(); ++n) {
     const Grid& g = r.grids[n];
     if (!cells.wanted[n] && r.sink.skipsPieces()) continue;
-    const Handle group = openGroup(r, g);  // a grid's file and group must be there, read or not
+    Handle group;  // a grid's file and group must be there, read or not
+    if (!found[n].groupFound) group = openGroup(r, g);
     if (!cells.wanted[n] || r.sink.values(0).empty()) continue;
     const std::size_t zones = cells.covered[n].size();
     const bool oneToOne = std::ranges::none_of(cells.covered[n], std::identity()) &&
@@ -602,7 +631,14 @@ void readValues(GridReading& r, const GridCells& cells, std::vector<std::vector<
     if (!oneToOne) staged[n].resize(zones * r.channels.size());
     for (std::size_t c = 0; c < r.channels.size(); ++c)
       into[c] = oneToOne ? r.sink.values(c).data() + cells.first[n] : staged[n].data() + c * zones;
-    fields.add(group.get(), r.dir / g.file, fmt::format("/Grid{:08d}", g.id), g.dims, r.axes, into);
+    const std::string groupName = fmt::format("/Grid{:08d}", g.id);
+    if (!found[n].channels.empty()) {
+      fields.addInPlace(r.dir / g.file, groupName, g.dims, r.axes, into, found[n].channels,
+                        found[n].fileBytes);
+      continue;
+    }
+    if (!group.valid()) group = openGroup(r, g);
+    fields.add(group.get(), r.dir / g.file, groupName, g.dims, r.axes, into);
   }
   fields.run();
 }
