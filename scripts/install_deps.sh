@@ -7,6 +7,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  # a compiler cache: a second build of the same sources (CI's fresh clone) compiles only changes
+  ccache
   libglm-dev libgtest-dev libgmock-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   # VTK's Python modules come with python3-paraview (below), which conflicts with python3-vtk9
   python3 python3-numpy python3-pytest python3-yt python3-matplotlib pybind11-dev
