@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -60,10 +61,28 @@ class FirstUnusable {
   std::optional<UnusableValue> first_;
 };
 
+// The bytes of each of `count` values of `T` reversed, in place.
+template <typename T>
+void swapBytes(T* values, std::uint64_t count) {
+  for (std::uint64_t i = 0; i < count; ++i) {
+    if constexpr (sizeof(T) == 4) {
+      std::uint32_t bits;
+      std::memcpy(&bits, values + i, 4);
+      bits = __builtin_bswap32(bits);
+      std::memcpy(values + i, &bits, 4);
+    } else {
+      std::uint64_t bits;
+      std::memcpy(&bits, values + i, 8);
+      bits = __builtin_bswap64(bits);
+      std::memcpy(values + i, &bits, 8);
+    }
+  }
+}
+
 }  // namespace
 
-std::optional<UnusableValue> readFloatRuns(const std::filesystem::path& path, int valueBytes,
-                                           std::span<const FloatRun> runs,
+std::optional<UnusableValue> readFloatRuns(const std::filesystem::path& path,
+                                           FloatEncoding encoding, std::span<const FloatRun> runs,
                                            const std::string& what) {
   const ReadOnlyFile file(path, what);
   const std::vector<Piece> pieces = piecesOf(runs);
@@ -72,16 +91,18 @@ std::optional<UnusableValue> readFloatRuns(const std::filesystem::path& path, in
   tbb::parallel_for(std::size_t(0), pieces.size(), [&](std::size_t p) {
     const Piece& piece = pieces[p];
     const FloatRun& run = runs[piece.run];
-    const std::uint64_t offset = run.offset + piece.first * std::uint64_t(valueBytes);
+    const std::uint64_t offset = run.offset + piece.first * std::uint64_t(encoding.bytes);
     float* into = run.into + piece.first;
     std::optional<UnusableValue> found;
-    if (valueBytes == 4) {
+    if (encoding.bytes == 4) {
       file.readExactly(offset, reinterpret_cast<char*>(into), piece.count * 4);
+      if (encoding.bigEndian) swapBytes(into, piece.count);
       found = firstUnusable(into, piece);
     } else {
       std::vector<double>& buffer = doubles.local();
       buffer.resize(piece.count);
       file.readExactly(offset, reinterpret_cast<char*>(buffer.data()), piece.count * 8);
+      if (encoding.bigEndian) swapBytes(buffer.data(), piece.count);
       found = firstUnusable(buffer.data(), piece);
       std::transform(buffer.begin(), buffer.end(), into, [](double v) { return float(v); });
     }

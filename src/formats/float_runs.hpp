@@ -1,8 +1,8 @@
 #pragma once
-// Float values stored in a file as the machine's own float32 or float64 (the bytes of an
+// Float values stored in a file as IEEE float32 or float64 of either byte order (the bytes of an
 // unfiltered, contiguous HDF5 dataset of that type), read with pread in pieces on all cores and
-// converted to float and checked by the thread that read them: no library call per value, and
-// none on one thread only.
+// swapped where needed, converted to float and checked by the thread that read them: no library
+// call per value, and none on one thread only.
 
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +12,14 @@
 #include <string>
 
 namespace amrstream::formats {
+
+// How the values are stored: 4 (float32) or 8 (float64) bytes, in the machine's byte order or
+// the other (big-endian: the machines amrstream runs on are little-endian).
+struct FloatEncoding {
+  int bytes = 4;
+  bool bigEndian = false;
+  auto operator<=>(const FloatEncoding&) const = default;
+};
 
 struct FloatRun {
   std::uint64_t offset = 0;  // of the first value's bytes in the file
@@ -27,11 +35,12 @@ struct UnusableValue {
   std::string problem;
 };
 
-// Reads every run of `path`, each value `valueBytes` (4 or 8) bytes, in pieces on all cores.
+// Reads every run of `path`, each value stored as `encoding` says, in pieces on all cores.
 // Returns the unusable value that comes first (lowest run, then index), if any; runs may then
 // be left part read. Throws InputError naming the path and `what` when the file cannot be read
 // or ends before a run does.
-std::optional<UnusableValue> readFloatRuns(const std::filesystem::path& path, int valueBytes,
-                                           std::span<const FloatRun> runs, const std::string& what);
+std::optional<UnusableValue> readFloatRuns(const std::filesystem::path& path,
+                                           FloatEncoding encoding, std::span<const FloatRun> runs,
+                                           const std::string& what);
 
 }  // namespace amrstream::formats

@@ -30,11 +30,12 @@ std::vector<hsize_t> declaredShape(hid_t set, const std::string& file, const std
   return dims;
 }
 
-// 4 or 8 for the machine's float or double, else 0.
-int nativeFloatBytes(hid_t type) {
-  if (H5Tequal(type, H5T_NATIVE_FLOAT) > 0) return 4;
-  if (H5Tequal(type, H5T_NATIVE_DOUBLE) > 0) return 8;
-  return 0;
+// Sets `floatBytes` and `bigEndian` for IEEE float32 and float64 of either byte order.
+void ieeeFloat(hid_t type, StoredDataset& facts) {
+  if (H5Tequal(type, H5T_IEEE_F32LE) > 0) facts.floatBytes = 4;
+  if (H5Tequal(type, H5T_IEEE_F64LE) > 0) facts.floatBytes = 8;
+  if (H5Tequal(type, H5T_IEEE_F32BE) > 0) facts.floatBytes = 4, facts.bigEndian = true;
+  if (H5Tequal(type, H5T_IEEE_F64BE) > 0) facts.floatBytes = 8, facts.bigEndian = true;
 }
 
 }  // namespace
@@ -78,7 +79,7 @@ StoredDataset inspectStoredDataset(hid_t set, const std::string& file, const std
   facts.count = checkedValueCount(facts.shape, elementBytes, filters != 0, H5Dget_storage_size(set),
                                   fileBytes, file, name);
   facts.typeClass = H5Tget_class(type.get());
-  facts.nativeFloatBytes = facts.typeClass == H5T_FLOAT ? nativeFloatBytes(type.get()) : 0;
+  if (facts.typeClass == H5T_FLOAT) ieeeFloat(type.get(), facts);
   facts.inPlace = H5Pget_layout(plist.get()) == H5D_CONTIGUOUS && filters == 0 &&
                   H5Pget_external_count(plist.get()) == 0;
   facts.fileBytes = fileBytes;

@@ -38,8 +38,9 @@ struct StoredDataset {
   std::vector<hsize_t> shape;
   std::uint64_t count = 0;  // values
   H5T_class_t typeClass = H5T_NO_CLASS;
-  int nativeFloatBytes = 0;  // 4 or 8 when the type is the machine's float or double, else 0
-  bool inPlace = false;      // contiguous, unfiltered and in the file itself (not external)
+  int floatBytes = 0;      // 4 or 8 when the type is IEEE float32 or float64, else 0
+  bool bigEndian = false;  // and stored big-endian (the machine's order is little-endian)
+  bool inPlace = false;    // contiguous, unfiltered and in the file itself (not external)
   haddr_t offset = HADDR_UNDEF;
   std::uint64_t fileBytes = 0;
 };

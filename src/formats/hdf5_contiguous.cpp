@@ -8,7 +8,7 @@ namespace amrstream::formats {
 
 std::optional<ContiguousFloats> contiguousFloats(const StoredDataset& stored,
                                                  const std::string& file, const std::string& name) {
-  const int valueBytes = stored.nativeFloatBytes;
+  const int valueBytes = stored.floatBytes;
   if (valueBytes == 0 || !stored.inPlace) return std::nullopt;
   const haddr_t offset = stored.offset;
   if (offset == HADDR_UNDEF) return std::nullopt;  // never written: H5Dread gives the fill value
@@ -18,7 +18,7 @@ std::optional<ContiguousFloats> contiguousFloats(const StoredDataset& stored,
     throw InputError(file, fmt::format("dataset '{}': its {} values ({} bytes from byte {}) run "
                                        "past the end of the {}-byte file (truncated?)",
                                        name, stored.count, bytes, offset, fileBytes));
-  return ContiguousFloats{offset, valueBytes};
+  return ContiguousFloats{offset, {valueBytes, stored.bigEndian}};
 }
 
 }  // namespace amrstream::formats

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cerrno>
 #include <cstring>
+#include <tuple>
 
 #include "amrstream/error.hpp"
 #include "formats/hdf5_handle.hpp"
@@ -19,8 +20,7 @@ namespace amrstream::formats {
 namespace {
 
 static_assert(std::endian::native == std::endian::little,
-              "the header reader decodes little-endian fields and takes little-endian floats "
-              "as the machine's own");
+              "the header reader decodes little-endian fields with memcpy");
 
 constexpr std::uint64_t kUndefinedAddress = ~std::uint64_t{0};
 constexpr int kFieldBytes = 8;                     // addresses and lengths
@@ -196,9 +196,9 @@ std::optional<std::vector<hsize_t>> dataspaceShape(const Message& m) {
   return shape;
 }
 
-// 4 or 8 for little-endian IEEE float32 or float64 (the fields H5T_IEEE_F32LE and
-// H5T_IEEE_F64LE have), else 0.
-int ieeeFloatBytes(const Message& m) {
+// IEEE float32 or float64 of either byte order (the fields H5T_IEEE_F32LE, H5T_IEEE_F64LE and
+// their big-endian twins have), else nullopt.
+std::optional<FloatEncoding> ieeeFloat(const Message& m) {
   Cursor c(m.data.data(), m.data.size());
   const auto classAndVersion = c.take(1);
   const auto bits0 = c.take(1), bits1 = c.take(1), bits2 = c.take(1);
@@ -208,16 +208,46 @@ int ieeeFloatBytes(const Message& m) {
   const auto mantissaAt = c.take(1), mantissaBits = c.take(1);
   const auto bias = c.take(4);
   const auto version = classAndVersion >> 4;
-  if (!c.ok() || (classAndVersion & 0x0F) != 1 || version < 1 || version > 3) return 0;
-  // byte order little-endian, no padding bits set, implied mantissa normalization
-  if (bits0 != 0x20 || bits2 != 0 || bitOffset != 0 || mantissaAt != 0) return 0;
+  if (!c.ok() || (classAndVersion & 0x0F) != 1 || version < 1 || version > 3) return std::nullopt;
+  // bit 0: the byte order; no padding bits set, implied mantissa normalization
+  if ((bits0 & ~1u) != 0x20 || bits2 != 0 || bitOffset != 0 || mantissaAt != 0) return std::nullopt;
+  const bool bigEndian = bits0 & 1;
   if (size == 4 && bits1 == 31 && precision == 32 && exponentAt == 23 && exponentBits == 8 &&
       mantissaBits == 23 && bias == 127)
-    return 4;
+    return FloatEncoding{4, bigEndian};
   if (size == 8 && bits1 == 63 && precision == 64 && exponentAt == 52 && exponentBits == 11 &&
       mantissaBits == 52 && bias == 1023)
-    return 8;
-  return 0;
+    return FloatEncoding{8, bigEndian};
+  return std::nullopt;
+}
+
+// A contiguous layout's address and size. Versions 3 and 4 give both; versions 1 and 2 (older
+// files, Enzo's among them) give the address and the extents, the last being the value's bytes,
+// whose product is the size.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> contiguousStorage(const Message& m) {
+  Cursor c(m.data.data(), m.data.size());
+  const auto version = c.take(1);
+  std::uint64_t address = kUndefinedAddress, bytes = 0;
+  if (version == 3 || version == 4) {
+    if (c.take(1) != 1) return std::nullopt;
+    address = c.address();
+    bytes = c.take(kFieldBytes);
+  } else if (version == 1 || version == 2) {
+    const auto extents = c.take(1);
+    if (c.take(1) != 1) return std::nullopt;
+    c.skip(5);
+    address = c.address();
+    bytes = 1;
+    for (std::uint64_t e = 0; e < extents; ++e) {
+      const std::uint64_t extent = c.take(4);
+      if (extent != 0 && bytes > ~std::uint64_t{0} / extent) return std::nullopt;
+      bytes *= extent;
+    }
+  } else {
+    return std::nullopt;
+  }
+  if (!c.ok() || address == kUndefinedAddress) return std::nullopt;
+  return std::pair(address, bytes);
 }
 
 // A version 1 B-tree of group nodes and its symbol table nodes, names in the local heap.
@@ -395,17 +425,13 @@ std::optional<HeaderDataset> Hdf5Headers::contiguousDataset(std::uint64_t addres
     if (m->flags & kSharedMessage) return std::nullopt;
   HeaderDataset dataset;
   auto shape = dataspaceShape(*space);
-  dataset.valueBytes = ieeeFloatBytes(*type);
-  if (!shape || dataset.valueBytes == 0) return std::nullopt;
+  const auto encoding = ieeeFloat(*type);
+  if (!shape || !encoding) return std::nullopt;
+  dataset.encoding = *encoding;
   dataset.shape = std::move(*shape);
-  Cursor c(layout->data.data(), layout->data.size());
-  const auto version = c.take(1);
-  const auto layoutClass = c.take(1);
-  dataset.offset = c.address();
-  dataset.storedBytes = c.take(kFieldBytes);
-  if (!c.ok() || (version != 3 && version != 4) || layoutClass != 1 ||
-      dataset.offset == kUndefinedAddress)
-    return std::nullopt;
+  const auto storage = contiguousStorage(*layout);
+  if (!storage) return std::nullopt;
+  std::tie(dataset.offset, dataset.storedBytes) = *storage;
   return dataset;
 }
 

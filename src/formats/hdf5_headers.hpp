@@ -4,9 +4,9 @@
 // readers that open thousands of datasets (libhdf5, built without thread safety, opens one at a
 // time: about 27 us each). Only the plain case is read: version 1 or 2 object headers; a group's
 // links in a version 1 symbol table or in link messages; a dataset of simple shape, IEEE float32
-// or float64, little-endian, stored contiguously in the file at a defined address, with no filter
-// and no external file. Anything else, or anything unexpected, gives nullopt, and the reader asks
-// libhdf5, which then also reports any error. The layouts are in docs/formats.md.
+// or float64 of either byte order, stored contiguously in the file at a defined address, with no
+// filter and no external file. Anything else, or anything unexpected, gives nullopt, and the reader
+// asks libhdf5, which then also reports any error. The layouts are in docs/formats.md.
 
 #include <hdf5.h>
 
@@ -17,12 +17,14 @@
 #include <utility>
 #include <vector>
 
+#include "formats/float_runs.hpp"
+
 namespace amrstream::formats {
 
 // A contiguous dataset's storage as a header declares it.
 struct HeaderDataset {
   std::vector<hsize_t> shape;
-  int valueBytes = 4;        // 4: float32, 8: float64
+  FloatEncoding encoding;
   std::uint64_t offset = 0;  // of the values in the file
   std::uint64_t storedBytes = 0;
 };

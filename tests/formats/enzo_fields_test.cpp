@@ -125,6 +125,30 @@ void spoil(const fs::path& file, const std::string& group, const std::string& na
   H5Fclose(f);
 }
 
+// The grids' values written again to `file` as big-endian float32 (even channels) and float64
+// (odd ones), contiguous, as Enzo itself writes them.
+void writeBigEndian(const fs::path& file, const std::vector<GridValues>& grids) {
+  const hid_t f = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const GridValues& grid : grids) {
+    const hid_t group = H5Gcreate2(f, grid.group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const hsize_t dims[3] = {hsize_t(grid.dims.z), hsize_t(grid.dims.y), hsize_t(grid.dims.x)};
+    const hid_t space = H5Screate_simple(3, dims, nullptr);
+    for (std::size_t c = 0; c < kChannels.size(); ++c) {
+      const hid_t set =
+          H5Dcreate2(group, kChannels[c].c_str(), c % 2 ? H5T_IEEE_F64BE : H5T_IEEE_F32BE, space,
+                     H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      EXPECT_GE(
+          H5Dwrite(set, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, grid.channels[c].data()),
+          0);
+      H5Dclose(set);
+    }
+    H5Sclose(space);
+    H5Gclose(group);
+  }
+  H5Fclose(f);
+}
+
 class FieldReadsTest : public testing::TempDirTest {
  protected:
   void SetUp() override {
@@ -154,6 +178,28 @@ TEST_F(FieldReadsTest, EveryBatchSizeReadsTheValuesHdf5Reads) {
               << "batch " << batch << ", " << grids_[g].group << "/" << kChannels[c]
               << (headers ? ", from the headers" : "");
     }
+}
+
+TEST_F(FieldReadsTest, BigEndianValuesAreReadInPlaceAsHdf5ReadsThem) {
+  const fs::path swapped = dir_ / "big_endian.cpu0000";
+  writeBigEndian(swapped, grids_);
+  const auto values = readWithHdf5(swapped);
+  ASSERT_EQ(values.size(), grids_.size());
+  for (const bool headers : {false, true}) {
+    std::vector<std::vector<std::vector<float>>> into;
+    readWithBatches(swapped, values, into, 1000, headers);
+    for (std::size_t g = 0; g < values.size(); ++g)
+      for (std::size_t c = 0; c < kChannels.size(); ++c)
+        ASSERT_EQ(into[g][c], values[g].channels[c])
+            << values[g].group << "/" << kChannels[c] << (headers ? ", from the headers" : "");
+  }
+  spoil(swapped, grids_[2].group, "magx", 7, std::numeric_limits<float>::quiet_NaN());
+  const std::string error = fmt::format("dataset {}/magx: value nan at zone", grids_[2].group);
+  for (const bool headers : {false, true}) {
+    std::vector<std::vector<std::vector<float>>> into;
+    EXPECT_THAT(inputErrorOf([&] { readWithBatches(swapped, values, into, 1000, headers); }),
+                HasSubstr(error));
+  }
 }
 
 TEST_F(FieldReadsTest, GroupsNotInTheFileOrAFileLibhdf5CouldNotOpenAreLeftToIt) {

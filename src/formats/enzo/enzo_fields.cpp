@@ -79,10 +79,11 @@ void FieldReads::addInPlace(const fs::path& file, const std::string& groupName, 
     const HeaderDataset& d = datasets[c];
     StoredDataset stored;
     stored.shape = d.shape;
-    stored.count = checkedValueCount(d.shape, std::uint64_t(d.valueBytes), false, d.storedBytes,
+    stored.count = checkedValueCount(d.shape, std::uint64_t(d.encoding.bytes), false, d.storedBytes,
                                      fileBytes, file.string(), what);
     stored.typeClass = H5T_FLOAT;
-    stored.nativeFloatBytes = d.valueBytes;
+    stored.floatBytes = d.encoding.bytes;
+    stored.bigEndian = d.encoding.bigEndian;
     stored.inPlace = true;
     stored.offset = d.offset;
     stored.fileBytes = fileBytes;
@@ -98,7 +99,7 @@ bool FieldReads::queueInPlace(const StoredDataset& stored, const fs::path& file,
     throw InputError(file.string(), fmt::format("dataset {} is not floating point", what));
   const auto contiguous = contiguousFloats(stored, file.string(), what);
   if (!contiguous) return false;
-  queue(file, contiguous->valueBytes, {contiguous->offset, stored.count, into}, {what, dims, axes});
+  queue(file, contiguous->encoding, {contiguous->offset, stored.count, into}, {what, dims, axes});
   return true;
 }
 
@@ -110,9 +111,9 @@ FieldReads::~FieldReads() {
   }
 }
 
-void FieldReads::queue(const fs::path& file, int valueBytes, FloatRun run, Source source) {
-  const auto [at, added] = fileIndex_.try_emplace({file.string(), valueBytes}, files_.size());
-  if (added) files_.push_back({file, valueBytes, {}, {}, 0});
+void FieldReads::queue(const fs::path& file, FloatEncoding encoding, FloatRun run, Source source) {
+  const auto [at, added] = fileIndex_.try_emplace({file.string(), encoding}, files_.size());
+  if (added) files_.push_back({file, encoding, {}, {}, 0});
   FileReads& reads = files_[at->second];
   reads.sources.push_back(std::move(source));
   reads.pending.push_back(run);
@@ -128,7 +129,7 @@ void FieldReads::launch(std::size_t file) {
   reads.pending.clear();
   reads.pendingValues = 0;
   reading_.run([&batch, &reads] {
-    batch.bad = readFloatRuns(reads.file, reads.valueBytes, batch.runs, "a grid field");
+    batch.bad = readFloatRuns(reads.file, reads.encoding, batch.runs, "a grid field");
   });
 }
 

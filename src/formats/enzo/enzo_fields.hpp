@@ -2,9 +2,9 @@
 // The field values of Enzo grids, gathered on one thread and read on all. Each grid's datasets
 // are checked where they are added: opened through libhdf5 (not thread safe) there, or found
 // beforehand from their object headers (enzo_grid_headers.hpp); a contiguous,
-// unfiltered dataset of the machine's float32 or float64 is queued to be read through its file
-// offset (float_runs.hpp), any other is read with H5Dread at once. The queued values are read in
-// batches of a few MiB per file, on all cores, while the next grids are added: the reading
+// unfiltered dataset of IEEE float32 or float64 (either byte order) is queued to be read through
+// its file offset (float_runs.hpp), any other is read with H5Dread at once. The queued values are
+// read in batches of a few MiB per file, on all cores, while the next grids are added: the reading
 // overlaps libhdf5's work on one thread. Used only by the Enzo reader.
 
 #include <hdf5.h>
@@ -66,7 +66,7 @@ class FieldReads {
   };
   struct FileReads {
     std::filesystem::path file;
-    int valueBytes = 4;
+    FloatEncoding encoding;
     std::vector<Source> sources;  // per run queued
     std::vector<FloatRun> pending;
     std::uint64_t pendingValues = 0;
@@ -82,14 +82,15 @@ class FieldReads {
   // read with H5Dread.
   bool queueInPlace(const StoredDataset& stored, const std::filesystem::path& file,
                     const std::string& what, glm::ivec3 dims, int axes, float* into);
-  void queue(const std::filesystem::path& file, int valueBytes, FloatRun run, Source source);
+  void queue(const std::filesystem::path& file, FloatEncoding encoding, FloatRun run,
+             Source source);
   void launch(std::size_t file);
 
   std::vector<std::string> channels_;
   std::uint64_t batchValues_;
   std::deque<FileReads> files_;  // a batch being read keeps its file's address
-  std::map<std::pair<std::string, int>, std::size_t> fileIndex_;  // into files_
-  std::deque<Batch> batches_;                                     // launched, in order
+  std::map<std::pair<std::string, FloatEncoding>, std::size_t> fileIndex_;  // into files_
+  std::deque<Batch> batches_;                                               // launched, in order
   tbb::task_group reading_;
 };
 

@@ -60,8 +60,9 @@ void readBlockValues(const FlashFile& file, const std::string& name,
     contiguous = contiguousFloats(stored, file.path(), name);
   }
   if (contiguous) {
-    const BlockRuns runs = blockRuns(blocks, contiguous->offset, contiguous->valueBytes, perBlock);
-    const auto bad = readFloatRuns(file.path(), contiguous->valueBytes, runs.runs,
+    const BlockRuns runs =
+        blockRuns(blocks, contiguous->offset, contiguous->encoding.bytes, perBlock);
+    const auto bad = readFloatRuns(file.path(), contiguous->encoding, runs.runs,
                                    fmt::format("dataset '{}'", name));
     if (bad)
       unusable(file, name, runs.firstBlocks[bad->run] + bad->index / perBlock,
