@@ -590,23 +590,29 @@ Handle openGroup(GridReading& r, const Grid& g) {
 // those libhdf5 opens (a missing or unreadable one is reported by openGroup, in the grids' order).
 std::vector<enzo::GridDatasets> findDatasets(GridReading& r, const GridCells& cells) {
   std::vector<enzo::FieldFile> files;
+  std::vector<char> tried;  // per file: libhdf5 asked to open it
   std::map<std::string, std::size_t> fileIndex;
   std::vector<enzo::GridGroup> groups(r.grids.size());
   for (std::size_t n = 0; n < r.grids.size(); ++n) {
     const Grid& g = r.grids[n];
-    auto [at, added] = fileIndex.try_emplace(g.file, files.size());
+    const auto [at, added] = fileIndex.try_emplace(g.file, files.size());
     if (added) {
-      const fs::path path = r.dir / g.file;
-      enzo::FieldFile& file = files.emplace_back(enzo::FieldFile{path, H5I_INVALID_HID});
+      files.push_back({r.dir / g.file, H5I_INVALID_HID});
+      tried.push_back(false);
+    }
+    const std::size_t file = at->second;
+    const bool visited = cells.wanted[n] || !r.sink.skipsPieces();
+    if (visited && !tried[file]) {
+      tried[file] = true;
       try {
         auto open = r.files.find(g.file);
-        if (open == r.files.end() && present(path))
-          open = r.files.emplace(g.file, openHdf5(path)).first;
-        if (open != r.files.end()) file.id = open->second.get();
+        if (open == r.files.end() && present(files[file].path))
+          open = r.files.emplace(g.file, openHdf5(files[file].path)).first;
+        if (open != r.files.end()) files[file].id = open->second.get();
       } catch (const InputError&) {  // openGroup reports it where the grids' order meets it
       }
     }
-    groups[n] = {at->second, fmt::format("/Grid{:08d}", g.id),
+    groups[n] = {file, fmt::format("/Grid{:08d}", g.id),
                  cells.wanted[n] && !r.sink.values(0).empty()};
   }
   return enzo::findGridDatasets(files, groups, r.channels);
