@@ -474,6 +474,22 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
 
   const IntervalPlan plan{positions, groups, schedule, std::uint32_t(stepCount)};
   reserveRuns(moving, [&](std::size_t k) { return plans[groups[k]].steps.size(); });
+  // What storing a step needs of each particle, in the order of the rows (the particles
+  // themselves lie scattered in memory): its next slot, whether it runs, its last step. Written
+  // back to the particles once the interval's rounds are stored.
+  struct Cursor {
+    PointChunk* chunk;
+    std::uint64_t slot;
+    std::uint32_t stored = 0;
+    std::uint32_t lastStep = 0;
+    int reason;
+  };
+  std::vector<Cursor> cursors(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    const Particle& p = particles_[moving[i]];
+    PointChunk& chunk = chunks_[p.chunk];
+    cursors[i] = {&chunk, chunk.starts[p.run] + chunk.filled[p.run], 0, 0, p.reason};
+  });
   stepper.move(plan, [&](const StepRows& rows) {
     if (rows.channelCount != channelNames_.size())
       throw std::logic_error("pathlines: the device sampled other point-data channels");
@@ -483,30 +499,48 @@ void PathlineTracer::moveOnDevice(std::span<const std::size_t> moving, const Sna
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
       for (std::uint32_t r = 0; r < rows.rows; ++r)
         for (std::size_t i = range.begin(); i < range.end(); ++i) {
-          Particle& p = particles_[moving[i]];
+          Cursor& c = cursors[i];
           const std::size_t at = std::size_t(r) * n + i;
           const std::int32_t status = rows.status[at];
-          if (status == AMRSTREAM_PATHLINE_NO_STEP || p.reason != AMRSTREAM_REASON_RUNNING)
+          if (status == AMRSTREAM_PATHLINE_NO_STEP || c.reason != AMRSTREAM_REASON_RUNNING)
             continue;
           if (status != AMRSTREAM_REASON_RUNNING) {
-            p.reason = status;
+            c.reason = status;
             continue;
           }
           const GroupSteps& steps = plans[groups[i]];
           const std::uint32_t step = rows.firstStep + r;
-          p.position = rows.positions[at];
-          p.time = steps.ends[step];
-          ++p.steps;
-          float* out = placePoint(moving[i], rows.vectors[at]);
+          const std::uint64_t slot = c.slot++;
+          PointChunk& chunk = *c.chunk;
+          chunk.positions[slot] = rows.positions[at];
+          chunk.times[slot] = float(steps.ends[step]);
+          chunk.vectors[slot] = rows.vectors[at];
+          ++c.stored;
+          c.lastStep = step;
+          float* out = chunk.channels.data() + slot * channels;
           const float w = steps.steps[step].weightEnd;
-          for (std::size_t c = 0; c < channels; ++c) {
-            const float va = rows.channelsA[at * channels + c];
-            const float vb = rows.channelsB[at * channels + c];
-            out[c] = va + w * (vb - va);  // as storePoint() blends them
+          for (std::size_t k = 0; k < channels; ++k) {
+            const float va = rows.channelsA[at * channels + k];
+            const float vb = rows.channelsB[at * channels + k];
+            out[k] = va + w * (vb - va);  // as storePoint() blends them
           }
-          if (p.time >= options_.endTime) p.reason = options_.endReason;
+          if (steps.ends[step] >= options_.endTime) c.reason = options_.endReason;
         }
     });
+  });
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    const Cursor& c = cursors[i];
+    Particle& p = particles_[moving[i]];
+    p.reason = c.reason;
+    if (c.stored == 0) return;
+    const std::uint64_t last = c.slot - 1;
+    p.position = c.chunk->positions[last];
+    p.time = plans[groups[i]].ends[c.lastStep];
+    p.steps += c.stored;
+    p.points += c.stored;
+    c.chunk->filled[p.run] += c.stored;
+    p.lastChunk = p.chunk;
+    p.lastSlot = last;
   });
 }
 
