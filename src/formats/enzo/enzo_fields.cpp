@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 #include "amrstream/error.hpp"
@@ -87,8 +88,9 @@ void FieldReads::addInPlace(const fs::path& file, const std::string& groupName, 
     stored.inPlace = true;
     stored.offset = d.offset;
     stored.fileBytes = fileBytes;
+    // a header found only a contiguous float at a defined address: it is read in place
     if (!queueInPlace(stored, file, what, dims, axes, into[c]))
-      throw InputError(file.string(), fmt::format("dataset {} could not be read in place", what));
+      throw std::logic_error("FieldReads::addInPlace: " + what + " is not contiguous floats");
   }
 }
 
